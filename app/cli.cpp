@@ -1,0 +1,107 @@
+// Command-line parsing and validation (see cli.h).
+#include "app/cli.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace npr {
+namespace {
+
+bool parseFloats(const std::string& s, int n, float* out) {
+  std::stringstream ss(s);
+  std::string part;
+  int i = 0;
+  while (std::getline(ss, part, ',')) {
+    if (i >= n) return false;
+    char* end = nullptr;
+    out[i] = std::strtof(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(out[i])) return false;
+    ++i;
+  }
+  return i == n;
+}
+
+int fail(const std::string& msg) {
+  std::fprintf(stderr, "npr-viewer: %s (see --help)\n", msg.c_str());
+  return 2;
+}
+
+}  // namespace
+
+ParseOutcome parseCommandLine(int argc, char** argv) {
+  CLI::App app{"npr-viewer: palette-based non-photorealistic rendering of meshes.\n"
+               "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
+               "whose average colour or intensity matches best, in screen space."};
+  Options o;
+  std::string path, match, size, light, camera, rangeScale;
+  app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
+  app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
+  app.add_option("--path", path, "Render path: stencil|triangle|vertex|pixel|smooth|reference");
+  app.add_option("--match", match, "Match mode: colors|intensity|order (default: the palette's)");
+  app.add_option("--range-scale", rangeScale, "IntensityRangeScale S > 0: spreads the palette about its midpoint");
+  app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
+  app.add_option("--light", light, "Light position X,Y,Z in model units (the model fits a unit sphere)");
+  app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)");
+  app.add_flag("--headless", o.headless, "Render through EGL with no window");
+  app.add_option("--frames", o.frames, "Render N frames, then exit");
+  app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
+  app.add_flag("--info", o.info, "Print the model's load report as one line of JSON and exit");
+  app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
+  app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
+  app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    std::printf("%s", app.help().c_str());
+    return {std::nullopt, 0};
+  } catch (const CLI::ParseError& e) {
+    return {std::nullopt, fail(e.what())};
+  }
+  if (!path.empty()) {
+    o.path = parseRenderPath(path);
+    if (!o.path || *o.path == RenderPath::LitTextured) return {std::nullopt, fail("unknown --path '" + path + "': use stencil, triangle, vertex, pixel, smooth or reference")};
+  }
+  if (!match.empty()) {
+    o.match = parseMatchMode(match);
+    if (!o.match) return {std::nullopt, fail("unknown --match '" + match + "': use colors, intensity or order")};
+  }
+  if (!rangeScale.empty()) {
+    char* end = nullptr;
+    const float s = std::strtof(rangeScale.c_str(), &end);
+    if (*end != '\0' || !std::isfinite(s) || s <= 0.0f) return {std::nullopt, fail("--range-scale must be a finite number > 0, got '" + rangeScale + "'")};
+    o.rangeScale = s;
+  }
+  if (!size.empty()) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 16384 || h > 16384)
+      return {std::nullopt, fail("--size must be WxH with 1 <= W, H <= 16384, got '" + size + "'")};
+    o.size = {w, h};
+  }
+  if (!light.empty()) {
+    float v[3];
+    if (!parseFloats(light, 3, v)) return {std::nullopt, fail("--light must be three finite numbers X,Y,Z, got '" + light + "'")};
+    o.light = glm::vec3(v[0], v[1], v[2]);
+  }
+  if (!camera.empty()) {
+    float v[3];
+    if (!parseFloats(camera, 3, v) || v[2] <= 0.0f)
+      return {std::nullopt, fail("--camera must be YAW,PITCH,DISTANCE with DISTANCE > 0, got '" + camera + "'")};
+    o.camera = glm::vec3(v[0], v[1], v[2]);
+  }
+  if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
+  // --info reports a missing model as a failed load (exit 1), like any other load failure.
+  for (const auto& m : o.models)
+    if (!o.info && !std::filesystem::exists(m)) return {std::nullopt, fail("model file '" + m + "' does not exist")};
+  for (const auto& p : o.palettes)
+    if (!std::filesystem::exists(p)) return {std::nullopt, fail("palette file '" + p + "' does not exist")};
+  if (!o.paletteInfo.empty() && !std::filesystem::exists(o.paletteInfo))
+    return {std::nullopt, fail("palette file '" + o.paletteInfo + "' does not exist")};
+  return {o, 0};
+}
+
+}  // namespace npr

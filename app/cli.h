@@ -1,0 +1,43 @@
+// The command line (CLI11). Bad arguments give a one-line message and exit status 2.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/palette.h"
+#include "renderer/render_path.h"
+
+namespace npr {
+
+struct Options {
+  std::vector<std::string> models;  // the first is shown; --benchmark uses all
+  std::vector<std::string> palettes;
+  std::optional<RenderPath> path;
+  std::optional<MatchMode> match;
+  std::optional<float> rangeScale;
+  glm::ivec2 size{1280, 720};
+  std::optional<glm::vec3> light;
+  std::optional<glm::vec3> camera;  // yaw, pitch (degrees), distance (model radii)
+  bool headless = false;
+  int frames = 0;  // 0: run until closed (window) or 1 (headless)
+  std::string screenshot;
+  bool info = false;
+  std::string paletteInfo;
+  bool benchmark = false;
+  std::string outDir = "benchmark-results";
+  bool gouraud = false;
+  bool naiveStencil = false;
+};
+
+// Returns the options, or an exit status (0 after --help, 2 for bad arguments) with the
+// message already printed.
+struct ParseOutcome {
+  std::optional<Options> options;
+  int exitCode = 0;
+};
+ParseOutcome parseCommandLine(int argc, char** argv);
+
+}  // namespace npr

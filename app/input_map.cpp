@@ -1,0 +1,64 @@
+// Key-to-action table (see input_map.h).
+#include "app/input_map.h"
+
+#include <GLFW/glfw3.h>
+
+namespace npr {
+
+std::optional<KeyAction> actionForKey(int key, int mods) {
+  (void)mods;
+  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) return KeyAction{Action::SelectPalette, key - GLFW_KEY_1};
+  switch (key) {
+    case GLFW_KEY_ESCAPE: return KeyAction{Action::Quit};
+    case GLFW_KEY_F1:
+    case GLFW_KEY_TAB: return KeyAction{Action::ToggleOverlay};
+    case GLFW_KEY_H: return KeyAction{Action::ToggleHelp};
+    case GLFW_KEY_F12: return KeyAction{Action::Screenshot};
+    case GLFW_KEY_RIGHT_BRACKET: return KeyAction{Action::NextPalette};
+    case GLFW_KEY_LEFT_BRACKET: return KeyAction{Action::PreviousPalette};
+    case GLFW_KEY_M: return KeyAction{Action::CycleMatch};
+    case GLFW_KEY_EQUAL:  // '+' is shift+'=' on most layouts
+    case GLFW_KEY_KP_ADD: return KeyAction{Action::RangeScaleUp};
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: return KeyAction{Action::RangeScaleDown};
+    case GLFW_KEY_P: return KeyAction{Action::CyclePath};
+    case GLFW_KEY_B: return KeyAction{Action::ToggleSplit};
+    case GLFW_KEY_F: return KeyAction{Action::FrameModel};
+    case GLFW_KEY_R: return KeyAction{Action::ResetView};
+    case GLFW_KEY_L: return KeyAction{Action::ToggleLightFollow};
+    case GLFW_KEY_V: return KeyAction{Action::ToggleVsync};
+    case GLFW_KEY_A: return KeyAction{Action::MoveLight, 0};
+    case GLFW_KEY_D: return KeyAction{Action::MoveLight, 1};
+    case GLFW_KEY_S: return KeyAction{Action::MoveLight, 2};
+    case GLFW_KEY_W: return KeyAction{Action::MoveLight, 3};
+    case GLFW_KEY_Q: return KeyAction{Action::MoveLight, 4};
+    case GLFW_KEY_E: return KeyAction{Action::MoveLight, 5};
+    default: return std::nullopt;
+  }
+}
+
+const std::vector<Binding>& keyBindings() {
+  static const std::vector<Binding> b = {
+      {"Left drag", "orbit"},
+      {"Right / middle drag", "pan"},
+      {"Scroll", "zoom toward the cursor"},
+      {"Ctrl + left drag", "move the light in the view plane"},
+      {"W A S D / Q E", "move the light in y, x / z"},
+      {"L", "light follows the camera / stays in the scene"},
+      {"1-9, [ ]", "choose palette / previous, next"},
+      {"M", "cycle match mode"},
+      {"+ / -", "IntensityRangeScale up / down"},
+      {"P", "cycle render path"},
+      {"B", "split view: reference beside the chosen path"},
+      {"F / R", "frame the model / reset the view"},
+      {"V", "vsync on/off"},
+      {"F1 or Tab", "overlay"},
+      {"H", "this help"},
+      {"F12", "screenshot (PNG in the current folder)"},
+      {"Drop a file", "load a model (.obj .ply .off .stl .om) or palette (.palette)"},
+      {"Esc", "quit"},
+  };
+  return b;
+}
+
+}  // namespace npr

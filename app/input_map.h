@@ -1,0 +1,33 @@
+// Keyboard bindings: GLFW key codes to viewer actions, kept apart from the window so the
+// mapping is testable without one, and listed once for the help panel.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+namespace npr {
+
+enum class Action {
+  Quit, ToggleOverlay, ToggleHelp, Screenshot,
+  SelectPalette,  // param: palette number, 0-based
+  NextPalette, PreviousPalette, CycleMatch, RangeScaleUp, RangeScaleDown, CyclePath, ToggleSplit,
+  FrameModel, ResetView, ToggleLightFollow, ToggleVsync,
+  MoveLight,      // param: axis * 2 + (positive ? 1 : 0); axis 0 = x, 1 = y, 2 = z
+};
+
+struct KeyAction {
+  Action action;
+  int param = 0;
+  bool operator==(const KeyAction& o) const { return action == o.action && param == o.param; }
+};
+
+// `key` and `mods` are GLFW's codes. Returns nothing for unbound keys.
+std::optional<KeyAction> actionForKey(int key, int mods);
+
+struct Binding {
+  const char* keys;
+  const char* what;
+};
+const std::vector<Binding>& keyBindings();
+
+}  // namespace npr

@@ -1,0 +1,41 @@
+// npr-viewer: parses the command line and hands over to the window, --headless, --info,
+// or --palette-info. Exit status: 0 success, 1 a file failed to load or render,
+// 2 bad arguments.
+#include <cstdio>
+
+#include "app/cli.h"
+#include "app/headless_run.h"
+#include "app/window_viewer.h"
+#include "renderer/mesh_loader.h"
+#include "renderer/palette.h"
+
+int main(int argc, char** argv) {
+  const npr::ParseOutcome parsed = npr::parseCommandLine(argc, argv);
+  if (!parsed.options) return parsed.exitCode;
+  const npr::Options& o = *parsed.options;
+
+  if (o.info) {
+    if (o.models.empty()) {
+      std::fprintf(stderr, "npr-viewer: --info needs a MODEL file\n");
+      return 2;
+    }
+    npr::Result<npr::Mesh> m = npr::loadMesh(o.models.front());
+    if (!m) {
+      std::fprintf(stderr, "npr-viewer: %s\n", m.error().c_str());
+      return 1;
+    }
+    std::printf("%s\n", m->report.toJson().c_str());
+    return 0;
+  }
+  if (!o.paletteInfo.empty()) {
+    npr::Result<npr::Palette> p = npr::loadPalette(o.paletteInfo);
+    if (!p) {
+      std::fprintf(stderr, "npr-viewer: %s\n", p.error().c_str());
+      return 1;
+    }
+    std::printf("%s\n", npr::paletteReportJson(*p).c_str());
+    return 0;
+  }
+  if (o.headless) return npr::runHeadless(o);
+  return npr::runWindowViewer(o);
+}

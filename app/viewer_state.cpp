@@ -1,0 +1,104 @@
+// Viewer state: loading with rollback, palette discovery and the light (see viewer_state.h).
+#include "app/viewer_state.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "renderer/mesh_loader.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+
+std::string dataDirectory() {
+  if (const char* env = std::getenv("NPR_DATA_DIR"); env && *env) return env;
+  return NPR_SOURCE_DIR;
+}
+
+std::string defaultModelPath() { return (fs::path(dataDirectory()) / "models" / "bunny.obj").string(); }
+std::string defaultPalettePath() { return (fs::path(dataDirectory()) / "palettes" / "crosshatch" / "crosshatch.palette").string(); }
+
+std::vector<std::string> discoverPalettes() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  const fs::path root = fs::path(dataDirectory()) / "palettes";
+  for (const auto& dir : fs::directory_iterator(root, ec)) {
+    if (!dir.is_directory()) continue;
+    for (const auto& f : fs::directory_iterator(dir.path(), ec))
+      if (f.path().extension() == ".palette") out.push_back(f.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  // The default palette first, so key 1 is the style the viewer opened with.
+  auto it = std::find(out.begin(), out.end(), defaultPalettePath());
+  if (it != out.end()) std::rotate(out.begin(), it, it + 1);
+  return out;
+}
+
+void ViewerState::note(const std::string& message) {
+  messages.push_back(message);
+  if (messages.size() > 20) messages.erase(messages.begin());
+}
+
+Status ViewerState::loadModel(const std::string& path, Renderer& renderer) {
+  Result<Mesh> m = npr::loadMesh(path);
+  if (!m) {
+    note("model not loaded: " + m.error());
+    return Error{m.error()};
+  }
+  mesh = std::make_unique<Mesh>(std::move(*m));
+  renderer.setMesh(mesh.get());
+  for (const auto& w : mesh->report.warnings) note(w);
+  camera.frame(mesh->radius);
+  return okStatus();
+}
+
+Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
+  Result<Palette> p = npr::loadPalette(path);
+  if (!p) {
+    note("palette not loaded: " + p.error());
+    return Error{p.error()};
+  }
+  if (Status s = renderer.setPalette(*p); !s) {
+    note("palette not loaded: " + s.error());
+    return s;
+  }
+  palette = std::make_unique<Palette>(std::move(*p));
+  if (palette->defaultMatch) settings.match = *palette->defaultMatch;
+  settings.rangeScale = palette->defaultRangeScale.value_or(1.0f);
+  for (const auto& w : palette->warnings) note(w);
+  for (const auto& w : analysePalette(*palette).suitabilityWarnings(settings.match)) note(palette->name + ": " + w);
+  const auto it = std::find(palettes.begin(), palettes.end(), path);
+  if (it == palettes.end()) {
+    palettes.push_back(path);
+    paletteIndex = static_cast<int>(palettes.size()) - 1;
+  } else {
+    paletteIndex = static_cast<int>(it - palettes.begin());
+  }
+  return okStatus();
+}
+
+Status ViewerState::selectPalette(int index, Renderer& renderer) {
+  if (index < 0 || index >= static_cast<int>(palettes.size())) return Error{"no palette number " + std::to_string(index + 1)};
+  return loadPalette(palettes[static_cast<size_t>(index)], renderer);
+}
+
+glm::vec3 ViewerState::lightWorldPosition(const CameraMatrices& camera) const {
+  if (!lightFollowsCamera) return light;
+  return glm::vec3(glm::inverse(camera.view) * glm::vec4(light, 1.0f));
+}
+
+void ViewerState::applyLight(Renderer& renderer, const CameraMatrices& camera) const {
+  LightingState& l = renderer.lighting();
+  const float pos[4] = {light.x, light.y, light.z, 1.0f};
+  l.setModelView(lightFollowsCamera ? glm::mat4(1.0f) : camera.view);
+  l.Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  l.setModelView(camera.view);
+}
+
+void applyDefaultMaterial(LightingState& lighting) {
+  const float spec[4] = {0.35f, 0.35f, 0.35f, 1.0f};
+  lighting.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+  lighting.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+}
+
+}  // namespace npr

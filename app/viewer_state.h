@@ -1,0 +1,53 @@
+// What the viewer is showing: model, palette list, render settings, camera and light. Shared
+// by the window, --headless and --benchmark, so all three render a scene the same way.
+// Loads are all-or-nothing: a file that fails to load leaves the current one in place.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/mesh.h"
+#include "renderer/palette.h"
+#include "renderer/renderer.h"
+
+namespace npr {
+
+// Where the shipped models/ and palettes/ are (baked in at build time, overridable with the
+// NPR_DATA_DIR environment variable).
+std::string dataDirectory();
+std::string defaultModelPath();
+std::string defaultPalettePath();
+// The .palette files under palettes/, sorted by folder name.
+std::vector<std::string> discoverPalettes();
+
+struct ViewerState {
+  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<Palette> palette;
+  std::vector<std::string> palettes;  // what 1-9 and [ ] cycle through
+  int paletteIndex = -1;
+  RenderSettings settings;
+  OrbitCamera camera{30.0f, 20.0f, 3.0f};
+  glm::vec3 light{2.0f, 2.5f, 3.0f};  // scene space (model radius 1), or eye space when following
+  bool lightFollowsCamera = false;
+  bool splitView = false;  // reference on the left, the chosen path on the right
+  std::vector<std::string> messages;  // load errors and warnings, newest last, shown in the overlay
+
+  Status loadModel(const std::string& path, Renderer& renderer);
+  // Loads and selects a palette; the palette's own defaults (match mode, range scale) apply.
+  Status loadPalette(const std::string& path, Renderer& renderer);
+  Status selectPalette(int index, Renderer& renderer);
+  void note(const std::string& message);
+
+  // Sets the light for this frame's view (OpenGL semantics: the position is transformed by
+  // the modelview current when it is set).
+  void applyLight(Renderer& renderer, const CameraMatrices& camera) const;
+  glm::vec3 lightWorldPosition(const CameraMatrices& camera) const;
+};
+
+// The default material and light model of the viewer: OpenGL's defaults plus a modest
+// specular highlight, so hatching shows a highlight on glossy parts.
+void applyDefaultMaterial(LightingState& lighting);
+
+}  // namespace npr

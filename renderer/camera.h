@@ -1,0 +1,54 @@
+// The orbit camera users know from MeshLab and Blender: yaw and pitch about a target, a
+// distance, panning of the target, zoom toward the cursor. Pitch stops short of the poles so
+// the view never flips. Pure maths: the app maps input to these calls, tests check them.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace npr {
+
+struct CameraMatrices {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+};
+
+class OrbitCamera {
+ public:
+  static constexpr float kMaxPitch = 89.5f;  // degrees: the view direction never reaches the up axis
+
+  OrbitCamera() = default;
+  OrbitCamera(float yawDeg, float pitchDeg, float distance);
+
+  void orbit(float dYawDeg, float dPitchDeg);
+  void pan(const glm::vec2& ndcDelta, float aspect);  // moves the target with the cursor
+  // Zooms by `factor` (< 1 closer) toward the point under the cursor (ndc in [-1,1]^2).
+  void zoom(float factor, const glm::vec2& cursorNdc, float aspect);
+  // Frames a model of bounding radius `radius` centred at the origin.
+  void frame(float radius);
+  void reset();
+
+  void setYawPitchDistance(float yawDeg, float pitchDeg, float distance);
+  float yaw() const { return yaw_; }
+  float pitch() const { return pitch_; }
+  float distance() const { return distance_; }
+  const glm::vec3& target() const { return target_; }
+  glm::vec3 eyePosition() const;
+  float fovY() const { return fovYDeg_; }
+
+  // Near and far planes follow the distance and the model's radius, so depth precision is
+  // spent on the model however far away it is.
+  CameraMatrices matrices(float aspect) const;
+
+  float modelRadius() const { return radius_; }
+  float minDistance() const { return radius_ * 1e-3f; }
+  float maxDistance() const { return radius_ * 1e3f; }
+
+ private:
+  float yaw_ = 0.0f, pitch_ = 0.0f, distance_ = 3.0f;
+  glm::vec3 target_{0.0f};
+  float radius_ = 1.0f;
+  float fovYDeg_ = 40.0f;
+  float homeYaw_ = 0.0f, homePitch_ = 0.0f, homeDistance_ = 3.0f;
+};
+
+}  // namespace npr

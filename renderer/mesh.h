@@ -1,0 +1,48 @@
+// The mesh as the renderer sees it: an OpenMesh TriMesh (adjacency, normals) plus flat
+// arrays ready for the GPU and for per-triangle lighting, and the load report.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <glm/glm.hpp>
+
+namespace npr {
+
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+struct LoadReport {
+  std::string file;
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;              // every triangle that will be drawn
+  std::size_t polygons_triangulated = 0;  // faces with more than 3 corners
+  std::size_t skipped_faces = 0;          // faces that could not be drawn at all
+  std::size_t non_manifold_faces = 0;     // refused by the halfedge structure, drawn on copied vertices
+  std::vector<std::string> warnings;
+  double load_ms = 0.0;
+  glm::dvec3 original_centre{0.0};  // the model was translated by -centre ...
+  double original_scale = 1.0;      // ... then scaled by this to fit a unit sphere
+  std::string toJson() const;
+};
+
+struct Mesh {
+  TriMesh mesh;
+  // Flat copies for upload and for cache-friendly per-triangle work (structure of arrays).
+  std::vector<glm::vec3> positions;       // per vertex, centred and scaled
+  std::vector<glm::vec3> normals;         // per vertex, unit length (never NaN)
+  std::vector<std::uint32_t> indices;     // 3 per triangle, counter-clockwise
+  std::vector<glm::vec3> faceCentroids;   // per triangle
+  std::vector<glm::vec3> faceNormals;     // per triangle; zero for zero-area triangles
+  float radius = 1.0f;                    // bounding sphere radius about the origin
+  LoadReport report;
+
+  std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Fills the flat arrays and the normals from `mesh.mesh` (used by the loader and by meshes
+// built in code, e.g. the benchmark's generated icosphere).
+void finalizeMesh(Mesh& m);
+
+}  // namespace npr

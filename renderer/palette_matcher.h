@@ -1,0 +1,76 @@
+// Choosing a palette entry for a lit colour: the original's three match modes and its
+// IntensityRangeScale, with fixed tie-breaking and no linear scan per query.
+//
+//  MATCH_INTENSITY  query q = 3 x max(r,g,b); entry level = sum of its average's channels;
+//                   the entry whose level is nearest q.
+//  MATCH_ORDER      query q = r + g + b; entry t's level is (t + 1/2) x 3/N, so q indexes the
+//                   palette order (floor(q N / 3)), brighter light to later entries.
+//  MATCH_COLORS     the entry whose average colour is nearest in RGB (Euclidean).
+//
+// IntensityRangeScale S (finite, > 0) spreads the palette about its midpoint m: levels (or
+// average colours) L become m + S (L - m), with m the midpoint of the palette's [min, max]
+// (per channel for colours; 1.5 for order). S > 1 spreads a narrow palette over more of the
+// lighting range; S < 1 narrows it. Queries are not scaled.
+//
+// Ties (a query exactly between two levels, equal levels, equal distances) go to the lowest
+// palette index. Lit colours are in [0,1]; non-finite channels are taken as 0.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/palette.h"
+#include "renderer/result.h"
+
+namespace npr {
+
+struct PaletteBlend {
+  int a = 0, b = 0;  // palette indices
+  float t = 0.0f;    // weight of b; 0 shows a alone
+};
+
+class PaletteMatcher {
+ public:
+  static constexpr int kLut1DSize = 4096;  // samples of the 1D tone over q in [0, 3]
+  static constexpr int kLut3DSize = 64;    // samples per axis of the colour cube
+
+  static Result<PaletteMatcher> create(const std::vector<glm::vec3>& averages, MatchMode mode, float rangeScale);
+  static Status validateRangeScale(float s);
+
+  int match(const glm::vec3& lit) const;            // in [0, N)
+  PaletteBlend matchSmooth(const glm::vec3& lit) const;
+  // 1D modes: continuous position among the sorted distinct levels (what `smooth` blends by).
+  float tonePosition(const glm::vec3& lit) const;
+  float query(const glm::vec3& lit) const;          // the 1D query value q
+
+  MatchMode mode() const { return mode_; }
+  int size() const { return n_; }
+  float rangeScale() const { return scale_; }
+  const std::vector<float>& levels() const { return sortedLevels_; }       // 1D: distinct, ascending
+  const std::vector<int>& levelEntries() const { return levelEntry_; }     // 1D: lowest entry per level
+  const std::vector<glm::vec3>& scaledAverages() const { return scaled_; } // colours: after scaling
+
+  // GPU tables (built once per palette, mode and scale), sampled at the nearest grid point:
+  // 1D modes over q = 3 i / (kLut1DSize - 1); colours over c = (x, y, z) / (kLut3DSize - 1).
+  std::vector<std::uint8_t> buildLutIndex1D() const;  // R8: match()
+  std::vector<float> buildLutBlend1D() const;         // RGBA32F: matchSmooth() as (a, b, t, 0)
+  std::vector<std::uint8_t> buildLut3D() const;       // RG8: nearest and second nearest
+
+ private:
+  int nearestColour(const glm::vec3& c, int* second) const;
+  MatchMode mode_ = MatchMode::Intensity;
+  int n_ = 0;
+  float scale_ = 1.0f;
+  // 1D modes
+  std::vector<float> sortedLevels_;
+  std::vector<int> levelEntry_;
+  // colour mode: exact nearest search over per-cell candidate lists
+  std::vector<glm::vec3> scaled_;
+  static constexpr int kCells = 8;
+  std::vector<std::uint32_t> cellStart_;  // kCells^3 + 1 offsets into cellCandidates_
+  std::vector<std::uint16_t> cellCandidates_;
+};
+
+}  // namespace npr

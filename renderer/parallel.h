@@ -1,0 +1,33 @@
+// A minimal data-parallel loop: splits [0, n) into one contiguous chunk per hardware thread
+// (contiguous chunks keep each thread's memory traffic sequential).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace npr {
+
+inline int workerCount() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+// fn(begin, end, chunkIndex) runs on `chunks` threads (the calling thread takes chunk 0).
+template <class Fn>
+void parallelChunks(std::size_t n, int chunks, Fn&& fn) {
+  chunks = std::max(1, std::min<int>(chunks, static_cast<int>((n + 4095) / 4096)));
+  if (chunks == 1) {
+    fn(std::size_t(0), n, 0);
+    return;
+  }
+  std::vector<std::thread> threads;
+  threads.reserve(static_cast<size_t>(chunks - 1));
+  const std::size_t step = (n + static_cast<size_t>(chunks) - 1) / static_cast<size_t>(chunks);
+  for (int c = 1; c < chunks; ++c) {
+    const std::size_t b = std::min(n, step * static_cast<size_t>(c)), e = std::min(n, b + step);
+    threads.emplace_back([&fn, b, e, c] { fn(b, e, c); });
+  }
+  fn(std::size_t(0), std::min(n, step), 0);
+  for (auto& t : threads) t.join();
+}
+
+}  // namespace npr

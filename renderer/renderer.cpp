@@ -1,0 +1,597 @@
+// The render paths (see renderer.h).
+//
+// [SECTION] Pass states: every pass's fixed-function state in one visible place
+// [SECTION] Resources: mesh, palette and lookup-table uploads
+// [SECTION] Per-triangle shading cache
+// [SECTION] Frame: background, single-pass paths, the stencil path
+#include "renderer/renderer.h"
+
+#include <chrono>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/gl/gl_debug.h"
+#include "renderer/gl/gl_program.h"
+#include "renderer/lighting_uniforms.h"
+
+namespace npr {
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Pass states
+namespace {
+
+struct PassState {
+  bool depthTest = false, depthWrite = false, colorWrite = true, blend = false, stencilTest = false, scissor = false;
+  GLenum stencilFunc = GL_ALWAYS;
+  GLenum stencilPass = GL_KEEP;  // op when stencil and depth pass
+};
+
+// Background of every path: behind everything, touches no depth.
+constexpr PassState kBackgroundPass{};
+// Single-pass paths: ordinary depth-tested drawing.
+constexpr PassState kMeshPass{true, true, true, false, false, false, GL_ALWAYS, GL_KEEP};
+// Stencil path, per bucket: (1) the bucket's triangles mark visible pixels in the stencil,
+constexpr PassState kStencilMask{true, true, false, false, true, false, GL_ALWAYS, GL_REPLACE};
+// (2) the background where marked, (3) the palette layer blended over it, clearing the mark.
+constexpr PassState kStencilBackground{false, false, true, false, true, true, GL_EQUAL, GL_KEEP};
+constexpr PassState kStencilLayer{false, false, true, true, true, true, GL_EQUAL, GL_ZERO};
+
+void apply(const PassState& s) {
+  s.depthTest ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE);
+  const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
+  glColorMask(c, c, c, c);
+  if (s.blend) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  } else {
+    glDisable(GL_BLEND);
+  }
+  if (s.stencilTest) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(s.stencilFunc, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass);
+    glStencilMask(0xFF);
+  } else {
+    glDisable(GL_STENCIL_TEST);
+  }
+  s.scissor ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+}
+
+// Leaves the context as an overlay drawn after us expects it.
+void restoreDefaults() {
+  apply(kBackgroundPass);
+  glDisable(GL_SCISSOR_TEST);
+  glStencilMask(0xFF);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+bool nearlyEqual(float a, float b) { return std::fabs(a - b) <= 1e-5f * std::max(1.0f, std::max(std::fabs(a), std::fabs(b))); }
+bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) { return nearlyEqual(a.x, b.x) && nearlyEqual(a.y, b.y) && nearlyEqual(a.z, b.z); }
+
+// Whether per-triangle results can differ between two preparations of the lighting (in the
+// same space). The eye matters only to specular and two-sided terms.
+bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float>& b) {
+  if (a.count != b.count || a.lighting != b.lighting || a.specular != b.specular || a.localViewer != b.localViewer ||
+      a.twoSided != b.twoSided)
+    return false;
+  for (int s = 0; s < 2; ++s)
+    if (!nearlyEqual(a.base[s], b.base[s]) || a.shininess[s] != b.shininess[s]) return false;
+  if (a.specular || a.twoSided)
+    if (!nearlyEqual(a.eye, b.eye) || !nearlyEqual(a.viewDirection, b.viewDirection)) return false;
+  for (int i = 0; i < a.count; ++i) {
+    const auto &x = a.lights[i], &y = b.lights[i];
+    for (int s = 0; s < 2; ++s)
+      if (!nearlyEqual(x.ambient[s], y.ambient[s]) || !nearlyEqual(x.diffuse[s], y.diffuse[s]) ||
+          !nearlyEqual(x.specular[s], y.specular[s]))
+        return false;
+    if (x.positional != y.positional || !nearlyEqual(x.position, y.position) || x.spot != y.spot ||
+        !nearlyEqual(x.spotDirection, y.spotDirection) || x.spotExponent != y.spotExponent ||
+        x.spotCosCutoff != y.spotCosCutoff || x.k0 != y.k0 || x.k1 != y.k1 || x.k2 != y.k2)
+      return false;
+  }
+  return true;
+}
+
+enum TextureUnit { kUnitPalette = 0, kUnitBackground, kUnitLutIndex, kUnitLutBlend, kUnitLut3D, kUnitTriangleEntry };
+
+}  // namespace
+
+struct Renderer::GpuPalette {
+  gl::Texture layers;      // GL_TEXTURE_2D_ARRAY, RGBA8, one layer per entry
+  gl::Texture background;  // GL_TEXTURE_2D, only for an image background
+  std::vector<glm::ivec2> layerSizes;
+  bool sizesDiffer = false;
+  bool precomposited = false;
+  glm::vec3 backgroundColour{1.0f};
+  glm::ivec2 backgroundSize{1, 1};
+  bool backgroundImage = false;
+};
+
+Result<std::unique_ptr<Renderer>> Renderer::create() {
+  if (epoxy_gl_version() < 33) return Error{"the renderer needs OpenGL 3.3 or later; this context is " + std::to_string(epoxy_gl_version())};
+  std::unique_ptr<Renderer> r(new Renderer());
+  r->emptyVao_ = gl::createVertexArray();
+  for (auto& q : r->timers_) q = gl::createQuery();
+  return r;
+}
+
+Renderer::~Renderer() = default;
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Resources
+
+namespace {
+gl::Buffer uploadBuffer(GLenum target, const void* data, std::size_t bytes, GLenum usage) {
+  gl::Buffer b = gl::createBuffer();
+  glBindBuffer(target, b.id());
+  glBufferData(target, static_cast<GLsizeiptr>(bytes), data, usage);
+  return b;
+}
+}  // namespace
+
+void Renderer::setMesh(const Mesh* mesh) {
+  mesh_ = mesh;
+  ++meshGeneration_;
+  shadingKey_.valid = false;
+  vao_.reset();
+  positions_.reset();
+  normals_.reset();
+  indices_.reset();
+  bucketIndices_.reset();
+  triangleCount_ = 0;
+  if (!mesh || mesh->indices.empty()) return;
+  triangleCount_ = mesh->triangleCount();
+  vao_ = gl::createVertexArray();
+  glBindVertexArray(vao_.id());
+  positions_ = uploadBuffer(GL_ARRAY_BUFFER, mesh->positions.data(), mesh->positions.size() * sizeof(glm::vec3), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  normals_ = uploadBuffer(GL_ARRAY_BUFFER, mesh->normals.data(), mesh->normals.size() * sizeof(glm::vec3), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  indices_ = uploadBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh->indices.data(), mesh->indices.size() * sizeof(std::uint32_t), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  bucketIndices_ = gl::createBuffer();
+  stats_.bufferUploads += 3;
+}
+
+Status Renderer::setPalette(const Palette& p) {
+  const int n = static_cast<int>(p.entries.size());
+  if (n < 1 || n > kMaxPaletteEntries) return Error{"palette must have 1.." + std::to_string(kMaxPaletteEntries) + " entries"};
+  GLint maxLayers = 0, maxSize = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (n > maxLayers) return Error{"palette has " + std::to_string(n) + " entries; this GPU holds " + std::to_string(maxLayers) + " layers"};
+  auto gp = std::make_unique<GpuPalette>();
+  int w = 1, h = 1;
+  for (const auto& e : p.entries) {
+    w = std::max(w, e.image.width);
+    h = std::max(h, e.image.height);
+    gp->layerSizes.push_back({e.image.width, e.image.height});
+    gp->sizesDiffer |= gp->layerSizes.back() != gp->layerSizes.front();
+  }
+  if (w > maxSize || h > maxSize) return Error{"palette texture " + std::to_string(w) + "x" + std::to_string(h) + " exceeds this GPU's limit " + std::to_string(maxSize)};
+  const RgbaImage* bg = p.backgroundImage ? &*p.backgroundImage : nullptr;
+  // Precompositing each layer over the background is exact when the background is a solid
+  // colour or an image the size of every layer (both tile from the same screen corner).
+  gp->precomposited = !bg || (!gp->sizesDiffer && bg->width == w && bg->height == h);
+  gp->backgroundColour = p.backgroundColour;
+  gp->layers = gl::createTexture();
+  glActiveTexture(GL_TEXTURE0 + kUnitPalette);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers.id());
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  std::vector<std::uint8_t> flipped;
+  auto flipRows = [&](const RgbaImage& img) {
+    // Images are stored top row first; GL's rows start at the bottom of the screen.
+    const size_t row = static_cast<size_t>(img.width) * 4;
+    flipped.resize(img.pixels.size());
+    for (int y = 0; y < img.height; ++y)
+      std::memcpy(&flipped[static_cast<size_t>(img.height - 1 - y) * row], &img.pixels[static_cast<size_t>(y) * row], row);
+    return flipped.data();
+  };
+  for (int i = 0; i < n; ++i) {
+    const RgbaImage& src = p.entries[static_cast<size_t>(i)].image;
+    const RgbaImage img = gp->precomposited ? compositeOver(src, p.backgroundColour, bg) : src;
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img));
+  }
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
+  if (bg) {
+    gp->backgroundImage = true;
+    gp->backgroundSize = {bg->width, bg->height};
+    gp->background = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + kUnitBackground);
+    glBindTexture(GL_TEXTURE_2D, gp->background.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bg->width, bg->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(*bg));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  if (glGetError() == GL_OUT_OF_MEMORY) return Error{"palette upload failed: out of GPU memory"};
+  palette_ = std::move(gp);
+  paletteSize_ = n;
+  averages_ = p.averages();
+  ++paletteGeneration_;
+  stats_.bufferUploads += 1;
+  return okStatus();
+}
+
+Status Renderer::ensureMatcher(const RenderSettings& s) {
+  if (matcher_ && matcherKey_.palette == paletteGeneration_ && matcherKey_.mode == s.match && matcherKey_.scale == s.rangeScale)
+    return okStatus();
+  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, s.match, s.rangeScale);
+  if (!m) return Error{m.error()};
+  matcher_ = std::move(*m);
+  matcherKey_ = {paletteGeneration_, s.match, s.rangeScale};
+  ++matcherGeneration_;
+  ++stats_.lutBuilds;
+  const int L = PaletteMatcher::kLut1DSize;
+  glActiveTexture(GL_TEXTURE0 + kUnitLutIndex);
+  if (s.match == MatchMode::Colors) {
+    const int G = PaletteMatcher::kLut3DSize;
+    const std::vector<std::uint8_t> lut = matcher_->buildLut3D();
+    lut3D_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + kUnitLut3D);
+    glBindTexture(GL_TEXTURE_3D, lut3D_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RG8UI, G, G, G, 0, GL_RG_INTEGER, GL_UNSIGNED_BYTE, lut.data());
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 0);
+  } else {
+    const std::vector<std::uint8_t> index = matcher_->buildLutIndex1D();
+    const std::vector<float> blend = matcher_->buildLutBlend1D();
+    lutIndex_ = gl::createTexture();
+    glBindTexture(GL_TEXTURE_2D, lutIndex_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, L, 1, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, index.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    lutBlend_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + kUnitLutBlend);
+    glBindTexture(GL_TEXTURE_2D, lutBlend_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, L, 1, 0, GL_RGBA, GL_FLOAT, blend.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  ++stats_.bufferUploads;
+  return okStatus();
+}
+
+Result<GLuint> Renderer::program(const std::string& vertex, const std::string& fragment, std::vector<std::string> defines) {
+  std::string key = vertex + "|" + fragment;
+  for (const auto& d : defines) key += "|" + d;
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return it->second.id();
+  Result<gl::Program> p = gl::buildProgram(vertex, fragment, defines);
+  if (!p) return Error{p.error()};
+  ++stats_.shaderBuilds;
+  const GLuint id = p->id();
+  programs_.emplace(key, std::move(*p));
+  return id;
+}
+
+std::vector<std::string> Renderer::paletteDefines(MatchMode mode) const {
+  std::vector<std::string> d;
+  d.push_back("PALETTE_SIZE " + std::to_string(paletteSize_));
+  if (palette_->sizesDiffer) d.push_back("LAYER_SIZES_DIFFER");
+  if (palette_->precomposited) d.push_back("PALETTE_PRECOMPOSITED");
+  else if (palette_->backgroundImage) d.push_back("BACKGROUND_IMAGE");
+  d.push_back(mode == MatchMode::Colors ? "MATCH_COLORS" : mode == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
+  d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
+  d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));
+  return d;
+}
+
+void Renderer::bindPaletteTextures(GLuint prog) const {
+  glActiveTexture(GL_TEXTURE0 + kUnitPalette);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, palette_->layers.id());
+  gl::setUniform(prog, "uPalette", int(kUnitPalette));
+  if (palette_->sizesDiffer) gl::setUniformArray(prog, "uLayerSize", palette_->layerSizes.data(), paletteSize_);
+  else gl::setUniform(prog, "uLayerSize0", palette_->layerSizes[0]);
+  if (palette_->backgroundImage) {
+    glActiveTexture(GL_TEXTURE0 + kUnitBackground);
+    glBindTexture(GL_TEXTURE_2D, palette_->background.id());
+    gl::setUniform(prog, "uBackground", int(kUnitBackground));
+    gl::setUniform(prog, "uBackgroundSize", palette_->backgroundSize);
+  }
+  gl::setUniform(prog, "uBackgroundColour", palette_->backgroundColour);
+  if (matcher_ && matcher_->mode() == MatchMode::Colors) {
+    glActiveTexture(GL_TEXTURE0 + kUnitLut3D);
+    glBindTexture(GL_TEXTURE_3D, lut3D_.id());
+    gl::setUniform(prog, "uLut3D", int(kUnitLut3D));
+    gl::setUniformArray(prog, "uAverages", matcher_->scaledAverages().data(), paletteSize_);
+  } else {
+    glActiveTexture(GL_TEXTURE0 + kUnitLutIndex);
+    glBindTexture(GL_TEXTURE_2D, lutIndex_.id());
+    gl::setUniform(prog, "uLutIndex", int(kUnitLutIndex));
+    glActiveTexture(GL_TEXTURE0 + kUnitLutBlend);
+    glBindTexture(GL_TEXTURE_2D, lutBlend_.id());
+    gl::setUniform(prog, "uLutBlend", int(kUnitLutBlend));
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Per-triangle shading cache
+
+void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMatrices& camera, const RenderSettings& s,
+                                     const glm::ivec4& viewport) {
+  const bool wantBuckets = s.path == RenderPath::Stencil;
+  const bool rigid = isRigid(modelView);
+  PreparedLighting<float> prepared = prepareLighting<float>(lighting_, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
+  const bool same = shadingKey_.valid && rigid && shadingKey_.mesh == meshGeneration_ &&
+                    shadingKey_.matcher == matcherGeneration_ && (shadingKey_.buckets || !wantBuckets) &&
+                    sameLighting(shadingKey_.lighting, prepared);
+  if (!same) {
+    const auto t0 = std::chrono::steady_clock::now();
+    TriangleShadingOptions opt;
+    opt.buildBuckets = wantBuckets;
+    shadeTriangles(*mesh_, lighting_, modelView, *matcher_, opt, shading_);
+    stats_.cpuShadingMs += msSince(t0);
+    ++stats_.lightingRecomputes;
+    shadingKey_ = {meshGeneration_, matcherGeneration_, prepared, rigid, wantBuckets};
+    entriesUploaded_ = bucketsUploaded_ = false;
+    boundsViewport_ = glm::ivec2(0);
+  }
+  if (s.path == RenderPath::Triangle && !entriesUploaded_) {
+    if (!entryBuffer_) entryBuffer_ = gl::createBuffer();
+    glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
+    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(shading_.entry.size()), shading_.entry.data(), GL_STREAM_DRAW);
+    if (!entryTexture_) entryTexture_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
+    glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, entryBuffer_.id());
+    glActiveTexture(GL_TEXTURE0);
+    entriesUploaded_ = true;
+    ++stats_.bufferUploads;
+  }
+  if (wantBuckets && !bucketsUploaded_) {
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(shading_.bucketIndices.size() * sizeof(std::uint32_t)),
+                 shading_.bucketIndices.data(), GL_STREAM_DRAW);
+    glBindVertexArray(0);
+    bucketsUploaded_ = true;
+    ++stats_.bufferUploads;
+  }
+  if (wantBuckets && s.stencilScissor) {
+    const glm::mat4 mvp = camera.projection * modelView;
+    const glm::ivec2 size(viewport.z, viewport.w);
+    if (mvp != boundsViewProjection_ || size != boundsViewport_) {
+      const auto t0 = std::chrono::steady_clock::now();
+      computeBucketBounds(*mesh_, mvp, size, 0, shading_);
+      stats_.cpuShadingMs += msSince(t0);
+      boundsViewProjection_ = mvp;
+      boundsViewport_ = size;
+    }
+  }
+  stats_.nonEmptyBuckets = shading_.nonEmptyBuckets;
+}
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Frame
+
+void Renderer::setMeshUniforms(GLuint prog, const CameraMatrices& camera) {
+  const glm::mat4 modelView = camera.view;  // the mesh is already centred and scaled
+  gl::setUniform(prog, "uModelView", modelView);
+  gl::setUniform(prog, "uProjection", camera.projection);
+  gl::setUniform(prog, "uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(modelView))));
+}
+
+void Renderer::drawBackground(const glm::ivec4& viewport) {
+  std::vector<std::string> d = {"QUAD_BACKGROUND"};
+  if (palette_ && palette_->backgroundImage) d.push_back("BACKGROUND_IMAGE");
+  Result<GLuint> prog = program("fullscreen.vert", "quad.frag", d);
+  if (!prog) return;
+  apply(kBackgroundPass);
+  glUseProgram(*prog);
+  (void)viewport;
+  if (palette_ && palette_->backgroundImage) {
+    glActiveTexture(GL_TEXTURE0 + kUnitBackground);
+    glBindTexture(GL_TEXTURE_2D, palette_->background.id());
+    glActiveTexture(GL_TEXTURE0);
+    gl::setUniform(*prog, "uBackground", int(kUnitBackground));
+    gl::setUniform(*prog, "uBackgroundSize", palette_->backgroundSize);
+  } else {
+    gl::setUniform(*prog, "uBackgroundColour", palette_ ? palette_->backgroundColour : glm::vec3(1.0f));
+  }
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  ++stats_.drawCalls;
+}
+
+Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  const auto frameStart = std::chrono::steady_clock::now();
+  stats_.cpuShadingMs = 0.0;
+  stats_.lightingRecomputes = stats_.bufferUploads = stats_.shaderBuilds = stats_.lutBuilds = stats_.drawCalls = 0;
+  stats_.nonEmptyBuckets = 0;
+  if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
+  if (!palette_ && s.path != RenderPath::Reference) return Error{"no palette loaded"};
+  if (palette_) if (Status st = ensureMatcher(s); !st) return st;
+
+  // GPU timing: read the oldest finished query, then time this frame.
+  const int slots = 4;
+  for (int k = 0; k < slots; ++k) {
+    const int i = (timerIndex_ + k) % slots;
+    if (!timerPending_[i]) continue;
+    GLint available = 0;
+    glGetQueryObjectiv(timers_[i].id(), GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) continue;
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(timers_[i].id(), GL_QUERY_RESULT, &ns);
+    stats_.gpuMs = double(ns) * 1e-6;
+    timerPending_[i] = false;
+  }
+  const int timer = timerIndex_;
+  const bool timing = !timerPending_[timer];
+  if (timing) glBeginQuery(GL_TIME_ELAPSED, timers_[timer].id());
+
+  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
+  apply(kMeshPass);
+  glEnable(GL_SCISSOR_TEST);  // confines the clears to our viewport (split view)
+  glClearDepth(1.0);
+  glClearStencil(0);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  if (s.drawBackground) drawBackground(viewport);
+
+  Status result = okStatus();
+  if (mesh_ && triangleCount_ > 0) {
+    if (s.path == RenderPath::Stencil) {
+      result = renderStencil(camera, s, viewport);
+    } else {
+      if (s.path == RenderPath::Triangle) ensureTriangleShading(camera.view, camera, s, viewport);
+      // The triangle path's lighting happened on the CPU: its shader has no lighting at all.
+      std::vector<std::string> d;
+      if (s.path != RenderPath::Triangle) d = lighting_.features().glslDefines();
+      switch (s.path) {
+        case RenderPath::Triangle: d.push_back("PATH_TRIANGLE"); break;
+        case RenderPath::Vertex: d.push_back("PATH_VERTEX"); d.push_back("PER_VERTEX_LIGHTING"); break;
+        case RenderPath::Pixel: d.push_back("PATH_PIXEL"); break;
+        case RenderPath::Smooth: d.push_back("PATH_SMOOTH"); break;
+        case RenderPath::LitTextured: d.push_back("PATH_LIT_TEXTURED"); break;
+        case RenderPath::Reference:
+          if (s.referenceGouraud) { d.push_back("PATH_GOURAUD"); d.push_back("PER_VERTEX_LIGHTING"); }
+          else d.push_back("PATH_PHONG");
+          break;
+        case RenderPath::Stencil: break;
+      }
+      const bool usesPalette = s.path != RenderPath::Reference;
+      if (usesPalette) for (auto& x : paletteDefines(s.match)) d.push_back(x);
+      Result<GLuint> prog = program("mesh.vert", "mesh.frag", d);
+      if (!prog) {
+        result = Error{prog.error()};
+      } else {
+        apply(kMeshPass);
+        glUseProgram(*prog);
+        setMeshUniforms(*prog, camera);
+        if (s.path != RenderPath::Triangle) uploadLightingUniforms(*prog, prepareLighting<float>(lighting_));
+        if (usesPalette) bindPaletteTextures(*prog);
+        if (s.path == RenderPath::Triangle) {
+          glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
+          glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
+          glActiveTexture(GL_TEXTURE0);
+          gl::setUniform(*prog, "uTriangleEntry", int(kUnitTriangleEntry));
+        }
+        glBindVertexArray(vao_.id());
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+        ++stats_.drawCalls;
+      }
+    }
+  }
+  if (timing) {
+    glEndQuery(GL_TIME_ELAPSED);
+    timerPending_[timer] = true;
+    timerIndex_ = (timerIndex_ + 1) % slots;
+  }
+  restoreDefaults();
+  stats_.cpuFrameMs = msSince(frameStart);
+  return result;
+}
+
+Status Renderer::renderStencil(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  ensureTriangleShading(camera.view, camera, s, viewport);
+  Result<GLuint> mask = program("mesh.vert", "mesh.frag", {"PATH_MASK"});
+  if (!mask) return Error{mask.error()};
+  std::vector<std::string> bgDefines = {"QUAD_BACKGROUND"};
+  if (palette_->backgroundImage) bgDefines.push_back("BACKGROUND_IMAGE");
+  Result<GLuint> bgQuad = program("fullscreen.vert", "quad.frag", bgDefines);
+  if (!bgQuad) return Error{bgQuad.error()};
+  Result<GLuint> layerQuad = program("fullscreen.vert", "quad.frag", {"QUAD_LAYER"});
+  if (!layerQuad) return Error{layerQuad.error()};
+
+  glUseProgram(*mask);
+  setMeshUniforms(*mask, camera);
+  glUseProgram(*bgQuad);
+  if (palette_->backgroundImage) {
+    glActiveTexture(GL_TEXTURE0 + kUnitBackground);
+    glBindTexture(GL_TEXTURE_2D, palette_->background.id());
+    gl::setUniform(*bgQuad, "uBackground", int(kUnitBackground));
+    gl::setUniform(*bgQuad, "uBackgroundSize", palette_->backgroundSize);
+  } else {
+    gl::setUniform(*bgQuad, "uBackgroundColour", palette_->backgroundColour);
+  }
+  glUseProgram(*layerQuad);
+  glActiveTexture(GL_TEXTURE0 + kUnitPalette);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, palette_->layers.id());
+  glActiveTexture(GL_TEXTURE0);
+  gl::setUniform(*layerQuad, "uPalette", int(kUnitPalette));
+
+  for (int k = 0; k < paletteSize_; ++k) {
+    const std::uint32_t first = shading_.bucketStart[static_cast<size_t>(k)];
+    const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - first;
+    if (count == 0 && s.stencilSkipEmpty) continue;
+    glm::ivec4 rect(viewport.x, viewport.y, viewport.z, viewport.w);
+    if (s.stencilScissor) {
+      const glm::ivec4& b = shading_.bucketBounds[static_cast<size_t>(k)];
+      rect = glm::ivec4(viewport.x + b.x, viewport.y + b.y, b.z - b.x, b.w - b.y);
+      if (count > 0 && (rect.z <= 0 || rect.w <= 0)) {
+        // Entirely off screen: its triangles still write depth that later buckets test against.
+        rect = glm::ivec4(viewport.x, viewport.y, 0, 0);
+      }
+    }
+    // (1) mark the pixels where this bucket's triangles are visible so far
+    apply(kStencilMask);
+    glUseProgram(*mask);
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
+    if (count > 0) {
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
+                     reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(std::uint32_t)));
+      ++stats_.drawCalls;
+    }
+    if (rect.z <= 0 || rect.w <= 0) continue;
+    glScissor(rect.x, rect.y, rect.z, rect.w);
+    glBindVertexArray(emptyVao_.id());
+    // (2) the background under the marked pixels
+    apply(kStencilBackground);
+    glUseProgram(*bgQuad);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // (3) the palette layer blended over it; the stencil mark is cleared as it is drawn
+    apply(kStencilLayer);
+    glUseProgram(*layerQuad);
+    gl::setUniform(*layerQuad, "uLayer", k);
+    gl::setUniform(*layerQuad, "uLayerSize", palette_->layerSizes[static_cast<size_t>(k)]);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    stats_.drawCalls += 2;
+  }
+  glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
+  return okStatus();
+}
+
+void Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,
+                          const glm::ivec4& viewport) {
+  Result<GLuint> prog = program("marker.vert", "marker.frag", {});
+  if (!prog) return;
+  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  apply(kBackgroundPass);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glUseProgram(*prog);
+  gl::setUniform(*prog, "uViewProjection", camera.projection * camera.view);
+  gl::setUniform(*prog, "uPosition", worldPosition);
+  gl::setUniform(*prog, "uColour", colour);
+  gl::setUniform(*prog, "uPointSize", pixels);
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_POINTS, 0, 1);
+  glDisable(GL_PROGRAM_POINT_SIZE);
+  restoreDefaults();
+}
+
+}  // namespace npr

@@ -1,0 +1,139 @@
+// The palette renderer: draws a mesh with a palette along one of several paths that trade
+// speed for accuracy. All paths light with the shared lighting model (lighting_model.h and
+// shaders/lighting.glsl) and match with the shared PaletteMatcher; they differ only in where
+// lighting is sampled and how the palette reaches the screen (always in screen space).
+//
+// The renderer draws into whatever framebuffer is bound (the window's, or an
+// OffscreenTarget) and needs a current OpenGL 3.3+ core context. It never sees a window.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/camera.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/lighting_state.h"
+#include "renderer/mesh.h"
+#include "renderer/palette.h"
+#include "renderer/palette_matcher.h"
+#include "renderer/render_path.h"
+#include "renderer/result.h"
+#include "renderer/triangle_shading.h"
+
+namespace npr {
+
+struct RenderSettings {
+  RenderPath path = RenderPath::Pixel;
+  MatchMode match = MatchMode::Intensity;
+  float rangeScale = 1.0f;
+  bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
+  // Stencil path refinements over the original (off = the naive full-screen version):
+  bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
+  bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
+  bool drawBackground = true;
+};
+
+// What the last frame did: the counters are zero on frames where nothing they depend on
+// changed (the benchmark and the overlay show them).
+struct FrameStats {
+  double cpuShadingMs = 0.0;   // per-triangle lighting, matching and bucketing
+  double cpuFrameMs = 0.0;     // everything render() did on the CPU
+  double gpuMs = -1.0;         // GPU time of the most recent frame whose timer query finished
+  int nonEmptyBuckets = 0;
+  int lightingRecomputes = 0;  // per-triangle shading runs
+  int bufferUploads = 0;       // mesh, bucket, per-triangle entry and LUT uploads
+  int shaderBuilds = 0;
+  int lutBuilds = 0;
+  int drawCalls = 0;
+};
+
+class Renderer {
+ public:
+  static Result<std::unique_ptr<Renderer>> create();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads the mesh. The renderer keeps a pointer for per-triangle shading: call again
+  // (or with nullptr) before the mesh is destroyed or replaced.
+  void setMesh(const Mesh* mesh);
+  // Uploads the palette; on failure the current one stays in place.
+  Status setPalette(const Palette& palette);
+
+  // The OpenGL-like lighting state (Lightfv, Materialfv, ...).
+  LightingState& lighting() { return lighting_; }
+  const LightingState& lighting() const { return lighting_; }
+
+  // Draws one frame into the bound framebuffer's `viewport` (x, y, width, height).
+  Status render(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+  // A small screen-facing disc at `worldPosition` (the light marker).
+  void drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,
+                  const glm::ivec4& viewport);
+
+  const FrameStats& stats() const { return stats_; }
+  // The matcher of the last frame (for tests and the benchmark's accuracy reference).
+  const PaletteMatcher* matcher() const { return matcher_ ? &*matcher_ : nullptr; }
+  const TriangleShading& triangleShading() const { return shading_; }
+  int paletteSize() const { return paletteSize_; }
+
+ private:
+  Renderer() = default;
+  struct GpuPalette;
+  struct ProgramKey;
+  Result<GLuint> program(const std::string& vertex, const std::string& fragment, std::vector<std::string> defines);
+  Status ensureMatcher(const RenderSettings& s);
+  void ensureTriangleShading(const glm::mat4& modelView, const CameraMatrices& camera, const RenderSettings& s,
+                             const glm::ivec4& viewport);
+  std::vector<std::string> paletteDefines(MatchMode mode) const;
+  void bindPaletteTextures(GLuint program) const;
+  void drawBackground(const glm::ivec4& viewport);
+  Status renderStencil(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport);
+  void setMeshUniforms(GLuint program, const CameraMatrices& camera);
+
+  LightingState lighting_;
+  FrameStats stats_;
+
+  // Mesh
+  const Mesh* mesh_ = nullptr;
+  unsigned meshGeneration_ = 0;
+  gl::VertexArray vao_;
+  gl::Buffer positions_, normals_, indices_, bucketIndices_;
+  gl::Buffer entryBuffer_;
+  gl::Texture entryTexture_;
+  std::size_t triangleCount_ = 0;
+
+  // Palette
+  std::unique_ptr<GpuPalette> palette_;
+  int paletteSize_ = 0;
+  unsigned paletteGeneration_ = 0;
+  std::vector<glm::vec3> averages_;
+
+  // Matching
+  std::optional<PaletteMatcher> matcher_;
+  struct MatcherKey { unsigned palette = 0; MatchMode mode = MatchMode::Intensity; float scale = 0; } matcherKey_;
+  unsigned matcherGeneration_ = 0;
+  gl::Texture lutIndex_, lutBlend_, lut3D_;
+
+  // Per-triangle shading cache
+  TriangleShading shading_;
+  struct ShadingKey {
+    unsigned mesh = 0, matcher = 0;
+    PreparedLighting<float> lighting;
+    bool valid = false, buckets = false;
+  } shadingKey_;
+  bool entriesUploaded_ = false, bucketsUploaded_ = false;
+  glm::mat4 boundsViewProjection_{0.0f};
+  glm::ivec2 boundsViewport_{0};
+
+  // Programs, cached by variant: toggling features back and forth costs no rebuild.
+  std::map<std::string, gl::Program> programs_;
+  gl::VertexArray emptyVao_;
+  gl::Query timers_[4];
+  int timerIndex_ = 0;
+  bool timerPending_[4] = {false, false, false, false};
+};
+
+}  // namespace npr

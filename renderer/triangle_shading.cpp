@@ -1,0 +1,137 @@
+// Per-triangle lighting, matching and bucketing (see triangle_shading.h).
+#include "renderer/triangle_shading.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/parallel.h"
+
+namespace npr {
+
+bool isRigid(const glm::mat4& m) {
+  const glm::mat3 r(m);
+  const glm::mat3 d = glm::transpose(r) * r - glm::mat3(1.0f);
+  for (int c = 0; c < 3; ++c)
+    for (int k = 0; k < 3; ++k)
+      if (!(std::fabs(d[c][k]) < 1e-4f)) return false;
+  return m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
+}
+
+void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
+                    const PaletteMatcher& matcher, const TriangleShadingOptions& opt, TriangleShading& out) {
+  const size_t nt = mesh.triangleCount();
+  const int entries = matcher.size();
+  out.entry.resize(nt);
+  const bool rigid = isRigid(modelView);
+  const PreparedLighting<float> p = prepareLighting<float>(lighting, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
+  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
+  const int chunks = opt.threads > 0 ? opt.threads : workerCount();
+  std::vector<std::vector<std::uint32_t>> counts(static_cast<size_t>(chunks), std::vector<std::uint32_t>(static_cast<size_t>(entries), 0));
+  const glm::vec3* centroids = mesh.faceCentroids.data();
+  const glm::vec3* normals = mesh.faceNormals.data();
+  std::uint8_t* entry = out.entry.data();
+
+  parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+    std::uint32_t* cnt = counts[static_cast<size_t>(c)].data();
+    for (size_t i = b; i < e; ++i) {
+      glm::vec3 pos = centroids[i], n = normals[i];
+      if (!rigid) {
+        pos = glm::vec3(modelView * glm::vec4(pos, 1.0f));
+        n = normalMatrix * n;
+      }
+      // Facing decides the material only under two-sided lighting; skip the test otherwise.
+      const bool back = p.twoSided && glm::dot(n, p.eye - pos) < 0.0f;
+      const int k = matcher.match(shade(p, pos, n, back));
+      entry[i] = static_cast<std::uint8_t>(k);
+      ++cnt[k];
+    }
+  });
+
+  out.nonEmptyBuckets = 0;
+  out.bucketStart.assign(static_cast<size_t>(entries) + 1, 0);
+  for (int k = 0; k < entries; ++k) {
+    std::uint32_t total = 0;
+    for (const auto& cnt : counts) total += cnt[static_cast<size_t>(k)];
+    out.bucketStart[static_cast<size_t>(k) + 1] = out.bucketStart[static_cast<size_t>(k)] + total;
+    out.nonEmptyBuckets += total > 0;
+  }
+  if (!opt.buildBuckets) return;
+
+  // Each chunk writes its triangles of bucket k after those of the chunks before it, so the
+  // scatter runs in parallel without atomics and the order within a bucket is the mesh order.
+  std::vector<std::vector<std::uint32_t>> cursor(counts.size(), std::vector<std::uint32_t>(static_cast<size_t>(entries)));
+  for (int k = 0; k < entries; ++k) {
+    std::uint32_t at = out.bucketStart[static_cast<size_t>(k)];
+    for (size_t c = 0; c < counts.size(); ++c) {
+      cursor[c][static_cast<size_t>(k)] = at;
+      at += counts[c][static_cast<size_t>(k)];
+    }
+  }
+  out.bucketIndices.resize(nt * 3);
+  const std::uint32_t* idx = mesh.indices.data();
+  std::uint32_t* dst = out.bucketIndices.data();
+
+  parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+    std::uint32_t* cur = cursor[static_cast<size_t>(c)].data();
+    for (size_t i = b; i < e; ++i) {
+      const int k = entry[i];
+      const std::uint32_t at = cur[k]++;
+      dst[at * 3 + 0] = idx[i * 3 + 0];
+      dst[at * 3 + 1] = idx[i * 3 + 1];
+      dst[at * 3 + 2] = idx[i * 3 + 2];
+    }
+  });
+}
+
+void computeBucketBounds(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+                         TriangleShading& shading) {
+  const int entries = static_cast<int>(shading.bucketStart.size()) - 1;
+  shading.bucketBounds.assign(static_cast<size_t>(std::max(entries, 0)), glm::ivec4(0));
+  if (entries <= 0) return;
+  const int chunks = threads > 0 ? threads : workerCount();
+  const size_t nv = mesh.positions.size();
+  std::vector<glm::vec2> screen(nv);
+  const glm::vec2 half = glm::vec2(viewport) * 0.5f;
+  parallelChunks(nv, chunks, [&](size_t b, size_t e, int) {
+    for (size_t v = b; v < e; ++v) {
+      const glm::vec4 cp = modelViewProjection * glm::vec4(mesh.positions[v], 1.0f);
+      // Behind the eye the projection is meaningless: mark it so the bucket spans the screen.
+      screen[v] = cp.w > 1e-6f ? (glm::vec2(cp) / cp.w + 1.0f) * half : glm::vec2(NAN);
+    }
+  });
+  const glm::ivec4 empty(INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN);
+  std::vector<std::vector<glm::ivec4>> partial(static_cast<size_t>(chunks), std::vector<glm::ivec4>(static_cast<size_t>(entries), empty));
+  const std::uint32_t* idx = shading.bucketIndices.data();
+  const size_t nt = shading.bucketIndices.size() / 3;
+  parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+    glm::ivec4* bb = partial[static_cast<size_t>(c)].data();
+    // Triangles are grouped by bucket: walk the bucket boundaries alongside.
+    size_t k = static_cast<size_t>(std::upper_bound(shading.bucketStart.begin(), shading.bucketStart.end(), b) - shading.bucketStart.begin()) - 1;
+    for (size_t i = b; i < e; ++i) {
+      while (i >= shading.bucketStart[k + 1]) ++k;
+      glm::ivec4& r = bb[k];
+      const glm::vec2 a = screen[idx[i * 3]], s1 = screen[idx[i * 3 + 1]], s2 = screen[idx[i * 3 + 2]];
+      if (std::isnan(a.x) || std::isnan(s1.x) || std::isnan(s2.x)) {
+        r = glm::ivec4(-1, -1, viewport.x + 1, viewport.y + 1);
+        continue;
+      }
+      const glm::vec2 lo = glm::max(glm::min(a, glm::min(s1, s2)), glm::vec2(-2.0f));
+      const glm::vec2 hi = glm::min(glm::max(a, glm::max(s1, s2)), glm::vec2(viewport) + 2.0f);
+      // One pixel of margin covers rasterisation rounding at the rectangle's edges.
+      r = glm::ivec4(std::min(r.x, int(std::floor(lo.x)) - 1), std::min(r.y, int(std::floor(lo.y)) - 1),
+                     std::max(r.z, int(std::ceil(hi.x)) + 1), std::max(r.w, int(std::ceil(hi.y)) + 1));
+    }
+  });
+  for (int k = 0; k < entries; ++k) {
+    glm::ivec4 r = empty;
+    for (const auto& p : partial) {
+      const glm::ivec4& q = p[static_cast<size_t>(k)];
+      r = glm::ivec4(std::min(r.x, q.x), std::min(r.y, q.y), std::max(r.z, q.z), std::max(r.w, q.w));
+    }
+    if (r.z > r.x && r.w > r.y)
+      shading.bucketBounds[static_cast<size_t>(k)] =
+          glm::ivec4(std::max(r.x, 0), std::max(r.y, 0), std::min(r.z, viewport.x), std::min(r.w, viewport.y));
+  }
+}
+
+}  // namespace npr

@@ -1,0 +1,52 @@
+// Fragment stage of every mesh pass; one PATH_* define selects what it does:
+//  PATH_MASK       stencil path: depth and stencil only
+//  PATH_TRIANGLE   the CPU's per-triangle choice, read by gl_PrimitiveID
+//  PATH_VERTEX     lit per vertex, matched per pixel
+//  PATH_PIXEL      lit and matched per pixel
+//  PATH_SMOOTH     lit per pixel, two bracketing entries blended
+//  PATH_PHONG      reference: the lit colour, per pixel
+//  PATH_GOURAUD    reference: the lit colour, per vertex
+//  PATH_LIT_TEXTURED  benchmark floor: per-pixel lighting times one screen-space fetch
+
+#if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
+#include "lighting.glsl"
+#endif
+#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD)
+#include "palette.glsl"
+#endif
+
+in vec3 vPosition;
+in vec3 vNormal;
+#if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
+in vec3 vColorFront;
+in vec3 vColorBack;
+#endif
+#ifdef PATH_TRIANGLE
+uniform usamplerBuffer uTriangleEntry;
+#endif
+
+out vec4 fragColor;
+
+void main() {
+#if defined(PATH_MASK)
+  fragColor = vec4(0.0);
+#elif defined(PATH_TRIANGLE)
+  fragColor = vec4(paletteColour(int(texelFetch(uTriangleEntry, gl_PrimitiveID).r)), 1.0);
+#elif defined(PATH_VERTEX)
+  vec3 lit = gl_FrontFacing ? vColorFront : vColorBack;
+  fragColor = vec4(paletteColour(matchEntry(lit)), 1.0);
+#elif defined(PATH_GOURAUD)
+  fragColor = vec4(gl_FrontFacing ? vColorFront : vColorBack, 1.0);
+#else
+  vec3 lit = shadeGL(vPosition, vNormal, !gl_FrontFacing);
+#if defined(PATH_PIXEL)
+  fragColor = vec4(paletteColour(matchEntry(lit)), 1.0);
+#elif defined(PATH_SMOOTH)
+  fragColor = vec4(paletteBlend(lit), 1.0);
+#elif defined(PATH_PHONG)
+  fragColor = vec4(lit, 1.0);
+#elif defined(PATH_LIT_TEXTURED)
+  fragColor = vec4(lit * paletteColour(0), 1.0);
+#endif
+#endif
+}

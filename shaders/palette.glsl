@@ -1,0 +1,73 @@
+// Screen-space palette sampling and matching. A palette texel maps to a pixel and tiles
+// from the window's corner, so patterns stay flat to the camera whatever the depth.
+// Layers are stored precomposited over the background where that is exact
+// (PALETTE_PRECOMPOSITED), so the common case is one fetch per pixel.
+// Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
+// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE.
+
+uniform sampler2DArray uPalette;
+#ifdef LAYER_SIZES_DIFFER
+uniform ivec2 uLayerSize[PALETTE_SIZE];
+#define LAYER_SIZE(i) uLayerSize[i]
+#else
+uniform ivec2 uLayerSize0;
+#define LAYER_SIZE(i) uLayerSize0
+#endif
+
+#ifndef PALETTE_PRECOMPOSITED
+#ifdef BACKGROUND_IMAGE
+uniform sampler2D uBackground;
+uniform ivec2 uBackgroundSize;
+vec3 backgroundColour() { return texelFetch(uBackground, ivec2(gl_FragCoord.xy) % uBackgroundSize, 0).rgb; }
+#else
+uniform vec3 uBackgroundColour;
+vec3 backgroundColour() { return uBackgroundColour; }
+#endif
+#endif
+
+vec3 paletteColour(int entry) {
+  ivec2 p = ivec2(gl_FragCoord.xy) % LAYER_SIZE(entry);
+  vec4 t = texelFetch(uPalette, ivec3(p, entry), 0);
+#ifdef PALETTE_PRECOMPOSITED
+  return t.rgb;
+#else
+  return mix(backgroundColour(), t.rgb, t.a);
+#endif
+}
+
+#ifdef MATCH_COLORS
+uniform usampler3D uLut3D;  // nearest and second-nearest entry at each grid point
+uniform vec3 uAverages[PALETTE_SIZE];  // scaled average colours, for the smooth weights
+uvec2 lutColour(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+  return texelFetch(uLut3D, ivec3(c * float(LUT3D_SIZE - 1) + 0.5), 0).rg;
+}
+int matchEntry(vec3 lit) { return int(lutColour(lit).r); }
+#else
+float matchQuery(vec3 c) {
+  c = clamp(c, 0.0, 1.0);
+#ifdef MATCH_INTENSITY
+  return 3.0 * max(c.r, max(c.g, c.b));
+#else
+  return c.r + c.g + c.b;
+#endif
+}
+int lutBin(vec3 lit) { return int(matchQuery(lit) * (float(LUT1D_SIZE - 1) / 3.0) + 0.5); }
+uniform usampler2D uLutIndex;  // nearest entry per query bin
+uniform sampler2D uLutBlend;   // (entry a, entry b, weight of b) per query bin
+int matchEntry(vec3 lit) { return int(texelFetch(uLutIndex, ivec2(lutBin(lit), 0), 0).r); }
+#endif
+
+// The smooth path: the two entries that bracket the lit colour, blended.
+vec3 paletteBlend(vec3 lit) {
+#ifdef MATCH_COLORS
+  uvec2 ab = lutColour(lit);
+  vec3 c = clamp(lit, 0.0, 1.0);
+  float da = distance(uAverages[ab.x], c), db = distance(uAverages[ab.y], c);
+  float t = (da + db) > 0.0 ? da / (da + db) : 0.0;
+  return mix(paletteColour(int(ab.x)), paletteColour(int(ab.y)), t);
+#else
+  vec3 b = texelFetch(uLutBlend, ivec2(lutBin(lit), 0), 0).rgb;
+  return mix(paletteColour(int(b.x)), paletteColour(int(b.y)), b.z);
+#endif
+}
