@@ -63,6 +63,7 @@ bool write(const fs::path& path, const RgbaImage& img, int channels = 4) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) return false;
   OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // straight alpha, as PNG stores it
   std::vector<std::uint8_t> data;
   for (size_t i = 0; i < img.pixels.size(); i += 4)
     for (int k = 0; k < channels; ++k) data.push_back(img.pixels[i + size_t(k)]);

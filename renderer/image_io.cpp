@@ -9,6 +9,7 @@ Status writeImage(const std::string& path, int width, int height, int channels, 
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
   OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels carry straight alpha
   if (!out->open(path, spec)) return Error{path + ": cannot open for writing: " + out->geterror()};
   if (!out->write_image(OIIO::TypeDesc::UINT8, pixels)) return Error{path + ": write failed: " + out->geterror()};
   if (!out->close()) return Error{path + ": close failed: " + out->geterror()};

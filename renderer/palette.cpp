@@ -107,7 +107,11 @@ Result<RgbaImage> loadImage(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return Error{path + ": no such image file"};
   if (fs::is_directory(path, ec)) return Error{path + ": is a directory, not an image"};
-  auto in = OIIO::ImageInput::open(path);
+  // Keep straight (unassociated) alpha: OpenImageIO would otherwise premultiply PNG and TGA
+  // colours on read, and the compositing below expects straight alpha.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
   if (!in) {
     std::string why = OIIO::geterror();
     if (why.empty()) why = "unsupported or corrupt image";
@@ -295,8 +299,8 @@ std::vector<std::string> PaletteAnalysis::suitabilityWarnings(MatchMode mode) co
     else if (largestGap > 0.5f * range && range > 0.0f)
       w.push_back("palette intensities are unevenly spaced (largest gap " + std::to_string(largestGap) + "): expect visible jumps");
   }
-  if (mode == MatchMode::Order && !monotonic)
-    w.push_back("palette order is not monotonic in intensity: match order maps brighter light to later entries regardless");
+  if (mode == MatchMode::Intensity && !monotonic && range >= 0.3f)
+    w.push_back("palette order is not monotonic in intensity: match intensity will reorder it (match order keeps the file's order)");
   return w;
 }
 

@@ -9,6 +9,10 @@
 namespace npr {
 namespace {
 
+// Scaled levels and colours are clamped to +-kFar: far enough to act as infinity for queries
+// in [0, 3], near enough that differences and squares stay finite in float.
+constexpr double kFar = 1e15;
+
 float finiteOr0(float x) { return std::isfinite(x) ? x : 0.0f; }
 
 glm::vec3 sanitize01(const glm::vec3& c) {
@@ -40,7 +44,9 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
       hi = glm::max(hi, glm::dvec3(a));
     }
     const glm::dvec3 mid = (lo + hi) * 0.5;
-    for (const auto& a : averages) m.scaled_.push_back(glm::vec3(mid + s * (glm::dvec3(a) - mid)));
+    // A huge scale pushes colours far out: clamp so squared distances stay finite in float.
+    for (const auto& a : averages)
+      m.scaled_.push_back(glm::vec3(glm::clamp(mid + s * (glm::dvec3(a) - mid), glm::dvec3(-kFar), glm::dvec3(kFar))));
     // Candidate lists: entry t can be nearest somewhere in a cell only if its distance to the
     // cell's box is within the smallest farthest-distance of any entry to that box.
     const int C = kCells;
@@ -77,7 +83,7 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
     for (size_t t = 0; t < lv.size(); ++t) {
       const double v = mid + s * (lv[t] - mid);
       // A huge scale can push levels past float range: keep them finite and ordered.
-      scaled[t] = static_cast<float>(std::clamp(v, -1e30, 1e30));
+      scaled[t] = static_cast<float>(std::clamp(v, -kFar, kFar));
     }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return scaled[static_cast<size_t>(a)] < scaled[static_cast<size_t>(b)]; });
     for (int t : order) {
@@ -111,7 +117,7 @@ int PaletteMatcher::nearestColour(const glm::vec3& lit, int* second) const {
   const glm::ivec3 cell = glm::clamp(glm::ivec3(c * float(C)), 0, C - 1);
   const size_t ci = static_cast<size_t>((cell.z * C + cell.y) * C + cell.x);
   int best = -1, next = -1;
-  float bd = std::numeric_limits<float>::max(), nd = bd;
+  float bd = std::numeric_limits<float>::infinity(), nd = bd;
   auto consider = [&](int t) {
     const glm::vec3 d = scaled_[static_cast<size_t>(t)] - c;
     const float dd = glm::dot(d, d);
@@ -123,10 +129,11 @@ int PaletteMatcher::nearestColour(const glm::vec3& lit, int* second) const {
   };
   if (!second) {
     for (uint32_t i = cellStart_[ci]; i < cellStart_[ci + 1]; ++i) consider(cellCandidates_[i]);
-    return best;
+    return std::max(best, 0);  // distances are finite (clamped colours), so best is set
   }
   // The second nearest may lie outside the cell's candidate list: scan all (smooth path only).
   for (int t = 0; t < n_; ++t) consider(t);
+  best = std::max(best, 0);
   *second = next < 0 ? best : next;
   return best;
 }

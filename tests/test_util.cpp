@@ -1,0 +1,74 @@
+// Test helpers (see test_util.h).
+#include "test_util.h"
+
+#include <atomic>
+#include <cstdio>
+#include <map>
+#include <unistd.h>
+
+namespace npr::test {
+
+TempDir::TempDir() {
+  static std::atomic<int> counter{0};
+  path_ = std::filesystem::temp_directory_path() /
+          ("npr-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::create_directories(path_);
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+std::string TempDir::write(const std::string& name, const std::string& content) const {
+  const auto p = path_ / name;
+  std::filesystem::create_directories(p.parent_path());
+  std::ofstream(p, std::ios::binary) << content;
+  return p.string();
+}
+
+Mesh icosphere(int level) {
+  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+  std::vector<glm::vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                       {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                       {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (auto& p : v) p = glm::normalize(p);
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      v.push_back(glm::normalize(v[size_t(a)] + v[size_t(b)]));
+      return mid[key] = int(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> nf;
+    nf.reserve(f.size() * 4);
+    for (auto& tri : f) {
+      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
+      nf.push_back({tri[0], a, c});
+      nf.push_back({tri[1], b, a});
+      nf.push_back({tri[2], c, b});
+      nf.push_back({a, b, c});
+    }
+    f.swap(nf);
+  }
+  Mesh m;
+  std::vector<TriMesh::VertexHandle> vh;
+  for (auto& p : v) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+  for (auto& tri : f) m.mesh.add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
+  m.report.file = "icosphere";
+  finalizeMesh(m);
+  return m;
+}
+
+void writeObj(const Mesh& m, const std::string& path) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  for (const auto& p : m.positions) std::fprintf(f, "v %.7f %.7f %.7f\n", p.x, p.y, p.z);
+  for (size_t i = 0; i < m.indices.size(); i += 3) std::fprintf(f, "f %u %u %u\n", m.indices[i] + 1, m.indices[i + 1] + 1, m.indices[i + 2] + 1);
+  std::fclose(f);
+}
+
+}  // namespace npr::test
