@@ -92,9 +92,12 @@ bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float
       if (!nearlyEqual(x.ambient[s], y.ambient[s]) || !nearlyEqual(x.diffuse[s], y.diffuse[s]) ||
           !nearlyEqual(x.specular[s], y.specular[s]))
         return false;
-    if (x.positional != y.positional || !nearlyEqual(x.position, y.position) || x.spot != y.spot ||
-        !nearlyEqual(x.spotDirection, y.spotDirection) || x.spotExponent != y.spotExponent ||
-        x.spotCosCutoff != y.spotCosCutoff || x.k0 != y.k0 || x.k1 != y.k1 || x.k2 != y.k2)
+    if (x.positional != y.positional || !nearlyEqual(x.position, y.position) || x.spot != y.spot || x.k0 != y.k0 ||
+        x.k1 != y.k1 || x.k2 != y.k2)
+      return false;
+    // A light's spot direction matters only when it is a spotlight.
+    if (x.spot && (!nearlyEqual(x.spotDirection, y.spotDirection) || x.spotExponent != y.spotExponent ||
+                   x.spotCosCutoff != y.spotCosCutoff))
       return false;
   }
   return true;
@@ -453,27 +456,43 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
 
   Status result = okStatus();
   if (mesh_ && triangleCount_ > 0) {
-    if (s.path == RenderPath::Stencil) {
+    using Output = RenderSettings::Output;
+    const bool geometry = s.output == Output::EyePosition || s.output == Output::EyeNormal;
+    if (s.path == RenderPath::Stencil && s.output == Output::Image) {
       result = renderStencil(camera, s, viewport);
+    } else if (geometry) {
+      Result<GLuint> prog = program("mesh.vert", "mesh.frag", {s.output == Output::EyePosition ? "PATH_EYE_POSITION" : "PATH_EYE_NORMAL"});
+      if (!prog) return Error{prog.error()};
+      apply(kMeshPass);
+      glUseProgram(*prog);
+      setMeshUniforms(*prog, camera);
+      glBindVertexArray(vao_.id());
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+      ++stats_.drawCalls;
     } else {
-      if (s.path == RenderPath::Triangle) ensureTriangleShading(camera.view, camera, s, viewport);
+      // The stencil path's entries are the triangle path's: show them the same way.
+      RenderSettings eff = s;
+      if (eff.path == RenderPath::Stencil) eff.path = RenderPath::Triangle;
+      if (eff.path == RenderPath::Triangle) ensureTriangleShading(camera.view, camera, eff, viewport);
       // The triangle path's lighting happened on the CPU: its shader has no lighting at all.
       std::vector<std::string> d;
-      if (s.path != RenderPath::Triangle) d = lighting_.features().glslDefines();
-      switch (s.path) {
+      if (eff.path != RenderPath::Triangle) d = lighting_.features().glslDefines();
+      switch (eff.path) {
         case RenderPath::Triangle: d.push_back("PATH_TRIANGLE"); break;
         case RenderPath::Vertex: d.push_back("PATH_VERTEX"); d.push_back("PER_VERTEX_LIGHTING"); break;
         case RenderPath::Pixel: d.push_back("PATH_PIXEL"); break;
         case RenderPath::Smooth: d.push_back("PATH_SMOOTH"); break;
         case RenderPath::LitTextured: d.push_back("PATH_LIT_TEXTURED"); break;
         case RenderPath::Reference:
-          if (s.referenceGouraud) { d.push_back("PATH_GOURAUD"); d.push_back("PER_VERTEX_LIGHTING"); }
+          if (eff.referenceGouraud) { d.push_back("PATH_GOURAUD"); d.push_back("PER_VERTEX_LIGHTING"); }
           else d.push_back("PATH_PHONG");
           break;
         case RenderPath::Stencil: break;
       }
-      const bool usesPalette = s.path != RenderPath::Reference;
-      if (usesPalette) for (auto& x : paletteDefines(s.match)) d.push_back(x);
+      const bool usesPalette = eff.path != RenderPath::Reference;
+      if (usesPalette) for (auto& x : paletteDefines(eff.match)) d.push_back(x);
+      if (s.output == Output::PaletteEntry) d.push_back("OUTPUT_ENTRY");
       Result<GLuint> prog = program("mesh.vert", "mesh.frag", d);
       if (!prog) {
         result = Error{prog.error()};
@@ -481,9 +500,9 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
         apply(kMeshPass);
         glUseProgram(*prog);
         setMeshUniforms(*prog, camera);
-        if (s.path != RenderPath::Triangle) uploadLightingUniforms(*prog, prepareLighting<float>(lighting_));
+        if (eff.path != RenderPath::Triangle) uploadLightingUniforms(*prog, prepareLighting<float>(lighting_));
         if (usesPalette) bindPaletteTextures(*prog);
-        if (s.path == RenderPath::Triangle) {
+        if (eff.path == RenderPath::Triangle) {
           glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
           glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
           glActiveTexture(GL_TEXTURE0);

@@ -34,6 +34,10 @@ struct RenderSettings {
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
   bool drawBackground = true;
+  // What the pixels hold: the image, or (for tests and the benchmark's references) the chosen
+  // palette entry (entry / 255 in red; stencil draws as triangle), or interpolated eye-space
+  // position (alpha -1 on back faces) or normal, best read from a float target.
+  enum class Output { Image, PaletteEntry, EyePosition, EyeNormal } output = Output::Image;
 };
 
 // What the last frame did: the counters are zero on frames where nothing they depend on

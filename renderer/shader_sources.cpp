@@ -12,10 +12,16 @@ const char* findShader(const std::string& name) {
   return nullptr;
 }
 
+Result<std::string> expandText(const std::string& name, const char* text, int depth);
+
 Result<std::string> expandIncludes(const std::string& name, int depth) {
   if (depth > 8) return Error{"shader include depth exceeded at " + name};
   const char* text = findShader(name);
   if (!text) return Error{"no embedded shader named '" + name + "'"};
+  return expandText(name, text, depth);
+}
+
+Result<std::string> expandText(const std::string& name, const char* text, int depth) {
   std::istringstream in(text);
   std::string line, out;
   while (std::getline(in, line)) {
@@ -36,14 +42,23 @@ Result<std::string> expandIncludes(const std::string& name, int depth) {
 
 }  // namespace
 
-Result<std::string> assembleShader(const std::string& name, const std::vector<std::string>& defines) {
-  Result<std::string> body = expandIncludes(name, 0);
+namespace {
+Result<std::string> withHeader(Result<std::string> body, const std::vector<std::string>& defines) {
   if (!body) return body;
   std::string src = "#version 330 core\n";
   for (const std::string& d : defines) src += "#define " + d + "\n";
   src += "#line 1\n";
   src += *body;
   return src;
+}
+}  // namespace
+
+Result<std::string> assembleShader(const std::string& name, const std::vector<std::string>& defines) {
+  return withHeader(expandIncludes(name, 0), defines);
+}
+
+Result<std::string> assembleShaderText(const std::string& label, const std::string& text, const std::vector<std::string>& defines) {
+  return withHeader(expandText(label, text.c_str(), 0), defines);
 }
 
 }  // namespace npr

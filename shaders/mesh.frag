@@ -7,11 +7,13 @@
 //  PATH_PHONG      reference: the lit colour, per pixel
 //  PATH_GOURAUD    reference: the lit colour, per vertex
 //  PATH_LIT_TEXTURED  benchmark floor: per-pixel lighting times one screen-space fetch
+//  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
+// OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel.
 
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
 #endif
-#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD)
+#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL)
 #include "palette.glsl"
 #endif
 
@@ -27,20 +29,30 @@ uniform usamplerBuffer uTriangleEntry;
 
 out vec4 fragColor;
 
+#ifdef OUTPUT_ENTRY
+#define SHOW_ENTRY(e) vec4(float(e) / 255.0, 0.0, 0.0, 1.0)
+#else
+#define SHOW_ENTRY(e) vec4(paletteColour(e), 1.0)
+#endif
+
 void main() {
 #if defined(PATH_MASK)
   fragColor = vec4(0.0);
+#elif defined(PATH_EYE_POSITION)
+  fragColor = vec4(vPosition, gl_FrontFacing ? 1.0 : -1.0);
+#elif defined(PATH_EYE_NORMAL)
+  fragColor = vec4(vNormal, 1.0);
 #elif defined(PATH_TRIANGLE)
-  fragColor = vec4(paletteColour(int(texelFetch(uTriangleEntry, gl_PrimitiveID).r)), 1.0);
+  fragColor = SHOW_ENTRY(int(texelFetch(uTriangleEntry, gl_PrimitiveID).r));
 #elif defined(PATH_VERTEX)
   vec3 lit = gl_FrontFacing ? vColorFront : vColorBack;
-  fragColor = vec4(paletteColour(matchEntry(lit)), 1.0);
+  fragColor = SHOW_ENTRY(matchEntry(lit));
 #elif defined(PATH_GOURAUD)
   fragColor = vec4(gl_FrontFacing ? vColorFront : vColorBack, 1.0);
 #else
   vec3 lit = shadeGL(vPosition, vNormal, !gl_FrontFacing);
 #if defined(PATH_PIXEL)
-  fragColor = vec4(paletteColour(matchEntry(lit)), 1.0);
+  fragColor = SHOW_ENTRY(matchEntry(lit));
 #elif defined(PATH_SMOOTH)
   fragColor = vec4(paletteBlend(lit), 1.0);
 #elif defined(PATH_PHONG)

@@ -2,6 +2,7 @@
 #include "test_util.h"
 
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <unistd.h>
@@ -60,6 +61,28 @@ Mesh icosphere(int level) {
   for (auto& p : v) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
   for (auto& tri : f) m.mesh.add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
   m.report.file = "icosphere";
+  finalizeMesh(m);
+  return m;
+}
+
+Mesh torus(int nu, int nv) {
+  Mesh m;
+  std::vector<TriMesh::VertexHandle> vh(size_t(nu) * size_t(nv));
+  m.mesh.reserve(vh.size(), vh.size() * 3, vh.size() * 2);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      const double r = 1.0 + 0.35 * std::cos(v);
+      vh[size_t(i) * size_t(nv) + size_t(j)] =
+          m.mesh.add_vertex(TriMesh::Point(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35)));
+    }
+  auto at = [&](int i, int j) { return vh[size_t((i + nu) % nu) * size_t(nv) + size_t((j + nv) % nv)]; };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      m.mesh.add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      m.mesh.add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+  m.report.file = "torus";
   finalizeMesh(m);
   return m;
 }

@@ -23,6 +23,8 @@ class TempDir {
 
 // A subdivided icosahedron of radius 1 (20 * 4^level triangles).
 Mesh icosphere(int level);
+// A torus (radii 1 and 0.35) of nu x nv quads, 2 nu nv triangles: large meshes on demand.
+Mesh torus(int nu, int nv);
 // Writes a mesh as OBJ (what the loader benchmark and large-mesh tests read).
 void writeObj(const Mesh& m, const std::string& path);
 

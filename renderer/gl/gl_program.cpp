@@ -14,8 +14,8 @@ std::string variantName(const std::string& file, const std::vector<std::string>&
   return s;
 }
 
-Result<Shader> compile(GLenum type, const std::string& file, const std::vector<std::string>& defines) {
-  Result<std::string> src = assembleShader(file, defines);
+Result<Shader> compileSource(GLenum type, const std::string& file, const Result<std::string>& src,
+                             const std::vector<std::string>& defines) {
   if (!src) return Error{src.error()};
   Shader shader(glCreateShader(type));
   const char* text = src->c_str();
@@ -33,13 +33,9 @@ Result<Shader> compile(GLenum type, const std::string& file, const std::vector<s
   return shader;
 }
 
-}  // namespace
-
-Result<Program> buildProgram(const std::string& vertexFile, const std::string& fragmentFile,
-                             const std::vector<std::string>& defines) {
-  Result<Shader> vs = compile(GL_VERTEX_SHADER, vertexFile, defines);
+Result<Program> link(Result<Shader> vs, Result<Shader> fs, const std::string& vertexFile, const std::string& fragmentFile,
+                     const std::vector<std::string>& defines) {
   if (!vs) return Error{vs.error()};
-  Result<Shader> fs = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
   if (!fs) return Error{fs.error()};
   Program program(glCreateProgram());
   glAttachShader(program.id(), vs->id());
@@ -57,6 +53,22 @@ Result<Program> buildProgram(const std::string& vertexFile, const std::string& f
     return Error{"program " + variantName(vertexFile + "+" + fragmentFile, defines) + " failed to link:\n" + log};
   }
   return program;
+}
+
+}  // namespace
+
+Result<Program> buildProgram(const std::string& vertexFile, const std::string& fragmentFile,
+                             const std::vector<std::string>& defines) {
+  return link(compileSource(GL_VERTEX_SHADER, vertexFile, assembleShader(vertexFile, defines), defines),
+              compileSource(GL_FRAGMENT_SHADER, fragmentFile, assembleShader(fragmentFile, defines), defines), vertexFile,
+              fragmentFile, defines);
+}
+
+Result<Program> buildProgramFromText(const std::string& vertexText, const std::string& fragmentText,
+                                     const std::vector<std::string>& defines) {
+  return link(compileSource(GL_VERTEX_SHADER, "(vertex text)", assembleShaderText("(vertex text)", vertexText, defines), defines),
+              compileSource(GL_FRAGMENT_SHADER, "(fragment text)", assembleShaderText("(fragment text)", fragmentText, defines), defines),
+              "(vertex text)", "(fragment text)", defines);
 }
 
 void setUniform(GLuint p, const char* n, int v) { glUniform1i(glGetUniformLocation(p, n), v); }

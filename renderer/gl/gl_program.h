@@ -14,6 +14,10 @@ namespace npr::gl {
 Result<Program> buildProgram(const std::string& vertexFile, const std::string& fragmentFile,
                              const std::vector<std::string>& defines);
 
+// For GLSL written elsewhere (tests): the sources may #include the embedded files.
+Result<Program> buildProgramFromText(const std::string& vertexText, const std::string& fragmentText,
+                                     const std::vector<std::string>& defines);
+
 // Uniform setters that look the location up each call: the programs are small and the
 // number of uniforms set per frame is a few dozen, so a cache would not pay for itself.
 void setUniform(GLuint program, const char* name, int v);

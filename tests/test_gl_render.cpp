@@ -1,0 +1,424 @@
+// GL tier: the render paths on the headless context. Stencil equals triangle; pixel agrees
+// with the CPU lighting; palettes stay in screen space; golden images; extremes; and
+// unchanged state costs nothing.
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/viewer_state.h"
+#include "gl_test_env.h"
+#include "renderer/image_io.h"
+#include "renderer/lighting_model.h"
+#include "renderer/mesh_loader.h"
+#include "test_util.h"
+
+namespace npr {
+namespace {
+
+using test::renderFloat;
+using test::renderImage;
+using test::sourcePath;
+using test::testCamera;
+
+Palette shippedPalette(const std::string& name) {
+  auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
+  EXPECT_TRUE(p) << p.error();
+  return p ? std::move(*p) : Palette{};
+}
+
+// A palette of `n` solid grey entries from white to black (on a solid background).
+Palette greyRamp(int n) {
+  Palette p;
+  p.name = "ramp" + std::to_string(n);
+  for (int i = 0; i < n; ++i) {
+    PaletteEntry e;
+    const float g = n == 1 ? 0.5f : 1.0f - float(i) / float(n - 1);
+    e.image = RgbaImage{4, 4, std::vector<std::uint8_t>(64)};
+    for (size_t k = 0; k < 64; k += 4) {
+      e.image.pixels[k] = e.image.pixels[k + 1] = e.image.pixels[k + 2] = std::uint8_t(std::lround(g * 255));
+      e.image.pixels[k + 3] = 255;
+    }
+    e.average = glm::vec3(g);
+    e.intensity = 3 * g;
+    p.entries.push_back(std::move(e));
+  }
+  return p;
+}
+
+struct Fixture : ::testing::Test {
+  std::unique_ptr<Renderer> r;
+  void SetUp() override {
+    auto made = Renderer::create();
+    ASSERT_TRUE(made) << made.error();
+    r = std::move(*made);
+    applyDefaultMaterial(r->lighting());
+    const float pos[4] = {2.0f, 2.5f, 3.0f, 1.0f};
+    r->lighting().setModelView(testCamera(1.0f).view);
+    ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
+  }
+};
+
+int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {
+  int n = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4)
+    if (a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2]) ++n;
+  return n;
+}
+
+int countCovered(Renderer& r, const CameraMatrices& cam, int w, int h) {
+  RenderSettings s;
+  s.output = RenderSettings::Output::EyeNormal;
+  const ImageRGBA32F img = renderFloat(r, cam, s, w, h);
+  int n = 0;
+  for (size_t i = 3; i < img.pixels.size(); i += 4) n += img.pixels[i] > 0.5f;
+  return n;
+}
+
+void expectStencilEqualsTriangle(Renderer& r, const std::string& what) {
+  const int w = 400, h = 300;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  const int covered = countCovered(r, cam, w, h);
+  ASSERT_GT(covered, 1000) << what;
+  for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order}) {
+    RenderSettings s;
+    s.match = mode;
+    s.path = RenderPath::Stencil;
+    const ImageRGBA8 stencil = renderImage(r, cam, s, w, h);
+    s.path = RenderPath::Triangle;
+    const ImageRGBA8 triangle = renderImage(r, cam, s, w, h);
+    const int diff = countDiffering(stencil, triangle);
+    EXPECT_LE(diff, covered / 1000) << what << " " << matchModeName(mode) << ": " << diff << " of " << covered << " covered pixels differ";
+    if (diff > covered / 1000) (void)writeImage("stencil-vs-triangle-" + std::string(matchModeName(mode)) + ".png", stencil);
+  }
+}
+
+TEST_F(Fixture, StencilEqualsTriangleOnTheBunny) {
+  auto mesh = loadMesh(sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  expectStencilEqualsTriangle(*r, "bunny");
+}
+
+TEST_F(Fixture, StencilEqualsTriangleOnA500KTriangleMesh) {
+  const Mesh mesh = test::torus(500, 500);
+  ASSERT_EQ(mesh.triangleCount(), 500000u);
+  r->setMesh(&mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  expectStencilEqualsTriangle(*r, "torus");
+}
+
+TEST_F(Fixture, NaiveStencilDrawsTheSameImage) {
+  auto mesh = loadMesh(sourcePath("models/teapot.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("wood")));
+  RenderSettings s;
+  s.path = RenderPath::Stencil;
+  const CameraMatrices cam = testCamera(1.0f);
+  const ImageRGBA8 bounded = renderImage(*r, cam, s, 256, 256);
+  const int boundedDraws = r->stats().drawCalls;
+  s.stencilScissor = s.stencilSkipEmpty = false;
+  const ImageRGBA8 naive = renderImage(*r, cam, s, 256, 256);
+  EXPECT_EQ(countDiffering(bounded, naive), 0);
+  EXPECT_GE(r->stats().drawCalls, boundedDraws);
+  EXPECT_EQ(r->stats().drawCalls, 1 + 30 * 2 + r->stats().nonEmptyBuckets);  // background, 2 quads each, masks
+}
+
+TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
+  auto mesh = loadMesh(sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  const int w = 320, h = 240;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  RenderSettings geo;
+  geo.output = RenderSettings::Output::EyePosition;
+  const ImageRGBA32F pos = renderFloat(*r, cam, geo, w, h);
+  geo.output = RenderSettings::Output::EyeNormal;
+  const ImageRGBA32F nrm = renderFloat(*r, cam, geo, w, h);
+  for (MatchMode mode : {MatchMode::Intensity, MatchMode::Order, MatchMode::Colors}) {
+    RenderSettings s;
+    s.path = RenderPath::Pixel;
+    s.match = mode;
+    s.output = RenderSettings::Output::PaletteEntry;
+    const ImageRGBA8 entries = renderImage(*r, cam, s, w, h);
+    const PaletteMatcher& m = *r->matcher();
+    const auto prepared = prepareLighting<float>(r->lighting());
+    int sampled = 0, exact = 0, nearBoundary = 0;
+    for (size_t i = 0; i < size_t(w) * h; i += 7) {
+      if (nrm.pixels[i * 4 + 3] < 0.5f) continue;  // background
+      const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
+      const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
+      const bool back = pos.pixels[i * 4 + 3] < 0.0f;
+      const glm::vec3 lit = shade(prepared, p, n, back);
+      const int gpu = entries.pixels[i * 4];
+      ++sampled;
+      if (gpu == m.match(lit)) {
+        ++exact;
+        continue;
+      }
+      // Within one step of a tone boundary: a nudge of the lit colour reaches the GPU's choice.
+      bool reachable = false;
+      for (float d : {-0.01f, 0.01f})
+        for (int k = -1; k < 3; ++k) {
+          glm::vec3 q = lit;
+          if (k < 0) q += glm::vec3(d);
+          else q[k] += d;
+          reachable = reachable || m.match(q) == gpu;
+        }
+      EXPECT_TRUE(reachable) << matchModeName(mode) << " pixel " << i << ": gpu " << gpu << " cpu " << m.match(lit);
+      nearBoundary += reachable;
+    }
+    EXPECT_GT(sampled, 1000);
+    // Colours are matched through a 64^3 lookup table on the GPU, so more pixels sit near a
+    // boundary than with the 4096-bin intensity table.
+    EXPECT_GE(exact, sampled * (mode == MatchMode::Colors ? 95 : 99) / 100) << matchModeName(mode) << ": " << exact << " of " << sampled << " exact";
+    std::printf("%s: %d sampled, %d exact, %d within one step of a boundary\n", matchModeName(mode), sampled, exact, nearBoundary);
+  }
+}
+
+TEST_F(Fixture, PaletteStaysInScreenSpace) {
+  // One entry with a distinctive pattern: every covered pixel shows texel (x mod 16, y mod 16)
+  // whatever the depth or camera, so the pattern neither moves nor scales with the model.
+  Palette p;
+  PaletteEntry e;
+  e.image = RgbaImage{16, 16, std::vector<std::uint8_t>(16 * 16 * 4)};
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* px = &e.image.pixels[size_t(y * 16 + x) * 4];
+      px[0] = std::uint8_t(x * 16);
+      px[1] = std::uint8_t(y * 16);
+      px[2] = 77;
+      px[3] = 255;
+    }
+  e.average = glm::vec3(0.5f);
+  p.entries.push_back(std::move(e));
+  ASSERT_TRUE(r->setPalette(p));
+  const Mesh mesh = test::icosphere(4);
+  r->setMesh(&mesh);
+  const int w = 128, h = 96;
+  for (RenderPath path : {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
+    for (float distance : {2.5f, 6.0f}) {
+      OrbitCamera c(10.0f + distance * 7.0f, 5.0f, distance);
+      RenderSettings s;
+      s.path = path;
+      const ImageRGBA8 img = renderImage(*r, c.matrices(float(w) / h), s, w, h);
+      int checked = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const std::uint8_t* px = &img.pixels[size_t(y * w + x) * 4];
+          if (px[2] != 77) continue;  // background
+          const int glY = h - 1 - y;  // screen rows count from the bottom in GL
+          ASSERT_EQ(px[0], (x % 16) * 16) << renderPathName(path) << " at " << x << "," << y;
+          // Images are uploaded top row first, so each tile shows the image upright.
+          ASSERT_EQ(px[1], (15 - glY % 16) * 16) << renderPathName(path) << " at " << x << "," << y;
+          ++checked;
+        }
+      EXPECT_GT(checked, 500) << renderPathName(path) << " distance " << distance;
+    }
+  }
+}
+
+TEST_F(Fixture, OneAndTwoHundredFiftySixEntries) {
+  const Mesh mesh = test::icosphere(3);
+  r->setMesh(&mesh);
+  for (int n : {1, 256}) {
+    ASSERT_TRUE(r->setPalette(greyRamp(n)));
+    for (RenderPath path : userRenderPaths())
+      for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order}) {
+        RenderSettings s;
+        s.path = path;
+        s.match = mode;
+        const ImageRGBA8 img = renderImage(*r, testCamera(1.0f), s, 96, 96);
+        std::set<int> greys;
+        for (size_t i = 0; i < img.pixels.size(); i += 4) {
+          ASSERT_EQ(img.pixels[i], img.pixels[i + 1]);  // only greys: nothing broken
+          greys.insert(img.pixels[i]);
+        }
+        if (path == RenderPath::Reference) continue;
+        // One entry: the sphere is its grey (128) on the white background. 256 entries: the
+        // shading spreads over many of them.
+        if (n == 1) {
+          EXPECT_EQ(greys, (std::set<int>{128, 255})) << renderPathName(path) << " " << matchModeName(mode);
+        } else {
+          EXPECT_GT(greys.size(), 20u) << renderPathName(path) << " " << matchModeName(mode);
+        }
+      }
+  }
+}
+
+TEST_F(Fixture, UnchangedStateIsNotRecomputedOrReuploaded) {
+  const Mesh mesh = test::icosphere(4);
+  r->setMesh(&mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  const CameraMatrices cam = testCamera(1.0f);
+  for (RenderPath path : userRenderPaths()) {
+    RenderSettings s;
+    s.path = path;
+    (void)renderImage(*r, cam, s, 64, 64);
+    (void)renderImage(*r, cam, s, 64, 64);
+    const FrameStats& st = r->stats();
+    EXPECT_EQ(st.lightingRecomputes, 0) << renderPathName(path);
+    EXPECT_EQ(st.bufferUploads, 0) << renderPathName(path);
+    EXPECT_EQ(st.shaderBuilds, 0) << renderPathName(path);
+    EXPECT_EQ(st.lutBuilds, 0) << renderPathName(path);
+  }
+  // A light that stays fixed in the scene while the camera orbits changes what each triangle
+  // receives in its own frame only through view-dependent terms: with no specular and a
+  // scene-fixed light, orbiting needs no per-triangle recomputation.
+  LightingState& l = r->lighting();
+  const float black[4] = {0, 0, 0, 1}, world[4] = {2, 2.5f, 3, 1};
+  ASSERT_TRUE(l.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black));
+  RenderSettings s;
+  s.path = RenderPath::Triangle;
+  for (float yaw : {10.0f, 40.0f}) {
+    const CameraMatrices c = testCamera(1.0f, yaw);
+    l.setModelView(c.view);
+    ASSERT_TRUE(l.Lightfv(GL_LIGHT0, GL_POSITION, world));
+    (void)renderImage(*r, c, s, 64, 64);
+  }
+  EXPECT_EQ(r->stats().lightingRecomputes, 0);
+  // ... while moving the light does.
+  const float moved[4] = {-2, 2.5f, 3, 1};
+  ASSERT_TRUE(l.Lightfv(GL_LIGHT0, GL_POSITION, moved));
+  (void)renderImage(*r, testCamera(1.0f, 40.0f), s, 64, 64);
+  EXPECT_EQ(r->stats().lightingRecomputes, 1);
+  // Changing the features (a spotlight) compiles a new variant once.
+  ASSERT_TRUE(l.Lightf(GL_LIGHT0, GL_SPOT_CUTOFF, 60.0f));
+  s.path = RenderPath::Pixel;
+  (void)renderImage(*r, testCamera(1.0f, 40.0f), s, 64, 64);
+  EXPECT_EQ(r->stats().shaderBuilds, 1);
+  (void)renderImage(*r, testCamera(1.0f, 40.0f), s, 64, 64);
+  EXPECT_EQ(r->stats().shaderBuilds, 0);
+}
+
+TEST_F(Fixture, ExtremesProduceNoErrorsOrNaN) {
+  const Mesh base = test::icosphere(3);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  for (double size : {1e-6, 1.0, 1e6}) {
+    Mesh m = test::icosphere(3);
+    for (auto& p : m.positions) p *= float(size);
+    for (auto& c : m.faceCentroids) c *= float(size);
+    r->setMesh(&m);
+    OrbitCamera c(30.0f, 20.0f, 3.0f);
+    c.frame(float(size));
+    for (RenderPath path : userRenderPaths()) {
+      RenderSettings s;
+      s.path = path;
+      (void)renderImage(*r, c.matrices(1.0f), s, 32, 32);
+      RenderSettings g;
+      g.output = RenderSettings::Output::EyeNormal;
+      const ImageRGBA32F n = renderFloat(*r, c.matrices(1.0f), g, 32, 32);
+      for (float v : n.pixels) ASSERT_TRUE(std::isfinite(v)) << size;
+    }
+  }
+  r->setMesh(&base);
+  // Near/far ratios from 1e-4 to 1e6, and a camera inside the model.
+  for (auto [nearP, farP] : {std::pair{1.0f, 1.0001f}, std::pair{1e-3f, 1e3f}, std::pair{1e-4f, 100.0f}}) {
+    CameraMatrices cam;
+    cam.view = glm::lookAt(glm::vec3(0, 0, 3), glm::vec3(0), glm::vec3(0, 1, 0));
+    cam.projection = glm::perspective(glm::radians(40.0f), 1.0f, nearP, farP);
+    for (RenderPath path : userRenderPaths()) {
+      RenderSettings s;
+      s.path = path;
+      (void)renderImage(*r, cam, s, 32, 32);
+    }
+  }
+  CameraMatrices inside;
+  inside.view = glm::lookAt(glm::vec3(0.1f, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
+  inside.projection = glm::perspective(glm::radians(60.0f), 1.0f, 0.01f, 10.0f);
+  for (RenderPath path : userRenderPaths()) {
+    RenderSettings s;
+    s.path = path;
+    const ImageRGBA8 img = renderImage(*r, inside, s, 32, 32);
+    EXPECT_EQ(img.width, 32);
+  }
+  // 1x1 and 8192x8192 framebuffers.
+  for (int size : {1, 8192})
+    for (RenderPath path : {RenderPath::Stencil, RenderPath::Pixel, RenderPath::Smooth}) {
+      RenderSettings s;
+      s.path = path;
+      const ImageRGBA8 img = renderImage(*r, testCamera(1.0f), s, size, size);
+      EXPECT_EQ(img.width, size);
+    }
+}
+
+TEST_F(Fixture, FailedPaletteLoadKeepsTheCurrentOne) {
+  ViewerState state;
+  const Mesh mesh = test::icosphere(3);
+  r->setMesh(&mesh);
+  ASSERT_TRUE(state.loadPalette(sourcePath("palettes/cel/cel.palette"), *r));
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  s.match = state.settings.match;
+  const ImageRGBA8 before = renderImage(*r, testCamera(1.0f), s, 64, 64);
+  test::TempDir d;
+  EXPECT_FALSE(state.loadPalette(d.write("broken.palette", "missing.png\n"), *r));
+  EXPECT_FALSE(state.loadModel(d.write("broken.obj", "v 0 0 0\n"), *r));
+  EXPECT_EQ(state.palette->name, "Cel (4 tones)");
+  const ImageRGBA8 after = renderImage(*r, testCamera(1.0f), s, 64, 64);
+  EXPECT_EQ(countDiffering(before, after), 0);
+  EXPECT_GE(state.messages.size(), 2u);  // both failures are reported for the overlay
+}
+
+// ---- Golden images -----------------------------------------------------------------------
+
+// Compares with tests/golden/NAME.png: at most `failFraction` of the pixels may differ by
+// more than 2/255 in a channel, and the mean channel difference must stay under `meanDiff`.
+// A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in the working folder.
+// NPR_UPDATE_GOLDEN=1 rewrites the goldens instead (then look at them before committing).
+void expectGolden(const std::string& name, const ImageRGBA8& img, double failFraction, double meanDiff) {
+  const std::string golden = sourcePath("tests/golden/" + name + ".png");
+  if (const char* u = std::getenv("NPR_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    ASSERT_TRUE(writeImage(golden, img));
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run with NPR_UPDATE_GOLDEN=1 to create it";
+  OIIO::ImageBuf expected(golden);
+  OIIO::ImageBuf actual(OIIO::ImageSpec(img.width, img.height, 4, OIIO::TypeDesc::UINT8), const_cast<std::uint8_t*>(img.pixels.data()));
+  ASSERT_EQ(expected.spec().width, img.width);
+  ASSERT_EQ(expected.spec().height, img.height);
+  const auto cmp = OIIO::ImageBufAlgo::compare(actual, expected, 2.0f / 255.0f, 1.0f / 255.0f);
+  const double failed = double(cmp.nfail) / (double(img.width) * img.height);
+  const bool ok = failed <= failFraction && cmp.meanerror <= meanDiff;
+  EXPECT_TRUE(ok) << name << ": " << cmp.nfail << " pixels differ by more than 2/255 (" << failed * 100 << "%, limit "
+                  << failFraction * 100 << "%), mean difference " << cmp.meanerror << " (limit " << meanDiff << "), max "
+                  << cmp.maxerror;
+  if (!ok) {
+    (void)writeImage(name + "-actual.png", img);
+    OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(actual, expected);
+    diff = OIIO::ImageBufAlgo::mul(diff, 4.0f);
+    diff.write(name + "-diff.png");
+  }
+}
+
+TEST_F(Fixture, GoldenImagesPerPath) {
+  auto mesh = loadMesh(sourcePath("models/teapot.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  const CameraMatrices cam = testCamera(1.0f);
+  for (RenderPath path : userRenderPaths()) {
+    RenderSettings s;
+    s.path = path;
+    // llvmpipe is deterministic; a GPU may differ at edges by a texel here and there.
+    expectGolden(std::string("teapot-crosshatch-") + renderPathName(path), renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
+  }
+  ASSERT_TRUE(r->setPalette(shippedPalette("gooch")));
+  RenderSettings s;
+  s.path = RenderPath::Smooth;
+  s.match = MatchMode::Colors;
+  expectGolden("teapot-gooch-smooth", renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
+}
+
+}  // namespace
+}  // namespace npr
