@@ -131,8 +131,9 @@ std::vector<float> hatchField() {
         const float wobble = 1.2f * (valueNoise(along, float(line * 8), 8, std::uint32_t(31 + fam)) - 0.5f);
         float d = std::fabs(float(u % spacing) + 0.5f - spacing * 0.5f + wobble) / (spacing * 0.5f);  // 0 on the stroke
         if (fam < 2) d /= std::sqrt(2.0f) * 0.75f;
-        // Family j starts at s = 0.22 j and thickens from there.
-        best = std::min(best, 0.22f * float(fam) + 0.35f * d);
+        // Family j starts at s = 0.15 j and thickens slowly, so the next direction joins in
+        // long before one family alone could fill the tile: tones build up as crosshatching.
+        best = std::min(best, 0.15f * float(fam) + 0.6f * d);
       }
       f[size_t(y) * kSize + x] = best;
     }
