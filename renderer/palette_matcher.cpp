@@ -92,6 +92,16 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
       m.sortedLevels_.push_back(v);
       m.levelEntry_.push_back(t);
     }
+    // Bins of the query axis that one entry covers whole answer match() directly; bins
+    // holding a decision boundary (at most one per level) fall back to the exact search.
+    // The nearest level's rank never decreases with q, so equal answers at both ends of a
+    // bin mean one answer throughout.
+    m.exactBins_.assign(kExactBins + 1, kAmbiguous);
+    for (int b = 0; b < kExactBins; ++b) {
+      const float q0 = 3.0f * float(b) / float(kExactBins), q1 = 3.0f * float(b + 1) / float(kExactBins);
+      const int a = m.matchQuery(q0);
+      if (a == m.matchQuery(q1) && m.toneRank(q0) == m.toneRank(q1)) m.exactBins_[static_cast<size_t>(b)] = static_cast<std::uint16_t>(a);
+    }
   }
   return m;
 }
@@ -101,8 +111,9 @@ float PaletteMatcher::query(const glm::vec3& lit) const {
   return mode_ == MatchMode::Intensity ? 3.0f * std::max(c.r, std::max(c.g, c.b)) : c.r + c.g + c.b;
 }
 
-float PaletteMatcher::tonePosition(const glm::vec3& lit) const {
-  const float q = query(lit);
+float PaletteMatcher::tonePosition(const glm::vec3& lit) const { return toneOfQuery(query(lit)); }
+
+float PaletteMatcher::toneOfQuery(float q) const {
   const auto& L = sortedLevels_;
   if (L.size() < 2 || q <= L.front()) return 0.0f;
   if (q >= L.back()) return float(L.size() - 1);
@@ -140,7 +151,13 @@ int PaletteMatcher::nearestColour(const glm::vec3& lit, int* second) const {
 
 int PaletteMatcher::match(const glm::vec3& lit) const {
   if (mode_ == MatchMode::Colors) return nearestColour(lit, nullptr);
-  const float u = tonePosition(lit);
+  const float q = query(lit);  // in [0, 3]
+  const std::uint16_t e = exactBins_[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
+  return e != kAmbiguous ? e : matchQuery(q);
+}
+
+int PaletteMatcher::matchQuery(float q) const {
+  const float u = toneOfQuery(q);
   const int k = static_cast<int>(u);
   const float f = u - float(k);
   if (k + 1 >= static_cast<int>(levelEntry_.size())) return levelEntry_[static_cast<size_t>(k)];
@@ -148,6 +165,12 @@ int PaletteMatcher::match(const glm::vec3& lit) const {
   if (f < 0.5f) return a;
   if (f > 0.5f) return b;
   return std::min(a, b);
+}
+
+int PaletteMatcher::toneRank(float q) const {
+  const float u = toneOfQuery(q);
+  const int k = static_cast<int>(u);
+  return (u - float(k)) <= 0.5f ? k : k + 1;
 }
 
 PaletteBlend PaletteMatcher::matchSmooth(const glm::vec3& lit) const {

@@ -16,6 +16,7 @@
 // palette index. Lit colours are in [0,1]; non-finite channels are taken as 0.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -40,6 +41,14 @@ class PaletteMatcher {
   static Status validateRangeScale(float s);
 
   int match(const glm::vec3& lit) const;            // in [0, N)
+  // match() for a colour already known to be finite and in [0,1] (lit colours are): the
+  // per-triangle loop's inner call, inlined.
+  int matchUnit(const glm::vec3& c) const {
+    if (mode_ == MatchMode::Colors) return match(c);
+    const float q = mode_ == MatchMode::Intensity ? 3.0f * std::max(c.r, std::max(c.g, c.b)) : c.r + c.g + c.b;
+    const std::uint16_t e = exactBins_[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
+    return e != kAmbiguous ? e : matchQuery(q);
+  }
   PaletteBlend matchSmooth(const glm::vec3& lit) const;
   // 1D modes: continuous position among the sorted distinct levels (what `smooth` blends by).
   float tonePosition(const glm::vec3& lit) const;
@@ -60,6 +69,12 @@ class PaletteMatcher {
 
  private:
   int nearestColour(const glm::vec3& c, int* second) const;
+  float toneOfQuery(float q) const;
+  int matchQuery(float q) const;  // exact, by binary search
+  int toneRank(float q) const;
+  static constexpr int kExactBins = 8192;
+  static constexpr std::uint16_t kAmbiguous = 0xFFFF;
+  std::vector<std::uint16_t> exactBins_;  // 1D modes: the answer per query bin, or kAmbiguous
   MatchMode mode_ = MatchMode::Intensity;
   int n_ = 0;
   float scale_ = 1.0f;

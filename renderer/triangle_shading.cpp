@@ -17,6 +17,65 @@ bool isRigid(const glm::mat4& m) {
   return m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f;
 }
 
+namespace {
+
+// The common case, specialised: directional lights without spots, an infinite viewer and
+// one-sided lighting. Then every light's ambient folds into the base colour, its direction
+// and half vector are constants, and only the face normal is read per triangle. pow() for
+// the specular term comes from a table over [0, 1] with linear interpolation (error below
+// 1e-4 for shininess up to 128, far under the 1/255 that matching can see).
+struct DirectionalLighting {
+  int count = 0;
+  glm::vec3 base{0.0f};
+  glm::vec3 direction[kMaxLights], half[kMaxLights], diffuse[kMaxLights], specular[kMaxLights];
+  bool hasSpecular = false;
+  static constexpr int kPowSteps = 4096;
+  std::vector<float> powTable;
+
+  static bool applies(const PreparedLighting<float>& p) {
+    if (!p.lighting || p.localViewer || p.twoSided) return false;
+    for (int i = 0; i < p.count; ++i)
+      if (p.lights[i].positional || p.lights[i].spot) return false;
+    return true;
+  }
+
+  explicit DirectionalLighting(const PreparedLighting<float>& p) : count(p.count), base(p.base[0]), hasSpecular(p.specular) {
+    for (int i = 0; i < count; ++i) {
+      const auto& l = p.lights[i];
+      base += l.ambient[0];
+      direction[i] = l.position;
+      half[i] = lighting_detail::safeNormalize(l.position + p.viewDirection);
+      diffuse[i] = l.diffuse[0];
+      specular[i] = l.specular[0];
+    }
+    if (hasSpecular) {
+      powTable.resize(kPowSteps + 2);
+      for (int k = 0; k <= kPowSteps; ++k) powTable[static_cast<size_t>(k)] = lighting_detail::powGL(float(k) / kPowSteps, p.shininess[0]);
+      powTable[kPowSteps + 1] = powTable[kPowSteps];
+    }
+  }
+
+  float specularPow(float x) const {
+    const float t = x * float(kPowSteps);
+    const int k = static_cast<int>(t);
+    const float f = t - float(k);
+    return powTable[static_cast<size_t>(k)] + f * (powTable[static_cast<size_t>(k) + 1] - powTable[static_cast<size_t>(k)]);
+  }
+
+  glm::vec3 shade(const glm::vec3& n) const {
+    glm::vec3 c = base;
+    for (int i = 0; i < count; ++i) {
+      const float ndl = glm::dot(n, direction[i]);
+      if (ndl <= 0.0f) continue;
+      c += ndl * diffuse[i];
+      if (hasSpecular) c += specularPow(std::min(std::max(glm::dot(n, half[i]), 0.0f), 1.0f)) * specular[i];
+    }
+    return glm::clamp(c, 0.0f, 1.0f);
+  }
+};
+
+}  // namespace
+
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
                     const PaletteMatcher& matcher, const TriangleShadingOptions& opt, TriangleShading& out) {
   const size_t nt = mesh.triangleCount();
@@ -31,7 +90,17 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const glm::vec3* normals = mesh.faceNormals.data();
   std::uint8_t* entry = out.entry.data();
 
-  parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+  if (rigid && DirectionalLighting::applies(p)) {
+    const DirectionalLighting fast(p);
+    parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+      std::uint32_t* cnt = counts[static_cast<size_t>(c)].data();
+      for (size_t i = b; i < e; ++i) {
+        const int k = matcher.matchUnit(fast.shade(normals[i]));
+        entry[i] = static_cast<std::uint8_t>(k);
+        ++cnt[k];
+      }
+    });
+  } else parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
     std::uint32_t* cnt = counts[static_cast<size_t>(c)].data();
     for (size_t i = b; i < e; ++i) {
       glm::vec3 pos = centroids[i], n = normals[i];

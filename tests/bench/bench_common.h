@@ -1,0 +1,19 @@
+// Shared by the benchmarks: the generated large mesh (871,200 triangles) and its OBJ file,
+// written once into the system temp folder.
+#pragma once
+
+#include <string>
+
+#include "renderer/mesh.h"
+
+namespace npr::bench {
+
+constexpr int kTorusSide = 660;  // 2 x 660 x 660 = 871,200 triangles
+
+const Mesh& largeMesh();
+// The large mesh as an OBJ file (about 33 MB), generated on first use.
+const std::string& largeObjPath();
+// Peak resident memory of this process so far, in MiB.
+double peakRssMiB();
+
+}  // namespace npr::bench

@@ -1,0 +1,90 @@
+// Per-triangle lighting + palette matching + bucketing of the 871K-triangle mesh (the
+// stencil path's CPU work), by number of lights, specular on/off and thread count; and
+// palette matching alone for 2 to 256 entries in each mode.
+// Run: build/tests/bench/bench_shading
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "bench_common.h"
+#include "renderer/palette_matcher.h"
+#include "renderer/parallel.h"
+#include "renderer/triangle_shading.h"
+
+namespace npr::bench {
+namespace {
+
+std::vector<glm::vec3> greyLevels(int n) {
+  std::vector<glm::vec3> v;
+  for (int i = 0; i < n; ++i) v.push_back(glm::vec3(1.0f - float(i) / float(std::max(1, n - 1))));
+  return v;
+}
+
+// args: lights, specular (0/1), threads (0 = all)
+void BM_ShadeTriangles(benchmark::State& state) {
+  const Mesh& mesh = largeMesh();
+  const int lights = int(state.range(0));
+  LightingState l;
+  for (int i = 0; i < lights; ++i) {
+    const float white[4] = {1.0f / float(lights), 1.0f / float(lights), 1.0f / float(lights), 1};
+    const float dir[4] = {std::cos(float(i)), 0.5f, std::sin(float(i)) + 1.0f, 0};  // directional
+    (void)l.Enable(GL_LIGHT0 + GLenum(i));
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, white);
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, white);
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, dir);
+  }
+  if (state.range(1)) {
+    const float spec[4] = {0.5f, 0.5f, 0.5f, 1};
+    (void)l.Materialfv(GL_FRONT, GL_SPECULAR, spec);
+    (void)l.Materialf(GL_FRONT, GL_SHININESS, 24.0f);
+  }
+  auto matcher = PaletteMatcher::create(greyLevels(10), MatchMode::Intensity, 1.0f);
+  const glm::mat4 view = glm::lookAt(glm::vec3(1.5f, 1.0f, 2.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  TriangleShadingOptions opt;
+  opt.buildBuckets = state.range(3) != 0;
+  opt.threads = int(state.range(2));
+  TriangleShading out;
+  for (auto _ : state) {
+    shadeTriangles(mesh, l, view, *matcher, opt, out);
+    benchmark::DoNotOptimize(out.bucketIndices.data());
+  }
+  state.counters["triangles/s"] = benchmark::Counter(double(mesh.triangleCount()), benchmark::Counter::kIsIterationInvariantRate);
+  state.SetLabel(std::to_string(lights) + " light(s), specular " + (state.range(1) ? "on" : "off") + ", " +
+                 (opt.threads == 1 ? "1 thread" : std::to_string(workerCount()) + " threads") +
+                 (opt.buildBuckets ? ", bucketed" : ", not bucketed"));
+}
+
+BENCHMARK(BM_ShadeTriangles)
+    ->ArgsProduct({{1, 2, 4, 8}, {0, 1}, {1, 0}, {1}})
+    ->Args({1, 1, 0, 0})  // without bucketing: what the triangle path needs
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(0.5);
+
+// args: palette size, mode
+void BM_Match(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const MatchMode mode = static_cast<MatchMode>(state.range(1));
+  std::mt19937 rng(1);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<glm::vec3> avg;
+  for (int i = 0; i < n; ++i) avg.push_back({u(rng), u(rng), u(rng)});
+  auto m = PaletteMatcher::create(avg, mode, 1.0f);
+  std::vector<glm::vec3> queries(4096);
+  for (auto& q : queries) q = {u(rng), u(rng), u(rng)};
+  int sum = 0;
+  for (auto _ : state)
+    for (const auto& q : queries) sum += m->match(q);
+  benchmark::DoNotOptimize(sum);
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(queries.size()));
+  state.SetLabel(std::string(matchModeName(mode)) + ", " + std::to_string(n) + " entries");
+}
+
+BENCHMARK(BM_Match)->ArgsProduct({{2, 10, 30, 64, 256}, {0, 1, 2}});
+
+}  // namespace
+}  // namespace npr::bench
+
+BENCHMARK_MAIN();
