@@ -47,10 +47,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--light", light, "Light position X,Y,Z in model units (the model fits a unit sphere)");
   app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)");
   app.add_flag("--headless", o.headless, "Render through EGL with no window");
-  app.add_option("--frames", o.frames, "Render N frames, then exit");
+  app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
   app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
   app.add_flag("--info", o.info, "Print the model's load report as one line of JSON and exit");
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
+  app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
+  app.add_option("--out", o.outDir, "Benchmark output folder (default benchmark-results)");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
   try {
@@ -96,7 +98,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.
   for (const auto& m : o.models)
-    if (!o.info && !std::filesystem::exists(m)) return {std::nullopt, fail("model file '" + m + "' does not exist")};
+    if (!o.info && m.rfind("generated:", 0) != 0 && !std::filesystem::exists(m)) return {std::nullopt, fail("model file '" + m + "' does not exist")};
   for (const auto& p : o.palettes)
     if (!std::filesystem::exists(p)) return {std::nullopt, fail("palette file '" + p + "' does not exist")};
   if (!o.paletteInfo.empty() && !std::filesystem::exists(o.paletteInfo))

@@ -1,8 +1,9 @@
 // npr-viewer: parses the command line and hands over to the window, --headless, --info,
-// or --palette-info. Exit status: 0 success, 1 a file failed to load or render,
+// --palette-info or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
 // 2 bad arguments.
 #include <cstdio>
 
+#include "app/benchmark_run.h"
 #include "app/cli.h"
 #include "app/headless_run.h"
 #include "app/window_viewer.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
     std::printf("%s\n", npr::paletteReportJson(*p).c_str());
     return 0;
   }
+  if (o.benchmark) return npr::runBenchmark(o);
   if (o.headless) return npr::runHeadless(o);
   return npr::runWindowViewer(o);
 }

@@ -92,6 +92,8 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
       m.sortedLevels_.push_back(v);
       m.levelEntry_.push_back(t);
     }
+    for (float v : scaled)
+      m.entryRank_.push_back(int(std::lower_bound(m.sortedLevels_.begin(), m.sortedLevels_.end(), v) - m.sortedLevels_.begin()));
     // Bins of the query axis that one entry covers whole answer match() directly; bins
     // holding a decision boundary (at most one per level) fall back to the exact search.
     // The nearest level's rank never decreases with q, so equal answers at both ends of a

@@ -59,6 +59,7 @@ class PaletteMatcher {
   float rangeScale() const { return scale_; }
   const std::vector<float>& levels() const { return sortedLevels_; }       // 1D: distinct, ascending
   const std::vector<int>& levelEntries() const { return levelEntry_; }     // 1D: lowest entry per level
+  const std::vector<int>& entryRanks() const { return entryRank_; }        // 1D: each entry's level index
   const std::vector<glm::vec3>& scaledAverages() const { return scaled_; } // colours: after scaling
 
   // GPU tables (built once per palette, mode and scale), sampled at the nearest grid point:
@@ -81,6 +82,7 @@ class PaletteMatcher {
   // 1D modes
   std::vector<float> sortedLevels_;
   std::vector<int> levelEntry_;
+  std::vector<int> entryRank_;
   // colour mode: exact nearest search over per-cell candidate lists
   std::vector<glm::vec3> scaled_;
   static constexpr int kCells = 8;

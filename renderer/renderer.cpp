@@ -352,14 +352,23 @@ void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMat
     boundsViewport_ = glm::ivec2(0);
   }
   if (s.path == RenderPath::Triangle && !entriesUploaded_) {
-    if (!entryBuffer_) entryBuffer_ = gl::createBuffer();
-    glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
-    glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(shading_.entry.size()), shading_.entry.data(), GL_STREAM_DRAW);
-    if (!entryTexture_) entryTexture_ = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
-    glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
-    glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, entryBuffer_.id());
-    glActiveTexture(GL_TEXTURE0);
+    const auto bytes = static_cast<GLsizeiptr>(shading_.entry.size());
+    if (!entryBuffer_ || entryBytes_ != bytes) {
+      // (Re)create storage and its texture view only when the size changes: re-specifying a
+      // buffer that backs a texture makes drivers revalidate (llvmpipe: milliseconds).
+      entryBuffer_ = gl::createBuffer();
+      glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
+      glBufferData(GL_TEXTURE_BUFFER, bytes, shading_.entry.data(), GL_DYNAMIC_DRAW);
+      entryTexture_ = gl::createTexture();
+      glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
+      glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, entryBuffer_.id());
+      glActiveTexture(GL_TEXTURE0);
+      entryBytes_ = bytes;
+    } else {
+      glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
+      glBufferSubData(GL_TEXTURE_BUFFER, 0, bytes, shading_.entry.data());
+    }
     entriesUploaded_ = true;
     ++stats_.bufferUploads;
   }
@@ -493,6 +502,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
       const bool usesPalette = eff.path != RenderPath::Reference;
       if (usesPalette) for (auto& x : paletteDefines(eff.match)) d.push_back(x);
       if (s.output == Output::PaletteEntry) d.push_back("OUTPUT_ENTRY");
+      if (s.output == Output::PaletteBlend) d.push_back("OUTPUT_BLEND");
       Result<GLuint> prog = program("mesh.vert", "mesh.frag", d);
       if (!prog) {
         result = Error{prog.error()};

@@ -35,9 +35,10 @@ struct RenderSettings {
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
   bool drawBackground = true;
   // What the pixels hold: the image, or (for tests and the benchmark's references) the chosen
-  // palette entry (entry / 255 in red; stencil draws as triangle), or interpolated eye-space
-  // position (alpha -1 on back faces) or normal, best read from a float target.
-  enum class Output { Image, PaletteEntry, EyePosition, EyeNormal } output = Output::Image;
+  // palette entry (entry / 255 in red; stencil draws as triangle), the selection as floats
+  // (entry a, entry b, weight of b: what `smooth` blends), or interpolated eye-space position
+  // (alpha -1 on back faces) or normal. Read the float outputs from a float target.
+  enum class Output { Image, PaletteEntry, PaletteBlend, EyePosition, EyeNormal } output = Output::Image;
 };
 
 // What the last frame did: the counters are zero on frames where nothing they depend on
@@ -107,6 +108,7 @@ class Renderer {
   gl::Buffer positions_, normals_, indices_, bucketIndices_;
   gl::Buffer entryBuffer_;
   gl::Texture entryTexture_;
+  GLsizeiptr entryBytes_ = 0;
   std::size_t triangleCount_ = 0;
 
   // Palette

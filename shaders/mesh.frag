@@ -8,7 +8,8 @@
 //  PATH_GOURAUD    reference: the lit colour, per vertex
 //  PATH_LIT_TEXTURED  benchmark floor: per-pixel lighting times one screen-space fetch
 //  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
-// OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel.
+// OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
+// OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
@@ -29,8 +30,10 @@ uniform usamplerBuffer uTriangleEntry;
 
 out vec4 fragColor;
 
-#ifdef OUTPUT_ENTRY
+#if defined(OUTPUT_ENTRY)
 #define SHOW_ENTRY(e) vec4(float(e) / 255.0, 0.0, 0.0, 1.0)
+#elif defined(OUTPUT_BLEND)
+#define SHOW_ENTRY(e) vec4(float(e), float(e), 0.0, 1.0)
 #else
 #define SHOW_ENTRY(e) vec4(paletteColour(e), 1.0)
 #endif
@@ -53,6 +56,8 @@ void main() {
   vec3 lit = shadeGL(vPosition, vNormal, !gl_FrontFacing);
 #if defined(PATH_PIXEL)
   fragColor = SHOW_ENTRY(matchEntry(lit));
+#elif defined(PATH_SMOOTH) && defined(OUTPUT_BLEND)
+  fragColor = vec4(blendSelection(lit), 1.0);
 #elif defined(PATH_SMOOTH)
   fragColor = vec4(paletteBlend(lit), 1.0);
 #elif defined(PATH_PHONG)

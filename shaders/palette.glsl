@@ -58,16 +58,20 @@ uniform sampler2D uLutBlend;   // (entry a, entry b, weight of b) per query bin
 int matchEntry(vec3 lit) { return int(texelFetch(uLutIndex, ivec2(lutBin(lit), 0), 0).r); }
 #endif
 
-// The smooth path: the two entries that bracket the lit colour, blended.
-vec3 paletteBlend(vec3 lit) {
+// The smooth path: the two entries that bracket the lit colour, as (entry a, entry b,
+// weight of b), and their blend.
+vec3 blendSelection(vec3 lit) {
 #ifdef MATCH_COLORS
   uvec2 ab = lutColour(lit);
   vec3 c = clamp(lit, 0.0, 1.0);
   float da = distance(uAverages[ab.x], c), db = distance(uAverages[ab.y], c);
-  float t = (da + db) > 0.0 ? da / (da + db) : 0.0;
-  return mix(paletteColour(int(ab.x)), paletteColour(int(ab.y)), t);
+  return vec3(float(ab.x), float(ab.y), (da + db) > 0.0 ? da / (da + db) : 0.0);
 #else
-  vec3 b = texelFetch(uLutBlend, ivec2(lutBin(lit), 0), 0).rgb;
-  return mix(paletteColour(int(b.x)), paletteColour(int(b.y)), b.z);
+  return texelFetch(uLutBlend, ivec2(lutBin(lit), 0), 0).rgb;
 #endif
+}
+
+vec3 paletteBlend(vec3 lit) {
+  vec3 b = blendSelection(lit);
+  return mix(paletteColour(int(b.x)), paletteColour(int(b.y)), b.z);
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "renderer/mesh.h"
+#include "renderer/mesh_generators.h"
 
 namespace npr::test {
 
@@ -21,10 +22,8 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-// A subdivided icosahedron of radius 1 (20 * 4^level triangles).
-Mesh icosphere(int level);
-// A torus (radii 1 and 0.35) of nu x nv quads, 2 nu nv triangles: large meshes on demand.
-Mesh torus(int nu, int nv);
+using npr::icosphere;
+using npr::torus;
 // Writes a mesh as OBJ (what the loader benchmark and large-mesh tests read).
 void writeObj(const Mesh& m, const std::string& path);
 

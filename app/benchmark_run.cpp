@@ -1,0 +1,468 @@
+// The speed/accuracy benchmark (see benchmark_run.h).
+//
+// [SECTION] Statistics
+// [SECTION] Accuracy: the independent per-pixel reference and each path's error
+// [SECTION] Speed
+// [SECTION] Outputs: CSV, Markdown, plot
+// [SECTION] Driver
+#include "app/benchmark_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "app/viewer_state.h"
+#include "renderer/gl/gl_debug.h"
+#include "renderer/headless_context.h"
+#include "renderer/lighting_model.h"
+#include "renderer/mesh_generators.h"
+#include "renderer/mesh_loader.h"
+#include "renderer/offscreen_target.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Statistics
+
+// Mean, maximum and an approximate 95th percentile (a fine histogram) of many values.
+class ErrorStats {
+ public:
+  explicit ErrorStats(double range = 1.0) : range_(range), bins_(8192, 0) {}
+  void add(double v) {
+    sum_ += v;
+    ++count_;
+    max_ = std::max(max_, v);
+    const size_t b = std::min(bins_.size() - 1, static_cast<size_t>(v / range_ * double(bins_.size())));
+    ++bins_[b];
+  }
+  double mean() const { return count_ ? sum_ / double(count_) : 0.0; }
+  double max() const { return max_; }
+  double p95() const {
+    std::uint64_t seen = 0;
+    for (size_t b = 0; b < bins_.size(); ++b) {
+      seen += bins_[b];
+      if (double(seen) >= 0.95 * double(count_)) return double(b + 1) / double(bins_.size()) * range_;
+    }
+    return max_;
+  }
+
+ private:
+  double range_, sum_ = 0.0, max_ = 0.0;
+  std::uint64_t count_ = 0;
+  std::vector<std::uint64_t> bins_;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return -1.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+double percentile95(std::vector<double> v) {
+  if (v.empty()) return -1.0;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(0.95 * double(v.size())))];
+}
+
+struct PathResult {
+  RenderPath path;
+  // speed
+  double medianMs = 0, p95Ms = 0, cpuMs = 0, gpuMs = -1, xReference = 0;
+  // accuracy
+  ErrorStats error;
+  std::uint64_t pixels = 0, mismatched = 0, compared = 0, jumps = 0, pops = 0;
+  explicit PathResult(RenderPath p, double range) : path(p), error(range) {}
+};
+
+struct ConfigResult {
+  std::string model, palette;
+  MatchMode mode;
+  std::string errorUnit;
+  std::vector<PathResult> paths;
+  std::uint64_t nonFinite = 0;
+  int staticFrames = 0, staticRecomputes = 0, staticUploads = 0, staticBuilds = 0;
+  double lightMinimalMs = 0, lightFullMs = 0;
+};
+
+// The scripted motion: a quarter orbit of the light and a sixth of the camera over the run.
+struct MotionFrame {
+  CameraMatrices camera;
+  glm::vec3 light;
+};
+MotionFrame motion(int frame, int frames, const OrbitCamera& base, float aspect) {
+  const float t = frames > 1 ? float(frame) / float(frames - 1) : 0.0f;
+  OrbitCamera cam = base;
+  cam.orbit(60.0f * t, 0.0f);
+  const float a = 0.4f + 1.57f * t;
+  return {cam.matrices(aspect), glm::vec3(2.5f * std::cos(a), 2.0f, 2.5f * std::sin(a))};
+}
+
+void setLight(Renderer& r, const MotionFrame& m) {
+  const float pos[4] = {m.light.x, m.light.y, m.light.z, 1.0f};
+  r.lighting().setModelView(m.camera.view);
+  (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+}
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Accuracy
+
+const std::vector<RenderPath> kPalettePaths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel,
+                                               RenderPath::Smooth};
+
+bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
+                     ConfigResult& out) {
+  auto target = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
+  if (!target) return;
+  const float aspect = float(size.x) / float(size.y);
+  const size_t n = size_t(size.x) * size_t(size.y);
+  // Per path, the previous frame's drawn tone and the ideal tone, for temporal stability.
+  std::vector<std::vector<float>> prevDrawn(out.paths.size(), std::vector<float>(n, NAN));
+  std::vector<float> prevIdeal(n, NAN), ideal(n, NAN);
+  std::vector<int> idealIndex(n, -1);
+  std::vector<glm::dvec3> idealColour(n), prevIdealColour(n);
+  for (int f = 0; f < frames; ++f) {
+    const MotionFrame m = motion(f, frames, base, aspect);
+    setLight(r, m);
+    RenderSettings geo = settings;
+    auto render = [&](const RenderSettings& s) {
+      target->bind();
+      glClearColor(0, 0, 0, 0);
+      glClear(GL_COLOR_BUFFER_BIT);
+      RenderSettings q = s;
+      q.drawBackground = false;
+      (void)r.render(m.camera, q, {0, 0, size.x, size.y});
+      return target->readRGBA32F();
+    };
+    geo.output = RenderSettings::Output::EyePosition;
+    const ImageRGBA32F pos = render(geo);
+    geo.output = RenderSettings::Output::EyeNormal;
+    const ImageRGBA32F nrm = render(geo);
+    // The first palette render makes the matcher for this palette, mode and scale.
+    RenderSettings first = settings;
+    first.path = RenderPath::Pixel;
+    first.output = RenderSettings::Output::PaletteBlend;
+    (void)render(first);
+    const PaletteMatcher& matcher = *r.matcher();
+    const auto lighting = prepareLighting<double>(r.lighting());
+    // The ideal: the lighting model in double precision at each pixel's interpolated
+    // position and normal, independent of every path under test.
+    for (size_t i = 0; i < n; ++i) {
+      ideal[i] = NAN;
+      idealIndex[i] = -1;
+      if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
+      const float* p = &pos.pixels[i * 4];
+      const float* q = &nrm.pixels[i * 4];
+      if (!finite3(p) || !finite3(q)) {
+        ++out.nonFinite;
+        continue;
+      }
+      const glm::dvec3 lit = shade(lighting, glm::dvec3(p[0], p[1], p[2]), glm::dvec3(q[0], q[1], q[2]), p[3] < 0.0f);
+      if (!std::isfinite(lit.x) || !std::isfinite(lit.y) || !std::isfinite(lit.z)) {
+        ++out.nonFinite;
+        continue;
+      }
+      idealColour[i] = lit;
+      ideal[i] = settings.match == MatchMode::Colors ? 0.0f : matcher.tonePosition(glm::vec3(lit));
+      idealIndex[i] = matcher.match(glm::vec3(lit));
+    }
+    const auto& ranks = matcher.entryRanks();
+    const auto& avg = matcher.scaledAverages();
+    for (size_t k = 0; k < out.paths.size(); ++k) {
+      PathResult& pr = out.paths[k];
+      RenderSettings s = settings;
+      s.path = pr.path;
+      s.output = RenderSettings::Output::PaletteBlend;
+      const ImageRGBA32F sel = render(s);
+      for (size_t i = 0; i < n; ++i) {
+        const float* v = &sel.pixels[i * 4];
+        if (idealIndex[i] < 0) continue;
+        if (!finite3(v)) {
+          ++out.nonFinite;
+          continue;
+        }
+        const int a = std::clamp(int(std::lround(v[0])), 0, matcher.size() - 1), b = std::clamp(int(std::lround(v[1])), 0, matcher.size() - 1);
+        const float t = std::clamp(v[2], 0.0f, 1.0f);
+        const int nearest = t < 0.5f ? a : b;
+        float drawn;  // 1D: tone in palette steps; colours: distance from the ideal colour
+        if (settings.match == MatchMode::Colors) {
+          const glm::dvec3 c = glm::mix(glm::dvec3(avg[size_t(a)]), glm::dvec3(avg[size_t(b)]), double(t));
+          const double e = glm::length(c - glm::clamp(idealColour[i], 0.0, 1.0));
+          pr.error.add(e);
+          drawn = float(nearest);
+        } else {
+          drawn = float(ranks[size_t(a)]) + t * float(ranks[size_t(b)] - ranks[size_t(a)]);
+          pr.error.add(std::fabs(double(drawn) - double(ideal[i])));
+        }
+        ++pr.pixels;
+        pr.mismatched += nearest != idealIndex[i];
+        float& prev = prevDrawn[k][i];
+        if (f > 0 && !std::isnan(prev) && !std::isnan(prevIdeal[i])) {
+          ++pr.compared;
+          if (settings.match == MatchMode::Colors) {
+            // Unordered entries: a pop is a change of entry while the ideal colour barely moved.
+            if (drawn != prev && glm::length(idealColour[i] - prevIdealColour[i]) < 0.01) ++pr.pops;
+          } else {
+            if (std::fabs(drawn - prev) > 1.0f) ++pr.jumps;
+            if (std::fabs(drawn - prev) >= 0.5f && std::fabs(ideal[i] - prevIdeal[i]) < 0.1f) ++pr.pops;
+          }
+        }
+        prev = drawn;
+      }
+    }
+    prevIdeal = ideal;
+    prevIdealColour = idealColour;
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Speed
+
+void measureSpeed(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings, PathResult& pr) {
+  auto target = OffscreenTarget::create(size.x, size.y);
+  if (!target) return;
+  const float aspect = float(size.x) / float(size.y);
+  std::vector<double> wall, cpu, gpu;
+  RenderSettings s = settings;
+  s.path = pr.path;
+  for (int f = -2; f < frames; ++f) {
+    const MotionFrame m = motion(std::max(f, 0), frames, base, aspect);
+    setLight(r, m);
+    target->bind();
+    const auto t0 = std::chrono::steady_clock::now();
+    (void)r.render(m.camera, s, {0, 0, size.x, size.y});
+    glFinish();
+    if (f < 0) continue;  // warm-up: shader builds and uploads
+    wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    cpu.push_back(r.stats().cpuFrameMs);
+    if (r.stats().gpuMs >= 0) gpu.push_back(r.stats().gpuMs);
+  }
+  pr.medianMs = median(wall);
+  pr.p95Ms = percentile95(wall);
+  pr.cpuMs = median(cpu);
+  pr.gpuMs = median(gpu);
+}
+
+// Frames where nothing changes must do no lighting, uploads or shader builds.
+void measureStaticFrames(Renderer& r, const OrbitCamera& base, glm::ivec2 size, const RenderSettings& settings, ConfigResult& out) {
+  auto target = OffscreenTarget::create(size.x, size.y);
+  if (!target) return;
+  const MotionFrame m = motion(0, 1, base, float(size.x) / float(size.y));
+  for (RenderPath p : kPalettePaths) {
+    RenderSettings s = settings;
+    s.path = p;
+    for (int f = 0; f < 6; ++f) {
+      setLight(r, m);  // re-set every frame, as the viewer does: unchanged values cost nothing
+      target->bind();
+      (void)r.render(m.camera, s, {0, 0, size.x, size.y});
+      if (f == 0) continue;
+      ++out.staticFrames;
+      out.staticRecomputes += r.stats().lightingRecomputes;
+      out.staticUploads += r.stats().bufferUploads;
+      out.staticBuilds += r.stats().shaderBuilds;
+    }
+  }
+}
+
+// The same path with a minimal scene (one directional light, no specular) and a full one
+// (four positional spotlights with attenuation, specular, local viewer).
+void measureFeatureCost(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
+                        ConfigResult& out) {
+  LightingState saved = r.lighting();
+  PathResult pr(RenderPath::Pixel, 1.0);
+  LightingState& l = r.lighting();
+  l = LightingState();
+  const float black[4] = {0, 0, 0, 1};
+  (void)l.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
+  measureSpeed(r, base, size, frames, settings, pr);
+  out.lightMinimalMs = pr.medianMs;
+  applyDefaultMaterial(l);
+  (void)l.LightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+  for (int i = 1; i < 4; ++i) {
+    const float c[4] = {0.3f, 0.3f, 0.3f, 1}, p[4] = {float(i) - 2.0f, 2.0f, 2.0f, 1.0f}, d[3] = {0, -1, -1};
+    (void)l.Enable(GL_LIGHT0 + GLenum(i));
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, c);
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, c);
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, p);
+    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPOT_DIRECTION, d);
+    (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_SPOT_CUTOFF, 60.0f);
+    (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_QUADRATIC_ATTENUATION, 0.05f);
+  }
+  measureSpeed(r, base, size, frames, settings, pr);
+  out.lightFullMs = pr.medianMs;
+  r.lighting() = saved;
+}
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Outputs
+
+std::string fmt(double v, int digits = 3) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.*f", digits, v);
+  return b;
+}
+
+std::string slug(const std::string& s) {
+  std::string o;
+  for (char c : s) o += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(static_cast<unsigned char>(c))) : '-';
+  return o;
+}
+
+void writeOutputs(const std::vector<ConfigResult>& results, const fs::path& dir, glm::ivec2 size, int frames, const std::string& gl) {
+  std::ofstream csv(dir / "results.csv");
+  csv << "model,palette,match,path,frames,width,height,median_ms,p95_ms,cpu_ms,gpu_ms,x_reference,error_unit,mean_error,p95_error,"
+         "max_error,index_mismatch_share,jump_share,pop_share,nonfinite\n";
+  std::ofstream md(dir / "results.md");
+  md << "Measured on " << gl << ", " << size.x << "x" << size.y << ", " << frames
+     << " frames of a scripted light and camera orbit per path.\n\n";
+  for (const ConfigResult& c : results) {
+    md << "### " << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << "\n\n";
+    md << "| path | median ms | p95 ms | CPU ms | x reference | mean error | p95 error | max error | index differs | jumps > 1 step | pops |\n";
+    md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const PathResult& p : c.paths) {
+      const bool hasAccuracy = p.pixels > 0;
+      const double mismatch = hasAccuracy ? double(p.mismatched) / double(p.pixels) : 0.0;
+      const double jump = p.compared ? double(p.jumps) / double(p.compared) : 0.0;
+      const double pop = p.compared ? double(p.pops) / double(p.compared) : 0.0;
+      csv << '"' << c.model << "\",\"" << c.palette << "\"," << matchModeName(c.mode) << ',' << renderPathName(p.path) << ',' << frames
+          << ',' << size.x << ',' << size.y << ',' << fmt(p.medianMs) << ',' << fmt(p.p95Ms) << ',' << fmt(p.cpuMs) << ','
+          << fmt(p.gpuMs) << ',' << fmt(p.xReference) << ',' << c.errorUnit << ',';
+      if (hasAccuracy) csv << fmt(p.error.mean(), 5) << ',' << fmt(p.error.p95(), 5) << ',' << fmt(p.error.max(), 5) << ',' << fmt(mismatch, 5);
+      else csv << ",,,";
+      csv << ',' << fmt(jump, 5) << ',' << fmt(pop, 5) << ',' << c.nonFinite << '\n';
+      md << "| " << renderPathName(p.path) << " | " << fmt(p.medianMs, 1) << " | " << fmt(p.p95Ms, 1) << " | " << fmt(p.cpuMs, 1) << " | "
+         << fmt(p.xReference, 2) << " | ";
+      if (hasAccuracy)
+        md << fmt(p.error.mean(), 4) << " | " << fmt(p.error.p95(), 4) << " | " << fmt(p.error.max(), 3) << " | " << fmt(100 * mismatch, 2)
+           << "% | " << fmt(100 * jump, 3) << "% | " << fmt(100 * pop, 3) << "% |\n";
+      else
+        md << "- | - | - | - | - | - |\n";
+    }
+    md << "\nError unit: " << c.errorUnit << ". Static frames (nothing changed): " << c.staticRecomputes << " lighting recomputations, "
+       << c.staticUploads << " uploads, " << c.staticBuilds << " shader builds over " << c.staticFrames
+       << " frames. Pixel path, one directional light without specular: " << fmt(c.lightMinimalMs, 1)
+       << " ms; four lights with specular, spots and attenuation: " << fmt(c.lightFullMs, 1) << " ms. Non-finite values: " << c.nonFinite
+       << ".\n\n";
+
+    // The plot: frame time against mean error, one labelled point per path.
+    const std::string stem = "plot-" + slug(c.model) + "-" + slug(c.palette) + "-" + matchModeName(c.mode);
+    std::ofstream data(dir / (stem + ".dat"));
+    for (const PathResult& p : c.paths)
+      if (p.pixels > 0) data << renderPathName(p.path) << ' ' << p.medianMs << ' ' << p.error.mean() << '\n';
+    data.close();
+    std::ofstream gp(dir / (stem + ".gp"));
+    gp << "set terminal pngcairo size 900,600 noenhanced\nset output '" << (dir / (stem + ".png")).string() << "'\n"
+        << "set title '" << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << " (" << size.x << "x" << size.y
+        << ")'\nset xlabel 'median frame time (ms)'\nset ylabel 'mean error (" << c.errorUnit << ")'\n"
+        << "set grid\nset key outside right title 'path'\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\nplot ";
+    int k = 0;
+    for (const PathResult& p : c.paths) {
+      if (p.pixels == 0) continue;
+      gp << (k ? ", " : "") << "'" << (dir / (stem + ".dat")).string() << "' using (strcol(1) eq '" << renderPathName(p.path)
+          << "' ? $2 : 1/0):3 with points pointsize 2.5 pointtype " << (k + 5) << " title '" << renderPathName(p.path) << "'";
+      ++k;
+    }
+    gp << "\n";
+    gp.close();
+    const std::string cmd = "gnuplot '" + (dir / (stem + ".gp")).string() + "' 2>&1";
+    if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "npr-viewer: gnuplot failed for %s (is gnuplot installed?)\n", stem.c_str());
+    md << "![" << stem << "](" << stem << ".png)\n\n";
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// [SECTION] Driver
+
+int runBenchmark(const Options& o) {
+  auto ctx = HeadlessContext::create(false);
+  if (!ctx) {
+    std::fprintf(stderr, "npr-viewer: %s\n", ctx.error().c_str());
+    return 1;
+  }
+  auto renderer = Renderer::create();
+  if (!renderer) {
+    std::fprintf(stderr, "npr-viewer: %s\n", renderer.error().c_str());
+    return 1;
+  }
+  Renderer& r = **renderer;
+  std::error_code ec;
+  fs::create_directories(o.outDir, ec);
+  if (ec) {
+    std::fprintf(stderr, "npr-viewer: cannot create output folder %s: %s\n", o.outDir.c_str(), ec.message().c_str());
+    return 1;
+  }
+  const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
+  const std::vector<std::string> palettes = o.palettes.empty() ? std::vector<std::string>{defaultPalettePath()} : o.palettes;
+  const int frames = o.frames > 0 ? o.frames : 120;
+  std::vector<ConfigResult> results;
+  std::uint64_t nonFinite = 0;
+  for (const std::string& modelName : models) {
+    std::optional<Mesh> generated = generatedMesh(modelName);
+    Result<Mesh> loaded = generated ? Result<Mesh>(std::move(*generated)) : loadMesh(modelName);
+    if (!loaded) {
+      std::fprintf(stderr, "npr-viewer: %s\n", loaded.error().c_str());
+      return 1;
+    }
+    const Mesh& mesh = *loaded;
+    r.setMesh(&mesh);
+    OrbitCamera camera(30.0f, 20.0f, 3.0f);
+    camera.frame(mesh.radius);
+    for (const std::string& paletteFile : palettes) {
+      auto palette = loadPalette(paletteFile);
+      if (!palette) {
+        std::fprintf(stderr, "npr-viewer: %s\n", palette.error().c_str());
+        return 1;
+      }
+      if (Status s = r.setPalette(*palette); !s) {
+        std::fprintf(stderr, "npr-viewer: %s\n", s.error().c_str());
+        return 1;
+      }
+      const MatchMode mode = o.match.value_or(palette->defaultMatch.value_or(MatchMode::Intensity));
+      r.lighting() = LightingState();
+      applyDefaultMaterial(r.lighting());
+      RenderSettings settings;
+      settings.match = mode;
+      settings.rangeScale = o.rangeScale.value_or(palette->defaultRangeScale.value_or(1.0f));
+      ConfigResult c;
+      c.model = fs::path(mesh.report.file).filename().string();
+      c.palette = palette->name + " (" + std::to_string(palette->entries.size()) + ")";
+      c.mode = mode;
+      c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
+      const double range = mode == MatchMode::Colors ? 1.75 : double(palette->entries.size());
+      for (RenderPath p : kPalettePaths) c.paths.emplace_back(p, range);
+      std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
+      measureAccuracy(r, camera, o.size, frames, settings, c);
+      c.paths.emplace_back(RenderPath::Reference, range);
+      c.paths.emplace_back(RenderPath::LitTextured, range);
+      std::fprintf(stderr, "benchmark: speed...\n");
+      for (PathResult& p : c.paths) measureSpeed(r, camera, o.size, frames, settings, p);
+      const double ref = std::find_if(c.paths.begin(), c.paths.end(), [](const PathResult& p) { return p.path == RenderPath::Reference; })->medianMs;
+      for (PathResult& p : c.paths) p.xReference = ref > 0 ? p.medianMs / ref : 0.0;
+      measureStaticFrames(r, camera, o.size, settings, c);
+      measureFeatureCost(r, camera, o.size, std::min(frames, 30), settings, c);
+      nonFinite += c.nonFinite;
+      results.push_back(std::move(c));
+    }
+  }
+  writeOutputs(results, o.outDir, o.size, frames, (*ctx)->description());
+  std::ifstream md(fs::path(o.outDir) / "results.md");
+  std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
+  if (nonFinite) {
+    std::fprintf(stderr, "npr-viewer: %llu non-finite values seen during the benchmark\n", static_cast<unsigned long long>(nonFinite));
+    return 1;
+  }
+  if (gl::checkErrors("end of benchmark")) return 1;
+  return 0;
+}
+
+}  // namespace npr
