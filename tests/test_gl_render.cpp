@@ -16,6 +16,7 @@
 #include "app/viewer_state.h"
 #include "gl_test_env.h"
 #include "renderer/image_io.h"
+#include "renderer/immediate_api.h"
 #include "renderer/lighting_model.h"
 #include "renderer/mesh_loader.h"
 #include "test_util.h"
@@ -368,6 +369,36 @@ TEST_F(Fixture, FailedPaletteLoadKeepsTheCurrentOne) {
   const ImageRGBA8 after = renderImage(*r, testCamera(1.0f), s, 64, 64);
   EXPECT_EQ(countDiffering(before, after), 0);
   EXPECT_GE(state.messages.size(), 2u);  // both failures are reported for the overlay
+}
+
+TEST_F(Fixture, ImmediateBeginRenderTriangleEndDrawsLikeTheRetainedMesh) {
+  const Mesh sphere = test::icosphere(3);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  const CameraMatrices cam = testCamera(1.0f);
+  RenderSettings s;
+  s.path = RenderPath::Stencil;
+  r->setMesh(&sphere);
+  const ImageRGBA8 retained = renderImage(*r, cam, s, 160, 160);
+
+  PaletteRenderer immediate(*r);
+  EXPECT_FALSE(immediate.IntensityRangeScale(-1.0f));
+  EXPECT_TRUE(immediate.IntensityRangeScale(1.0f));
+  immediate.ColorMatchMode(MatchMode::Intensity);
+  const float spec[4] = {0.35f, 0.35f, 0.35f, 1.0f};
+  EXPECT_TRUE(immediate.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec));  // same state as the fixture's
+  EXPECT_FALSE(immediate.Lightf(GL_LIGHT0, GL_SPOT_CUTOFF, 120.0f));
+  auto target = OffscreenTarget::create(160, 160);
+  ASSERT_TRUE(target);
+  target->bind();
+  immediate.Begin();
+  for (size_t t = 0; t < sphere.triangleCount(); ++t)
+    immediate.RenderTriangle({{sphere.positions[sphere.indices[t * 3]], sphere.positions[sphere.indices[t * 3 + 1]],
+                               sphere.positions[sphere.indices[t * 3 + 2]]}});
+  ASSERT_TRUE(immediate.End(cam, {0, 0, 160, 160}));
+  const ImageRGBA8 drawn = target->readRGBA8();
+  EXPECT_LE(countDiffering(retained, drawn), 160 * 160 / 1000);
+  EXPECT_GT(r->stats().nonEmptyBuckets, 3);
+  EXPECT_FALSE(immediate.End(cam, {0, 0, 160, 160}));  // End without Begin is refused
 }
 
 // ---- Golden images -----------------------------------------------------------------------
