@@ -37,6 +37,10 @@ struct PreparedLighting {
   V3 eye{0};              // local viewer: the eye's position in the lighting space
   V3 viewDirection{0, 0, 1};  // infinite viewer: direction towards the eye
   V3 unlit{1};
+  // Tone models (Gooch, splashback): cool and warm colours per side, the splash multiplier.
+  ToneModel tone = ToneModel::OpenGL;
+  V3 cool[2], warm[2];
+  T splashAlpha = 0, splashPower = 0;
 };
 
 // `toSpace` maps eye space into the lighting space (identity for eye space; the inverse of a
@@ -61,6 +65,15 @@ PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toS
     p.base[side] = V3(mats[side]->emission) + V3(mats[side]->ambient) * V3(s.modelAmbient());
     p.shininess[side] = static_cast<T>(mats[side]->shininess);
   }
+  p.tone = f.tone;
+  const ToneParameters& tp = s.toneParameters();
+  for (int side = 0; side < 2; ++side) {
+    const V3 kd(mats[side]->diffuse);
+    p.cool[side] = V3(0, 0, tp.blue) + T(tp.alpha) * kd;
+    p.warm[side] = V3(tp.yellow, tp.yellow, 0) + T(tp.beta) * kd;
+  }
+  p.splashAlpha = T(tp.splashAlpha);
+  p.splashPower = T(tp.splashPower);
   for (int i = 0; i < kMaxLights; ++i) {
     const Light& l = s.light(i);
     if (!l.enabled) continue;
@@ -124,6 +137,20 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
   const int side = (back && p.twoSided) ? 1 : 0;
   V3 n = safeNormalize(normal);
   if (side) n = -n;
+  if (p.tone != ToneModel::OpenGL) {
+    // Gooch: l is the direction the light travels (towards the surface), so surfaces facing
+    // the light (l.n = -1) get the warm colour and those facing away the cool one.
+    V3 vp(0, 0, 1);  // no light: a headlight
+    if (p.count > 0) {
+      const auto& l = p.lights[0];
+      vp = l.positional ? safeNormalize(l.position - pos) : l.position;
+    }
+    const T ndl = glm::dot(n, vp);
+    const T t = (T(1) - ndl) * T(0.5);  // (1 + l.n) / 2 with l = -vp
+    V3 c = t * p.cool[side] + (T(1) - t) * p.warm[side];
+    if (p.tone == ToneModel::Splashback) c *= powGL(p.splashAlpha * std::fabs(ndl) + (T(1) - p.splashAlpha), p.splashPower);
+    return V3(clamp01(c.x), clamp01(c.y), clamp01(c.z));
+  }
   V3 c = p.base[side];
   V3 toEye = p.viewDirection;
   if (p.localViewer) {

@@ -23,8 +23,28 @@ Status invalid(const std::string& call, const std::string& why) { return Error{c
 
 }  // namespace
 
+const char* toneModelName(ToneModel t) {
+  switch (t) {
+    case ToneModel::OpenGL: return "opengl";
+    case ToneModel::Gooch: return "gooch";
+    case ToneModel::Splashback: return "splashback";
+  }
+  return "?";
+}
+
+Status LightingState::setToneModel(ToneModel model, const ToneParameters& p) {
+  auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
+  if (!in01(p.blue) || !in01(p.yellow) || !in01(p.alpha) || !in01(p.beta) || !in01(p.splashAlpha))
+    return invalid("setToneModel", "blue, yellow, alpha, beta and splash alpha must be in [0, 1]");
+  if (!(p.splashPower >= 0.0f && p.splashPower <= 64.0f)) return invalid("setToneModel", "splash power must be in [0, 64]");
+  tone_ = model;
+  toneParams_ = p;
+  ++revision_;
+  return okStatus();
+}
+
 bool LightingFeatures::operator==(const LightingFeatures& o) const {
-  return lightCount == o.lightCount && lighting == o.lighting && positional == o.positional &&
+  return tone == o.tone && lightCount == o.lightCount && lighting == o.lighting && positional == o.positional &&
          attenuation == o.attenuation && spot == o.spot && specular == o.specular && localViewer == o.localViewer &&
          twoSided == o.twoSided;
 }
@@ -37,6 +57,8 @@ std::vector<std::string> LightingFeatures::glslDefines() const {
     return d;
   }
   d.push_back("NUM_LIGHTS " + std::to_string(lightCount));
+  if (tone == ToneModel::Gooch) d.push_back("TONE_GOOCH");
+  if (tone == ToneModel::Splashback) d.push_back("TONE_SPLASHBACK");
   if (positional) d.push_back("HAS_POSITIONAL");
   if (attenuation) d.push_back("HAS_ATTENUATION");
   if (spot) d.push_back("HAS_SPOT");
@@ -178,6 +200,7 @@ LightingFeatures LightingState::features() const {
   if (!lighting_) return f;
   f.localViewer = localViewer_;
   f.twoSided = twoSided_;
+  f.tone = tone_;
   const bool matSpec = glm::any(glm::notEqual(glm::vec3(front_.specular), glm::vec3(0.0f))) ||
                        (twoSided_ && glm::any(glm::notEqual(glm::vec3(back_.specular), glm::vec3(0.0f))));
   for (const Light& l : lights_) {
@@ -189,7 +212,8 @@ LightingFeatures LightingState::features() const {
     f.spot |= l.spotCutoff != 180.0f;
     f.specular |= matSpec && glm::any(glm::notEqual(glm::vec3(l.specular), glm::vec3(0.0f)));
   }
-  // The view direction matters only to the specular term.
+  // The view direction matters only to the specular term, which tone models do not have.
+  if (f.tone != ToneModel::OpenGL) f.specular = f.spot = f.attenuation = false;
   if (!f.specular) f.localViewer = false;
   return f;
 }

@@ -40,6 +40,21 @@ struct Material {
   float shininess = 0.0f;
 };
 
+// What the lit colour is computed with. OpenGL is the fixed-function equation; Gooch is
+// cool-to-warm tone (Gooch et al. 1998) with the first enabled light; Splashback multiplies
+// Gooch by (alpha |cos theta| + 1 - alpha)^p, theta between the normal and that light.
+enum class ToneModel { OpenGL, Gooch, Splashback };
+const char* toneModelName(ToneModel t);
+
+struct ToneParameters {
+  float blue = 0.4f;    // k_blue = (0, 0, blue)
+  float yellow = 0.4f;  // k_yellow = (yellow, yellow, 0)
+  float alpha = 0.2f;   // k_cool = k_blue + alpha k_d
+  float beta = 0.6f;    // k_warm = k_yellow + beta k_d
+  float splashAlpha = 0.5f;
+  float splashPower = 2.0f;
+};
+
 // Which parts of the lighting equation a scene uses: shaders are compiled for exactly these,
 // and the CPU lighting skips the rest.
 struct LightingFeatures {
@@ -51,6 +66,7 @@ struct LightingFeatures {
   bool specular = false;
   bool localViewer = false;
   bool twoSided = false;
+  ToneModel tone = ToneModel::OpenGL;
   bool operator==(const LightingFeatures& o) const;
   bool operator!=(const LightingFeatures& o) const { return !(*this == o); }
   std::vector<std::string> glslDefines() const;  // NUM_LIGHTS n, HAS_SPOT, ...
@@ -82,6 +98,10 @@ class LightingState {
   bool localViewer() const { return localViewer_; }
   bool twoSided() const { return twoSided_; }
   bool lightingEnabled() const { return lighting_; }
+  // Blue and yellow in [0,1], alpha and beta in [0,1], splash alpha in [0,1], power in [0,64].
+  Status setToneModel(ToneModel model, const ToneParameters& parameters);
+  ToneModel toneModel() const { return tone_; }
+  const ToneParameters& toneParameters() const { return toneParams_; }
   glm::vec4 unlitColor() const { return {1, 1, 1, 1}; }  // glColor's default: what "lighting off" shows
 
   LightingFeatures features() const;
@@ -97,6 +117,8 @@ class LightingState {
   bool twoSided_ = false;
   bool lighting_ = true;  // the renderer's whole purpose is lighting, so it starts enabled
   glm::mat4 modelView_{1.0f};
+  ToneModel tone_ = ToneModel::OpenGL;
+  ToneParameters toneParams_;
   unsigned revision_ = 0;
 };
 

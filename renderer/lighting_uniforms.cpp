@@ -10,6 +10,12 @@ namespace npr {
 void uploadLightingUniforms(GLuint program, const PreparedLighting<float>& p) {
   const glm::vec3 base[2] = {p.base[0], p.base[1]};
   gl::setUniformArray(program, "uBase", base, 2);
+  if (p.tone != ToneModel::OpenGL) {
+    const glm::vec3 cool[2] = {p.cool[0], p.cool[1]}, warm[2] = {p.warm[0], p.warm[1]};
+    gl::setUniformArray(program, "uCool", cool, 2);
+    gl::setUniformArray(program, "uWarm", warm, 2);
+    gl::setUniform(program, "uSplash", glm::vec2(p.splashAlpha, p.splashPower));
+  }
   const int n = p.count;
   if (!p.lighting || n == 0) return;
   std::vector<glm::vec3> amb(2 * n), dif(2 * n), spec(2 * n), spotDir(n), att(n);

@@ -80,8 +80,13 @@ bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) { return nearlyEqual(a.
 // same space). The eye matters only to specular and two-sided terms.
 bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float>& b) {
   if (a.count != b.count || a.lighting != b.lighting || a.specular != b.specular || a.localViewer != b.localViewer ||
-      a.twoSided != b.twoSided)
+      a.twoSided != b.twoSided || a.tone != b.tone)
     return false;
+  if (a.tone != ToneModel::OpenGL)
+    for (int s = 0; s < 2; ++s)
+      if (!nearlyEqual(a.cool[s], b.cool[s]) || !nearlyEqual(a.warm[s], b.warm[s]) || a.splashAlpha != b.splashAlpha ||
+          a.splashPower != b.splashPower)
+        return false;
   for (int s = 0; s < 2; ++s)
     if (!nearlyEqual(a.base[s], b.base[s]) || a.shininess[s] != b.shininess[s]) return false;
   if (a.specular || a.twoSided)

@@ -33,7 +33,7 @@ struct DirectionalLighting {
   std::vector<float> powTable;
 
   static bool applies(const PreparedLighting<float>& p) {
-    if (!p.lighting || p.localViewer || p.twoSided) return false;
+    if (!p.lighting || p.localViewer || p.twoSided || p.tone != ToneModel::OpenGL) return false;
     for (int i = 0; i < p.count; ++i)
       if (p.lights[i].positional || p.lights[i].spot) return false;
     return true;

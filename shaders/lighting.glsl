@@ -1,7 +1,8 @@
 // The OpenGL 2.1 lighting equation (section 2.14.1), in eye space: the same equation as
 // renderer/lighting_model.h, specialised by #defines to the features the scene uses:
 // NUM_LIGHTS, HAS_POSITIONAL, HAS_ATTENUATION, HAS_SPOT, HAS_SPECULAR, LOCAL_VIEWER,
-// TWO_SIDED, LIGHTING_OFF. Uniforms are the prepared products of light and material colours.
+// TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
+// the prepared products of light and material colours.
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
@@ -24,6 +25,12 @@ uniform float uSpotCosCutoff[NUM_LIGHTS];  // -2 for a light with no spot (cutof
 #ifdef HAS_ATTENUATION
 uniform vec3 uAttenuation[NUM_LIGHTS];  // constant, linear, quadratic
 #endif
+#endif
+
+#if defined(TONE_GOOCH) || defined(TONE_SPLASHBACK)
+uniform vec3 uCool[2];
+uniform vec3 uWarm[2];
+uniform vec2 uSplash;  // alpha, power
 #endif
 
 const float kMaxFloat = 3.402823e38;
@@ -54,6 +61,20 @@ vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) {
 #endif
   vec3 n = safeNormalize(normal);
   if (side == 1) n = -n;
+#if defined(TONE_GOOCH) || defined(TONE_SPLASHBACK)
+  // Cool-to-warm tone with the first light (see lighting_model.h for the sign convention).
+  vec3 vp = vec3(0.0, 0.0, 1.0);
+#if NUM_LIGHTS > 0
+  vp = uLightPosition[0].w != 0.0 ? safeNormalize(uLightPosition[0].xyz - pos) : uLightPosition[0].xyz;
+#endif
+  float ndl = dot(n, vp);
+  float t = (1.0 - ndl) * 0.5;
+  vec3 tone = t * uCool[side] + (1.0 - t) * uWarm[side];
+#ifdef TONE_SPLASHBACK
+  tone *= powGL(uSplash.x * abs(ndl) + (1.0 - uSplash.x), uSplash.y);
+#endif
+  return clamp01(tone);
+#endif
   vec3 c = uBase[side];
 #if NUM_LIGHTS > 0
 #ifdef HAS_SPECULAR

@@ -53,6 +53,10 @@ LightingState randomState(std::mt19937& rng) {
   }
   (void)st.LightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, int(rng() % 2));
   (void)st.LightModeli(GL_LIGHT_MODEL_TWO_SIDE, int(rng() % 2));
+  if (rng() % 4 == 0) {  // the tone models go through the same comparison
+    ToneParameters tp{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng) * 8.0f};
+    (void)st.setToneModel(rng() % 2 ? ToneModel::Gooch : ToneModel::Splashback, tp);
+  }
   return st;
 }
 

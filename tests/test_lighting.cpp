@@ -221,6 +221,50 @@ TEST(LightingFeatures, DescribeOnlyWhatIsUsed) {
   EXPECT_NE(std::find(defines.begin(), defines.end(), "NUM_LIGHTS 1"), defines.end());
 }
 
+TEST(ToneModels, GoochCoolToWarm) {
+  LightingState s;
+  ASSERT_TRUE(s.setToneModel(ToneModel::Gooch, ToneParameters{}));
+  // k_cool = (0,0,0.4) + 0.2 x 0.8 = (0.16,0.16,0.56); k_warm = (0.4,0.4,0) + 0.6 x 0.8 = (0.88,0.88,0.48)
+  const glm::vec3 facing = shadeEye(s, {0, 0, -3}, {0, 0, 1});  // towards the light: warm
+  EXPECT_NEAR(facing.r, 0.88f, 1e-5f);
+  EXPECT_NEAR(facing.b, 0.48f, 1e-5f);
+  const glm::vec3 away = shadeEye(s, {0, 0, -3}, {0, 0, -1});  // away: cool
+  EXPECT_NEAR(away.r, 0.16f, 1e-5f);
+  EXPECT_NEAR(away.b, 0.56f, 1e-5f);
+  const glm::vec3 side = shadeEye(s, {0, 0, -3}, {1, 0, 0});  // halfway
+  EXPECT_NEAR(side.r, 0.52f, 1e-5f);
+  EXPECT_NEAR(side.b, 0.52f, 1e-5f);
+  EXPECT_TRUE(s.features().glslDefines().end() !=
+              std::find(s.features().glslDefines().begin(), s.features().glslDefines().end(), "TONE_GOOCH"));
+}
+
+TEST(ToneModels, SplashbackMultiplier) {
+  LightingState s;
+  ToneParameters p;
+  p.splashAlpha = 0.5f;
+  p.splashPower = 2.0f;
+  ASSERT_TRUE(s.setToneModel(ToneModel::Splashback, p));
+  // Perpendicular to the light: (0.5 x 0 + 0.5)^2 = 0.25 times the Gooch 0.52
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {1, 0, 0}).g, 0.52f * 0.25f, 1e-5f);
+  // Facing or opposite the light: |cos| = 1, factor 1
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {0, 0, 1}).r, 0.88f, 1e-5f);
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {0, 0, -1}).b, 0.56f, 1e-5f);
+  // A tilted normal: cos = 0.6, factor (0.3 + 0.5)^2 = 0.64; t = 0.2: 0.2 k_cool + 0.8 k_warm
+  const glm::vec3 c = shadeEye(s, {0, 0, -3}, {0.8f, 0, 0.6f});
+  EXPECT_NEAR(c.r, (0.2f * 0.16f + 0.8f * 0.88f) * 0.64f, 1e-5f);
+}
+
+TEST(ToneModels, ParametersAreValidated) {
+  LightingState s;
+  ToneParameters bad;
+  bad.alpha = 1.5f;
+  EXPECT_FALSE(s.setToneModel(ToneModel::Gooch, bad));
+  bad = ToneParameters{};
+  bad.splashPower = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(s.setToneModel(ToneModel::Splashback, bad));
+  EXPECT_EQ(s.toneModel(), ToneModel::OpenGL);
+}
+
 // ---- Extremes: always finite and within [0,1] ------------------------------------------
 
 TEST(LightingExtremes, AttenuationZeroOrHuge) {
