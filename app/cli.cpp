@@ -37,7 +37,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
                "whose average colour or intensity matches best, in screen space."};
   Options o;
-  std::string path, match, size, light, camera, rangeScale;
+  std::string path, match, size, light, camera, rangeScale, lines, tone;
+  float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
   app.add_option("--path", path, "Render path: stencil|triangle|vertex|pixel|smooth|reference");
@@ -55,6 +56,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--out", o.outDir, "Benchmark output folder (default benchmark-results)");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
+  app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
+  app.add_option("--crease-angle", creaseAngle, "Dihedral angle above which an edge is a crease, degrees (default 60)");
+  app.add_option("--line-width", lineWidth, "Line width in pixels (default 2)");
+  app.add_flag("--sketchy", o.sketchy, "Draw each line as a few jittered strokes");
+  app.add_flag("--line-falloff", o.lineFalloff, "Thinner lines with distance");
+  app.add_option("--tone", tone, "Lighting model the palette matches against: opengl|gooch|splashback");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -94,6 +101,31 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (!parseFloats(camera, 3, v) || v[2] <= 0.0f)
       return {std::nullopt, fail("--camera must be YAW,PITCH,DISTANCE with DISTANCE > 0, got '" + camera + "'")};
     o.camera = glm::vec3(v[0], v[1], v[2]);
+  }
+  if (!lines.empty()) {
+    std::stringstream ss(lines);
+    std::string kind;
+    while (std::getline(ss, kind, ',')) {
+      if (kind == "silhouette" || kind == "silhouettes") o.silhouettes = true;
+      else if (kind == "crease" || kind == "creases") o.creases = true;
+      else if (kind == "boundary" || kind == "boundaries") o.boundaries = true;
+      else if (kind == "image") o.imageEdges = true;
+      else return {std::nullopt, fail("unknown --lines kind '" + kind + "': use silhouette, crease, boundary or image")};
+    }
+  }
+  if (!std::isnan(creaseAngle)) {
+    if (!(creaseAngle >= 0.0f && creaseAngle <= 180.0f)) return {std::nullopt, fail("--crease-angle must be in [0, 180]")};
+    o.creaseAngle = creaseAngle;
+  }
+  if (!std::isnan(lineWidth)) {
+    if (!(lineWidth > 0.0f && lineWidth <= 64.0f)) return {std::nullopt, fail("--line-width must be in (0, 64] pixels")};
+    o.lineWidth = lineWidth;
+  }
+  if (!tone.empty()) {
+    if (tone == "opengl") o.tone = ToneModel::OpenGL;
+    else if (tone == "gooch") o.tone = ToneModel::Gooch;
+    else if (tone == "splashback") o.tone = ToneModel::Splashback;
+    else return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch or splashback")};
   }
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/lighting_state.h"
 #include "renderer/palette.h"
 #include "renderer/render_path.h"
 
@@ -30,6 +31,11 @@ struct Options {
   std::string outDir = "benchmark-results";
   bool gouraud = false;
   bool naiveStencil = false;
+  // Lines and tone (overlay toggles too)
+  bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;
+  std::optional<float> creaseAngle, lineWidth;
+  bool sketchy = false, lineFalloff = false;
+  std::optional<ToneModel> tone;
 };
 
 // Returns the options, or an exit status (0 after --help, 2 for bad arguments) with the

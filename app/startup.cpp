@@ -19,6 +19,16 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;
   state.settings.referenceGouraud = o.gouraud;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
+  LineSettings& lines = state.settings.lines;
+  lines.silhouettes = o.silhouettes;
+  lines.creases = o.creases;
+  lines.boundaries = o.boundaries;
+  lines.imageSpace = o.imageEdges;
+  lines.sketchy = o.sketchy;
+  lines.depthFalloff = o.lineFalloff;
+  if (o.creaseAngle) lines.creaseAngle = *o.creaseAngle;
+  if (o.lineWidth) lines.width = *o.lineWidth;
+  if (o.tone) (void)renderer.lighting().setToneModel(*o.tone, renderer.lighting().toneParameters());
   if (o.light) state.light = *o.light;
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());
   return okStatus();

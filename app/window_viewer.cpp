@@ -200,6 +200,7 @@ void drawOverlay(Viewer& v) {
               st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
   ImGui::Text("%zu triangles, %d non-empty buckets", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets);
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
   ImGui::Separator();
   ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
   // Palette list: the number keys and [ ] choose among these.
@@ -224,6 +225,44 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
   }
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
+  if (ImGui::CollapsingHeader("Lines and tone")) {
+    LineSettings& ls = s.settings.lines;
+    ImGui::Checkbox("silhouettes", &ls.silhouettes);
+    ImGui::SameLine();
+    ImGui::Checkbox("creases", &ls.creases);
+    ImGui::SameLine();
+    ImGui::Checkbox("boundaries", &ls.boundaries);
+    ImGui::Checkbox("image-space edges", &ls.imageSpace);
+    ImGui::SameLine();
+    ImGui::Checkbox("sketchy", &ls.sketchy);
+    ImGui::SameLine();
+    ImGui::Checkbox("depth falloff", &ls.depthFalloff);
+    ImGui::SliderFloat("crease angle", &ls.creaseAngle, 1.0f, 179.0f, "%.0f deg");
+    ImGui::SliderFloat("line width", &ls.width, 0.5f, 12.0f, "%.1f px");
+    ImGui::SliderFloat("edge threshold", &ls.imageThreshold, 0.05f, 2.0f, "%.2f");
+    ImGui::ColorEdit3("silhouette", &ls.silhouetteColour.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("crease", &ls.creaseColour.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("boundary", &ls.boundaryColour.x, ImGuiColorEditFlags_NoInputs);
+    LightingState& lighting = v.renderer->lighting();
+    int tone = static_cast<int>(lighting.toneModel());
+    ToneParameters tp = lighting.toneParameters();
+    bool changed = ImGui::Combo("tone", &tone, "OpenGL\0Gooch\0splashback\0");
+    if (tone != 0) {
+      changed |= ImGui::SliderFloat("blue", &tp.blue, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("yellow", &tp.yellow, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("alpha", &tp.alpha, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("beta", &tp.beta, 0.0f, 1.0f);
+      if (tone == 2) {
+        changed |= ImGui::SliderFloat("splash alpha", &tp.splashAlpha, 0.0f, 1.0f);
+        changed |= ImGui::SliderFloat("splash power", &tp.splashPower, 0.0f, 16.0f);
+      }
+    }
+    if (changed) {
+      if (Status st = lighting.setToneModel(static_cast<ToneModel>(tone), tp); !st) s.note(st.error());
+    }
+  }
   ImGui::Checkbox("split view (B)", &s.splitView);
   ImGui::Separator();
   ImGui::DragFloat3("light", &s.light.x, 0.02f);

@@ -273,10 +273,13 @@ int main(int argc, char** argv) {
     cel.push_back(solid(c));
   w.palette("cel", "name Cel (4 tones)\nmatch intensity\nbackground #FFFFFF\n", cel, nullptr, "tone");
 
-  // Gooch: k_cool = blue + alpha kd to k_warm = yellow + beta kd, with kd a mid grey.
+  // Gooch: the ramp from k_cool = blue + alpha kd to k_warm = yellow + beta kd with the
+  // renderer's default tone parameters (blue = yellow = 0.4, alpha = 0.2, beta = 0.6) and
+  // OpenGL's default diffuse (0.8): with --tone gooch and match colors every tone the model
+  // produces has an entry, and the result is technical-illustration shading.
   std::vector<RgbaImage> gooch;
-  const glm::vec3 kd(0.8f), cool = glm::vec3(0, 0, 0.55f) + 0.25f * kd, warm = glm::vec3(0.3f, 0.3f, 0) + 0.5f * kd;
-  for (int i = 0; i < 16; ++i) gooch.push_back(solid(glm::clamp(cool * 0.55f + (warm - cool * 0.55f) * (float(i) / 15.0f), 0.0f, 1.0f)));
+  const glm::vec3 kd(0.8f), cool = glm::vec3(0, 0, 0.4f) + 0.2f * kd, warm = glm::vec3(0.4f, 0.4f, 0) + 0.6f * kd;
+  for (int i = 0; i < 16; ++i) gooch.push_back(solid(cool + (warm - cool) * (float(i) / 15.0f)));
   w.palette("gooch", "name Gooch cool-to-warm\nmatch colors\nbackground #F4F4F0\n", gooch, nullptr, "tone");
 
   // The order set: one image, blurred and solarized progressively; entry 0 is the most

@@ -47,7 +47,7 @@ class PaletteRenderer {
 
  private:
   Renderer& renderer_;
-  RenderSettings settings_{RenderPath::Stencil};
+  RenderSettings settings_ = [] { RenderSettings s; s.path = RenderPath::Stencil; return s; }();
   std::vector<Triangle> pending_;
   Mesh mesh_;
   bool begun_ = false;

@@ -6,11 +6,14 @@
 // [SECTION] Frame: background, single-pass paths, the stencil path
 #include "renderer/renderer.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/feature_edges.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/gl_program.h"
 #include "renderer/lighting_uniforms.h"
@@ -45,7 +48,8 @@ void apply(const PassState& s) {
   glColorMask(c, c, c, c);
   if (s.blend) {
     glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    // Colour blends; destination alpha stays as it is (opaque), so read-backs and screenshots stay opaque.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   } else {
     glDisable(GL_BLEND);
   }
@@ -149,6 +153,10 @@ void Renderer::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   ++meshGeneration_;
   shadingKey_.valid = false;
+  edges_.reset();
+  uploadedCreaseAngle_ = -1.0f;
+  silhouetteEye_ = glm::vec3(NAN);
+  staticLineCount_ = silhouetteCount_ = 0;
   vao_.reset();
   positions_.reset();
   normals_.reset();
@@ -437,6 +445,8 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   stats_.cpuShadingMs = 0.0;
   stats_.lightingRecomputes = stats_.bufferUploads = stats_.shaderBuilds = stats_.lutBuilds = stats_.drawCalls = 0;
   stats_.nonEmptyBuckets = 0;
+  stats_.lines = 0;
+  stats_.cpuLinesMs = 0.0;
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (!palette_ && s.path != RenderPath::Reference) return Error{"no palette loaded"};
   if (palette_) if (Status st = ensureMatcher(s); !st) return st;
@@ -530,6 +540,10 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
       }
     }
   }
+  if (result && mesh_ && triangleCount_ > 0 && s.output == RenderSettings::Output::Image && s.lines.any()) {
+    if (s.lines.imageSpace) drawImageSpaceEdges(camera, s.lines, viewport);
+    drawLines(camera, s.lines, viewport);
+  }
   if (timing) {
     glEndQuery(GL_TIME_ELAPSED);
     timerPending_[timer] = true;
@@ -608,6 +622,139 @@ Status Renderer::renderStencil(const CameraMatrices& camera, const RenderSetting
   }
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
   return okStatus();
+}
+
+void Renderer::drawLines(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
+  if (!ls.silhouettes && !ls.creases && !ls.boundaries) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
+  if (!lineVao_) {
+    lineVao_ = gl::createVertexArray();
+    staticLineBuffer_ = gl::createBuffer();
+    silhouetteBuffer_ = gl::createBuffer();
+  }
+  if ((ls.creases || ls.boundaries) && uploadedCreaseAngle_ != ls.creaseAngle) {
+    const auto& lines = edges_->staticLines(ls.creaseAngle);
+    glBindBuffer(GL_ARRAY_BUFFER, staticLineBuffer_.id());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(FeatureLine)), lines.data(), GL_STATIC_DRAW);
+    staticLineCount_ = lines.size();
+    uploadedCreaseAngle_ = ls.creaseAngle;
+    ++stats_.bufferUploads;
+  }
+  const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
+  if (ls.silhouettes && !(eye == silhouetteEye_)) {
+    const auto& lines = edges_->silhouettes(eye);
+    glBindBuffer(GL_ARRAY_BUFFER, silhouetteBuffer_.id());
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(FeatureLine)), lines.data(), GL_STREAM_DRAW);
+    silhouetteCount_ = lines.size();
+    silhouetteEye_ = eye;
+    ++stats_.bufferUploads;
+  }
+  stats_.cpuLinesMs += msSince(t0);
+  std::vector<std::string> d;
+  if (ls.sketchy) d.push_back("SKETCHY");
+  if (ls.depthFalloff) d.push_back("DEPTH_FALLOFF");
+  Result<GLuint> prog = program("lines.vert", "lines.frag", d);
+  if (!prog) return;
+  PassState state = kMeshPass;  // depth-tested against the model, but lines write no depth
+  state.depthWrite = false;
+  state.blend = true;
+  apply(state);
+  glDepthFunc(GL_LEQUAL);
+  glUseProgram(*prog);
+  gl::setUniform(*prog, "uModelViewProjection", camera.projection * camera.view);
+  gl::setUniform(*prog, "uViewport", glm::vec2(viewport.z, viewport.w));
+  gl::setUniform(*prog, "uWidth", std::max(ls.width, 0.5f));
+  const glm::vec3 colours[3] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour};
+  gl::setUniformArray(*prog, "uColours", colours, 3);
+  gl::setUniform(*prog, "uFalloffDepth", glm::length(eye));
+  glBindVertexArray(lineVao_.id());
+  const int repeat = ls.sketchy ? 3 : 1;
+  auto drawBuffer = [&](const gl::Buffer& buffer, std::size_t first, std::size_t count) {
+    if (count == 0) return;
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    const auto base = static_cast<std::uintptr_t>(first * sizeof(FeatureLine));
+    for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, a)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, b)));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, kind)));
+    for (GLuint a = 0; a < 3; ++a) glVertexAttribDivisor(a, GLuint(repeat));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count) * repeat);
+    stats_.lines += static_cast<int>(count);
+    ++stats_.drawCalls;
+  };
+  if (ls.silhouettes) drawBuffer(silhouetteBuffer_, 0, silhouetteCount_);
+  if (ls.creases || ls.boundaries) {
+    // Static lines are creases first, then boundaries: draw the parts asked for.
+    const auto& lines = edges_->staticLines(ls.creaseAngle);
+    const std::size_t creases = static_cast<std::size_t>(
+        std::count_if(lines.begin(), lines.end(), [](const FeatureLine& l) { return l.kind == float(EdgeKind::Crease); }));
+    if (ls.creases) drawBuffer(staticLineBuffer_, 0, creases);
+    if (ls.boundaries) drawBuffer(staticLineBuffer_, creases, staticLineCount_ - creases);
+  }
+  glDepthFunc(GL_LESS);
+}
+
+void Renderer::drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const glm::ivec2 size(viewport.z, viewport.w);
+  if (size != edgeSize_) {
+    edgeNormals_ = gl::createTexture();
+    glBindTexture(GL_TEXTURE_2D, edgeNormals_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    edgeDepth_ = gl::createTexture();
+    glBindTexture(GL_TEXTURE_2D, edgeDepth_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size.x, size.y, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    edgeFbo_ = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, edgeFbo_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, edgeNormals_.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, edgeDepth_.id(), 0);
+    edgeSize_ = size;
+    ++stats_.bufferUploads;
+  }
+  // The geometry pass: normals and depth of what this frame shows.
+  glBindFramebuffer(GL_FRAMEBUFFER, edgeFbo_.id());
+  glViewport(0, 0, size.x, size.y);
+  glClearColor(0, 0, 0, 0);
+  apply(kMeshPass);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  Result<GLuint> geo = program("mesh.vert", "mesh.frag", {"PATH_EYE_NORMAL"});
+  Result<GLuint> sobel = program("fullscreen.vert", "edges.frag", {});
+  if (geo && sobel) {
+    glUseProgram(*geo);
+    setMeshUniforms(*geo, camera);
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+    // The full-screen pass over the frame.
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+    PassState state = kBackgroundPass;
+    state.blend = true;
+    apply(state);
+    glUseProgram(*sobel);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, edgeNormals_.id());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, edgeDepth_.id());
+    glActiveTexture(GL_TEXTURE0);
+    gl::setUniform(*sobel, "uNormals", 0);
+    gl::setUniform(*sobel, "uDepth", 1);
+    gl::setUniform(*sobel, "uOrigin", glm::ivec2(viewport.x, viewport.y));
+    gl::setUniform(*sobel, "uProjection", glm::vec2(camera.projection[2][2], camera.projection[3][2]));
+    gl::setUniform(*sobel, "uThreshold", std::max(ls.imageThreshold, 1e-3f));
+    gl::setUniform(*sobel, "uInk", ls.silhouetteColour);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    stats_.drawCalls += 2;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
 }
 
 void Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,

@@ -25,6 +25,20 @@
 
 namespace npr {
 
+// Lines drawn over any path (object-space feature edges; see feature_edges.h).
+struct LineSettings {
+  bool silhouettes = false, creases = false, boundaries = false;
+  float creaseAngle = 60.0f;  // degrees
+  float width = 2.0f;         // pixels
+  glm::vec3 silhouetteColour{0.0f}, creaseColour{1.0f}, boundaryColour{0.15f, 0.1f, 0.05f};
+  bool depthFalloff = false;
+  bool sketchy = false;
+  // Image space: Sobel on the depth and normal buffers, thresholded, drawn as a post-process.
+  bool imageSpace = false;
+  float imageThreshold = 0.4f;
+  bool any() const { return silhouettes || creases || boundaries || imageSpace; }
+};
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -39,6 +53,7 @@ struct RenderSettings {
   // (entry a, entry b, weight of b: what `smooth` blends), or interpolated eye-space position
   // (alpha -1 on back faces) or normal. Read the float outputs from a float target.
   enum class Output { Image, PaletteEntry, PaletteBlend, EyePosition, EyeNormal } output = Output::Image;
+  LineSettings lines;
 };
 
 // What the last frame did: the counters are zero on frames where nothing they depend on
@@ -53,6 +68,8 @@ struct FrameStats {
   int shaderBuilds = 0;
   int lutBuilds = 0;
   int drawCalls = 0;
+  int lines = 0;               // feature lines drawn
+  double cpuLinesMs = 0.0;     // silhouette extraction
 };
 
 class Renderer {
@@ -97,6 +114,8 @@ class Renderer {
   void drawBackground(const glm::ivec4& viewport);
   Status renderStencil(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport);
   void setMeshUniforms(GLuint program, const CameraMatrices& camera);
+  void drawLines(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
+  void drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
 
   LightingState lighting_;
   FrameStats stats_;
@@ -133,6 +152,19 @@ class Renderer {
   bool entriesUploaded_ = false, bucketsUploaded_ = false;
   glm::mat4 boundsViewProjection_{0.0f};
   glm::ivec2 boundsViewport_{0};
+
+  // Feature lines: adjacency built on first use per mesh; creases and boundaries uploaded
+  // once per mesh and angle, silhouettes when the eye moves.
+  std::unique_ptr<class FeatureEdges> edges_;
+  gl::VertexArray lineVao_;
+  gl::Buffer staticLineBuffer_, silhouetteBuffer_;
+  std::size_t staticLineCount_ = 0, silhouetteCount_ = 0;
+  float uploadedCreaseAngle_ = -1.0f;
+  glm::vec3 silhouetteEye_{NAN};
+  // Image-space edges: normals and depth of the frame, at the viewport's size.
+  gl::Framebuffer edgeFbo_;
+  gl::Texture edgeNormals_, edgeDepth_;
+  glm::ivec2 edgeSize_{0};
 
   // Programs, cached by variant: toggling features back and forth costs no rebuild.
   std::map<std::string, gl::Program> programs_;

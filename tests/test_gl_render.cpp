@@ -449,6 +449,62 @@ TEST_F(Fixture, GoldenImagesPerPath) {
   s.path = RenderPath::Smooth;
   s.match = MatchMode::Colors;
   expectGolden("teapot-gooch-smooth", renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
+  ASSERT_TRUE(r->lighting().setToneModel(ToneModel::Gooch, ToneParameters{}));
+  expectGolden("teapot-gooch-tone-smooth", renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
+}
+
+TEST_F(Fixture, GoldenImagesOfLinesOverEachPath) {
+  auto mesh = loadMesh(sourcePath("models/teapot.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("cel")));
+  const CameraMatrices cam = testCamera(1.0f);
+  for (RenderPath path : userRenderPaths()) {
+    RenderSettings s;
+    s.path = path;
+    s.lines.silhouettes = s.lines.creases = s.lines.boundaries = true;
+    expectGolden(std::string("teapot-lines-") + renderPathName(path), renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
+    EXPECT_GT(r->stats().lines, 50);
+  }
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  s.lines.silhouettes = true;
+  s.lines.sketchy = true;
+  s.lines.imageSpace = true;
+  const ImageRGBA8 a = renderImage(*r, cam, s, 160, 160);
+  expectGolden("teapot-lines-sketchy-image-space", a, 0.005, 0.004);
+  // Sketchy strokes are stable from frame to frame.
+  EXPECT_EQ(countDiffering(a, renderImage(*r, cam, s, 160, 160)), 0);
+}
+
+TEST_F(Fixture, HiddenLinesAreRemovedByDepth) {
+  // A cube's creases, seen through nothing and then behind an opaque plate: the plate hides them.
+  std::vector<Triangle> cube;
+  const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                        {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  for (const auto& t : f) cube.push_back({{c[t[0]] * 0.4f, c[t[1]] * 0.4f, c[t[2]] * 0.4f}});
+  std::vector<Triangle> withPlate = cube;
+  withPlate.push_back({{glm::vec3(-0.9f, -0.9f, 0.8f), glm::vec3(0.9f, -0.9f, 0.8f), glm::vec3(0.9f, 0.9f, 0.8f)}});
+  withPlate.push_back({{glm::vec3(-0.9f, -0.9f, 0.8f), glm::vec3(0.9f, 0.9f, 0.8f), glm::vec3(-0.9f, 0.9f, 0.8f)}});
+  ASSERT_TRUE(r->setPalette(greyRamp(4)));
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  s.lines.creases = true;
+  s.lines.creaseColour = glm::vec3(1, 0, 0);
+  auto red = [](const ImageRGBA8& im) {
+    int n = 0;
+    for (size_t i = 0; i < im.pixels.size(); i += 4) n += im.pixels[i] > 200 && im.pixels[i + 1] < 60;
+    return n;
+  };
+  const CameraMatrices cam = testCamera(1.0f, 20.0f, 15.0f);
+  const Mesh open = meshFromTriangles(cube), hidden = meshFromTriangles(withPlate);
+  r->setMesh(&open);
+  const int visible = red(renderImage(*r, cam, s, 128, 128));
+  r->setMesh(&hidden);
+  const int behind = red(renderImage(*r, cam, s, 128, 128));
+  EXPECT_GT(visible, 200);
+  EXPECT_EQ(behind, 0);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench_common.h"
+#include "renderer/feature_edges.h"
 #include "renderer/palette_matcher.h"
 #include "renderer/parallel.h"
 #include "renderer/triangle_shading.h"
@@ -81,6 +82,28 @@ void BM_Match(benchmark::State& state) {
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(queries.size()));
   state.SetLabel(std::string(matchModeName(mode)) + ", " + std::to_string(n) + " entries");
 }
+
+// Silhouettes of the 871K-triangle mesh for a new eye position (what a view change costs).
+void BM_Silhouettes(benchmark::State& state) {
+  FeatureEdges edges(largeMesh());
+  float angle = 0.0f;
+  std::size_t n = 0;
+  for (auto _ : state) {
+    angle += 0.01f;
+    n = edges.silhouettes(glm::vec3(3.0f * std::cos(angle), 1.0f, 3.0f * std::sin(angle))).size();
+  }
+  state.counters["silhouette_edges"] = double(n);
+}
+BENCHMARK(BM_Silhouettes)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+// Creases and boundaries, once per mesh: the adjacency build included.
+void BM_FeatureEdgesBuild(benchmark::State& state) {
+  for (auto _ : state) {
+    FeatureEdges edges(largeMesh());
+    benchmark::DoNotOptimize(edges.staticLines(60.0f).size());
+  }
+}
+BENCHMARK(BM_FeatureEdgesBuild)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 BENCHMARK(BM_Match)->ArgsProduct({{2, 10, 30, 64, 256}, {0, 1, 2}});
 

@@ -1,0 +1,66 @@
+// Feature lines as screen-aligned quads (wide GL lines are not core): one instance per edge,
+// four strip vertices, widened in pixels and pulled slightly towards the eye so the depth
+// test against the model removes hidden lines without z-fighting on their own faces.
+// SKETCHY draws each edge as three jittered sub-strokes whose jitter is a hash of the edge's
+// endpoints: stable from frame to frame. DEPTH_FALLOFF thins lines with distance.
+layout(location = 0) in vec3 aStart;
+layout(location = 1) in vec3 aEnd;
+layout(location = 2) in float aKind;
+
+uniform mat4 uModelViewProjection;
+uniform vec2 uViewport;    // pixels
+uniform float uWidth;      // pixels
+uniform vec3 uColours[3];  // silhouette, crease, boundary
+uniform float uFalloffDepth;
+
+out vec3 vColour;
+out float vAcross;  // pixels from the line's centre
+flat out float vHalfWidth;
+
+uint hashBits(uint x) {
+  x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+  return x;
+}
+float hash01(uint x) { return float(hashBits(x) & 0xFFFFu) / 65535.0; }
+
+void main() {
+  vec4 p0 = uModelViewProjection * vec4(aStart, 1.0);
+  vec4 p1 = uModelViewProjection * vec4(aEnd, 1.0);
+  vColour = uColours[int(aKind + 0.5)];
+  float width = uWidth;
+#ifdef DEPTH_FALLOFF
+  width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);
+#endif
+  if (p0.w <= 0.0 || p1.w <= 0.0) {  // crosses the eye plane: drop the edge
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    vAcross = 0.0;
+    vHalfWidth = 0.0;
+    return;
+  }
+  vec2 half_ = 0.5 * uViewport;
+  vec2 s0 = p0.xy / p0.w * half_, s1 = p1.xy / p1.w * half_;
+#ifdef SKETCHY
+  uint seed = floatBitsToUint(aStart.x) ^ hashBits(floatBitsToUint(aStart.y) ^ hashBits(floatBitsToUint(aStart.z))) ^
+              hashBits(floatBitsToUint(aEnd.x) + floatBitsToUint(aEnd.y) * 3u + floatBitsToUint(aEnd.z) * 7u) ^
+              hashBits(uint(gl_InstanceID % 3) + 11u);
+  vec2 d0 = s1 - s0;
+  float len0 = length(d0);
+  vec2 dir0 = len0 > 1e-4 ? d0 / len0 : vec2(1.0, 0.0);
+  vec2 nrm0 = vec2(-dir0.y, dir0.x);
+  float amp = 1.0 + 0.5 * width;
+  s0 += nrm0 * (hash01(seed) - 0.5) * amp + dir0 * (hash01(seed + 1u) - 0.6) * 2.0 * amp;
+  s1 += nrm0 * (hash01(seed + 2u) - 0.5) * amp + dir0 * (hash01(seed + 3u) - 0.4) * 2.0 * amp;
+  width *= 0.6;
+#endif
+  vec2 d = s1 - s0;
+  float len = length(d);
+  vec2 dir = len > 1e-4 ? d / len : vec2(1.0, 0.0);
+  vec2 perp = vec2(-dir.y, dir.x);
+  bool end = gl_VertexID >= 2;
+  float side = (gl_VertexID % 2 == 0) ? -1.0 : 1.0;
+  vHalfWidth = 0.5 * width + 0.5;  // half a pixel more for the antialiased rim
+  vec4 p = end ? p1 : p0;
+  vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
+  vAcross = side * vHalfWidth;
+  gl_Position = vec4(s / half_ * p.w, p.z - 3e-4 * p.w, p.w);
+}
