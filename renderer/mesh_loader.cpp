@@ -320,7 +320,10 @@ void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::ar
     if (fh.is_valid()) continue;
     ++refused;
     TriMesh::VertexHandle c[3];
-    for (int k = 0; k < 3; ++k) c[k] = mesh.add_vertex(mesh.point(vh[static_cast<size_t>(t[k])]));
+    for (int k = 0; k < 3; ++k) {
+      const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
+      c[k] = mesh.add_vertex(p);
+    }
     mesh.add_face(c[0], c[1], c[2]);
   }
   errlog.enable();
