@@ -37,7 +37,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
                "whose average colour or intensity matches best, in screen space."};
   Options o;
-  std::string path, match, size, light, camera, rangeScale, lines, tone;
+  std::string path, match, size, light, camera, rangeScale, lines, tone, bands;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -61,6 +61,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--line-width", lineWidth, "Line width in pixels (default 2)");
   app.add_flag("--sketchy", o.sketchy, "Draw each line as a few jittered strokes");
   app.add_flag("--line-falloff", o.lineFalloff, "Thinner lines with distance");
+  app.add_option("--bands", bands, "Cel band thresholds T1,T2,... on the match query axis [0,3] (one fewer than the palette's tones)");
   app.add_option("--tone", tone, "Lighting model the palette matches against: opengl|gooch|splashback");
   try {
     app.parse(argc, argv);
@@ -120,6 +121,17 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!std::isnan(lineWidth)) {
     if (!(lineWidth > 0.0f && lineWidth <= 64.0f)) return {std::nullopt, fail("--line-width must be in (0, 64] pixels")};
     o.lineWidth = lineWidth;
+  }
+  if (!bands.empty()) {
+    std::stringstream ss(bands);
+    std::string part;
+    while (std::getline(ss, part, ',')) {
+      char* end = nullptr;
+      const float t = std::strtof(part.c_str(), &end);
+      if (part.empty() || *end != '\0' || !std::isfinite(t) || (!o.bands.empty() && t <= o.bands.back()))
+        return {std::nullopt, fail("--bands must be finite, strictly ascending numbers, got '" + bands + "'")};
+      o.bands.push_back(t);
+    }
   }
   if (!tone.empty()) {
     if (tone == "opengl") o.tone = ToneModel::OpenGL;

@@ -36,6 +36,7 @@ struct Options {
   std::optional<float> creaseAngle, lineWidth;
   bool sketchy = false, lineFalloff = false;
   std::optional<ToneModel> tone;
+  std::vector<float> bands;
 };
 
 // Returns the options, or an exit status (0 after --help, 2 for bad arguments) with the

@@ -19,6 +19,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;
   state.settings.referenceGouraud = o.gouraud;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
+  state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;
   lines.silhouettes = o.silhouettes;
   lines.creases = o.creases;

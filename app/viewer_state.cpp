@@ -65,6 +65,7 @@ Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
   palette = std::make_unique<Palette>(std::move(*p));
   if (palette->defaultMatch) settings.match = *palette->defaultMatch;
   settings.rangeScale = palette->defaultRangeScale.value_or(1.0f);
+  settings.bands.clear();  // thresholds belong to the palette they were set for
   for (const auto& w : palette->warnings) note(w);
   for (const auto& w : analysePalette(*palette).suitabilityWarnings(settings.match)) note(palette->name + ": " + w);
   const auto it = std::find(palettes.begin(), palettes.end(), path);

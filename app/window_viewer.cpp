@@ -88,6 +88,7 @@ void apply(Viewer& v, const KeyAction& a) {
     case Action::NextPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + 1) % paletteCount, r); break;
     case Action::PreviousPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r); break;
     case Action::CycleMatch:
+      s.settings.bands.clear();
       s.settings.match = s.settings.match == MatchMode::Colors ? MatchMode::Intensity
                          : s.settings.match == MatchMode::Intensity ? MatchMode::Order : MatchMode::Colors;
       if (s.palette)
@@ -245,6 +246,23 @@ void drawOverlay(Viewer& v) {
     ImGui::ColorEdit3("crease", &ls.creaseColour.x, ImGuiColorEditFlags_NoInputs);
     ImGui::SameLine();
     ImGui::ColorEdit3("boundary", &ls.boundaryColour.x, ImGuiColorEditFlags_NoInputs);
+    // Cel bands: movable thresholds between the palette's tones (2 to 8 of them).
+    const PaletteMatcher* matcher = v.renderer->matcher();
+    if (matcher && s.settings.match != MatchMode::Colors && matcher->levels().size() >= 2 && matcher->levels().size() <= 8) {
+      bool bands = !s.settings.bands.empty();
+      if (ImGui::Checkbox("cel bands (thresholds)", &bands)) {
+        s.settings.bands.clear();
+        const auto& L = matcher->levels();
+        if (bands)
+          for (size_t i = 0; i + 1 < L.size(); ++i) s.settings.bands.push_back(std::clamp(0.5f * (L[i] + L[i + 1]), 0.0f, 3.0f));
+      }
+      for (size_t i = 0; i < s.settings.bands.size(); ++i) {
+        const float lo = i > 0 ? s.settings.bands[i - 1] + 0.01f : 0.0f;
+        const float hi = i + 1 < s.settings.bands.size() ? s.settings.bands[i + 1] - 0.01f : 3.0f;
+        ImGui::SliderFloat(("threshold " + std::to_string(i + 1)).c_str(), &s.settings.bands[i], lo, hi, "%.3f");
+        s.settings.bands[i] = std::clamp(s.settings.bands[i], lo, hi);
+      }
+    }
     LightingState& lighting = v.renderer->lighting();
     int tone = static_cast<int>(lighting.toneModel());
     ToneParameters tp = lighting.toneParameters();

@@ -27,11 +27,13 @@ Status PaletteMatcher::validateRangeScale(float s) {
   return okStatus();
 }
 
-Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& averages, MatchMode mode, float scale) {
+Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& averages, MatchMode mode, float scale,
+                                              const std::vector<float>& bands) {
   if (averages.empty()) return Error{"cannot match against an empty palette"};
   if (averages.size() > static_cast<size_t>(kMaxPaletteEntries))
     return Error{"palette has " + std::to_string(averages.size()) + " entries; at most " + std::to_string(kMaxPaletteEntries)};
   if (Status s = validateRangeScale(scale); !s) return Error{s.error()};
+  if (!bands.empty() && mode == MatchMode::Colors) return Error{"band thresholds apply to match intensity and order, not colors"};
   PaletteMatcher m;
   m.mode_ = mode;
   m.n_ = static_cast<int>(averages.size());
@@ -92,6 +94,15 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
       m.sortedLevels_.push_back(v);
       m.levelEntry_.push_back(t);
     }
+    if (!bands.empty()) {
+      if (bands.size() + 1 != m.sortedLevels_.size())
+        return Error{"band thresholds: " + std::to_string(bands.size()) + " given, the palette's " +
+                     std::to_string(m.sortedLevels_.size()) + " distinct levels need " + std::to_string(m.sortedLevels_.size() - 1)};
+      for (size_t i = 0; i < bands.size(); ++i)
+        if (!std::isfinite(bands[i]) || (i > 0 && !(bands[i] > bands[i - 1])))
+          return Error{"band thresholds must be finite and strictly ascending"};
+      m.bands_ = bands;
+    }
     for (float v : scaled)
       m.entryRank_.push_back(int(std::lower_bound(m.sortedLevels_.begin(), m.sortedLevels_.end(), v) - m.sortedLevels_.begin()));
     // Bins of the query axis that one entry covers whole answer match() directly; bins
@@ -116,6 +127,16 @@ float PaletteMatcher::query(const glm::vec3& lit) const {
 float PaletteMatcher::tonePosition(const glm::vec3& lit) const { return toneOfQuery(query(lit)); }
 
 float PaletteMatcher::toneOfQuery(float q) const {
+  if (!bands_.empty()) {
+    // Flat within a band; a linear ramp of half-width kBandEdge across each threshold.
+    const size_t k = static_cast<size_t>(std::upper_bound(bands_.begin(), bands_.end(), q) - bands_.begin());
+    for (size_t j : {k, k - 1}) {  // the threshold above and the one below
+      if (j >= bands_.size()) continue;
+      const float d = q - bands_[j];
+      if (std::fabs(d) < kBandEdge) return float(j) + 0.5f + 0.5f * d / kBandEdge;
+    }
+    return float(k);
+  }
   const auto& L = sortedLevels_;
   if (L.size() < 2 || q <= L.front()) return 0.0f;
   if (q >= L.back()) return float(L.size() - 1);

@@ -37,7 +37,13 @@ class PaletteMatcher {
   static constexpr int kLut1DSize = 4096;  // samples of the 1D tone over q in [0, 3]
   static constexpr int kLut3DSize = 64;    // samples per axis of the colour cube
 
-  static Result<PaletteMatcher> create(const std::vector<glm::vec3>& averages, MatchMode mode, float rangeScale);
+  // `bands` (1D modes, optional): cel-style band thresholds on the query axis, ascending, one
+  // fewer than the palette's distinct levels. Entry k of the sorted levels then covers
+  // [bands[k-1], bands[k]) instead of the span nearest its level; `smooth` blends only within
+  // kBandEdge of a threshold, which antialiases the hard band edges (the 1D-ramp technique).
+  static Result<PaletteMatcher> create(const std::vector<glm::vec3>& averages, MatchMode mode, float rangeScale,
+                                       const std::vector<float>& bands = {});
+  static constexpr float kBandEdge = 0.03f;
   static Status validateRangeScale(float s);
 
   int match(const glm::vec3& lit) const;            // in [0, N)
@@ -57,6 +63,7 @@ class PaletteMatcher {
   MatchMode mode() const { return mode_; }
   int size() const { return n_; }
   float rangeScale() const { return scale_; }
+  const std::vector<float>& bands() const { return bands_; }
   const std::vector<float>& levels() const { return sortedLevels_; }       // 1D: distinct, ascending
   const std::vector<int>& levelEntries() const { return levelEntry_; }     // 1D: lowest entry per level
   const std::vector<int>& entryRanks() const { return entryRank_; }        // 1D: each entry's level index
@@ -83,6 +90,7 @@ class PaletteMatcher {
   std::vector<float> sortedLevels_;
   std::vector<int> levelEntry_;
   std::vector<int> entryRank_;
+  std::vector<float> bands_;
   // colour mode: exact nearest search over per-cell candidate lists
   std::vector<glm::vec3> scaled_;
   static constexpr int kCells = 8;

@@ -244,12 +244,13 @@ Status Renderer::setPalette(const Palette& p) {
 }
 
 Status Renderer::ensureMatcher(const RenderSettings& s) {
-  if (matcher_ && matcherKey_.palette == paletteGeneration_ && matcherKey_.mode == s.match && matcherKey_.scale == s.rangeScale)
+  if (matcher_ && matcherKey_.palette == paletteGeneration_ && matcherKey_.mode == s.match && matcherKey_.scale == s.rangeScale &&
+      matcherKey_.bands == s.bands)
     return okStatus();
-  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, s.match, s.rangeScale);
+  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, s.match, s.rangeScale, s.bands);
   if (!m) return Error{m.error()};
   matcher_ = std::move(*m);
-  matcherKey_ = {paletteGeneration_, s.match, s.rangeScale};
+  matcherKey_ = {paletteGeneration_, s.match, s.rangeScale, s.bands};
   ++matcherGeneration_;
   ++stats_.lutBuilds;
   const int L = PaletteMatcher::kLut1DSize;

@@ -43,6 +43,7 @@ struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
   float rangeScale = 1.0f;
+  std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
   bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
@@ -138,7 +139,12 @@ class Renderer {
 
   // Matching
   std::optional<PaletteMatcher> matcher_;
-  struct MatcherKey { unsigned palette = 0; MatchMode mode = MatchMode::Intensity; float scale = 0; } matcherKey_;
+  struct MatcherKey {
+    unsigned palette = 0;
+    MatchMode mode = MatchMode::Intensity;
+    float scale = 0;
+    std::vector<float> bands;
+  } matcherKey_;
   unsigned matcherGeneration_ = 0;
   gl::Texture lutIndex_, lutBlend_, lut3D_;
 

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <map>
 #include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -399,6 +400,34 @@ TEST_F(Fixture, ImmediateBeginRenderTriangleEndDrawsLikeTheRetainedMesh) {
   EXPECT_LE(countDiffering(retained, drawn), 160 * 160 / 1000);
   EXPECT_GT(r->stats().nonEmptyBuckets, 3);
   EXPECT_FALSE(immediate.End(cam, {0, 0, 160, 160}));  // End without Begin is refused
+}
+
+TEST_F(Fixture, CelBandsAreHardWithAntialiasedEdges) {
+  const Mesh sphere = test::icosphere(4);
+  r->setMesh(&sphere);
+  ASSERT_TRUE(r->setPalette(shippedPalette("cel")));
+  RenderSettings s;
+  s.path = RenderPath::Smooth;
+  s.bands = {0.9f, 1.6f, 2.3f};
+  const ImageRGBA8 img = renderImage(*r, testCamera(1.0f), s, 200, 200);
+  std::map<std::uint32_t, int> colours;
+  int covered = 0;
+  for (size_t i = 0; i < img.pixels.size(); i += 4) {
+    const std::uint32_t c = std::uint32_t(img.pixels[i]) << 16 | std::uint32_t(img.pixels[i + 1]) << 8 | img.pixels[i + 2];
+    if (c == 0xFFFFFF) continue;  // background
+    ++colours[c];
+    ++covered;
+  }
+  // The four flat tones cover almost everything; the rest are blends along the band edges.
+  std::vector<int> counts;
+  for (const auto& [c, n] : colours) counts.push_back(n);
+  std::sort(counts.rbegin(), counts.rend());
+  ASSERT_GE(counts.size(), 5u);  // edges are antialiased: some in-between colours exist
+  const int flat = counts[0] + counts[1] + counts[2] + (counts.size() > 3 ? counts[3] : 0);
+  EXPECT_GT(flat, covered * 9 / 10);
+  // Moving a threshold moves the band: the image changes.
+  s.bands = {0.6f, 1.6f, 2.3f};
+  EXPECT_GT(countDiffering(img, renderImage(*r, testCamera(1.0f), s, 200, 200)), 100);
 }
 
 // ---- Golden images -----------------------------------------------------------------------

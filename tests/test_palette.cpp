@@ -380,6 +380,29 @@ TEST(Matcher, SmoothBlendsTheBracketingEntries) {
   EXPECT_NEAR(cb.t, 0.25f, 1e-5f);
 }
 
+TEST(Matcher, CelBandsMoveTheDecisionsAndBlendOnlyAtTheEdges) {
+  // Levels 0, 1.5, 3; nearest would switch at 0.75 and 2.25. Thresholds 0.5 and 2.8 instead.
+  auto m = PaletteMatcher::create(greys({0.0f, 0.5f, 1.0f}), MatchMode::Intensity, 1.0f, {0.5f, 2.8f});
+  ASSERT_TRUE(m) << m.error();
+  auto at = [](float q) { return glm::vec3(q / 3.0f); };  // a grey whose query is q
+  EXPECT_EQ(m->match(at(0.4f)), 0);
+  EXPECT_EQ(m->match(at(0.6f)), 1);
+  EXPECT_EQ(m->match(at(2.7f)), 1);
+  EXPECT_EQ(m->match(at(2.9f)), 2);
+  // Hard bands: no blending away from a threshold, a ramp across it.
+  EXPECT_EQ(m->matchSmooth(at(1.5f)).t, 0.0f);
+  const PaletteBlend edge = m->matchSmooth(at(0.5f));
+  EXPECT_EQ(edge.a, 0);
+  EXPECT_EQ(edge.b, 1);
+  EXPECT_NEAR(edge.t, 0.5f, 1e-3f);
+  EXPECT_NEAR(m->matchSmooth(at(0.5f + PaletteMatcher::kBandEdge * 0.5f)).t, 0.75f, 1e-2f);
+  // Refused: wrong count, not ascending, not finite, colours mode.
+  EXPECT_FALSE(PaletteMatcher::create(greys({0.0f, 0.5f, 1.0f}), MatchMode::Intensity, 1.0f, {0.5f}));
+  EXPECT_FALSE(PaletteMatcher::create(greys({0.0f, 0.5f, 1.0f}), MatchMode::Intensity, 1.0f, {2.0f, 1.0f}));
+  EXPECT_FALSE(PaletteMatcher::create(greys({0.0f, 0.5f, 1.0f}), MatchMode::Intensity, 1.0f, {0.5f, NAN}));
+  EXPECT_FALSE(PaletteMatcher::create(greys({0.0f, 0.5f, 1.0f}), MatchMode::Colors, 1.0f, {0.5f, 2.8f}));
+}
+
 TEST(Colour, SrgbRoundTrips) {
   for (float v : {0.0f, 0.001f, 0.04f, 0.2f, 0.5f, 0.99f, 1.0f}) EXPECT_NEAR(linearToSrgb(srgbToLinear(v)), v, 1e-5f);
   EXPECT_EQ(linearToSrgb(std::numeric_limits<float>::quiet_NaN()), 0.0f);
