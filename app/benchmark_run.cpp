@@ -362,7 +362,13 @@ void writeOutputs(const std::vector<ConfigResult>& results, const fs::path& dir,
     gp << "set terminal pngcairo size 900,600 noenhanced\nset output '" << (dir / (stem + ".png")).string() << "'\n"
         << "set title '" << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << " (" << size.x << "x" << size.y
         << ")'\nset xlabel 'median frame time (ms)'\nset ylabel 'mean error (" << c.errorUnit << ")'\n"
-        << "set grid\nset key outside right title 'path'\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\nplot ";
+        << "set grid\nset key outside right title 'path'\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\n";
+    // The plain lit render's frame time, for scale: a dashed vertical line.
+    for (const PathResult& p : c.paths)
+      if (p.path == RenderPath::Reference && p.medianMs > 0)
+        gp << "set arrow from " << p.medianMs << ", graph 0 to " << p.medianMs << ", graph 1 nohead dashtype 2\n"
+           << "set label 'reference' at " << p.medianMs << ", graph 0.95 offset 0.5, 0\n";
+    gp << "plot ";
     int k = 0;
     for (const PathResult& p : c.paths) {
       if (p.pixels == 0) continue;

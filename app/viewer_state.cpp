@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "renderer/mesh_generators.h"
 #include "renderer/mesh_loader.h"
 
 namespace npr {
@@ -40,7 +41,8 @@ void ViewerState::note(const std::string& message) {
 }
 
 Status ViewerState::loadModel(const std::string& path, Renderer& renderer) {
-  Result<Mesh> m = npr::loadMesh(path);
+  std::optional<Mesh> generated = generatedMesh(path);  // "generated:torus-871k" and friends
+  Result<Mesh> m = generated ? Result<Mesh>(std::move(*generated)) : npr::loadMesh(path);
   if (!m) {
     note("model not loaded: " + m.error());
     return Error{m.error()};

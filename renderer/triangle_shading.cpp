@@ -93,15 +93,18 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   if (rigid && DirectionalLighting::applies(p)) {
     const DirectionalLighting fast(p);
     parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
-      std::uint32_t* cnt = counts[static_cast<size_t>(c)].data();
+      // Counting into a thread-local array: the threads' shared vectors could sit on one
+      // cache line, and incrementing them per triangle made two threads slower than one.
+      std::uint32_t cnt[kMaxPaletteEntries] = {};
       for (size_t i = b; i < e; ++i) {
         const int k = matcher.matchUnit(fast.shade(normals[i]));
         entry[i] = static_cast<std::uint8_t>(k);
         ++cnt[k];
       }
+      std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
     });
   } else parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
-    std::uint32_t* cnt = counts[static_cast<size_t>(c)].data();
+    std::uint32_t cnt[kMaxPaletteEntries] = {};
     for (size_t i = b; i < e; ++i) {
       glm::vec3 pos = centroids[i], n = normals[i];
       if (!rigid) {
@@ -114,6 +117,7 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
       entry[i] = static_cast<std::uint8_t>(k);
       ++cnt[k];
     }
+    std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
   });
 
   out.nonEmptyBuckets = 0;
@@ -141,7 +145,8 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   std::uint32_t* dst = out.bucketIndices.data();
 
   parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
-    std::uint32_t* cur = cursor[static_cast<size_t>(c)].data();
+    std::uint32_t cur[kMaxPaletteEntries];  // thread-local cursors, as for the counts
+    std::copy(cursor[static_cast<size_t>(c)].begin(), cursor[static_cast<size_t>(c)].end(), cur);
     for (size_t i = b; i < e; ++i) {
       const int k = entry[i];
       const std::uint32_t at = cur[k]++;
