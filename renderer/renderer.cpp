@@ -419,14 +419,13 @@ void Renderer::setMeshUniforms(GLuint prog, const CameraMatrices& camera) {
   gl::setUniform(prog, "uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(modelView))));
 }
 
-void Renderer::drawBackground(const glm::ivec4& viewport) {
+void Renderer::drawBackground() {
   std::vector<std::string> d = {"QUAD_BACKGROUND"};
   if (palette_ && palette_->backgroundImage) d.push_back("BACKGROUND_IMAGE");
   Result<GLuint> prog = program("fullscreen.vert", "quad.frag", d);
   if (!prog) return;
   apply(kBackgroundPass);
   glUseProgram(*prog);
-  (void)viewport;
   if (palette_ && palette_->backgroundImage) {
     glActiveTexture(GL_TEXTURE0 + kUnitBackground);
     glBindTexture(GL_TEXTURE_2D, palette_->background.id());
@@ -477,7 +476,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   glClearStencil(0);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
   glDisable(GL_SCISSOR_TEST);
-  if (s.drawBackground) drawBackground(viewport);
+  if (s.drawBackground) drawBackground();
 
   Status result = okStatus();
   if (mesh_ && triangleCount_ > 0) {
@@ -542,8 +541,8 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
     }
   }
   if (result && mesh_ && triangleCount_ > 0 && s.output == RenderSettings::Output::Image && s.lines.any()) {
-    if (s.lines.imageSpace) drawImageSpaceEdges(camera, s.lines, viewport);
-    drawLines(camera, s.lines, viewport);
+    if (s.lines.imageSpace) result = drawImageSpaceEdges(camera, s.lines, viewport);
+    if (result) result = drawLines(camera, s.lines, viewport);
   }
   if (timing) {
     glEndQuery(GL_TIME_ELAPSED);
@@ -625,8 +624,8 @@ Status Renderer::renderStencil(const CameraMatrices& camera, const RenderSetting
   return okStatus();
 }
 
-void Renderer::drawLines(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
-  if (!ls.silhouettes && !ls.creases && !ls.boundaries) return;
+Status Renderer::drawLines(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
+  if (!ls.silhouettes && !ls.creases && !ls.boundaries) return okStatus();
   const auto t0 = std::chrono::steady_clock::now();
   if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
   if (!lineVao_) {
@@ -656,7 +655,7 @@ void Renderer::drawLines(const CameraMatrices& camera, const LineSettings& ls, c
   if (ls.sketchy) d.push_back("SKETCHY");
   if (ls.depthFalloff) d.push_back("DEPTH_FALLOFF");
   Result<GLuint> prog = program("lines.vert", "lines.frag", d);
-  if (!prog) return;
+  if (!prog) return Error{prog.error()};
   PassState state = kMeshPass;  // depth-tested against the model, but lines write no depth
   state.depthWrite = false;
   state.blend = true;
@@ -694,9 +693,10 @@ void Renderer::drawLines(const CameraMatrices& camera, const LineSettings& ls, c
     if (ls.boundaries) drawBuffer(staticLineBuffer_, creases, staticLineCount_ - creases);
   }
   glDepthFunc(GL_LESS);
+  return okStatus();
 }
 
-void Renderer::drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
+Status Renderer::drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const glm::ivec2 size(viewport.z, viewport.w);
@@ -726,7 +726,8 @@ void Renderer::drawImageSpaceEdges(const CameraMatrices& camera, const LineSetti
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   Result<GLuint> geo = program("mesh.vert", "mesh.frag", {"PATH_EYE_NORMAL"});
   Result<GLuint> sobel = program("fullscreen.vert", "edges.frag", {});
-  if (geo && sobel) {
+  Status status = !geo ? Status(Error{geo.error()}) : !sobel ? Status(Error{sobel.error()}) : okStatus();
+  if (status) {
     glUseProgram(*geo);
     setMeshUniforms(*geo, camera);
     glBindVertexArray(vao_.id());
@@ -756,6 +757,7 @@ void Renderer::drawImageSpaceEdges(const CameraMatrices& camera, const LineSetti
   }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  return status;
 }
 
 void Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,

@@ -112,11 +112,11 @@ class Renderer {
                              const glm::ivec4& viewport);
   std::vector<std::string> paletteDefines(MatchMode mode) const;
   void bindPaletteTextures(GLuint program) const;
-  void drawBackground(const glm::ivec4& viewport);
+  void drawBackground();
   Status renderStencil(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport);
   void setMeshUniforms(GLuint program, const CameraMatrices& camera);
-  void drawLines(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
-  void drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
+  Status drawLines(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
+  Status drawImageSpaceEdges(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
 
   LightingState lighting_;
   FrameStats stats_;
