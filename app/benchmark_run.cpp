@@ -134,9 +134,7 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
     setLight(r, m);
     RenderSettings geo = settings;
     auto render = [&](const RenderSettings& s) {
-      target->bind();
-      glClearColor(0, 0, 0, 0);
-      glClear(GL_COLOR_BUFFER_BIT);
+      target->clear(glm::vec4(0.0f));
       RenderSettings q = s;
       q.drawBackground = false;
       (void)r.render(m.camera, q, {0, 0, size.x, size.y});
@@ -239,7 +237,7 @@ void measureSpeed(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int fra
     target->bind();
     const auto t0 = std::chrono::steady_clock::now();
     (void)r.render(m.camera, s, {0, 0, size.x, size.y});
-    glFinish();
+    finishGpuWork();
     if (f < 0) continue;  // warm-up: shader builds and uploads
     wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     cpu.push_back(r.stats().cpuFrameMs);

@@ -48,7 +48,7 @@ int runHeadless(const Options& o) {
       std::fprintf(stderr, "npr-viewer: render failed: %s\n", s.error().c_str());
       return 1;
     }
-    glFinish();
+    finishGpuWork();
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   std::sort(ms.begin(), ms.end());

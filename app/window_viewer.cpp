@@ -9,8 +9,8 @@
 // [SECTION] Frame loop
 #include "app/window_viewer.h"
 
-#include <epoxy/gl.h>
-// epoxy's GL header comes first: GLFW must not include the system GL header.
+// The app makes no GL calls of its own (the renderer does): GLFW must not pull in GL headers.
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -386,7 +386,7 @@ int runWindowViewer(const Options& o) {
       ImGui::Render();
 
       const glm::ivec2 fb = v.framebufferSize();
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      bindWindowFramebuffer();
       const CameraMatrices cam = v.state.camera.matrices(v.aspect());
       v.state.applyLight(*v.renderer, cam);
       const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);

@@ -40,6 +40,12 @@ void OffscreenTarget::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
+void OffscreenTarget::clear(const glm::vec4& colour) const {
+  bind();
+  glClearColor(colour.r, colour.g, colour.b, colour.a);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
 namespace {
 template <class T>
 void flipRows(std::vector<T>& px, int w, int h) {
@@ -78,4 +84,9 @@ ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height) {
   for (size_t i = 3; i < img.pixels.size(); i += 4) img.pixels[i] = 255;  // a window's alpha is meaningless
   return img;
 }
+}  // namespace npr
+
+namespace npr {
+void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+void finishGpuWork() { glFinish(); }
 }  // namespace npr

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "renderer/gl/gl_handle.h"
 #include "renderer/result.h"
 
@@ -26,6 +28,7 @@ class OffscreenTarget {
   static Result<OffscreenTarget> create(int width, int height, Format format = Format::RGBA8);
 
   void bind() const;  // binds for drawing and sets the viewport to the whole target
+  void clear(const glm::vec4& colour) const;  // binds, then clears colour (for float read-backs)
   int width() const { return width_; }
   int height() const { return height_; }
   ImageRGBA8 readRGBA8() const;
@@ -43,4 +46,8 @@ class OffscreenTarget {
 namespace npr {
 // Reads `width` x `height` pixels from the bound read framebuffer (the window's for F12).
 ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height);
+// Makes the window's own framebuffer the target again (after offscreen passes).
+void bindWindowFramebuffer();
+// Blocks until the GPU has finished all submitted work: what frame timings must include.
+void finishGpuWork();
 }  // namespace npr

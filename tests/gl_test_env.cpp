@@ -32,9 +32,7 @@ ImageRGBA32F renderFloat(Renderer& r, const CameraMatrices& cam, const RenderSet
   auto t = OffscreenTarget::create(w, h, OffscreenTarget::Format::RGBA32F);
   EXPECT_TRUE(t) << t.error();
   if (!t) return {};
-  t->bind();
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT);
+  t->clear(glm::vec4(0.0f));
   RenderSettings q = s;
   q.drawBackground = false;
   const Status st = r.render(cam, q, {0, 0, w, h});

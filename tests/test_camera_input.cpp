@@ -1,6 +1,7 @@
 // CPU tier: the orbit camera's maths and the key bindings, without a window.
 #include <gtest/gtest.h>
 
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cmath>

@@ -59,7 +59,7 @@ Timing timeFrames(Renderer& r, OffscreenTarget& target, const RenderSettings& s,
     target.bind();
     const auto t0 = std::chrono::steady_clock::now();
     (void)r.render(cam, s, {0, 0, target.width(), target.height()});
-    glFinish();
+    finishGpuWork();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (f < 0) continue;
     wall.push_back(ms);
