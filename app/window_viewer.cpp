@@ -214,7 +214,10 @@ void drawOverlay(Viewer& v) {
     ImGui::EndCombo();
   }
   int mode = static_cast<int>(s.settings.match);
-  if (ImGui::Combo("match (M)", &mode, "colors\0intensity\0order\0")) s.settings.match = static_cast<MatchMode>(mode);
+  if (ImGui::Combo("match (M)", &mode, "colors\0intensity\0order\0")) {
+    s.settings.match = static_cast<MatchMode>(mode);
+    s.settings.bands.clear();  // thresholds live on the previous mode's query axis
+  }
   ImGui::SliderFloat("range scale (+/-)", &s.settings.rangeScale, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
   s.settings.rangeScale = std::clamp(std::isfinite(s.settings.rangeScale) ? s.settings.rangeScale : 1.0f, 0.01f, 100.0f);
   const auto& paths = userRenderPaths();
