@@ -47,13 +47,22 @@ class PaletteMatcher {
   static Status validateRangeScale(float s);
 
   int match(const glm::vec3& lit) const;            // in [0, N)
-  // match() for a colour already known to be finite and in [0,1] (lit colours are): the
-  // per-triangle loop's inner call, inlined.
-  int matchUnit(const glm::vec3& c) const {
-    if (mode_ == MatchMode::Colors) return match(c);
-    const float q = mode_ == MatchMode::Intensity ? 3.0f * std::max(c.r, std::max(c.g, c.b)) : c.r + c.g + c.b;
-    const std::uint16_t e = exactBins_[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
-    return e != kAmbiguous ? e : matchQuery(q);
+  // match() for colours already known to be finite and in [0,1] (lit colours are), as a small
+  // value the per-triangle loop keeps in registers: a loop that stores bytes must otherwise
+  // assume each store may change the matcher's members and reload them.
+  struct UnitLookup {
+    const PaletteMatcher* matcher;
+    const std::uint16_t* bins;  // null in colours mode
+    bool intensity;
+    int operator()(const glm::vec3& c) const {
+      if (!bins) return matcher->match(c);
+      const float q = intensity ? 3.0f * std::max(c.r, std::max(c.g, c.b)) : c.r + c.g + c.b;
+      const std::uint16_t e = bins[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
+      return e != kAmbiguous ? e : matcher->matchQuery(q);
+    }
+  };
+  UnitLookup unitLookup() const {
+    return {this, mode_ == MatchMode::Colors ? nullptr : exactBins_.data(), mode_ == MatchMode::Intensity};
   }
   PaletteBlend matchSmooth(const glm::vec3& lit) const;
   // 1D modes: continuous position among the sorted distinct levels (what `smooth` blends by).

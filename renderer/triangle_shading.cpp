@@ -96,8 +96,11 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
       // Counting into a thread-local array: the threads' shared vectors could sit on one
       // cache line, and incrementing them per triangle made two threads slower than one.
       std::uint32_t cnt[kMaxPaletteEntries] = {};
+      // Local copies the byte stores below cannot alias, so they stay in registers.
+      const DirectionalLighting light = fast;
+      const PaletteMatcher::UnitLookup lookup = matcher.unitLookup();
       for (size_t i = b; i < e; ++i) {
-        const int k = matcher.matchUnit(fast.shade(normals[i]));
+        const int k = lookup(light.shade(normals[i]));
         entry[i] = static_cast<std::uint8_t>(k);
         ++cnt[k];
       }
