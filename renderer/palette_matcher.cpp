@@ -175,7 +175,7 @@ int PaletteMatcher::nearestColour(const glm::vec3& lit, int* second) const {
 int PaletteMatcher::match(const glm::vec3& lit) const {
   if (mode_ == MatchMode::Colors) return nearestColour(lit, nullptr);
   const float q = query(lit);  // in [0, 3]
-  const std::uint16_t e = exactBins_[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
+  const std::uint16_t e = exactBins_[static_cast<size_t>(static_cast<int>(q * (float(kExactBins) / 3.0f)))];
   return e != kAmbiguous ? e : matchQuery(q);
 }
 

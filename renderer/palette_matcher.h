@@ -57,7 +57,9 @@ class PaletteMatcher {
     int operator()(const glm::vec3& c) const {
       if (!bins) return matcher->match(c);
       const float q = intensity ? 3.0f * std::max(c.r, std::max(c.g, c.b)) : c.r + c.g + c.b;
-      const std::uint16_t e = bins[static_cast<size_t>(q * (float(kExactBins) / 3.0f))];
+      // Through int, not size_t: converting a float to an unsigned 64-bit integer is a slow,
+      // branching sequence on x86 and cost more than the rest of the per-triangle work.
+      const std::uint16_t e = bins[static_cast<int>(q * (float(kExactBins) / 3.0f))];
       return e != kAmbiguous ? e : matcher->matchQuery(q);
     }
   };
