@@ -299,6 +299,8 @@ void drawOverlay(Viewer& v) {
   ImGui::SameLine();
   if (ImGui::Checkbox("vsync (V)", &v.vsync)) glfwSwapInterval(v.vsync ? 1 : 0);
   ImGui::Checkbox("help (H)", &v.help);
+  ImGui::SameLine();
+  if (ImGui::Button("quit (Esc)")) apply(v, {Action::Quit});
   if (!s.messages.empty()) {
     ImGui::Separator();
     for (const auto& m : s.messages) ImGui::TextWrapped("%s", m.c_str());
