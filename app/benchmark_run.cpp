@@ -382,6 +382,37 @@ void writeOutputs(const std::vector<ConfigResult>& results, const fs::path& dir,
   }
 }
 
+// One model, palette and match mode: accuracy of every palette path, then the speed of all
+// paths, the static-frame counters and the cost of lighting features.
+ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& palette, MatchMode mode, const Options& o) {
+  const int frames = o.frames > 0 ? o.frames : 120;
+  OrbitCamera camera(30.0f, 20.0f, 3.0f);
+  camera.frame(mesh.radius);
+  r.lighting() = LightingState();
+  applyDefaultMaterial(r.lighting());
+  RenderSettings settings;
+  settings.match = mode;
+  settings.rangeScale = o.rangeScale.value_or(palette.defaultRangeScale.value_or(1.0f));
+  ConfigResult c;
+  c.model = fs::path(mesh.report.file).filename().string();
+  c.palette = palette.name + " (" + std::to_string(palette.entries.size()) + ")";
+  c.mode = mode;
+  c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
+  const double range = mode == MatchMode::Colors ? 1.75 : double(palette.entries.size());
+  for (RenderPath p : kPalettePaths) c.paths.emplace_back(p, range);
+  std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
+  measureAccuracy(r, camera, o.size, frames, settings, c);
+  c.paths.emplace_back(RenderPath::Reference, range);
+  c.paths.emplace_back(RenderPath::LitTextured, range);
+  std::fprintf(stderr, "benchmark: speed...\n");
+  for (PathResult& p : c.paths) measureSpeed(r, camera, o.size, frames, settings, p);
+  const double ref = std::find_if(c.paths.begin(), c.paths.end(), [](const PathResult& p) { return p.path == RenderPath::Reference; })->medianMs;
+  for (PathResult& p : c.paths) p.xReference = ref > 0 ? p.medianMs / ref : 0.0;
+  measureStaticFrames(r, camera, o.size, settings, c);
+  measureFeatureCost(r, camera, o.size, std::min(frames, 30), settings, c);
+  return c;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -407,7 +438,7 @@ int runBenchmark(const Options& o) {
   }
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
   const std::vector<std::string> palettes = o.palettes.empty() ? std::vector<std::string>{defaultPalettePath()} : o.palettes;
-  const int frames = o.frames > 0 ? o.frames : 120;
+  const int frames = o.frames > 0 ? o.frames : 120;  // as measureConfiguration uses
   std::vector<ConfigResult> results;
   std::uint64_t nonFinite = 0;
   for (const std::string& modelName : models) {
@@ -419,8 +450,6 @@ int runBenchmark(const Options& o) {
     }
     const Mesh& mesh = *loaded;
     r.setMesh(&mesh);
-    OrbitCamera camera(30.0f, 20.0f, 3.0f);
-    camera.frame(mesh.radius);
     for (const std::string& paletteFile : palettes) {
       auto palette = loadPalette(paletteFile);
       if (!palette) {
@@ -431,31 +460,13 @@ int runBenchmark(const Options& o) {
         std::fprintf(stderr, "npr-viewer: %s\n", s.error().c_str());
         return 1;
       }
-      const MatchMode mode = o.match.value_or(palette->defaultMatch.value_or(MatchMode::Intensity));
-      r.lighting() = LightingState();
-      applyDefaultMaterial(r.lighting());
-      RenderSettings settings;
-      settings.match = mode;
-      settings.rangeScale = o.rangeScale.value_or(palette->defaultRangeScale.value_or(1.0f));
-      ConfigResult c;
-      c.model = fs::path(mesh.report.file).filename().string();
-      c.palette = palette->name + " (" + std::to_string(palette->entries.size()) + ")";
-      c.mode = mode;
-      c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
-      const double range = mode == MatchMode::Colors ? 1.75 : double(palette->entries.size());
-      for (RenderPath p : kPalettePaths) c.paths.emplace_back(p, range);
-      std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
-      measureAccuracy(r, camera, o.size, frames, settings, c);
-      c.paths.emplace_back(RenderPath::Reference, range);
-      c.paths.emplace_back(RenderPath::LitTextured, range);
-      std::fprintf(stderr, "benchmark: speed...\n");
-      for (PathResult& p : c.paths) measureSpeed(r, camera, o.size, frames, settings, p);
-      const double ref = std::find_if(c.paths.begin(), c.paths.end(), [](const PathResult& p) { return p.path == RenderPath::Reference; })->medianMs;
-      for (PathResult& p : c.paths) p.xReference = ref > 0 ? p.medianMs / ref : 0.0;
-      measureStaticFrames(r, camera, o.size, settings, c);
-      measureFeatureCost(r, camera, o.size, std::min(frames, 30), settings, c);
-      nonFinite += c.nonFinite;
-      results.push_back(std::move(c));
+      std::vector<MatchMode> modes = {o.match.value_or(palette->defaultMatch.value_or(MatchMode::Intensity))};
+      if (o.allMatchModes) modes = {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order};
+      for (const MatchMode mode : modes) {
+        ConfigResult c = measureConfiguration(r, mesh, *palette, mode, o);
+        nonFinite += c.nonFinite;
+        results.push_back(std::move(c));
+      }
     }
   }
   writeOutputs(results, o.outDir, o.size, frames, (*ctx)->description());

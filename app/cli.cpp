@@ -42,7 +42,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
   app.add_option("--path", path, "Render path: stencil|triangle|vertex|pixel|smooth|reference");
-  app.add_option("--match", match, "Match mode: colors|intensity|order (default: the palette's)");
+  app.add_option("--match", match, "Match mode: colors|intensity|order (default: the palette's); --benchmark also takes all");
   app.add_option("--range-scale", rangeScale, "IntensityRangeScale S > 0: spreads the palette about its midpoint");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
   app.add_option("--light", light, "Light position X,Y,Z in model units (the model fits a unit sphere)");
@@ -75,7 +75,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.path = parseRenderPath(path);
     if (!o.path || *o.path == RenderPath::LitTextured) return {std::nullopt, fail("unknown --path '" + path + "': use stencil, triangle, vertex, pixel, smooth or reference")};
   }
-  if (!match.empty()) {
+  if (!match.empty() && match == "all" && o.benchmark) {
+    o.allMatchModes = true;
+  } else if (!match.empty()) {
     o.match = parseMatchMode(match);
     if (!o.match) return {std::nullopt, fail("unknown --match '" + match + "': use colors, intensity or order")};
   }

@@ -28,6 +28,7 @@ struct Options {
   bool info = false;
   std::string paletteInfo;
   bool benchmark = false;
+  bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";
   bool gouraud = false;
   bool naiveStencil = false;
