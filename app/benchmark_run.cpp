@@ -16,6 +16,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/headless_run.h"
 #include "app/viewer_state.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/headless_context.h"
@@ -419,23 +420,12 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
 // [SECTION] Driver
 
 int runBenchmark(const Options& o) {
-  auto ctx = HeadlessContext::create(false);
-  if (!ctx) {
-    std::fprintf(stderr, "npr-viewer: %s\n", ctx.error().c_str());
-    return 1;
-  }
-  auto renderer = Renderer::create();
-  if (!renderer) {
-    std::fprintf(stderr, "npr-viewer: %s\n", renderer.error().c_str());
-    return 1;
-  }
-  Renderer& r = **renderer;
+  auto session = openHeadlessSession(false);
+  if (!session) return reportFailure(session.error());
+  Renderer& r = *session->renderer;
   std::error_code ec;
   fs::create_directories(o.outDir, ec);
-  if (ec) {
-    std::fprintf(stderr, "npr-viewer: cannot create output folder %s: %s\n", o.outDir.c_str(), ec.message().c_str());
-    return 1;
-  }
+  if (ec) return reportFailure("cannot create output folder " + o.outDir + ": " + ec.message());
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
   const std::vector<std::string> palettes = o.palettes.empty() ? std::vector<std::string>{defaultPalettePath()} : o.palettes;
   const int frames = o.frames > 0 ? o.frames : 120;  // as measureConfiguration uses
@@ -444,22 +434,13 @@ int runBenchmark(const Options& o) {
   for (const std::string& modelName : models) {
     std::optional<Mesh> generated = generatedMesh(modelName);
     Result<Mesh> loaded = generated ? Result<Mesh>(std::move(*generated)) : loadMesh(modelName);
-    if (!loaded) {
-      std::fprintf(stderr, "npr-viewer: %s\n", loaded.error().c_str());
-      return 1;
-    }
+    if (!loaded) return reportFailure(loaded.error());
     const Mesh& mesh = *loaded;
     r.setMesh(&mesh);
     for (const std::string& paletteFile : palettes) {
       auto palette = loadPalette(paletteFile);
-      if (!palette) {
-        std::fprintf(stderr, "npr-viewer: %s\n", palette.error().c_str());
-        return 1;
-      }
-      if (Status s = r.setPalette(*palette); !s) {
-        std::fprintf(stderr, "npr-viewer: %s\n", s.error().c_str());
-        return 1;
-      }
+      if (!palette) return reportFailure(palette.error());
+      if (Status s = r.setPalette(*palette); !s) return reportFailure(s.error());
       std::vector<MatchMode> modes = {o.match.value_or(palette->defaultMatch.value_or(MatchMode::Intensity))};
       if (o.allMatchModes) modes = {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order};
       for (const MatchMode mode : modes) {
@@ -469,7 +450,7 @@ int runBenchmark(const Options& o) {
       }
     }
   }
-  writeOutputs(results, o.outDir, o.size, frames, (*ctx)->description());
+  writeOutputs(results, o.outDir, o.size, frames, session->context->description());
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   if (nonFinite) {

@@ -270,7 +270,6 @@ class ObjParser {
     } else if (key == "vn" || key == "vt" || key == "vp" || key == "g" || key == "o" || key == "s" ||
                key == "usemtl" || key == "l" || key == "p" || key == "cstype" || key == "deg" ||
                key == "curv" || key == "surf" || key == "parm" || key == "end") {
-      if (key == "l" || key == "p") ++nonFaceElements_;
       // Accepted and not needed: normals are recomputed, texture coordinates are unused
       // (palette textures are applied in screen space), groups and materials do not matter.
     } else {
@@ -301,7 +300,6 @@ class ObjParser {
   LoadReport& report_;
   Warnings warn_;
   std::size_t unknownKeywords_ = 0;
-  std::size_t nonFaceElements_ = 0;
 };
 
 // Adds triangles to the halfedge mesh; faces it refuses (complex edges, duplicates, flipped

@@ -76,7 +76,6 @@ class PaletteMatcher {
   float rangeScale() const { return scale_; }
   const std::vector<float>& bands() const { return bands_; }
   const std::vector<float>& levels() const { return sortedLevels_; }       // 1D: distinct, ascending
-  const std::vector<int>& levelEntries() const { return levelEntry_; }     // 1D: lowest entry per level
   const std::vector<int>& entryRanks() const { return entryRank_; }        // 1D: each entry's level index
   const std::vector<glm::vec3>& scaledAverages() const { return scaled_; } // colours: after scaling
 

@@ -105,7 +105,6 @@ class Renderer {
  private:
   Renderer() = default;
   struct GpuPalette;
-  struct ProgramKey;
   Result<GLuint> program(const std::string& vertex, const std::string& fragment, std::vector<std::string> defines);
   Status ensureMatcher(const RenderSettings& s);
   void ensureTriangleShading(const glm::mat4& modelView, const CameraMatrices& camera, const RenderSettings& s,
