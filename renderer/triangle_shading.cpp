@@ -74,6 +74,54 @@ struct DirectionalLighting {
   }
 };
 
+// The inner loop, specialised so that everything it reads stays in registers: a loop over
+// lights with run-time count and flags kept the lights in memory and the loop counter on the
+// stack (the byte stores could alias them), at about twice the cost per triangle.
+template <int kLights, bool kSpecular>
+void shadeDirectionalLoop(const DirectionalLighting& light, const PaletteMatcher::UnitLookup lookup,
+                          const glm::vec3* __restrict normals, size_t n, std::uint8_t* __restrict entry,
+                          std::uint32_t* __restrict cnt) {
+  const int count = kLights > 0 ? kLights : light.count;
+  const glm::vec3 base = light.base;
+  glm::vec3 dir[kMaxLights], half[kMaxLights], dif[kMaxLights], spe[kMaxLights];
+  for (int l = 0; l < count; ++l) {
+    dir[l] = light.direction[l];
+    half[l] = light.half[l];
+    dif[l] = light.diffuse[l];
+    spe[l] = light.specular[l];
+  }
+  const float* pow = kSpecular ? light.powTable.data() : nullptr;
+  for (size_t i = 0; i < n; ++i) {
+    const glm::vec3 nrm = normals[i];
+    glm::vec3 c = base;
+    for (int l = 0; l < count; ++l) {
+      const float ndl = glm::dot(nrm, dir[l]);
+      if (ndl <= 0.0f) continue;
+      c += ndl * dif[l];
+      if (kSpecular) {
+        const float t = std::min(std::max(glm::dot(nrm, half[l]), 0.0f), 1.0f) * float(DirectionalLighting::kPowSteps);
+        const int k = static_cast<int>(t);
+        const float s = pow[k] + (t - float(k)) * (pow[k + 1] - pow[k]);
+        c += s * spe[l];
+      }
+    }
+    c = glm::clamp(c, 0.0f, 1.0f);
+    const int k = lookup(c);
+    entry[i] = static_cast<std::uint8_t>(k);
+    ++cnt[k];
+  }
+}
+
+void shadeDirectional(const DirectionalLighting& light, const PaletteMatcher::UnitLookup lookup, const glm::vec3* normals,
+                      size_t n, std::uint8_t* entry, std::uint32_t* cnt) {
+  if (light.count == 1)
+    light.hasSpecular ? shadeDirectionalLoop<1, true>(light, lookup, normals, n, entry, cnt)
+                      : shadeDirectionalLoop<1, false>(light, lookup, normals, n, entry, cnt);
+  else
+    light.hasSpecular ? shadeDirectionalLoop<0, true>(light, lookup, normals, n, entry, cnt)
+                      : shadeDirectionalLoop<0, false>(light, lookup, normals, n, entry, cnt);
+}
+
 }  // namespace
 
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
@@ -96,14 +144,7 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
       // Counting into a thread-local array: the threads' shared vectors could sit on one
       // cache line, and incrementing them per triangle made two threads slower than one.
       std::uint32_t cnt[kMaxPaletteEntries] = {};
-      // Local copies the byte stores below cannot alias, so they stay in registers.
-      const DirectionalLighting light = fast;
-      const PaletteMatcher::UnitLookup lookup = matcher.unitLookup();
-      for (size_t i = b; i < e; ++i) {
-        const int k = lookup(light.shade(normals[i]));
-        entry[i] = static_cast<std::uint8_t>(k);
-        ++cnt[k];
-      }
+      shadeDirectional(fast, matcher.unitLookup(), normals + b, e - b, entry + b, cnt);
       std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
     });
   } else parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
