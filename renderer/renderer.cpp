@@ -112,7 +112,7 @@ bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float
   return true;
 }
 
-enum TextureUnit { kUnitPalette = 0, kUnitBackground, kUnitLutIndex, kUnitLutBlend, kUnitLut3D, kUnitTriangleEntry };
+enum TextureUnit { kUnitPalette = 0, kUnitBackground, kUnitLutIndex, kUnitLutBlend, kUnitLut3D };
 
 }  // namespace
 
@@ -348,7 +348,10 @@ void Renderer::bindPaletteTextures(GLuint prog) const {
 
 void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMatrices& camera, const RenderSettings& s,
                                      const glm::ivec4& viewport) {
-  const bool wantBuckets = s.path == RenderPath::Stencil;
+  // Both per-triangle paths draw bucket by bucket: the triangle path sets the entry as a
+  // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
+  // process the 871K-triangle mesh about 30% slower than the reference render.
+  const bool wantBuckets = s.path == RenderPath::Stencil || s.path == RenderPath::Triangle;
   const bool rigid = isRigid(modelView);
   PreparedLighting<float> prepared = prepareLighting<float>(lighting_, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
   const bool same = shadingKey_.valid && rigid && shadingKey_.mesh == meshGeneration_ &&
@@ -362,29 +365,8 @@ void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMat
     stats_.cpuShadingMs += msSince(t0);
     ++stats_.lightingRecomputes;
     shadingKey_ = {meshGeneration_, matcherGeneration_, prepared, rigid, wantBuckets};
-    entriesUploaded_ = bucketsUploaded_ = false;
+    bucketsUploaded_ = false;
     boundsViewport_ = glm::ivec2(0);
-  }
-  if (s.path == RenderPath::Triangle && !entriesUploaded_) {
-    const auto bytes = static_cast<GLsizeiptr>(shading_.entry.size());
-    if (!entryBuffer_ || entryBytes_ != bytes) {
-      // (Re)create storage and its texture view only when the size changes: re-specifying a
-      // buffer that backs a texture makes drivers revalidate (llvmpipe: milliseconds).
-      entryBuffer_ = gl::createBuffer();
-      glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
-      glBufferData(GL_TEXTURE_BUFFER, bytes, shading_.entry.data(), GL_DYNAMIC_DRAW);
-      entryTexture_ = gl::createTexture();
-      glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
-      glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
-      glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, entryBuffer_.id());
-      glActiveTexture(GL_TEXTURE0);
-      entryBytes_ = bytes;
-    } else {
-      glBindBuffer(GL_TEXTURE_BUFFER, entryBuffer_.id());
-      glBufferSubData(GL_TEXTURE_BUFFER, 0, bytes, shading_.entry.data());
-    }
-    entriesUploaded_ = true;
-    ++stats_.bufferUploads;
   }
   if (wantBuckets && !bucketsUploaded_) {
     glBindVertexArray(vao_.id());
@@ -395,7 +377,7 @@ void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMat
     bucketsUploaded_ = true;
     ++stats_.bufferUploads;
   }
-  if (wantBuckets && s.stencilScissor) {
+  if (s.path == RenderPath::Stencil && s.stencilScissor) {
     const glm::mat4 mvp = camera.projection * modelView;
     const glm::ivec2 size(viewport.z, viewport.w);
     if (mvp != boundsViewProjection_ || size != boundsViewport_) {
@@ -440,6 +422,21 @@ void Renderer::drawBackground() {
   ++stats_.drawCalls;
 }
 
+void Renderer::collectGpuTime() {
+  // Queries finish in the order they were issued: read from the oldest pending one.
+  for (int k = 0; k < kTimerSlots; ++k) {
+    const int i = (timerIndex_ + k) % kTimerSlots;
+    if (!timerPending_[i]) continue;
+    GLint available = 0;
+    glGetQueryObjectiv(timers_[i].id(), GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) continue;
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(timers_[i].id(), GL_QUERY_RESULT, &ns);
+    stats_.gpuMs = double(ns) * 1e-6;
+    timerPending_[i] = false;
+  }
+}
+
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.cpuShadingMs = 0.0;
@@ -451,19 +448,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (!palette_ && s.path != RenderPath::Reference) return Error{"no palette loaded"};
   if (palette_) if (Status st = ensureMatcher(s); !st) return st;
 
-  // GPU timing: read the oldest finished query, then time this frame.
-  const int slots = 4;
-  for (int k = 0; k < slots; ++k) {
-    const int i = (timerIndex_ + k) % slots;
-    if (!timerPending_[i]) continue;
-    GLint available = 0;
-    glGetQueryObjectiv(timers_[i].id(), GL_QUERY_RESULT_AVAILABLE, &available);
-    if (!available) continue;
-    GLuint64 ns = 0;
-    glGetQueryObjectui64v(timers_[i].id(), GL_QUERY_RESULT, &ns);
-    stats_.gpuMs = double(ns) * 1e-6;
-    timerPending_[i] = false;
-  }
+  collectGpuTime();
   const int timer = timerIndex_;
   const bool timing = !timerPending_[timer];
   if (timing) glBeginQuery(GL_TIME_ELAPSED, timers_[timer].id());
@@ -527,16 +512,23 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
         setMeshUniforms(*prog, camera);
         if (eff.path != RenderPath::Triangle) uploadLightingUniforms(*prog, prepareLighting<float>(lighting_));
         if (usesPalette) bindPaletteTextures(*prog);
-        if (eff.path == RenderPath::Triangle) {
-          glActiveTexture(GL_TEXTURE0 + kUnitTriangleEntry);
-          glBindTexture(GL_TEXTURE_BUFFER, entryTexture_.id());
-          glActiveTexture(GL_TEXTURE0);
-          gl::setUniform(*prog, "uTriangleEntry", int(kUnitTriangleEntry));
-        }
         glBindVertexArray(vao_.id());
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
-        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
-        ++stats_.drawCalls;
+        if (eff.path == RenderPath::Triangle) {
+          glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
+          for (int k = 0; k < paletteSize_; ++k) {
+            const std::uint32_t first = shading_.bucketStart[static_cast<size_t>(k)];
+            const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - first;
+            if (count == 0) continue;
+            gl::setUniform(*prog, "uEntry", k);
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(std::uint32_t)));
+            ++stats_.drawCalls;
+          }
+        } else {
+          glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+          glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+          ++stats_.drawCalls;
+        }
       }
     }
   }
@@ -547,7 +539,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (timing) {
     glEndQuery(GL_TIME_ELAPSED);
     timerPending_[timer] = true;
-    timerIndex_ = (timerIndex_ + 1) % slots;
+    timerIndex_ = (timerIndex_ + 1) % kTimerSlots;
   }
   restoreDefaults();
   stats_.cpuFrameMs = msSince(frameStart);

@@ -92,6 +92,9 @@ class Renderer {
 
   // Draws one frame into the bound framebuffer's `viewport` (x, y, width, height).
   Status render(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+  // Reads finished GPU timer queries into stats().gpuMs (render() does this first). Call it
+  // after the GPU work is finished to attribute a frame's time to that frame.
+  void collectGpuTime();
   // A small screen-facing disc at `worldPosition` (the light marker).
   void drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,
                   const glm::ivec4& viewport);
@@ -125,9 +128,6 @@ class Renderer {
   unsigned meshGeneration_ = 0;
   gl::VertexArray vao_;
   gl::Buffer positions_, normals_, indices_, bucketIndices_;
-  gl::Buffer entryBuffer_;
-  gl::Texture entryTexture_;
-  GLsizeiptr entryBytes_ = 0;
   std::size_t triangleCount_ = 0;
 
   // Palette
@@ -154,7 +154,7 @@ class Renderer {
     PreparedLighting<float> lighting;
     bool valid = false, buckets = false;
   } shadingKey_;
-  bool entriesUploaded_ = false, bucketsUploaded_ = false;
+  bool bucketsUploaded_ = false;
   glm::mat4 boundsViewProjection_{0.0f};
   glm::ivec2 boundsViewport_{0};
 
@@ -174,9 +174,10 @@ class Renderer {
   // Programs, cached by variant: toggling features back and forth costs no rebuild.
   std::map<std::string, gl::Program> programs_;
   gl::VertexArray emptyVao_;
-  gl::Query timers_[4];
+  static constexpr int kTimerSlots = 4;
+  gl::Query timers_[kTimerSlots];
   int timerIndex_ = 0;
-  bool timerPending_[4] = {false, false, false, false};
+  bool timerPending_[kTimerSlots] = {false, false, false, false};
 };
 
 }  // namespace npr

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "renderer/parallel.h"
 
@@ -19,32 +20,44 @@ bool isRigid(const glm::mat4& m) {
 
 namespace {
 
-// The common case, specialised: directional lights without spots, an infinite viewer and
-// one-sided lighting. Then every light's ambient folds into the base colour, its direction
-// and half vector are constants, and only the face normal is read per triangle. pow() for
-// the specular term comes from a table over [0, 1] with linear interpolation (error below
-// 1e-4 for shininess up to 128, far under the 1/255 that matching can see).
-struct DirectionalLighting {
+// The common case, specialised: directional lights, and positional ones without attenuation
+// or spot, an infinite viewer and one-sided lighting (the viewer's default light is such a
+// point light). Then every light's ambient folds into the base colour; a directional light's
+// direction and half vector are constants, so only the face normal is read per triangle; a
+// point light adds the centroid and two square roots. pow() for the specular term comes from
+// a table over [0, 1] with linear interpolation (error below 1e-4 for shininess up to 128, far
+// under the 1/255 that matching can see).
+struct SimpleLighting {
   int count = 0;
   glm::vec3 base{0.0f};
-  glm::vec3 direction[kMaxLights], half[kMaxLights], diffuse[kMaxLights], specular[kMaxLights];
-  bool hasSpecular = false;
+  glm::vec3 position[kMaxLights];  // directional: unit direction; positional: the point
+  glm::vec3 half[kMaxLights];      // directional only
+  glm::vec3 diffuse[kMaxLights], specular[kMaxLights];
+  bool positional[kMaxLights] = {};
+  bool anyPositional = false, hasSpecular = false;
+  glm::vec3 viewDirection{0, 0, 1};
   static constexpr int kPowSteps = 4096;
   std::vector<float> powTable;
 
   static bool applies(const PreparedLighting<float>& p) {
     if (!p.lighting || p.localViewer || p.twoSided || p.tone != ToneModel::OpenGL) return false;
-    for (int i = 0; i < p.count; ++i)
-      if (p.lights[i].positional || p.lights[i].spot) return false;
+    for (int i = 0; i < p.count; ++i) {
+      const auto& l = p.lights[i];
+      if (l.spot) return false;
+      if (l.positional && !(l.k0 == 1.0f && l.k1 == 0.0f && l.k2 == 0.0f)) return false;
+    }
     return true;
   }
 
-  explicit DirectionalLighting(const PreparedLighting<float>& p) : count(p.count), base(p.base[0]), hasSpecular(p.specular) {
+  explicit SimpleLighting(const PreparedLighting<float>& p)
+      : count(p.count), base(p.base[0]), hasSpecular(p.specular), viewDirection(p.viewDirection) {
     for (int i = 0; i < count; ++i) {
       const auto& l = p.lights[i];
       base += l.ambient[0];
-      direction[i] = l.position;
-      half[i] = lighting_detail::safeNormalize(l.position + p.viewDirection);
+      position[i] = l.position;
+      positional[i] = l.positional;
+      anyPositional = anyPositional || l.positional;
+      half[i] = l.positional ? glm::vec3(0.0f) : lighting_detail::safeNormalize(l.position + p.viewDirection);
       diffuse[i] = l.diffuse[0];
       specular[i] = l.specular[0];
     }
@@ -54,72 +67,69 @@ struct DirectionalLighting {
       powTable[kPowSteps + 1] = powTable[kPowSteps];
     }
   }
-
-  float specularPow(float x) const {
-    const float t = x * float(kPowSteps);
-    const int k = static_cast<int>(t);
-    const float f = t - float(k);
-    return powTable[static_cast<size_t>(k)] + f * (powTable[static_cast<size_t>(k) + 1] - powTable[static_cast<size_t>(k)]);
-  }
-
-  glm::vec3 shade(const glm::vec3& n) const {
-    glm::vec3 c = base;
-    for (int i = 0; i < count; ++i) {
-      const float ndl = glm::dot(n, direction[i]);
-      if (ndl <= 0.0f) continue;
-      c += ndl * diffuse[i];
-      if (hasSpecular) c += specularPow(std::min(std::max(glm::dot(n, half[i]), 0.0f), 1.0f)) * specular[i];
-    }
-    return glm::clamp(c, 0.0f, 1.0f);
-  }
 };
 
 // The inner loop, specialised so that everything it reads stays in registers: a loop over
 // lights with run-time count and flags kept the lights in memory and the loop counter on the
 // stack (the byte stores could alias them), at about twice the cost per triangle.
-template <int kLights, bool kSpecular>
-void shadeDirectionalLoop(const DirectionalLighting& light, const PaletteMatcher::UnitLookup lookup,
-                          const glm::vec3* __restrict normals, size_t n, std::uint8_t* __restrict entry,
-                          std::uint32_t* __restrict cnt) {
+template <int kLights, bool kSpecular, bool kPositional>
+void shadeSimpleLoop(const SimpleLighting& light, const PaletteMatcher::UnitLookup lookup, const glm::vec3* __restrict centroids,
+                     const glm::vec3* __restrict normals, size_t n, std::uint8_t* __restrict entry, std::uint32_t* __restrict cnt) {
   const int count = kLights > 0 ? kLights : light.count;
-  const glm::vec3 base = light.base;
-  glm::vec3 dir[kMaxLights], half[kMaxLights], dif[kMaxLights], spe[kMaxLights];
+  const glm::vec3 base = light.base, view = light.viewDirection;
+  glm::vec3 pos[kMaxLights], half[kMaxLights], dif[kMaxLights], spe[kMaxLights];
+  bool point[kMaxLights];
   for (int l = 0; l < count; ++l) {
-    dir[l] = light.direction[l];
+    pos[l] = light.position[l];
     half[l] = light.half[l];
     dif[l] = light.diffuse[l];
     spe[l] = light.specular[l];
+    point[l] = light.positional[l];
   }
   const float* pow = kSpecular ? light.powTable.data() : nullptr;
   for (size_t i = 0; i < n; ++i) {
     const glm::vec3 nrm = normals[i];
     glm::vec3 c = base;
     for (int l = 0; l < count; ++l) {
-      const float ndl = glm::dot(nrm, dir[l]);
+      glm::vec3 vp = pos[l], h = half[l];
+      if (kPositional && point[l]) {
+        const glm::vec3 d = pos[l] - centroids[i];
+        const float dist = std::sqrt(glm::dot(d, d));
+        // A light at the point has no direction: lit head-on, as the general model does.
+        vp = dist > 0.0f && dist <= std::numeric_limits<float>::max() ? d / dist : nrm;
+      }
+      const float ndl = glm::dot(nrm, vp);
       if (ndl <= 0.0f) continue;
       c += ndl * dif[l];
       if (kSpecular) {
-        const float t = std::min(std::max(glm::dot(nrm, half[l]), 0.0f), 1.0f) * float(DirectionalLighting::kPowSteps);
+        if (kPositional && point[l]) h = lighting_detail::safeNormalize(vp + view);
+        const float t = std::min(std::max(glm::dot(nrm, h), 0.0f), 1.0f) * float(SimpleLighting::kPowSteps);
         const int k = static_cast<int>(t);
         const float s = pow[k] + (t - float(k)) * (pow[k + 1] - pow[k]);
         c += s * spe[l];
       }
     }
-    c = glm::clamp(c, 0.0f, 1.0f);
-    const int k = lookup(c);
+    const int k = lookup(glm::clamp(c, 0.0f, 1.0f));
     entry[i] = static_cast<std::uint8_t>(k);
     ++cnt[k];
   }
 }
 
-void shadeDirectional(const DirectionalLighting& light, const PaletteMatcher::UnitLookup lookup, const glm::vec3* normals,
-                      size_t n, std::uint8_t* entry, std::uint32_t* cnt) {
-  if (light.count == 1)
-    light.hasSpecular ? shadeDirectionalLoop<1, true>(light, lookup, normals, n, entry, cnt)
-                      : shadeDirectionalLoop<1, false>(light, lookup, normals, n, entry, cnt);
+template <int kLights>
+void shadeSimpleLights(const SimpleLighting& light, const PaletteMatcher::UnitLookup lookup, const glm::vec3* centroids,
+                       const glm::vec3* normals, size_t n, std::uint8_t* entry, std::uint32_t* cnt) {
+  if (light.hasSpecular)
+    light.anyPositional ? shadeSimpleLoop<kLights, true, true>(light, lookup, centroids, normals, n, entry, cnt)
+                        : shadeSimpleLoop<kLights, true, false>(light, lookup, centroids, normals, n, entry, cnt);
   else
-    light.hasSpecular ? shadeDirectionalLoop<0, true>(light, lookup, normals, n, entry, cnt)
-                      : shadeDirectionalLoop<0, false>(light, lookup, normals, n, entry, cnt);
+    light.anyPositional ? shadeSimpleLoop<kLights, false, true>(light, lookup, centroids, normals, n, entry, cnt)
+                        : shadeSimpleLoop<kLights, false, false>(light, lookup, centroids, normals, n, entry, cnt);
+}
+
+void shadeSimple(const SimpleLighting& light, const PaletteMatcher::UnitLookup lookup, const glm::vec3* centroids,
+                 const glm::vec3* normals, size_t n, std::uint8_t* entry, std::uint32_t* cnt) {
+  if (light.count == 1) shadeSimpleLights<1>(light, lookup, centroids, normals, n, entry, cnt);
+  else shadeSimpleLights<0>(light, lookup, centroids, normals, n, entry, cnt);
 }
 
 }  // namespace
@@ -138,13 +148,13 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const glm::vec3* normals = mesh.faceNormals.data();
   std::uint8_t* entry = out.entry.data();
 
-  if (rigid && DirectionalLighting::applies(p)) {
-    const DirectionalLighting fast(p);
+  if (rigid && SimpleLighting::applies(p)) {
+    const SimpleLighting fast(p);
     parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
       // Counting into a thread-local array: the threads' shared vectors could sit on one
       // cache line, and incrementing them per triangle made two threads slower than one.
       std::uint32_t cnt[kMaxPaletteEntries] = {};
-      shadeDirectional(fast, matcher.unitLookup(), normals + b, e - b, entry + b, cnt);
+      shadeSimple(fast, matcher.unitLookup(), centroids + b, normals + b, e - b, entry + b, cnt);
       std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
     });
   } else parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {

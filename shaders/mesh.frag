@@ -1,6 +1,6 @@
 // Fragment stage of every mesh pass; one PATH_* define selects what it does:
 //  PATH_MASK       stencil path: depth and stencil only
-//  PATH_TRIANGLE   the CPU's per-triangle choice, read by gl_PrimitiveID
+//  PATH_TRIANGLE   the CPU's per-triangle choice, one draw per palette entry
 //  PATH_VERTEX     lit per vertex, matched per pixel
 //  PATH_PIXEL      lit and matched per pixel
 //  PATH_SMOOTH     lit per pixel, two bracketing entries blended
@@ -25,7 +25,7 @@ in vec3 vColorFront;
 in vec3 vColorBack;
 #endif
 #ifdef PATH_TRIANGLE
-uniform usamplerBuffer uTriangleEntry;
+uniform int uEntry;  // drawn bucket by bucket
 #endif
 
 out vec4 fragColor;
@@ -46,7 +46,7 @@ void main() {
 #elif defined(PATH_EYE_NORMAL)
   fragColor = vec4(vNormal, 1.0);
 #elif defined(PATH_TRIANGLE)
-  fragColor = SHOW_ENTRY(int(texelFetch(uTriangleEntry, gl_PrimitiveID).r));
+  fragColor = SHOW_ENTRY(uEntry);
 #elif defined(PATH_VERTEX)
   vec3 lit = gl_FrontFacing ? vColorFront : vColorBack;
   fragColor = SHOW_ENTRY(matchEntry(lit));

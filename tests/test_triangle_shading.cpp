@@ -17,7 +17,8 @@ namespace {
 struct Scene {
   const char* name;
   int lights;
-  bool positional;  // takes the general loop
+  int pointLights;  // the first ones are positional, the rest directional
+  bool attenuated;  // positional with attenuation: the general loop
   bool specular;
   MatchMode mode;
 };
@@ -27,11 +28,15 @@ LightingState lightingFor(const Scene& sc) {
   for (int i = 0; i < sc.lights; ++i) {
     const float c = 0.9f / float(sc.lights);
     const float colour[4] = {c, c * 0.8f, c * 0.6f, 1};
-    const float pos[4] = {std::cos(float(i) * 2.0f), 0.7f, std::sin(float(i) * 2.0f) + 0.5f, sc.positional ? 1.0f : 0.0f};
+    const bool point = i < sc.pointLights;
+    const float pos[4] = {2.0f * std::cos(float(i) * 2.0f), 1.4f, 2.0f * std::sin(float(i) * 2.0f) + 1.0f, point ? 1.0f : 0.0f};
     EXPECT_TRUE(l.Enable(GL_LIGHT0 + GLenum(i)));
     EXPECT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, colour));
     EXPECT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, colour));
     EXPECT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, pos));
+    if (sc.attenuated) {
+      EXPECT_TRUE(l.Lightf(GL_LIGHT0 + GLenum(i), GL_QUADRATIC_ATTENUATION, 0.05f));
+    }
   }
   if (sc.specular) {
     const float spec[4] = {0.6f, 0.6f, 0.6f, 1};
@@ -125,11 +130,14 @@ TEST_P(TriangleShadingTest, MatchesTheDoublePrecisionModelAtEveryCentroid) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, TriangleShadingTest,
-    testing::Values(Scene{"one directional light, specular", 1, false, true, MatchMode::Intensity},
-                    Scene{"one directional light, no specular", 1, false, false, MatchMode::Intensity},
-                    Scene{"three directional lights, specular, order", 3, false, true, MatchMode::Order},
-                    Scene{"two directional lights, colours", 2, false, true, MatchMode::Colors},
-                    Scene{"two positional lights (general loop)", 2, true, true, MatchMode::Intensity}),
+    testing::Values(Scene{"one directional light, specular", 1, 0, false, true, MatchMode::Intensity},
+                    Scene{"one directional light, no specular", 1, 0, false, false, MatchMode::Intensity},
+                    Scene{"three directional lights, specular, order", 3, 0, false, true, MatchMode::Order},
+                    Scene{"two directional lights, colours", 2, 0, false, true, MatchMode::Colors},
+                    Scene{"one point light, specular", 1, 1, false, true, MatchMode::Intensity},
+                    Scene{"two point lights, no specular", 2, 2, false, false, MatchMode::Intensity},
+                    Scene{"a point and a directional light, specular", 2, 1, false, true, MatchMode::Order},
+                    Scene{"two attenuated point lights (general loop)", 2, 2, true, true, MatchMode::Intensity}),
     [](const testing::TestParamInfo<Scene>& info) { return "Scene" + std::to_string(info.index); });
 
 }  // namespace

@@ -4,12 +4,12 @@
 // lighting) and `lit-textured` (the same lighting plus one screen-space fetch: the least any
 // palette path can do). The light moves every frame, so per-triangle paths pay their CPU
 // work each frame, as they do while a user drags the light.
-// Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick]
+// Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
+//      [--entries N] [--paths triangle,pixel,...]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -43,37 +43,62 @@ Palette paletteOf(const Palette& base, int n) {
 }
 
 struct Timing {
-  double medianMs = 0, p95Ms = 0, cpuMs = 0, gpuMs = 0;
+  double medianMs = 0, p95Ms = 0, cpuMs = 0, shadingMs = 0, gpuMs = 0;
 };
 
-Timing timeFrames(Renderer& r, OffscreenTarget& target, const RenderSettings& s, const OrbitCamera& camera, int frames) {
+struct PathRow {
+  const char* label;
+  RenderPath path;
+  bool naive;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return -1.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Frames of every path interleaved, one frame of each in turn: the machine's load drifts over
+// seconds, and timing each path in its own block made ratios swing by 30%. The light moves
+// before every frame, so each per-triangle path redoes its CPU work (as while a user drags
+// the light) rather than reusing what the path before it computed.
+std::vector<Timing> timeFrames(Renderer& r, OffscreenTarget& target, const std::vector<PathRow>& paths,
+                               const OrbitCamera& camera, int frames) {
   const float aspect = float(target.width()) / float(target.height());
-  std::vector<double> wall, cpu, gpu;
-  for (int f = -2; f < frames; ++f) {  // two warm-up frames compile and upload
-    const CameraMatrices cam = camera.matrices(aspect);
-    // Move the light a little every frame: per-triangle work is redone, as while dragging it.
-    const float angle = 0.6f + 0.01f * float(f);
-    const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
-    r.lighting().setModelView(cam.view);
-    (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
-    target.bind();
-    const auto t0 = std::chrono::steady_clock::now();
-    (void)r.render(cam, s, {0, 0, target.width(), target.height()});
-    finishGpuWork();
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (f < 0) continue;
-    wall.push_back(ms);
-    cpu.push_back(r.stats().cpuFrameMs);
-    if (r.stats().gpuMs >= 0) gpu.push_back(r.stats().gpuMs);
+  const CameraMatrices cam = camera.matrices(aspect);
+  std::vector<std::vector<double>> wall(paths.size()), cpu(paths.size()), shading(paths.size()), gpu(paths.size());
+  int call = 0;
+  for (int f = -2; f < frames; ++f) {  // two warm-up rounds compile and upload
+    for (size_t p = 0; p < paths.size(); ++p) {
+      RenderSettings s;
+      s.path = paths[p].path;
+      s.match = MatchMode::Intensity;
+      s.stencilScissor = s.stencilSkipEmpty = !paths[p].naive;
+      const float angle = 0.6f + 0.002f * float(call++);
+      const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
+      r.lighting().setModelView(cam.view);
+      (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+      target.bind();
+      const auto t0 = std::chrono::steady_clock::now();
+      (void)r.render(cam, s, {0, 0, target.width(), target.height()});
+      finishGpuWork();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      r.collectGpuTime();
+      if (f < 0) continue;
+      wall[p].push_back(ms);
+      cpu[p].push_back(r.stats().cpuFrameMs);
+      shading[p].push_back(r.stats().cpuShadingMs);
+      if (r.stats().gpuMs >= 0) gpu[p].push_back(r.stats().gpuMs);
+    }
   }
-  auto median = [](std::vector<double> v) {
-    if (v.empty()) return -1.0;
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-  };
-  std::vector<double> sorted = wall;
-  std::sort(sorted.begin(), sorted.end());
-  return {median(wall), sorted[std::min(sorted.size() - 1, size_t(double(sorted.size()) * 0.95))], median(cpu), median(gpu)};
+  std::vector<Timing> out;
+  for (size_t p = 0; p < paths.size(); ++p) {
+    std::vector<double> sorted = wall[p];
+    std::sort(sorted.begin(), sorted.end());
+    out.push_back({median(wall[p]), sorted[std::min(sorted.size() - 1, size_t(double(sorted.size()) * 0.95))], median(cpu[p]),
+                   median(shading[p]), median(gpu[p])});
+  }
+  return out;
 }
 
 }  // namespace
@@ -81,11 +106,26 @@ Timing timeFrames(Renderer& r, OffscreenTarget& target, const RenderSettings& s,
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   bool quick = false;
+  std::string meshFilter, pathFilter;
+  std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &w, &h);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
+    else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
+    else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
+    else {
+      std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
+                           "[--paths p1,p2,...]\n(the reference and lit-textured floors always run)\n");
+      return 2;
+    }
   }
+  if (frames < 1 || w < 1 || h < 1 || sizes[0] < 1 || sizes[0] > 256) {
+    std::fprintf(stderr, "bench_frames: --frames, --size and --entries (1..256) must be positive\n");
+    return 2;
+  }
+  if (quick) sizes = {10};
   auto ctx = HeadlessContext::create(false);
   if (!ctx) {
     std::fprintf(stderr, "%s\n", ctx.error().c_str());
@@ -100,36 +140,35 @@ int main(int argc, char** argv) {
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
   if (!crosshatch || !bunny) return 1;
   struct Scene { const char* name; const Mesh* mesh; };
-  std::vector<Scene> scenes = {{"bunny", &*bunny}};
-  if (!quick) scenes.push_back({"torus 871K", &bench::largeMesh()});
-  const std::vector<int> sizes = quick ? std::vector<int>{10} : std::vector<int>{1, 10, 30, 64, 256};
-  struct PathRow { const char* label; RenderPath path; bool naive; };
-  const std::vector<PathRow> paths = {{"reference", RenderPath::Reference, false}, {"lit-textured", RenderPath::LitTextured, false},
+  std::vector<Scene> scenes;
+  if (meshFilter.empty() || meshFilter == "bunny") scenes.push_back({"bunny", &*bunny});
+  if ((meshFilter.empty() && !quick) || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});
+  const std::vector<PathRow> allPaths = {{"reference", RenderPath::Reference, false}, {"lit-textured", RenderPath::LitTextured, false},
                                       {"stencil", RenderPath::Stencil, false},     {"stencil-naive", RenderPath::Stencil, true},
                                       {"triangle", RenderPath::Triangle, false},   {"vertex", RenderPath::Vertex, false},
                                       {"pixel", RenderPath::Pixel, false},         {"smooth", RenderPath::Smooth, false}};
+  std::vector<PathRow> paths;
+  for (const PathRow& p : allPaths)
+    if (pathFilter.empty() || p.path == RenderPath::Reference || p.path == RenderPath::LitTextured ||
+        pathFilter.find("," + std::string(p.label) + ",") != std::string::npos)
+      paths.push_back(p);
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
-  std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | GPU ms | x reference | x lit-textured |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& sc : scenes) {
     r.setMesh(sc.mesh);
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     for (int n : sizes) {
       if (!r.setPalette(paletteOf(*crosshatch, n))) return 1;
-      std::map<std::string, double> floor;
-      for (const PathRow& p : paths) {
-        RenderSettings s;
-        s.path = p.path;
-        s.match = MatchMode::Intensity;
-        s.stencilScissor = s.stencilSkipEmpty = !p.naive;
-        const Timing t = timeFrames(r, *target, s, cam, frames);
-        floor[p.label] = t.medianMs;
-        std::printf("| %s | %d | %s | %.1f | %.1f | %.1f | %s | %.2f | %.2f |\n", sc.name, n, p.label, t.medianMs, t.p95Ms, t.cpuMs,
-                    t.gpuMs >= 0 ? std::to_string(t.gpuMs).substr(0, 5).c_str() : "n/a", t.medianMs / floor["reference"],
-                    t.medianMs / floor["lit-textured"]);
-        std::fflush(stdout);
+      const std::vector<Timing> t = timeFrames(r, *target, paths, cam, frames);
+      const double reference = t[0].medianMs, litTextured = t[1].medianMs;
+      for (size_t p = 0; p < paths.size(); ++p) {
+        std::printf("| %s | %d | %s | %.1f | %.1f | %.1f | %.1f | %s | %.2f | %.2f |\n", sc.name, n, paths[p].label, t[p].medianMs,
+                    t[p].p95Ms, t[p].cpuMs, t[p].shadingMs, t[p].gpuMs >= 0 ? std::to_string(t[p].gpuMs).substr(0, 5).c_str() : "n/a",
+                    t[p].medianMs / reference, t[p].medianMs / litTextured);
       }
+      std::fflush(stdout);
     }
   }
   return 0;

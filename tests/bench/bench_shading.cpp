@@ -23,14 +23,15 @@ std::vector<glm::vec3> greyLevels(int n) {
   return v;
 }
 
-// args: lights, specular (0/1), threads (0 = all)
+// args: lights, specular (0/1), threads (0 = all), bucketed (0/1), point lights (0/1)
 void BM_ShadeTriangles(benchmark::State& state) {
   const Mesh& mesh = largeMesh();
   const int lights = int(state.range(0));
   LightingState l;
   for (int i = 0; i < lights; ++i) {
     const float white[4] = {1.0f / float(lights), 1.0f / float(lights), 1.0f / float(lights), 1};
-    const float dir[4] = {std::cos(float(i)), 0.5f, std::sin(float(i)) + 1.0f, 0};  // directional
+    const float w = state.range(4) ? 1.0f : 0.0f;  // positional (the viewer's default) or directional
+    const float dir[4] = {3.0f * std::cos(float(i)), 1.5f, 3.0f * std::sin(float(i)) + 3.0f, w};
     (void)l.Enable(GL_LIGHT0 + GLenum(i));
     (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, white);
     (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, white);
@@ -54,12 +55,13 @@ void BM_ShadeTriangles(benchmark::State& state) {
   state.counters["triangles/s"] = benchmark::Counter(double(mesh.triangleCount()), benchmark::Counter::kIsIterationInvariantRate);
   state.SetLabel(std::to_string(lights) + " light(s), specular " + (state.range(1) ? "on" : "off") + ", " +
                  (opt.threads == 1 ? "1 thread" : std::to_string(workerCount()) + " threads") +
-                 (opt.buildBuckets ? ", bucketed" : ", not bucketed"));
+                 (opt.buildBuckets ? ", bucketed" : ", not bucketed") + (state.range(4) ? ", point lights" : ", directional"));
 }
 
 BENCHMARK(BM_ShadeTriangles)
-    ->ArgsProduct({{1, 2, 4, 8}, {0, 1}, {1, 0}, {1}})
-    ->Args({1, 1, 0, 0})  // without bucketing: what the triangle path needs
+    ->ArgsProduct({{1, 2, 4, 8}, {0, 1}, {1, 0}, {1}, {0}})
+    ->Args({1, 1, 0, 0, 0})  // without bucketing
+    ->Args({1, 1, 0, 1, 1})  // one point light with specular: the viewer's default scene
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(0.5);
