@@ -366,7 +366,7 @@ void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMat
     ++stats_.lightingRecomputes;
     shadingKey_ = {meshGeneration_, matcherGeneration_, prepared, rigid, wantBuckets};
     bucketsUploaded_ = false;
-    boundsViewport_ = glm::ivec2(0);
+    boundsValid_ = false;
   }
   if (wantBuckets && !bucketsUploaded_) {
     glBindVertexArray(vao_.id());
@@ -380,12 +380,20 @@ void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMat
   if (s.path == RenderPath::Stencil && s.stencilScissor) {
     const glm::mat4 mvp = camera.projection * modelView;
     const glm::ivec2 size(viewport.z, viewport.w);
-    if (mvp != boundsViewProjection_ || size != boundsViewport_) {
+    if (mvp != projectedViewProjection_ || size != projectedViewport_ || projectedMesh_ != meshGeneration_) {
       const auto t0 = std::chrono::steady_clock::now();
-      computeBucketBounds(*mesh_, mvp, size, 0, shading_);
+      projectVertices(*mesh_, mvp, size, 0, screenVertices_);
       stats_.cpuShadingMs += msSince(t0);
-      boundsViewProjection_ = mvp;
-      boundsViewport_ = size;
+      projectedViewProjection_ = mvp;
+      projectedViewport_ = size;
+      projectedMesh_ = meshGeneration_;
+      boundsValid_ = false;
+    }
+    if (!boundsValid_) {
+      const auto t0 = std::chrono::steady_clock::now();
+      computeBucketBounds(screenVertices_, size, 0, shading_);
+      stats_.cpuShadingMs += msSince(t0);
+      boundsValid_ = true;
     }
   }
   stats_.nonEmptyBuckets = shading_.nonEmptyBuckets;

@@ -155,8 +155,13 @@ class Renderer {
     bool valid = false, buckets = false;
   } shadingKey_;
   bool bucketsUploaded_ = false;
-  glm::mat4 boundsViewProjection_{0.0f};
-  glm::ivec2 boundsViewport_{0};
+  // The stencil path's scissor rectangles: vertices projected once per view, bounds once per
+  // change of the buckets or the view.
+  std::vector<glm::vec2> screenVertices_;
+  glm::mat4 projectedViewProjection_{0.0f};
+  glm::ivec2 projectedViewport_{0};
+  unsigned projectedMesh_ = 0;
+  bool boundsValid_ = false;
 
   // Feature lines: adjacency built on first use per mesh; creases and boundaries uploaded
   // once per mesh and angle, silhouettes when the eye moves.

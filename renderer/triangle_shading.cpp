@@ -211,54 +211,79 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   });
 }
 
-void computeBucketBounds(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
-                         TriangleShading& shading) {
-  const int entries = static_cast<int>(shading.bucketStart.size()) - 1;
-  shading.bucketBounds.assign(static_cast<size_t>(std::max(entries, 0)), glm::ivec4(0));
-  if (entries <= 0) return;
-  const int chunks = threads > 0 ? threads : workerCount();
+void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+                     std::vector<glm::vec2>& screen) {
   const size_t nv = mesh.positions.size();
-  std::vector<glm::vec2> screen(nv);
+  screen.resize(nv);
   const glm::vec2 half = glm::vec2(viewport) * 0.5f;
-  parallelChunks(nv, chunks, [&](size_t b, size_t e, int) {
+  parallelChunks(nv, threads > 0 ? threads : workerCount(), [&](size_t b, size_t e, int) {
     for (size_t v = b; v < e; ++v) {
       const glm::vec4 cp = modelViewProjection * glm::vec4(mesh.positions[v], 1.0f);
       // Behind the eye the projection is meaningless: mark it so the bucket spans the screen.
       screen[v] = cp.w > 1e-6f ? (glm::vec2(cp) / cp.w + 1.0f) * half : glm::vec2(NAN);
     }
   });
-  const glm::ivec4 empty(INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN);
-  std::vector<std::vector<glm::ivec4>> partial(static_cast<size_t>(chunks), std::vector<glm::ivec4>(static_cast<size_t>(entries), empty));
+}
+
+void computeBucketBounds(const std::vector<glm::vec2>& screen, const glm::ivec2& viewport, int threads, TriangleShading& shading) {
+  const int entries = static_cast<int>(shading.bucketStart.size()) - 1;
+  shading.bucketBounds.assign(static_cast<size_t>(std::max(entries, 0)), glm::ivec4(0));
+  if (entries <= 0) return;
+  const int chunks = threads > 0 ? threads : workerCount();
+  // Per chunk and bucket, float extents; rounding and clamping happen once per bucket. A vertex
+  // behind the eye (NaN) makes its bucket span the screen.
+  struct Box {
+    glm::vec2 lo{INFINITY}, hi{-INFINITY};
+    bool behindEye = false;
+  };
+  std::vector<std::vector<Box>> partial(static_cast<size_t>(chunks), std::vector<Box>(static_cast<size_t>(entries)));
   const std::uint32_t* idx = shading.bucketIndices.data();
+  const glm::vec2* pos = screen.data();
   const size_t nt = shading.bucketIndices.size() / 3;
   parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
-    glm::ivec4* bb = partial[static_cast<size_t>(c)].data();
-    // Triangles are grouped by bucket: walk the bucket boundaries alongside.
+    Box* boxes = partial[static_cast<size_t>(c)].data();
+    // Triangles are grouped by bucket: walk the bucket boundaries alongside, the current
+    // bucket's box in registers.
     size_t k = static_cast<size_t>(std::upper_bound(shading.bucketStart.begin(), shading.bucketStart.end(), b) - shading.bucketStart.begin()) - 1;
+    while (b >= shading.bucketStart[k + 1]) ++k;
+    size_t next = shading.bucketStart[k + 1];
+    glm::vec2 lo(INFINITY), hi(-INFINITY);
+    bool nan = false;
     for (size_t i = b; i < e; ++i) {
-      while (i >= shading.bucketStart[k + 1]) ++k;
-      glm::ivec4& r = bb[k];
-      const glm::vec2 a = screen[idx[i * 3]], s1 = screen[idx[i * 3 + 1]], s2 = screen[idx[i * 3 + 2]];
-      if (std::isnan(a.x) || std::isnan(s1.x) || std::isnan(s2.x)) {
-        r = glm::ivec4(-1, -1, viewport.x + 1, viewport.y + 1);
-        continue;
+      if (i >= next) {
+        boxes[k] = {lo, hi, nan};
+        while (i >= shading.bucketStart[k + 1]) ++k;
+        next = shading.bucketStart[k + 1];
+        lo = glm::vec2(INFINITY);
+        hi = glm::vec2(-INFINITY);
+        nan = false;
       }
-      const glm::vec2 lo = glm::max(glm::min(a, glm::min(s1, s2)), glm::vec2(-2.0f));
-      const glm::vec2 hi = glm::min(glm::max(a, glm::max(s1, s2)), glm::vec2(viewport) + 2.0f);
-      // One pixel of margin covers rasterisation rounding at the rectangle's edges.
-      r = glm::ivec4(std::min(r.x, int(std::floor(lo.x)) - 1), std::min(r.y, int(std::floor(lo.y)) - 1),
-                     std::max(r.z, int(std::ceil(hi.x)) + 1), std::max(r.w, int(std::ceil(hi.y)) + 1));
+      const glm::vec2 p0 = pos[idx[i * 3]], p1 = pos[idx[i * 3 + 1]], p2 = pos[idx[i * 3 + 2]];
+      nan |= std::isnan(p0.x + p1.x + p2.x);
+      // glm::min/max keep the first argument where the second is NaN.
+      lo = glm::min(lo, glm::min(p0, glm::min(p1, p2)));
+      hi = glm::max(hi, glm::max(p0, glm::max(p1, p2)));
     }
+    if (e > b) boxes[k] = {lo, hi, nan};
   });
+  const glm::vec2 limit = glm::vec2(viewport) + 2.0f;
   for (int k = 0; k < entries; ++k) {
-    glm::ivec4 r = empty;
+    if (shading.bucketStart[size_t(k) + 1] == shading.bucketStart[size_t(k)]) continue;
+    Box r;
     for (const auto& p : partial) {
-      const glm::ivec4& q = p[static_cast<size_t>(k)];
-      r = glm::ivec4(std::min(r.x, q.x), std::min(r.y, q.y), std::max(r.z, q.z), std::max(r.w, q.w));
+      const Box& q = p[static_cast<size_t>(k)];
+      r = {glm::min(r.lo, q.lo), glm::max(r.hi, q.hi), r.behindEye || q.behindEye};
     }
-    if (r.z > r.x && r.w > r.y)
+    if (r.behindEye) {
+      shading.bucketBounds[static_cast<size_t>(k)] = glm::ivec4(0, 0, viewport.x, viewport.y);
+      continue;
+    }
+    // One pixel of margin covers rasterisation rounding at the rectangle's edges.
+    const glm::vec2 lo = glm::clamp(r.lo, glm::vec2(-2.0f), limit), hi = glm::clamp(r.hi, glm::vec2(-2.0f), limit);
+    const glm::ivec4 q(int(std::floor(lo.x)) - 1, int(std::floor(lo.y)) - 1, int(std::ceil(hi.x)) + 1, int(std::ceil(hi.y)) + 1);
+    if (q.z > q.x && q.w > q.y)
       shading.bucketBounds[static_cast<size_t>(k)] =
-          glm::ivec4(std::max(r.x, 0), std::max(r.y, 0), std::min(r.z, viewport.x), std::min(r.w, viewport.y));
+          glm::ivec4(std::max(q.x, 0), std::max(q.y, 0), std::min(q.z, viewport.x), std::min(q.w, viewport.y));
   }
 }
 

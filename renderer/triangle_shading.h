@@ -34,10 +34,14 @@ struct TriangleShading {
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
                     const PaletteMatcher& matcher, const TriangleShadingOptions& options, TriangleShading& out);
 
+// Every vertex in window pixels (NaN where it lies behind the eye). Depends only on the view,
+// so callers keep it while only the lighting changes.
+void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+                     std::vector<glm::vec2>& screen);
+
 // The screen rectangle (x0, y0, x1, y1 in pixels) each bucket's triangles cover, for the
-// stencil path's scissor. Needs the buckets; recomputed when the view changes.
-void computeBucketBounds(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
-                         TriangleShading& shading);
+// stencil path's scissor, from projectVertices' output. Needs the buckets.
+void computeBucketBounds(const std::vector<glm::vec2>& screen, const glm::ivec2& viewport, int threads, TriangleShading& shading);
 
 // True when `m` is a rotation plus a translation (within float rounding).
 bool isRigid(const glm::mat4& m);

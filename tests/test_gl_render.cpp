@@ -135,6 +135,32 @@ TEST_F(Fixture, NaiveStencilDrawsTheSameImage) {
   EXPECT_EQ(r->stats().drawCalls, 1 + 30 * 2 + r->stats().nonEmptyBuckets);  // background, 2 quads each, masks
 }
 
+// The stencil path keeps its projected vertices while only the light moves and re-bounds the
+// new buckets from them: stale rectangles would cut buckets short.
+TEST_F(Fixture, StencilBoundsFollowTheLightAndTheView) {
+  auto mesh = loadMesh(sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  const int w = 320, h = 240;
+  RenderSettings s;
+  s.path = RenderPath::Stencil;
+  CameraMatrices cam = testCamera(float(w) / h);
+  (void)renderImage(*r, cam, s, w, h);
+  for (int step = 0; step < 3; ++step) {
+    if (step == 2) cam = testCamera(float(w) / h, 75.0f, -10.0f);  // then the view
+    const float pos[4] = {-3.0f + 2.5f * float(step), 1.0f, 2.0f, 1.0f};
+    r->lighting().setModelView(cam.view);
+    ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
+    s.path = RenderPath::Stencil;
+    const ImageRGBA8 stencil = renderImage(*r, cam, s, w, h);
+    s.path = RenderPath::Triangle;
+    const ImageRGBA8 triangle = renderImage(*r, cam, s, w, h);
+    const int covered = countCovered(*r, cam, w, h);
+    EXPECT_LE(countDiffering(stencil, triangle), covered / 1000) << "step " << step;
+  }
+}
+
 TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
