@@ -97,8 +97,8 @@ struct MotionFrame {
   CameraMatrices camera;
   glm::vec3 light;
 };
-MotionFrame motion(int frame, int frames, const OrbitCamera& base, float aspect) {
-  const float t = frames > 1 ? float(frame) / float(frames - 1) : 0.0f;
+MotionFrame motion(float frame, int frames, const OrbitCamera& base, float aspect) {
+  const float t = frames > 1 ? frame / float(frames - 1) : 0.0f;
   OrbitCamera cam = base;
   cam.orbit(60.0f * t, 0.0f);
   const float a = 0.4f + 1.57f * t;
@@ -131,7 +131,7 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
   std::vector<int> idealIndex(n, -1);
   std::vector<glm::dvec3> idealColour(n), prevIdealColour(n);
   for (int f = 0; f < frames; ++f) {
-    const MotionFrame m = motion(f, frames, base, aspect);
+    const MotionFrame m = motion(float(f), frames, base, aspect);
     setLight(r, m);
     RenderSettings geo = settings;
     auto render = [&](const RenderSettings& s) {
@@ -225,29 +225,40 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
 // ---------------------------------------------------------------------------------------
 // [SECTION] Speed
 
-void measureSpeed(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings, PathResult& pr) {
+// Frames of every path interleaved, one of each in turn: the machine's load drifts over
+// seconds, and timing each path in its own block made their ratios swing. Each path's frame
+// is a fraction of a frame further along the motion, so every per-triangle path redoes its
+// CPU work instead of reusing what the path before it computed for the same light.
+void measureSpeed(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
+                  const std::vector<PathResult*>& paths) {
   auto target = OffscreenTarget::create(size.x, size.y);
   if (!target) return;
   const float aspect = float(size.x) / float(size.y);
-  std::vector<double> wall, cpu, gpu;
-  RenderSettings s = settings;
-  s.path = pr.path;
+  std::vector<std::vector<double>> wall(paths.size()), cpu(paths.size()), gpu(paths.size());
   for (int f = -2; f < frames; ++f) {
-    const MotionFrame m = motion(std::max(f, 0), frames, base, aspect);
-    setLight(r, m);
-    target->bind();
-    const auto t0 = std::chrono::steady_clock::now();
-    (void)r.render(m.camera, s, {0, 0, size.x, size.y});
-    finishGpuWork();
-    if (f < 0) continue;  // warm-up: shader builds and uploads
-    wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    cpu.push_back(r.stats().cpuFrameMs);
-    if (r.stats().gpuMs >= 0) gpu.push_back(r.stats().gpuMs);
+    for (size_t p = 0; p < paths.size(); ++p) {
+      RenderSettings s = settings;
+      s.path = paths[p]->path;
+      const MotionFrame m = motion(float(std::max(f, 0)) + float(p) / float(paths.size()), frames, base, aspect);
+      setLight(r, m);
+      target->bind();
+      const auto t0 = std::chrono::steady_clock::now();
+      (void)r.render(m.camera, s, {0, 0, size.x, size.y});
+      finishGpuWork();
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      r.collectGpuTime();
+      if (f < 0) continue;  // warm-up: shader builds and uploads
+      wall[p].push_back(ms);
+      cpu[p].push_back(r.stats().cpuFrameMs);
+      if (r.stats().gpuMs >= 0) gpu[p].push_back(r.stats().gpuMs);
+    }
   }
-  pr.medianMs = median(wall);
-  pr.p95Ms = percentile95(wall);
-  pr.cpuMs = median(cpu);
-  pr.gpuMs = median(gpu);
+  for (size_t p = 0; p < paths.size(); ++p) {
+    paths[p]->medianMs = median(wall[p]);
+    paths[p]->p95Ms = percentile95(wall[p]);
+    paths[p]->cpuMs = median(cpu[p]);
+    paths[p]->gpuMs = median(gpu[p]);
+  }
 }
 
 // Frames where nothing changes must do no lighting, uploads or shader builds.
@@ -281,7 +292,7 @@ void measureFeatureCost(Renderer& r, const OrbitCamera& base, glm::ivec2 size, i
   l = LightingState();
   const float black[4] = {0, 0, 0, 1};
   (void)l.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
-  measureSpeed(r, base, size, frames, settings, pr);
+  measureSpeed(r, base, size, frames, settings, {&pr});
   out.lightMinimalMs = pr.medianMs;
   applyDefaultMaterial(l);
   (void)l.LightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
@@ -295,7 +306,7 @@ void measureFeatureCost(Renderer& r, const OrbitCamera& base, glm::ivec2 size, i
     (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_SPOT_CUTOFF, 60.0f);
     (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_QUADRATIC_ATTENUATION, 0.05f);
   }
-  measureSpeed(r, base, size, frames, settings, pr);
+  measureSpeed(r, base, size, frames, settings, {&pr});
   out.lightFullMs = pr.medianMs;
   r.lighting() = saved;
 }
@@ -406,7 +417,9 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   c.paths.emplace_back(RenderPath::Reference, range);
   c.paths.emplace_back(RenderPath::LitTextured, range);
   std::fprintf(stderr, "benchmark: speed...\n");
-  for (PathResult& p : c.paths) measureSpeed(r, camera, o.size, frames, settings, p);
+  std::vector<PathResult*> timed;
+  for (PathResult& p : c.paths) timed.push_back(&p);
+  measureSpeed(r, camera, o.size, frames, settings, timed);
   const double ref = std::find_if(c.paths.begin(), c.paths.end(), [](const PathResult& p) { return p.path == RenderPath::Reference; })->medianMs;
   for (PathResult& p : c.paths) p.xReference = ref > 0 ? p.medianMs / ref : 0.0;
   measureStaticFrames(r, camera, o.size, settings, c);
