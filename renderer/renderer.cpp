@@ -200,42 +200,24 @@ Status Renderer::setPalette(const Palette& p) {
   // colour or an image the size of every layer (both tile from the same screen corner).
   gp->precomposited = !bg || (!gp->sizesDiffer && bg->width == w && bg->height == h);
   gp->backgroundColour = p.backgroundColour;
-  std::vector<RgbaImage> layers;
-  layers.reserve(static_cast<size_t>(n));
-  for (const auto& e : p.entries) layers.push_back(gp->precomposited ? compositeOver(e.image, p.backgroundColour, bg) : e.image);
-  // Opaque grey layers (hatching, stippling over white) are stored in one channel: a quarter of
-  // the memory each fetch touches. Per-pixel paths fetch from whichever layer each pixel
-  // matched, so with many entries the fetches miss the CPU caches on llvmpipe and the frame
-  // time grew with the palette size.
-  bool grey = gp->precomposited;
-  for (const RgbaImage& img : layers)
-    for (size_t i = 0; grey && i < img.pixels.size(); i += 4)
-      grey = img.pixels[i] == img.pixels[i + 1] && img.pixels[i] == img.pixels[i + 2] && img.pixels[i + 3] == 255;
   gp->layers = gl::createTexture();
   glActiveTexture(GL_TEXTURE0 + kUnitPalette);
   glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers.id());
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, grey ? GL_R8 : GL_RGBA8, w, h, n, 0, grey ? GL_RED : GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-  if (grey) {
-    const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
-    glTexParameteriv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
-  }
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   std::vector<std::uint8_t> flipped;
-  auto flipRows = [&](const RgbaImage& img, bool red) {
+  auto flipRows = [&](const RgbaImage& img) {
     // Images are stored top row first; GL's rows start at the bottom of the screen.
-    const size_t texel = red ? 1 : 4, row = static_cast<size_t>(img.width) * texel;
-    flipped.resize(static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * texel);
-    for (int y = 0; y < img.height; ++y) {
-      const std::uint8_t* from = &img.pixels[static_cast<size_t>(y) * static_cast<size_t>(img.width) * 4];
-      std::uint8_t* to = &flipped[static_cast<size_t>(img.height - 1 - y) * row];
-      if (!red) std::memcpy(to, from, row);
-      else for (size_t x = 0; x < row; ++x) to[x] = from[x * 4];
-    }
+    const size_t row = static_cast<size_t>(img.width) * 4;
+    flipped.resize(img.pixels.size());
+    for (int y = 0; y < img.height; ++y)
+      std::memcpy(&flipped[static_cast<size_t>(img.height - 1 - y) * row], &img.pixels[static_cast<size_t>(y) * row], row);
     return flipped.data();
   };
   for (int i = 0; i < n; ++i) {
-    const RgbaImage& img = layers[static_cast<size_t>(i)];
-    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, img.width, img.height, 1, grey ? GL_RED : GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, grey));
+    const RgbaImage& src = p.entries[static_cast<size_t>(i)].image;
+    const RgbaImage img = gp->precomposited ? compositeOver(src, p.backgroundColour, bg) : src;
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img));
   }
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -246,7 +228,7 @@ Status Renderer::setPalette(const Palette& p) {
     gp->background = gl::createTexture();
     glActiveTexture(GL_TEXTURE0 + kUnitBackground);
     glBindTexture(GL_TEXTURE_2D, gp->background.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bg->width, bg->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(*bg, false));
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bg->width, bg->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(*bg));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
