@@ -92,17 +92,34 @@ void shadeSimpleLoop(const SimpleLighting& light, const PaletteMatcher::UnitLook
     glm::vec3 c = base;
     for (int l = 0; l < count; ++l) {
       glm::vec3 vp = pos[l], h = half[l];
+      float ndl;
       if (kPositional && point[l]) {
         const glm::vec3 d = pos[l] - centroids[i];
-        const float dist = std::sqrt(glm::dot(d, d));
-        // A light at the point has no direction: lit head-on, as the general model does.
-        vp = dist > 0.0f && dist <= std::numeric_limits<float>::max() ? d / dist : nrm;
+        const float dist2 = glm::dot(d, d);
+        if (dist2 > 0.0f && dist2 <= std::numeric_limits<float>::max()) {
+          // Facing away needs no square root: the sign of n.d is the sign of n.vp.
+          const float nd = glm::dot(nrm, d);
+          if (nd <= 0.0f) continue;
+          // One division per normalisation (glm's vector / scalar divides each component).
+          const float inv = 1.0f / std::sqrt(dist2);
+          vp = d * inv;
+          ndl = nd * inv;
+        } else {
+          // A light at the point has no direction: lit head-on, as the general model does.
+          vp = nrm;
+          ndl = glm::dot(nrm, nrm);
+        }
+      } else {
+        ndl = glm::dot(nrm, vp);
       }
-      const float ndl = glm::dot(nrm, vp);
       if (ndl <= 0.0f) continue;
       c += ndl * dif[l];
       if (kSpecular) {
-        if (kPositional && point[l]) h = lighting_detail::safeNormalize(vp + view);
+        if (kPositional && point[l]) {
+          h = vp + view;
+          const float len2 = glm::dot(h, h);
+          h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
+        }
         const float t = std::min(std::max(glm::dot(nrm, h), 0.0f), 1.0f) * float(SimpleLighting::kPowSteps);
         const int k = static_cast<int>(t);
         const float s = pow[k] + (t - float(k)) * (pow[k + 1] - pow[k]);
