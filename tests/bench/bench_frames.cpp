@@ -127,6 +127,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (quick) sizes = {10};
+  if (!meshFilter.empty() && meshFilter != "bunny" && meshFilter != "torus") {
+    std::fprintf(stderr, "bench_frames: --mesh must be bunny or torus, not '%s'\n", meshFilter.c_str());
+    return 2;
+  }
   auto ctx = HeadlessContext::create(false);
   if (!ctx) {
     std::fprintf(stderr, "%s\n", ctx.error().c_str());
@@ -155,6 +159,15 @@ int main(int argc, char** argv) {
                                          {"vertex", RenderPath::Vertex},
                                          {"pixel", RenderPath::Pixel},
                                          {"smooth", RenderPath::Smooth}};
+  for (size_t at = 1; at < pathFilter.size();) {
+    const size_t end = pathFilter.find(',', at);
+    const std::string name = pathFilter.substr(at, end - at);
+    at = end + 1;
+    if (!name.empty() && std::none_of(allPaths.begin(), allPaths.end(), [&](const PathRow& p) { return name == p.label; })) {
+      std::fprintf(stderr, "bench_frames: unknown path '%s' in --paths\n", name.c_str());
+      return 2;
+    }
+  }
   std::vector<PathRow> paths;
   for (const PathRow& p : allPaths)
     if (pathFilter.empty() || p.path == RenderPath::Reference || p.path == RenderPath::LitTextured ||
