@@ -98,7 +98,7 @@ void expectStencilEqualsTriangle(Renderer& r, const std::string& what) {
     const ImageRGBA8 triangle = renderImage(r, cam, s, w, h);
     const int diff = countDiffering(stencil, triangle);
     EXPECT_LE(diff, covered / 1000) << what << " " << matchModeName(mode) << ": " << diff << " of " << covered << " covered pixels differ";
-    if (diff > covered / 1000) (void)writeImage("stencil-vs-triangle-" + std::string(matchModeName(mode)) + ".png", stencil);
+    if (diff > covered / 1000) (void)writeImage(test::outputPath("stencil-vs-triangle-" + std::string(matchModeName(mode)) + ".png"), stencil);
   }
 }
 
@@ -460,7 +460,7 @@ TEST_F(Fixture, CelBandsAreHardWithAntialiasedEdges) {
 
 // Compares with tests/golden/NAME.png: at most `failFraction` of the pixels may differ by
 // more than 2/255 in a channel, and the mean channel difference must stay under `meanDiff`.
-// A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in the working folder.
+// A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in build/test-output.
 // NPR_UPDATE_GOLDEN=1 rewrites the goldens instead (then look at them before committing).
 void expectGolden(const std::string& name, const ImageRGBA8& img, double failFraction, double meanDiff) {
   const std::string golden = sourcePath("tests/golden/" + name + ".png");
@@ -478,12 +478,12 @@ void expectGolden(const std::string& name, const ImageRGBA8& img, double failFra
   const bool ok = failed <= failFraction && cmp.meanerror <= meanDiff;
   EXPECT_TRUE(ok) << name << ": " << cmp.nfail << " pixels differ by more than 2/255 (" << failed * 100 << "%, limit "
                   << failFraction * 100 << "%), mean difference " << cmp.meanerror << " (limit " << meanDiff << "), max "
-                  << cmp.maxerror;
+                  << cmp.maxerror << "; actual and diff images in " << test::outputPath("");
   if (!ok) {
-    (void)writeImage(name + "-actual.png", img);
+    (void)writeImage(test::outputPath(name + "-actual.png"), img);
     OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(actual, expected);
     diff = OIIO::ImageBufAlgo::mul(diff, 4.0f);
-    diff.write(name + "-diff.png");
+    diff.write(test::outputPath(name + "-diff.png"));
   }
 }
 

@@ -35,4 +35,10 @@ void writeObj(const Mesh& m, const std::string& path) {
   std::fclose(f);
 }
 
+std::string outputPath(const std::string& name) {
+  std::error_code ec;
+  std::filesystem::create_directories(NPR_TEST_OUTPUT_DIR, ec);
+  return (std::filesystem::path(NPR_TEST_OUTPUT_DIR) / name).string();
+}
+
 }  // namespace npr::test

@@ -1,4 +1,4 @@
-// Helpers shared by the tests: temporary files, and meshes generated in code.
+// Helpers shared by the tests: temporary files, failure images, and meshes generated in code.
 #pragma once
 
 #include <filesystem>
@@ -21,6 +21,10 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// NAME inside the build's test-output folder (created on demand): where a failing test leaves
+// images to look at, so they never land in the source tree.
+std::string outputPath(const std::string& name);
 
 using npr::icosphere;
 using npr::torus;
