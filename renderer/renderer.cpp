@@ -348,27 +348,26 @@ void Renderer::bindPaletteTextures(GLuint prog) const {
 
 void Renderer::ensureTriangleShading(const glm::mat4& modelView, const CameraMatrices& camera, const RenderSettings& s,
                                      const glm::ivec4& viewport) {
-  // Both per-triangle paths draw bucket by bucket: the triangle path sets the entry as a
-  // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
-  // process the 871K-triangle mesh about 30% slower than the reference render.
-  const bool wantBuckets = s.path == RenderPath::Stencil || s.path == RenderPath::Triangle;
   const bool rigid = isRigid(modelView);
   PreparedLighting<float> prepared = prepareLighting<float>(lighting_, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
   const bool same = shadingKey_.valid && rigid && shadingKey_.mesh == meshGeneration_ &&
-                    shadingKey_.matcher == matcherGeneration_ && (shadingKey_.buckets || !wantBuckets) &&
+                    shadingKey_.matcher == matcherGeneration_ &&
                     sameLighting(shadingKey_.lighting, prepared);
   if (!same) {
     const auto t0 = std::chrono::steady_clock::now();
     TriangleShadingOptions opt;
-    opt.buildBuckets = wantBuckets;
+    // Both per-triangle paths draw bucket by bucket: the triangle path sets the entry as a
+    // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
+    // process the 871K-triangle mesh about 30% slower than the reference render.
+    opt.buildBuckets = true;
     shadeTriangles(*mesh_, lighting_, modelView, *matcher_, opt, shading_);
     stats_.cpuShadingMs += msSince(t0);
     ++stats_.lightingRecomputes;
-    shadingKey_ = {meshGeneration_, matcherGeneration_, prepared, rigid, wantBuckets};
+    shadingKey_ = {meshGeneration_, matcherGeneration_, prepared, /*valid=*/rigid};  // eye-space results are not reusable
     bucketsUploaded_ = false;
     boundsValid_ = false;
   }
-  if (wantBuckets && !bucketsUploaded_) {
+  if (!bucketsUploaded_) {
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(shading_.bucketIndices.size() * sizeof(std::uint32_t)),

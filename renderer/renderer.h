@@ -152,7 +152,7 @@ class Renderer {
   struct ShadingKey {
     unsigned mesh = 0, matcher = 0;
     PreparedLighting<float> lighting;
-    bool valid = false, buckets = false;
+    bool valid = false;
   } shadingKey_;
   bool bucketsUploaded_ = false;
   // The stencil path's scissor rectangles: vertices projected once per view, bounds once per
