@@ -126,7 +126,10 @@ void shadeSimpleLoop(const SimpleLighting& light, const PaletteMatcher::UnitLook
         c += s * spe[l];
       }
     }
-    const int k = lookup(glm::clamp(c, 0.0f, 1.0f));
+    // NaN-safe clamp: with huge colours a sum can be inf - inf or inf x 0, and a NaN query
+    // would index the lookup table out of bounds. NaN becomes 0, as in the general model.
+    using lighting_detail::clamp01;
+    const int k = lookup(glm::vec3(clamp01(c.r), clamp01(c.g), clamp01(c.b)));
     entry[i] = static_cast<std::uint8_t>(k);
     ++cnt[k];
   }

@@ -140,5 +140,37 @@ INSTANTIATE_TEST_SUITE_P(
                     Scene{"two attenuated point lights (general loop)", 2, 2, true, true, MatchMode::Intensity}),
     [](const testing::TestParamInfo<Scene>& info) { return "Scene" + std::to_string(info.index); });
 
+// Huge and opposite light colours (inf - inf, inf x 0 in the sums) must still give an entry of
+// the palette: the loops clamp NaN to 0 before the lookup table is indexed.
+TEST(TriangleShadingExtremes, HugeAndOppositeColoursStayInThePalette) {
+  const Mesh mesh = torus(30, 20);
+  for (bool point : {false, true}) {
+    LightingState l;
+    const float huge[4] = {3e38f, -3e38f, 3e38f, 1}, negative[4] = {-3e38f, 3e38f, -3e38f, 1};
+    for (int i = 0; i < 2; ++i) {
+      const float pos[4] = {float(i) - 0.5f, 1.0f, 2.0f, point ? 1.0f : 0.0f};
+      ASSERT_TRUE(l.Enable(GL_LIGHT0 + GLenum(i)));
+      ASSERT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, i ? negative : huge));
+      ASSERT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, i ? huge : negative));
+      ASSERT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_AMBIENT, i ? huge : negative));
+      ASSERT_TRUE(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, pos));
+    }
+    // Light x material products overflow to +-inf; a zero specular power times inf is NaN.
+    const float big[4] = {3e38f, 3e38f, 3e38f, 1};
+    ASSERT_TRUE(l.Materialfv(GL_FRONT, GL_SPECULAR, big));
+    ASSERT_TRUE(l.Materialfv(GL_FRONT, GL_DIFFUSE, big));
+    ASSERT_TRUE(l.Materialf(GL_FRONT, GL_SHININESS, 128.0f));
+    for (MatchMode mode : {MatchMode::Intensity, MatchMode::Order, MatchMode::Colors}) {
+      auto matcher = PaletteMatcher::create(paletteFor(mode), mode, 1.0f);
+      ASSERT_TRUE(matcher) << matcher.error();
+      TriangleShading out;
+      shadeTriangles(mesh, l, glm::mat4(1.0f), *matcher, {}, out);
+      ASSERT_EQ(out.entry.size(), mesh.triangleCount());
+      for (std::uint8_t e : out.entry) ASSERT_LT(int(e), matcher->size()) << (point ? "point" : "directional");
+      EXPECT_EQ(out.bucketStart.back(), mesh.triangleCount());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace npr
