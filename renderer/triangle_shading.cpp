@@ -120,7 +120,7 @@ void shadeSimpleLoop(const SimpleLighting& light, const PaletteMatcher::UnitLook
           const float len2 = glm::dot(h, h);
           h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
         }
-        const float t = std::min(std::max(glm::dot(nrm, h), 0.0f), 1.0f) * float(SimpleLighting::kPowSteps);
+        const float t = lighting_detail::clamp01(glm::dot(nrm, h)) * float(SimpleLighting::kPowSteps);  // NaN: 0
         const int k = static_cast<int>(t);
         const float s = pow[k] + (t - float(k)) * (pow[k + 1] - pow[k]);
         c += s * spe[l];
