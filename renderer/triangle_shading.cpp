@@ -279,7 +279,7 @@ void computeBucketBounds(const std::vector<glm::vec2>& screen, const glm::ivec2&
         nan = false;
       }
       const glm::vec2 p0 = pos[idx[i * 3]], p1 = pos[idx[i * 3 + 1]], p2 = pos[idx[i * 3 + 2]];
-      nan |= std::isnan(p0.x + p1.x + p2.x);
+      nan |= std::isnan(p0.x + p0.y + p1.x + p1.y + p2.x + p2.y);
       // glm::min/max keep the first argument where the second is NaN.
       lo = glm::min(lo, glm::min(p0, glm::min(p1, p2)));
       hi = glm::max(hi, glm::max(p0, glm::max(p1, p2)));
