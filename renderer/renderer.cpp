@@ -429,6 +429,16 @@ void Renderer::drawBackground() {
   ++stats_.drawCalls;
 }
 
+void Renderer::drawBucket(int k) {
+  // Bucket k's triangles from the bucketed index buffer, which the caller has bound.
+  const std::uint32_t first = shading_.bucketStart[static_cast<size_t>(k)];
+  const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - first;
+  if (count == 0) return;
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
+                 reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(std::uint32_t)));
+  ++stats_.drawCalls;
+}
+
 void Renderer::collectGpuTime() {
   // Queries finish in the order they were issued: read from the oldest pending one.
   for (int k = 0; k < kTimerSlots; ++k) {
@@ -523,13 +533,9 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
         if (eff.path == RenderPath::Triangle) {
           glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
           for (int k = 0; k < paletteSize_; ++k) {
-            const std::uint32_t first = shading_.bucketStart[static_cast<size_t>(k)];
-            const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - first;
-            if (count == 0) continue;
+            if (shading_.bucketStart[static_cast<size_t>(k) + 1] == shading_.bucketStart[static_cast<size_t>(k)]) continue;
             gl::setUniform(*prog, "uEntry", k);
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(std::uint32_t)));
-            ++stats_.drawCalls;
+            drawBucket(k);
           }
         } else {
           glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
@@ -582,8 +588,7 @@ Status Renderer::renderStencil(const CameraMatrices& camera, const RenderSetting
   gl::setUniform(*layerQuad, "uPalette", int(kUnitPalette));
 
   for (int k = 0; k < paletteSize_; ++k) {
-    const std::uint32_t first = shading_.bucketStart[static_cast<size_t>(k)];
-    const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - first;
+    const std::uint32_t count = shading_.bucketStart[static_cast<size_t>(k) + 1] - shading_.bucketStart[static_cast<size_t>(k)];
     if (count == 0 && s.stencilSkipEmpty) continue;
     glm::ivec4 rect(viewport.x, viewport.y, viewport.z, viewport.w);
     if (s.stencilScissor) {
@@ -599,11 +604,7 @@ Status Renderer::renderStencil(const CameraMatrices& camera, const RenderSetting
     glUseProgram(*mask);
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, bucketIndices_.id());
-    if (count > 0) {
-      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(count * 3), GL_UNSIGNED_INT,
-                     reinterpret_cast<const void*>(static_cast<std::uintptr_t>(first) * 3 * sizeof(std::uint32_t)));
-      ++stats_.drawCalls;
-    }
+    drawBucket(k);
     if (rect.z <= 0 || rect.w <= 0) continue;
     glScissor(rect.x, rect.y, rect.z, rect.w);
     glBindVertexArray(emptyVao_.id());

@@ -115,6 +115,7 @@ class Renderer {
   std::vector<std::string> paletteDefines(MatchMode mode) const;
   void bindPaletteTextures(GLuint program) const;
   void drawBackground();
+  void drawBucket(int entry);
   Status renderStencil(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport);
   void setMeshUniforms(GLuint program, const CameraMatrices& camera);
   Status drawLines(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport);
