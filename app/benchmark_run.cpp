@@ -19,11 +19,11 @@
 #include "app/headless_run.h"
 #include "app/viewer_state.h"
 #include "renderer/gl/gl_debug.h"
-#include "renderer/headless_context.h"
-#include "renderer/lighting_model.h"
-#include "renderer/mesh_generators.h"
-#include "renderer/mesh_loader.h"
-#include "renderer/offscreen_target.h"
+#include "renderer/gl/headless_context.h"
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "renderer/gl/offscreen_target.h"
 
 namespace npr {
 namespace fs = std::filesystem;

@@ -7,9 +7,9 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/lighting_state.h"
-#include "renderer/palette.h"
-#include "renderer/render_path.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/palette/palette.h"
+#include "renderer/paths/path_table.h"
 
 namespace npr {
 

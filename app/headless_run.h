@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/cli.h"
-#include "renderer/headless_context.h"
+#include "renderer/gl/headless_context.h"
 #include "renderer/renderer.h"
 
 namespace npr {

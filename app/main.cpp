@@ -7,8 +7,8 @@
 #include "app/cli.h"
 #include "app/headless_run.h"
 #include "app/window_viewer.h"
-#include "renderer/mesh_loader.h"
-#include "renderer/palette.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "renderer/palette/palette.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 // See tests/gl_test_env.cpp: Mesa's unloaded driver would be reported as leaking.

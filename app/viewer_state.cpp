@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "renderer/mesh_generators.h"
-#include "renderer/mesh_loader.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "renderer/mesh/mesh_loader.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -96,12 +96,6 @@ void ViewerState::applyLight(Renderer& renderer, const CameraMatrices& camera) c
   l.setModelView(lightFollowsCamera ? glm::mat4(1.0f) : camera.view);
   l.Lightfv(GL_LIGHT0, GL_POSITION, pos);
   l.setModelView(camera.view);
-}
-
-void applyDefaultMaterial(LightingState& lighting) {
-  const float spec[4] = {0.35f, 0.35f, 0.35f, 1.0f};
-  lighting.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
-  lighting.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
 }
 
 }  // namespace npr

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/camera.h"
-#include "renderer/mesh.h"
-#include "renderer/palette.h"
+#include "renderer/core/camera.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/palette.h"
 #include "renderer/renderer.h"
 
 namespace npr {
@@ -45,9 +45,5 @@ struct ViewerState {
   void applyLight(Renderer& renderer, const CameraMatrices& camera) const;
   glm::vec3 lightWorldPosition(const CameraMatrices& camera) const;
 };
-
-// The default material and light model of the viewer: OpenGL's defaults plus a modest
-// specular highlight, so hatching shows a highlight on glossy parts.
-void applyDefaultMaterial(LightingState& lighting);
 
 }  // namespace npr

@@ -25,8 +25,8 @@
 #include "app/input_map.h"
 #include "app/startup.h"
 #include "renderer/gl/gl_debug.h"
-#include "renderer/image_io.h"
-#include "renderer/offscreen_target.h"
+#include "renderer/core/image_io.h"
+#include "renderer/gl/offscreen_target.h"
 
 namespace npr {
 namespace fs = std::filesystem;

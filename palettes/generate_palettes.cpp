@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/colour.h"
-#include "renderer/palette.h"
+#include "renderer/core/colour.h"
+#include "renderer/palette/palette.h"
 
 namespace fs = std::filesystem;
 using npr::RgbaImage;

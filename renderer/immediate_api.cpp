@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "renderer/palette_matcher.h"
+#include "renderer/palette/palette_matcher.h"
 
 namespace npr {
 

@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/mesh.h"
+#include "renderer/mesh/mesh.h"
 #include "renderer/renderer.h"
 
 namespace npr {

@@ -13,10 +13,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/feature_edges.h"
+#include "renderer/lines/feature_edges.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/gl_program.h"
-#include "renderer/lighting_uniforms.h"
+#include "renderer/lighting/lighting_uniforms.h"
 
 namespace npr {
 

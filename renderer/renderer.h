@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "renderer/camera.h"
+#include "renderer/core/camera.h"
 #include "renderer/gl/gl_handle.h"
-#include "renderer/lighting_state.h"
-#include "renderer/mesh.h"
-#include "renderer/palette.h"
-#include "renderer/palette_matcher.h"
-#include "renderer/render_path.h"
-#include "renderer/result.h"
-#include "renderer/triangle_shading.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/palette.h"
+#include "renderer/palette/palette_matcher.h"
+#include "renderer/paths/path_table.h"
+#include "renderer/core/result.h"
+#include "renderer/shading/triangle_shading.h"
 
 namespace npr {
 

@@ -3,7 +3,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "renderer/shader_sources.h"
+#include "renderer/gl/shader_sources.h"
 
 namespace npr::gl {
 namespace {

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/gl/gl_handle.h"
-#include "renderer/result.h"
+#include "renderer/core/result.h"
 
 namespace npr::gl {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "renderer/mesh.h"
+#include "renderer/mesh/mesh.h"
 
 namespace npr::bench {
 

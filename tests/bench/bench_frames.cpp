@@ -14,10 +14,10 @@
 #include <vector>
 
 #include "bench_common.h"
-#include "app/viewer_state.h"
-#include "renderer/headless_context.h"
-#include "renderer/mesh_loader.h"
-#include "renderer/offscreen_target.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/gl/headless_context.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "renderer/gl/offscreen_target.h"
 #include "renderer/renderer.h"
 
 using namespace npr;

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "bench_common.h"
-#include "renderer/mesh_loader.h"
+#include "renderer/mesh/mesh_loader.h"
 
 namespace npr::bench {
 namespace {

@@ -9,10 +9,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "bench_common.h"
-#include "renderer/feature_edges.h"
-#include "renderer/palette_matcher.h"
-#include "renderer/parallel.h"
-#include "renderer/triangle_shading.h"
+#include "renderer/lines/feature_edges.h"
+#include "renderer/palette/palette_matcher.h"
+#include "renderer/core/parallel.h"
+#include "renderer/shading/triangle_shading.h"
 
 namespace npr::bench {
 namespace {

@@ -1,0 +1,77 @@
+// Orbit camera maths (see camera.h).
+#include "renderer/core/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace npr {
+
+OrbitCamera::OrbitCamera(float yawDeg, float pitchDeg, float distance) {
+  setYawPitchDistance(yawDeg, pitchDeg, distance);
+  homeYaw_ = yaw_;
+  homePitch_ = pitch_;
+  homeDistance_ = distance_;
+}
+
+void OrbitCamera::setYawPitchDistance(float yawDeg, float pitchDeg, float distance) {
+  yaw_ = std::isfinite(yawDeg) ? std::fmod(yawDeg, 360.0f) : 0.0f;
+  pitch_ = std::isfinite(pitchDeg) ? std::clamp(pitchDeg, -kMaxPitch, kMaxPitch) : 0.0f;
+  distance_ = std::isfinite(distance) ? std::clamp(distance, minDistance(), maxDistance()) : 3.0f * radius_;
+}
+
+void OrbitCamera::orbit(float dYaw, float dPitch) { setYawPitchDistance(yaw_ + dYaw, pitch_ + dPitch, distance_); }
+
+glm::vec3 OrbitCamera::eyePosition() const {
+  const float y = glm::radians(yaw_), p = glm::radians(pitch_);
+  return target_ + distance_ * glm::vec3(std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y));
+}
+
+void OrbitCamera::pan(const glm::vec2& ndcDelta, float aspect) {
+  if (!std::isfinite(ndcDelta.x) || !std::isfinite(ndcDelta.y)) return;
+  const CameraMatrices m = matrices(aspect);
+  const glm::mat3 camToWorld = glm::transpose(glm::mat3(m.view));
+  const float halfH = distance_ * std::tan(glm::radians(fovYDeg_) * 0.5f);
+  target_ -= camToWorld * glm::vec3(ndcDelta.x * halfH * aspect, ndcDelta.y * halfH, 0.0f);
+}
+
+void OrbitCamera::zoom(float factor, const glm::vec2& cursorNdc, float aspect) {
+  if (!(factor > 0.0f) || !std::isfinite(factor)) return;
+  const float before = distance_;
+  distance_ = std::clamp(distance_ * factor, minDistance(), maxDistance());
+  // Keep the point under the cursor (on the target's plane) fixed: shift the target toward it
+  // by the fraction of the distance removed.
+  const float moved = 1.0f - distance_ / before;
+  const CameraMatrices m = matrices(aspect);
+  const glm::mat3 camToWorld = glm::transpose(glm::mat3(m.view));
+  const float halfH = before * std::tan(glm::radians(fovYDeg_) * 0.5f);
+  const glm::vec3 under = camToWorld * glm::vec3(cursorNdc.x * halfH * aspect, cursorNdc.y * halfH, 0.0f);
+  if (std::isfinite(under.x) && std::isfinite(under.y) && std::isfinite(under.z)) target_ += under * moved;
+}
+
+void OrbitCamera::frame(float radius) {
+  radius_ = std::isfinite(radius) && radius > 0.0f ? radius : 1.0f;
+  target_ = glm::vec3(0.0f);
+  // Fit the bounding sphere in the vertical field of view with a little margin.
+  const float d = radius_ / std::sin(glm::radians(fovYDeg_) * 0.5f) * 1.05f;
+  distance_ = std::clamp(d, minDistance(), maxDistance());
+  homeDistance_ = distance_;
+}
+
+void OrbitCamera::reset() {
+  target_ = glm::vec3(0.0f);
+  setYawPitchDistance(homeYaw_, homePitch_, homeDistance_);
+}
+
+CameraMatrices OrbitCamera::matrices(float aspect) const {
+  CameraMatrices m;
+  if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;
+  m.view = glm::lookAt(eyePosition(), target_, glm::vec3(0, 1, 0));
+  const float nearP = std::max(distance_ - 2.0f * radius_, distance_ * 1e-3f);
+  const float farP = distance_ + 2.0f * radius_ + glm::length(target_);
+  m.projection = glm::perspective(glm::radians(fovYDeg_), aspect, nearP, farP);
+  return m;
+}
+
+}  // namespace npr

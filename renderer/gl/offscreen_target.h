@@ -1,0 +1,53 @@
+// A framebuffer object with a colour attachment and a depth24/stencil8 attachment: what
+// headless rendering draws into and reads back from.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gl/gl_handle.h"
+#include "renderer/core/result.h"
+
+namespace npr {
+
+struct ImageRGBA8 {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> pixels;  // top row first, 4 bytes per pixel
+};
+
+struct ImageRGBA32F {
+  int width = 0, height = 0;
+  std::vector<float> pixels;  // top row first, 4 floats per pixel
+};
+
+class OffscreenTarget {
+ public:
+  enum class Format { RGBA8, RGBA32F };
+  static Result<OffscreenTarget> create(int width, int height, Format format = Format::RGBA8);
+
+  void bind() const;  // binds for drawing and sets the viewport to the whole target
+  void clear(const glm::vec4& colour) const;  // binds, then clears colour (for float read-backs)
+  int width() const { return width_; }
+  int height() const { return height_; }
+  ImageRGBA8 readRGBA8() const;
+  ImageRGBA32F readRGBA32F() const;
+
+ private:
+  int width_ = 0, height_ = 0;
+  gl::Framebuffer fbo_;
+  gl::Texture color_;
+  gl::Renderbuffer depthStencil_;
+};
+
+}  // namespace npr
+
+namespace npr {
+// Reads `width` x `height` pixels from the bound read framebuffer (the window's for F12).
+ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height);
+// Makes the window's own framebuffer the target again (after offscreen passes).
+void bindWindowFramebuffer();
+// Blocks until the GPU has finished all submitted work: what frame timings must include.
+void finishGpuWork();
+}  // namespace npr

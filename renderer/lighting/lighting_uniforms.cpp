@@ -1,0 +1,49 @@
+// Lighting uniform upload matching the layout declared in shaders/lighting.glsl.
+#include "renderer/lighting/lighting_uniforms.h"
+
+#include <vector>
+
+#include "renderer/gl/gl_program.h"
+
+namespace npr {
+
+void uploadLightingUniforms(GLuint program, const PreparedLighting<float>& p) {
+  const glm::vec3 base[2] = {p.base[0], p.base[1]};
+  gl::setUniformArray(program, "uBase", base, 2);
+  if (p.tone != ToneModel::OpenGL) {
+    const glm::vec3 cool[2] = {p.cool[0], p.cool[1]}, warm[2] = {p.warm[0], p.warm[1]};
+    gl::setUniformArray(program, "uCool", cool, 2);
+    gl::setUniformArray(program, "uWarm", warm, 2);
+    gl::setUniform(program, "uSplash", glm::vec2(p.splashAlpha, p.splashPower));
+  }
+  const int n = p.count;
+  if (!p.lighting || n == 0) return;
+  std::vector<glm::vec3> amb(2 * n), dif(2 * n), spec(2 * n), spotDir(n), att(n);
+  std::vector<glm::vec4> pos(n);
+  std::vector<float> spotExp(n), spotCos(n);
+  for (int i = 0; i < n; ++i) {
+    const auto& l = p.lights[i];
+    for (int side = 0; side < 2; ++side) {
+      amb[side * n + i] = l.ambient[side];
+      dif[side * n + i] = l.diffuse[side];
+      spec[side * n + i] = l.specular[side];
+    }
+    pos[i] = glm::vec4(l.position, l.positional ? 1.0f : 0.0f);
+    spotDir[i] = l.spotDirection;
+    spotExp[i] = l.spot ? l.spotExponent : 0.0f;
+    spotCos[i] = l.spot ? l.spotCosCutoff : -2.0f;
+    att[i] = glm::vec3(l.k0, l.k1, l.k2);
+  }
+  // Uniforms a variant compiled out are simply not found (location -1): setting them is a no-op.
+  gl::setUniformArray(program, "uLightAmbient", amb.data(), 2 * n);
+  gl::setUniformArray(program, "uLightDiffuse", dif.data(), 2 * n);
+  gl::setUniformArray(program, "uLightSpecular", spec.data(), 2 * n);
+  gl::setUniformArray(program, "uLightPosition", pos.data(), n);
+  gl::setUniformArray(program, "uSpotDirection", spotDir.data(), n);
+  gl::setUniformArray(program, "uSpotExponent", spotExp.data(), n);
+  gl::setUniformArray(program, "uSpotCosCutoff", spotCos.data(), n);
+  gl::setUniformArray(program, "uAttenuation", att.data(), n);
+  gl::setUniformArray(program, "uShininess", p.shininess, 2);
+}
+
+}  // namespace npr

@@ -1,0 +1,155 @@
+// Feature line extraction (see feature_edges.h).
+#include "renderer/lines/feature_edges.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "renderer/core/parallel.h"
+
+namespace npr {
+namespace {
+
+struct PositionKey {
+  std::uint32_t x, y, z;
+  bool operator==(const PositionKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct PositionHash {
+  size_t operator()(const PositionKey& k) const {
+    return (size_t(k.x) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.y) * 0xC2B2AE3D27D4EB4Full) ^ (size_t(k.z) * 0x165667B19E3779F9ull);
+  }
+};
+std::uint32_t bits(float f) {
+  if (f == 0.0f) f = 0.0f;  // -0 and +0 weld
+  std::uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return u;
+}
+
+struct FaceKey {
+  std::uint32_t a, b, c;  // sorted
+  bool operator==(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+struct FaceHash {
+  size_t operator()(const FaceKey& k) const { return PositionHash()(PositionKey{k.a, k.b, k.c}); }
+};
+
+std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+}
+
+}  // namespace
+
+FeatureEdges::FeatureEdges(const Mesh& m) {
+  // Weld vertices at identical positions.
+  std::unordered_map<PositionKey, std::uint32_t, PositionHash> ids;
+  ids.reserve(m.positions.size());
+  std::vector<std::uint32_t> remap(m.positions.size());
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    const glm::vec3& p = m.positions[i];
+    auto [it, inserted] = ids.emplace(PositionKey{bits(p.x), bits(p.y), bits(p.z)}, std::uint32_t(positions_.size()));
+    if (inserted) positions_.push_back(p);
+    remap[i] = it->second;
+  }
+  // Halfedge adjacency on the welded faces; doubled and degenerate faces dropped.
+  TriMesh welded;
+  welded.reserve(positions_.size(), m.triangleCount() * 3 / 2, m.triangleCount());
+  std::vector<TriMesh::VertexHandle> vh(positions_.size());
+  for (size_t i = 0; i < positions_.size(); ++i) vh[i] = welded.add_vertex(TriMesh::Point(positions_[i].x, positions_[i].y, positions_[i].z));
+  std::unordered_set<FaceKey, FaceHash> seen;
+  seen.reserve(m.triangleCount());
+  std::vector<std::array<std::uint32_t, 3>> refused;
+  auto& errlog = omerr();
+  errlog.disable();
+  for (size_t t = 0; t < m.triangleCount(); ++t) {
+    std::array<std::uint32_t, 3> f = {remap[m.indices[t * 3]], remap[m.indices[t * 3 + 1]], remap[m.indices[t * 3 + 2]]};
+    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
+    std::array<std::uint32_t, 3> s = f;
+    std::sort(s.begin(), s.end());
+    if (!seen.insert(FaceKey{s[0], s[1], s[2]}).second) {
+      ++duplicateFaces_;
+      continue;
+    }
+    if (!welded.add_face(vh[f[0]], vh[f[1]], vh[f[2]]).is_valid()) refused.push_back(f);
+  }
+  errlog.enable();
+
+  faceNormals_.resize(welded.n_faces());
+  facePlanes_.resize(welded.n_faces());
+  for (auto fh : welded.faces()) {
+    std::uint32_t v[3];
+    int k = 0;
+    for (auto fv : welded.fv_range(fh)) v[k++] = std::uint32_t(fv.idx());
+    const glm::vec3 a = positions_[v[0]], b = positions_[v[1]], c = positions_[v[2]];
+    const glm::vec3 cr = glm::cross(b - a, c - a);
+    const float len = glm::length(cr);
+    const glm::vec3 n = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
+    faceNormals_[size_t(fh.idx())] = n;
+    facePlanes_[size_t(fh.idx())] = glm::vec4(n, -glm::dot(n, (a + b + c) / 3.0f));
+  }
+  std::unordered_set<std::uint64_t> junction;
+  for (const auto& f : refused)
+    for (int k = 0; k < 3; ++k) junction.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
+  for (auto e : welded.edges()) {
+    const auto h0 = welded.halfedge_handle(e, 0);
+    const std::uint32_t v0 = std::uint32_t(welded.from_vertex_handle(h0).idx()), v1 = std::uint32_t(welded.to_vertex_handle(h0).idx());
+    const auto f0 = welded.face_handle(h0), f1 = welded.face_handle(welded.halfedge_handle(e, 1));
+    if (junction.erase(edgeKey(v0, v1))) {
+      boundary_.insert(boundary_.end(), {v0, v1});
+      ++junctionCount_;
+      if (!f0.is_valid() || !f1.is_valid()) continue;
+    } else if (!f0.is_valid() || !f1.is_valid()) {
+      boundary_.insert(boundary_.end(), {v0, v1});
+      continue;
+    }
+    manifoldEnds_.insert(manifoldEnds_.end(), {v0, v1});
+    manifoldFaces_.insert(manifoldFaces_.end(), {std::uint32_t(f0.idx()), std::uint32_t(f1.idx())});
+  }
+  // Edges of refused faces that the welded mesh does not have at all.
+  for (std::uint64_t k : junction) {
+    boundary_.insert(boundary_.end(), {std::uint32_t(k >> 32), std::uint32_t(k & 0xFFFFFFFFu)});
+    ++junctionCount_;
+  }
+}
+
+const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegrees) {
+  if (creaseAngleDegrees == creaseAngle_) return static_;
+  creaseAngle_ = creaseAngleDegrees;
+  static_.clear();
+  const float cosLimit = std::cos(glm::radians(std::clamp(creaseAngleDegrees, 0.0f, 180.0f)));
+  for (size_t e = 0; e < manifoldFaces_.size() / 2; ++e) {
+    const glm::vec3& n0 = faceNormals_[manifoldFaces_[e * 2]];
+    const glm::vec3& n1 = faceNormals_[manifoldFaces_[e * 2 + 1]];
+    if (n0 == glm::vec3(0.0f) || n1 == glm::vec3(0.0f)) continue;
+    // The dihedral angle between the faces is the angle between their normals.
+    if (glm::dot(n0, n1) < cosLimit)
+      static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Crease)});
+  }
+  for (size_t e = 0; e < boundary_.size() / 2; ++e)
+    static_.push_back({positions_[boundary_[e * 2]], positions_[boundary_[e * 2 + 1]], float(EdgeKind::Boundary)});
+  return static_;
+}
+
+const std::vector<FeatureLine>& FeatureEdges::silhouettes(const glm::vec3& eye) {
+  const size_t nf = facePlanes_.size(), ne = manifoldFaces_.size() / 2;
+  facing_.resize(nf);
+  const int chunks = workerCount();
+  parallelChunks(nf, chunks, [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) facing_[f] = glm::dot(glm::vec3(facePlanes_[f]), eye) + facePlanes_[f].w > 0.0f;
+  });
+  std::vector<std::vector<FeatureLine>> parts(static_cast<size_t>(chunks));
+  parallelChunks(ne, chunks, [&](size_t b, size_t e, int c) {
+    auto& out = parts[static_cast<size_t>(c)];
+    for (size_t i = b; i < e; ++i)
+      if (facing_[manifoldFaces_[i * 2]] != facing_[manifoldFaces_[i * 2 + 1]])
+        out.push_back({positions_[manifoldEnds_[i * 2]], positions_[manifoldEnds_[i * 2 + 1]], float(EdgeKind::Silhouette)});
+  });
+  silhouettes_.clear();
+  for (auto& p : parts) silhouettes_.insert(silhouettes_.end(), p.begin(), p.end());
+  return silhouettes_;
+}
+
+}  // namespace npr

@@ -1,0 +1,56 @@
+// Object-space feature lines from OpenMesh's halfedge adjacency: silhouettes (one adjacent
+// face towards the eye, the other away; recomputed when the view changes), creases (dihedral
+// angle above a threshold) and boundaries (one adjacent face).
+//
+// Files are often polygon soups, so adjacency is built on a welded copy: vertices at the same
+// position are merged (seams in the file then join, and never draw creases), doubled faces are
+// dropped, and faces the halfedge structure still refuses (an edge shared by more than two
+// faces, or a neighbour with the opposite winding) are kept aside: their edges are "junctions",
+// drawn with the boundaries, since a surface there is not a simple sheet.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/mesh/mesh.h"
+
+namespace npr {
+
+enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2 };
+
+struct FeatureLine {
+  glm::vec3 a, b;
+  float kind;  // EdgeKind, as the vertex attribute the line shader reads
+};
+
+class FeatureEdges {
+ public:
+  explicit FeatureEdges(const Mesh& mesh);
+
+  // Creases and boundaries: computed once per mesh (and when the threshold changes).
+  const std::vector<FeatureLine>& staticLines(float creaseAngleDegrees);
+  // Silhouettes seen from `eye` (object space), recomputed in parallel over faces and edges.
+  const std::vector<FeatureLine>& silhouettes(const glm::vec3& eye);
+
+  std::size_t weldedVertices() const { return positions_.size(); }
+  std::size_t manifoldEdges() const { return manifoldFaces_.size() / 2; }
+  std::size_t boundaryEdges() const { return boundary_.size() / 2; }
+  std::size_t duplicateFaces() const { return duplicateFaces_; }
+  std::size_t junctionEdges() const { return junctionCount_; }
+
+ private:
+  std::vector<glm::vec3> positions_;       // welded
+  std::vector<glm::vec3> faceNormals_;     // per welded face
+  std::vector<glm::vec4> facePlanes_;      // normal, -dot(normal, centroid)
+  std::vector<std::uint32_t> manifoldEnds_;   // 2 welded vertices per interior edge
+  std::vector<std::uint32_t> manifoldFaces_;  // its 2 faces
+  std::vector<std::uint32_t> boundary_;       // 2 welded vertices per boundary or junction edge
+  std::size_t duplicateFaces_ = 0, junctionCount_ = 0;
+  float creaseAngle_ = -1.0f;
+  std::vector<FeatureLine> static_, silhouettes_;
+  std::vector<std::uint8_t> facing_;
+};
+
+}  // namespace npr

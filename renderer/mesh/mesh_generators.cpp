@@ -1,0 +1,80 @@
+// Meshes built in code (see mesh_generators.h).
+#include "renderer/mesh/mesh_generators.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace npr {
+
+Mesh icosphere(int level) {
+  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+  std::vector<glm::vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                              {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                       {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                       {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (auto& p : v) p = glm::normalize(p);
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<int, int>, int> mid;
+    auto midpoint = [&](int a, int b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      v.push_back(glm::normalize(v[size_t(a)] + v[size_t(b)]));
+      return mid[key] = int(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> nf;
+    nf.reserve(f.size() * 4);
+    for (auto& tri : f) {
+      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
+      nf.push_back({tri[0], a, c});
+      nf.push_back({tri[1], b, a});
+      nf.push_back({tri[2], c, b});
+      nf.push_back({a, b, c});
+    }
+    f.swap(nf);
+  }
+  Mesh m;
+  std::vector<TriMesh::VertexHandle> vh;
+  for (auto& p : v) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+  for (auto& tri : f) m.mesh.add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
+  m.report.file = "generated:icosphere-" + std::to_string(level);
+  finalizeMesh(m);
+  return m;
+}
+
+Mesh torus(int nu, int nv) {
+  Mesh m;
+  std::vector<TriMesh::VertexHandle> vh(size_t(nu) * size_t(nv));
+  m.mesh.reserve(vh.size(), vh.size() * 3, vh.size() * 2);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      const double r = 1.0 + 0.35 * std::cos(v);
+      vh[size_t(i) * size_t(nv) + size_t(j)] =
+          m.mesh.add_vertex(TriMesh::Point(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35)));
+    }
+  auto at = [&](int i, int j) { return vh[size_t((i + nu) % nu) * size_t(nv) + size_t((j + nv) % nv)]; };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      m.mesh.add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      m.mesh.add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+    }
+  m.report.file = "generated:torus-" + std::to_string(2 * nu * nv);
+  finalizeMesh(m);
+  return m;
+}
+
+std::optional<Mesh> generatedMesh(const std::string& name) {
+  if (name == "generated:torus-871k") return torus(660, 660);
+  if (name == "generated:torus-500k") return torus(500, 500);
+  const std::string ico = "generated:icosphere-";
+  if (name.rfind(ico, 0) == 0) {
+    const int level = std::atoi(name.c_str() + ico.size());
+    if (level >= 0 && level <= 9) return icosphere(level);
+  }
+  return std::nullopt;
+}
+
+}  // namespace npr

@@ -1,0 +1,49 @@
+// Per-triangle lighting of a whole mesh on the CPU, as the original renderer did: the OpenGL
+// lighting model at each triangle's centroid with its face normal, then a palette match, then
+// (for the stencil path) bucketing of triangles by palette entry. Data-parallel over
+// contiguous chunks of the mesh's structure-of-arrays data.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/palette_matcher.h"
+
+namespace npr {
+
+struct TriangleShadingOptions {
+  bool buildBuckets = false;   // the stencil path needs triangles grouped by palette entry
+  int threads = 0;             // 0: one per hardware thread
+};
+
+struct TriangleShading {
+  std::vector<std::uint8_t> entry;          // palette entry per triangle
+  std::vector<std::uint32_t> bucketStart;   // N + 1 offsets, in triangles, into bucketIndices
+  std::vector<std::uint32_t> bucketIndices; // vertex indices, 3 per triangle, grouped by entry
+  std::vector<glm::ivec4> bucketBounds;     // per entry: x0, y0, x1, y1 in pixels (empty if x1 <= x0)
+  int nonEmptyBuckets = 0;
+};
+
+// Lighting space for the loop: object space when the modelview is rigid (rotation and
+// translation: dot products and distances are unchanged, so the loop needs no matrix work),
+// eye space otherwise.
+void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
+                    const PaletteMatcher& matcher, const TriangleShadingOptions& options, TriangleShading& out);
+
+// Every vertex in window pixels (NaN where it lies behind the eye). Depends only on the view,
+// so callers keep it while only the lighting changes.
+void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+                     std::vector<glm::vec2>& screen);
+
+// The screen rectangle (x0, y0, x1, y1 in pixels) each bucket's triangles cover, for the
+// stencil path's scissor, from projectVertices' output. Needs the buckets.
+void computeBucketBounds(const std::vector<glm::vec2>& screen, const glm::ivec2& viewport, int threads, TriangleShading& shading);
+
+// True when `m` is a rotation plus a translation (within float rounding).
+bool isRigid(const glm::mat4& m);
+
+}  // namespace npr

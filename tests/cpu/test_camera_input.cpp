@@ -1,0 +1,121 @@
+// CPU tier: the orbit camera's maths and the key bindings, without a window.
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cmath>
+
+#include "app/frame_timer.h"
+#include "app/input_map.h"
+#include "renderer/core/camera.h"
+
+namespace npr {
+namespace {
+
+bool finiteMatrix(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+
+TEST(Camera, OrbitNeverFlipsAtThePoles) {
+  OrbitCamera cam(0.0f, 0.0f, 3.0f);
+  for (int i = 0; i < 100; ++i) cam.orbit(0.0f, 10.0f);
+  EXPECT_LE(cam.pitch(), OrbitCamera::kMaxPitch);
+  const CameraMatrices m = cam.matrices(1.0f);
+  EXPECT_TRUE(finiteMatrix(m.view));
+  // The camera's up vector still points up (no flip): view-space y of world up is positive.
+  EXPECT_GT((m.view * glm::vec4(0, 1, 0, 0)).y, 0.0f);
+  for (int i = 0; i < 100; ++i) cam.orbit(0.0f, -10.0f);
+  EXPECT_GE(cam.pitch(), -OrbitCamera::kMaxPitch);
+  EXPECT_GT((cam.matrices(1.0f).view * glm::vec4(0, 1, 0, 0)).y, 0.0f);
+}
+
+TEST(Camera, ZoomIsLimitedAndTowardTheCursor) {
+  OrbitCamera cam(0.0f, 0.0f, 3.0f);
+  cam.frame(1.0f);
+  for (int i = 0; i < 500; ++i) cam.zoom(0.5f, {0, 0}, 1.0f);
+  EXPECT_GE(cam.distance(), cam.minDistance());
+  for (int i = 0; i < 500; ++i) cam.zoom(2.0f, {0, 0}, 1.0f);
+  EXPECT_LE(cam.distance(), cam.maxDistance());
+  cam.frame(1.0f);
+  // Zooming in at the right edge moves the target to the right (toward the cursor).
+  cam.zoom(0.5f, {1.0f, 0.0f}, 1.0f);
+  EXPECT_GT(cam.target().x, 0.0f);
+  // Degenerate factors change nothing.
+  const float d = cam.distance();
+  cam.zoom(std::nanf(""), {0, 0}, 1.0f);
+  cam.zoom(0.0f, {0, 0}, 1.0f);
+  EXPECT_EQ(cam.distance(), d);
+}
+
+TEST(Camera, FramesTinyAndHugeModels) {
+  for (float r : {1e-6f, 1.0f, 1e6f}) {
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(r);
+    const CameraMatrices m = cam.matrices(16.0f / 9.0f);
+    EXPECT_TRUE(finiteMatrix(m.view) && finiteMatrix(m.projection)) << r;
+    // The whole bounding sphere is in front of the near plane and within the far plane.
+    const glm::vec4 centre = m.view * glm::vec4(0, 0, 0, 1);
+    const glm::vec4 clipNear = m.projection * glm::vec4(0, 0, centre.z + r, 1);
+    const glm::vec4 clipFar = m.projection * glm::vec4(0, 0, centre.z - r, 1);
+    EXPECT_LE(clipNear.z / clipNear.w, 1.0f);
+    EXPECT_GE(clipNear.z / clipNear.w, -1.0f) << r;
+    EXPECT_LE(clipFar.z / clipFar.w, 1.0f) << r;
+    // The sphere fits the vertical field of view.
+    EXPECT_GE(cam.distance() * std::sin(glm::radians(cam.fovY() * 0.5f)), r * 0.999f);
+  }
+  OrbitCamera bad;
+  bad.frame(std::nanf(""));
+  EXPECT_TRUE(std::isfinite(bad.distance()));
+}
+
+TEST(Camera, ResetReturnsHome) {
+  OrbitCamera cam(30.0f, 20.0f, 3.0f);
+  cam.frame(1.0f);
+  const float d = cam.distance();
+  cam.orbit(50.0f, 30.0f);
+  cam.pan({0.3f, 0.1f}, 1.5f);
+  cam.reset();
+  EXPECT_FLOAT_EQ(cam.yaw(), 30.0f);
+  EXPECT_FLOAT_EQ(cam.pitch(), 20.0f);
+  EXPECT_FLOAT_EQ(cam.distance(), d);
+  EXPECT_EQ(cam.target(), glm::vec3(0.0f));
+}
+
+TEST(InputMap, KeysMapToTheDocumentedActions) {
+  EXPECT_EQ(actionForKey(GLFW_KEY_ESCAPE, 0), (KeyAction{Action::Quit}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_3, 0), (KeyAction{Action::SelectPalette, 2}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_RIGHT_BRACKET, 0), (KeyAction{Action::NextPalette}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_LEFT_BRACKET, 0), (KeyAction{Action::PreviousPalette}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_M, 0), (KeyAction{Action::CycleMatch}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_EQUAL, GLFW_MOD_SHIFT), (KeyAction{Action::RangeScaleUp}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_KP_SUBTRACT, 0), (KeyAction{Action::RangeScaleDown}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_P, 0), (KeyAction{Action::CyclePath}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_B, 0), (KeyAction{Action::ToggleSplit}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_F, 0), (KeyAction{Action::FrameModel}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_R, 0), (KeyAction{Action::ResetView}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_F1, 0), (KeyAction{Action::ToggleOverlay}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_TAB, 0), (KeyAction{Action::ToggleOverlay}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_F12, 0), (KeyAction{Action::Screenshot}));
+  EXPECT_EQ(actionForKey(GLFW_KEY_W, 0), (KeyAction{Action::MoveLight, 3}));  // +y
+  EXPECT_EQ(actionForKey(GLFW_KEY_A, 0), (KeyAction{Action::MoveLight, 0}));  // -x
+  EXPECT_EQ(actionForKey(GLFW_KEY_E, 0), (KeyAction{Action::MoveLight, 5}));  // +z
+  EXPECT_FALSE(actionForKey(GLFW_KEY_Z, 0));
+  EXPECT_GE(keyBindings().size(), 15u);
+}
+
+TEST(FrameTimer, MeanAndWorstOverTheLastSecond) {
+  FrameTimer t;
+  for (int i = 0; i < 99; ++i) t.add(10.0 + i * 0.01, 10.0);
+  t.add(10.995, 50.0);
+  EXPECT_NEAR(t.meanMs(), (99 * 10.0 + 50.0) / 100.0, 1e-9);
+  EXPECT_DOUBLE_EQ(t.worst1PercentMs(), 50.0);
+  t.add(20.0, 5.0);  // older samples leave the window
+  EXPECT_DOUBLE_EQ(t.meanMs(), 5.0);
+}
+
+}  // namespace
+}  // namespace npr

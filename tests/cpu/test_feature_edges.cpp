@@ -1,0 +1,117 @@
+// CPU tier: feature edges from adjacency on small meshes built here: the cube's creases, a
+// sphere's silhouette loop, an open grid's boundary, and a polygon soup that must give the
+// same lines as the welded mesh.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "renderer/lines/feature_edges.h"
+#include "renderer/immediate_api.h"
+#include "renderer/mesh/mesh_generators.h"
+
+namespace npr {
+namespace {
+
+const glm::vec3 kCube[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+const int kCubeFaces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                               {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+
+Mesh weldedCube() {
+  Mesh m;
+  std::vector<TriMesh::VertexHandle> vh;
+  for (const auto& p : kCube) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+  for (const auto& f : kCubeFaces) m.mesh.add_face(vh[size_t(f[0])], vh[size_t(f[1])], vh[size_t(f[2])]);
+  finalizeMesh(m);
+  return m;
+}
+
+std::vector<Triangle> cubeSoup() {
+  std::vector<Triangle> tris;
+  for (const auto& f : kCubeFaces) tris.push_back({{kCube[f[0]], kCube[f[1]], kCube[f[2]]}});
+  return tris;
+}
+
+size_t countKind(const std::vector<FeatureLine>& lines, EdgeKind k) {
+  return size_t(std::count_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return l.kind == float(k); }));
+}
+
+TEST(FeatureEdges, CubeHasTwelveCreasesAt60AndNoneAt100) {
+  const Mesh cube = weldedCube();
+  FeatureEdges e(cube);
+  EXPECT_EQ(e.manifoldEdges(), 18u);  // 12 cube edges + 6 face diagonals
+  EXPECT_EQ(countKind(e.staticLines(60.0f), EdgeKind::Crease), 12u);
+  EXPECT_EQ(countKind(e.staticLines(60.0f), EdgeKind::Boundary), 0u);
+  EXPECT_EQ(countKind(e.staticLines(100.0f), EdgeKind::Crease), 0u);
+  EXPECT_EQ(countKind(e.staticLines(89.0f), EdgeKind::Crease), 12u);
+}
+
+TEST(FeatureEdges, SoupWithUnweldedVerticesAndADoubledFaceGivesTheSameCreases) {
+  std::vector<Triangle> soup = cubeSoup();
+  soup.push_back(soup[3]);  // a doubled face
+  const Mesh m = meshFromTriangles(soup);
+  ASSERT_EQ(m.positions.size(), 39u);  // nothing shared in the file
+  FeatureEdges e(m);
+  EXPECT_EQ(e.weldedVertices(), 8u);
+  EXPECT_EQ(e.duplicateFaces(), 1u);
+  const auto& lines = e.staticLines(60.0f);
+  EXPECT_EQ(countKind(lines, EdgeKind::Crease), 12u);
+  EXPECT_EQ(countKind(lines, EdgeKind::Boundary), 0u);  // seams in the file are not edges
+  // The creases are the cube's edges: both ends differ in exactly one coordinate.
+  for (const auto& l : lines) EXPECT_EQ(int(l.a.x != l.b.x) + int(l.a.y != l.b.y) + int(l.a.z != l.b.z), 1);
+}
+
+TEST(FeatureEdges, SphereSilhouetteIsAClosedLoopThatMovesWithTheEye) {
+  const Mesh sphere = icosphere(3);
+  FeatureEdges e(sphere);
+  auto loopCheck = [&](const glm::vec3& eye) {
+    const auto lines = e.silhouettes(eye);
+    EXPECT_GT(lines.size(), 10u);
+    std::map<std::tuple<float, float, float>, int> degree;
+    for (const auto& l : lines) {
+      ++degree[{l.a.x, l.a.y, l.a.z}];
+      ++degree[{l.b.x, l.b.y, l.b.z}];
+      // Silhouette edges lie where the surface turns away: near the great circle facing the eye.
+      const glm::vec3 mid = glm::normalize(0.5f * (l.a + l.b));
+      EXPECT_LT(std::fabs(glm::dot(mid, glm::normalize(eye))), 0.45f);
+    }
+    for (const auto& [v, d] : degree) EXPECT_EQ(d % 2, 0) << "open end at a vertex of degree " << d;
+    return lines;
+  };
+  const auto fromZ = loopCheck({0, 0, 5});
+  const auto fromX = loopCheck({5, 0, 0});
+  // Different views, different edges.
+  size_t shared = 0;
+  for (const auto& a : fromZ)
+    for (const auto& b : fromX) shared += (a.a == b.a && a.b == b.b);
+  EXPECT_LT(shared, fromZ.size() / 2);
+}
+
+TEST(FeatureEdges, OpenGridHasItsBorderAsBoundary) {
+  std::vector<Triangle> tris;
+  const int n = 5;
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const glm::vec3 a(x, y, 0), b(x + 1, y, 0), c(x + 1, y + 1, 0), d(x, y + 1, 0);
+      tris.push_back({{a, b, c}});
+      tris.push_back({{a, c, d}});
+    }
+  FeatureEdges e(meshFromTriangles(tris));
+  const auto& lines = e.staticLines(60.0f);
+  EXPECT_EQ(countKind(lines, EdgeKind::Boundary), size_t(4 * n));
+  EXPECT_EQ(countKind(lines, EdgeKind::Crease), 0u);
+  EXPECT_TRUE(e.silhouettes({2.5f, 2.5f, 10.0f}).empty());  // a flat sheet seen from the front
+}
+
+TEST(FeatureEdges, NonManifoldEdgesAreJunctions) {
+  // Three triangles on one edge: the third is refused by the halfedge structure.
+  const std::vector<Triangle> tris = {{{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)}},
+                                      {{glm::vec3(1, 0, 0), glm::vec3(0, 0, 0), glm::vec3(0, -1, 0)}},
+                                      {{glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1)}}};
+  FeatureEdges e(meshFromTriangles(tris));
+  EXPECT_GE(e.junctionEdges(), 1u);
+  // Every junction is drawn with the boundaries; no edge is lost or doubled.
+  EXPECT_EQ(countKind(e.staticLines(60.0f), EdgeKind::Boundary), 7u);
+}
+
+}  // namespace
+}  // namespace npr

@@ -1,0 +1,218 @@
+// CPU tier: the mesh loader's rules, on small OBJ files the tests write themselves.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "renderer/mesh/mesh_loader.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::TempDir;
+
+bool hasWarningContaining(const LoadReport& r, const std::string& s) {
+  for (const auto& w : r.warnings)
+    if (w.find(s) != std::string::npos) return true;
+  return false;
+}
+
+bool allNormalsFinite(const Mesh& m) {
+  for (const auto& n : m.normals)
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return false;
+  for (const auto& n : m.faceNormals)
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) return false;
+  return true;
+}
+
+double triangleArea(const Mesh& m, size_t t) {
+  const glm::dvec3 a(m.positions[m.indices[t * 3]]), b(m.positions[m.indices[t * 3 + 1]]), c(m.positions[m.indices[t * 3 + 2]]);
+  return 0.5 * glm::length(glm::cross(b - a, c - a));
+}
+
+TEST(MeshLoader, LoadsATriangleAndReportsIt) {
+  TempDir d;
+  auto m = loadMesh(d.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.vertices, 3u);
+  EXPECT_EQ(m->report.triangles, 1u);
+  EXPECT_EQ(m->triangleCount(), 1u);
+  EXPECT_EQ(m->report.skipped_faces, 0u);
+  EXPECT_NEAR(glm::length(m->faceNormals[0]), 1.0f, 1e-6f);
+  EXPECT_NEAR(m->faceNormals[0].z, 1.0f, 1e-6f);  // counter-clockwise in xy faces +z
+}
+
+TEST(MeshLoader, ConcavePolygonIsEarClippedNotFanned) {
+  TempDir d;
+  // A U shape: a fan from its first corner would cover the slot between the arms.
+  auto m = loadMesh(d.write("u.obj", "v 0 0 0\nv 3 0 0\nv 3 3 0\nv 2 3 0\nv 2 1 0\nv 1 1 0\nv 1 3 0\nv 0 3 0\n"
+                                     "f 1 2 3 4 5 6 7 8\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.polygons_triangulated, 1u);
+  ASSERT_EQ(m->triangleCount(), 6u);
+  // Coverage: the triangles' areas sum to the polygon's (9 - 2 = 7), so none overlap or
+  // spill into the slot, and every triangle keeps the polygon's orientation.
+  const double scale = m->report.original_scale;
+  double sum = 0.0;
+  for (size_t t = 0; t < 6; ++t) {
+    sum += triangleArea(*m, t);
+    EXPECT_GT(m->faceNormals[t].z, 0.0f) << t;
+    // No triangle's centroid lies in the slot (1 < x < 2, y > 1).
+    const glm::dvec3 c = glm::dvec3(m->faceCentroids[t]) / scale + m->report.original_centre;
+    EXPECT_FALSE(c.x > 1.0 && c.x < 2.0 && c.y > 1.0) << t;
+  }
+  EXPECT_NEAR(sum / (scale * scale), 7.0, 1e-5);
+}
+
+TEST(MeshLoader, PolygonBecomesNMinus2Triangles) {
+  TempDir d;
+  std::string obj;
+  const int n = 9;
+  for (int i = 0; i < n; ++i) {
+    // A star-shaped (concave) nonagon.
+    const double a = 2 * M_PI * i / n, r = (i % 2) ? 0.4 : 1.0;
+    obj += "v " + std::to_string(r * std::cos(a)) + " " + std::to_string(r * std::sin(a)) + " 0\n";
+  }
+  obj += "f";
+  for (int i = 1; i <= n; ++i) obj += " " + std::to_string(i);
+  obj += "\n";
+  auto m = loadMesh(d.write("star.obj", obj));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), size_t(n - 2));
+}
+
+TEST(MeshLoader, AcceptsObjSyntaxVariants) {
+  TempDir d;
+  const std::string obj =
+      "# comment\n"
+      "mtllib missing.mtl\n"
+      "o thing\ng group\ns 1\nusemtl stuff\n"
+      "v  0 0 0 \t\nv 1 0 0\r\nv 1 1 0\nv 0 1 0\n"
+      "vt 0 0\nvn 0 0 1\n"
+      "f 1/1/1 2/1/1 3/1/1\n"
+      "f -4//1 -2//1 -1//1\n"  // relative indices: 1 3 4
+      "f 1/1 3/1 4/1";          // no final newline
+  auto m = loadMesh(d.write("v.obj", obj));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 3u);
+  EXPECT_EQ(m->report.skipped_faces, 0u);
+  EXPECT_TRUE(hasWarningContaining(m->report, "missing.mtl"));
+}
+
+TEST(MeshLoader, FaceWithMissingVertexIsSkippedWithFileAndLine) {
+  TempDir d;
+  const std::string path = d.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 40\n");
+  auto m = loadMesh(path);
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 1u);
+  EXPECT_EQ(m->report.skipped_faces, 1u);
+  EXPECT_TRUE(hasWarningContaining(m->report, path + " line 5"));
+  EXPECT_TRUE(hasWarningContaining(m->report, "vertex 40"));
+}
+
+TEST(MeshLoader, NonManifoldAndDuplicateFacesAreStillDrawn) {
+  TempDir d;
+  // Three triangles on one edge (1-2), a duplicated face and a flipped neighbour.
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\n"
+                          "f 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 2 3\nf 1 3 2\n";
+  auto m = loadMesh(d.write("nm.obj", obj));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 5u);  // every face is drawn
+  EXPECT_GE(m->report.non_manifold_faces, 2u);
+  EXPECT_EQ(m->report.skipped_faces, 0u);
+}
+
+TEST(MeshLoader, ZeroAreaTrianglesKeepFiniteNormals) {
+  TempDir d;
+  auto m = loadMesh(d.write("z.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 2u);
+  EXPECT_TRUE(allNormalsFinite(*m));
+}
+
+TEST(MeshLoader, FarFromOriginKeepsItsShape) {
+  TempDir d;
+  // A unit right triangle offset by 1e7: in float the offset alone would eat the shape
+  // (float spacing at 1e7 is 1.0).
+  auto m = loadMesh(d.write("far.obj", "v 10000000.25 10000000.5 0\nv 10000001.25 10000000.5 0\nv 10000000.25 10000001.5 0\nf 1 2 3\n"));
+  ASSERT_TRUE(m) << m.error();
+  const double s = m->report.original_scale;
+  const glm::dvec3 a(m->positions[0]), b(m->positions[1]), c(m->positions[2]);
+  EXPECT_NEAR(glm::length(b - a) / s, 1.0, 1e-6);
+  EXPECT_NEAR(glm::length(c - a) / s, 1.0, 1e-6);
+  EXPECT_NEAR(m->report.original_centre.x, 10000000.75, 1e-6);
+  EXPECT_NEAR(m->radius, 1.0f, 1e-5f);
+}
+
+TEST(MeshLoader, RefusesFilesWithNothingToDraw) {
+  TempDir d;
+  struct Case { std::string name, content, expect; };
+  const std::vector<Case> cases = {
+      {"empty.obj", "", "empty"},
+      {"blank.obj", "\n  \n", "empty"},
+      {"points.obj", "v 0 0 0\nv 1 0 0\np 1 2\nl 1 2\n", "no faces"},
+      {"binary.obj", std::string("v 0 0\0\x01\x02", 9), "binary"},
+      {"utf16.obj", std::string("\xFF\xFEv\0 \0", 6), "UTF-16"},
+  };
+  for (const auto& c : cases) {
+    auto m = loadMesh(d.write(c.name, c.content));
+    ASSERT_FALSE(m) << c.name;
+    EXPECT_NE(m.error().find(c.name), std::string::npos) << m.error();
+    EXPECT_NE(m.error().find(c.expect), std::string::npos) << m.error();
+  }
+}
+
+TEST(MeshLoader, RefusesMissingFilesDirectoriesAndUnknownFormats) {
+  TempDir d;
+  auto missing = loadMesh((d.path() / "nope.obj").string());
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("no such file"), std::string::npos);
+  std::filesystem::create_directories(d.path() / "dir.obj");
+  auto dir = loadMesh((d.path() / "dir.obj").string());
+  ASSERT_FALSE(dir);
+  EXPECT_NE(dir.error().find("directory"), std::string::npos);
+  auto fmt = loadMesh(d.write("m.xyz", "1 2 3\n"));
+  ASSERT_FALSE(fmt);
+  EXPECT_NE(fmt.error().find("unsupported"), std::string::npos);
+}
+
+TEST(MeshLoader, NonFiniteVerticesAreRefusedNotPropagated) {
+  TempDir d;
+  auto m = loadMesh(d.write("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 1e400 0 0\nf 1 2 3\nf 1 2 4\nf 1 2 5\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 1u);
+  EXPECT_EQ(m->report.skipped_faces, 2u);
+  EXPECT_TRUE(allNormalsFinite(*m));
+  for (const auto& p : m->positions) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+}
+
+TEST(MeshLoader, ReadsOtherFormatsThroughOpenMesh) {
+  TempDir d;
+  auto m = loadMesh(d.write("t.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.triangles, 2u);
+}
+
+TEST(MeshLoader, ShippedModelsLoadCleanly) {
+  for (const char* name : {"bunny.obj", "teapot.obj"}) {
+    auto m = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/" + name);
+    ASSERT_TRUE(m) << m.error();
+    EXPECT_GT(m->report.triangles, 900u);
+    EXPECT_EQ(m->report.skipped_faces, 0u);
+    EXPECT_TRUE(allNormalsFinite(*m));
+  }
+}
+
+TEST(MeshLoader, ReportJsonHasTheDocumentedFields) {
+  TempDir d;
+  auto m = loadMesh(d.write("a \"quoted\" name.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  ASSERT_TRUE(m);
+  const std::string j = m->report.toJson();
+  for (const char* key : {"\"file\":", "\"vertices\":3", "\"triangles\":1", "\"polygons_triangulated\":0", "\"skipped_faces\":0",
+                          "\"non_manifold_faces\":0", "\"warnings\":[", "\"load_ms\":"})
+    EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
+  EXPECT_NE(j.find("a \\\"quoted\\\" name.obj"), std::string::npos) << j;
+}
+
+}  // namespace
+}  // namespace npr

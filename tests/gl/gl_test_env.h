@@ -1,0 +1,29 @@
+// GL tier: one headless EGL context for the whole test program, checked for GL errors
+// after every test (KHR_debug), plus render-and-read-back helpers.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "renderer/core/camera.h"
+#include "renderer/gl/offscreen_target.h"
+#include "renderer/renderer.h"
+
+namespace npr::test {
+
+// Fails the current test if GL errors were recorded since the last call.
+class GlErrorCheck : public ::testing::EmptyTestEventListener {
+  void OnTestEnd(const ::testing::TestInfo& info) override;
+};
+
+// Renders one frame at w x h and reads it back.
+ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
+ImageRGBA32F renderFloat(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
+
+// The standard test view of a mesh fitted to the unit sphere.
+CameraMatrices testCamera(float aspect, float yaw = 30.0f, float pitch = 20.0f);
+
+std::string sourcePath(const std::string& relative);
+
+}  // namespace npr::test
