@@ -88,6 +88,7 @@ struct ConfigResult {
   std::string errorUnit;
   std::vector<PathResult> paths;
   std::uint64_t nonFinite = 0;
+  std::vector<std::string> failures;  // renders that returned an error
   int staticFrames = 0, staticRecomputes = 0, staticUploads = 0, staticBuilds = 0;
   double lightMinimalMs = 0, lightFullMs = 0;
 };
@@ -133,23 +134,23 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
   for (int f = 0; f < frames; ++f) {
     const MotionFrame m = motion(float(f), frames, base, aspect);
     setLight(r, m);
-    RenderSettings geo = settings;
-    auto render = [&](const RenderSettings& s) {
+    auto geometry = [&](GeometryOutput o) {
       target->clear(glm::vec4(0.0f));
-      RenderSettings q = s;
-      q.drawBackground = false;
-      (void)r.render(m.camera, q, {0, 0, size.x, size.y});
+      if (Status st = r.renderGeometry(m.camera, o, {0, 0, size.x, size.y}); !st) out.failures.push_back(st.error());
       return target->readRGBA32F();
     };
-    geo.output = RenderSettings::Output::EyePosition;
-    const ImageRGBA32F pos = render(geo);
-    geo.output = RenderSettings::Output::EyeNormal;
-    const ImageRGBA32F nrm = render(geo);
+    auto selection = [&](const RenderSettings& s) {
+      target->clear(glm::vec4(0.0f));
+      if (Status st = r.renderSelection(m.camera, s, SelectionOutput::Blend, {0, 0, size.x, size.y}); !st)
+        out.failures.push_back(st.error());
+      return target->readRGBA32F();
+    };
+    const ImageRGBA32F pos = geometry(GeometryOutput::EyePosition);
+    const ImageRGBA32F nrm = geometry(GeometryOutput::EyeNormal);
     // The first palette render makes the matcher for this palette, mode and scale.
     RenderSettings first = settings;
     first.path = RenderPath::Pixel;
-    first.output = RenderSettings::Output::PaletteBlend;
-    (void)render(first);
+    (void)selection(first);
     const PaletteMatcher& matcher = *r.matcher();
     const auto lighting = prepareLighting<double>(r.lighting());
     // The ideal: the lighting model in double precision at each pixel's interpolated
@@ -179,8 +180,7 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
       PathResult& pr = out.paths[k];
       RenderSettings s = settings;
       s.path = pr.path;
-      s.output = RenderSettings::Output::PaletteBlend;
-      const ImageRGBA32F sel = render(s);
+      const ImageRGBA32F sel = selection(s);
       for (size_t i = 0; i < n; ++i) {
         const float* v = &sel.pixels[i * 4];
         if (idealIndex[i] < 0) continue;
@@ -444,9 +444,9 @@ int runBenchmark(const Options& o) {
   const int frames = o.frames > 0 ? o.frames : 120;  // as measureConfiguration uses
   std::vector<ConfigResult> results;
   std::uint64_t nonFinite = 0;
+  std::vector<std::string> failures;
   for (const std::string& modelName : models) {
-    std::optional<Mesh> generated = generatedMesh(modelName);
-    Result<Mesh> loaded = generated ? Result<Mesh>(std::move(*generated)) : loadMesh(modelName);
+    Result<Mesh> loaded = loadModel(modelName);
     if (!loaded) return reportFailure(loaded.error());
     const Mesh& mesh = *loaded;
     r.setMesh(&mesh);
@@ -459,6 +459,7 @@ int runBenchmark(const Options& o) {
       for (const MatchMode mode : modes) {
         ConfigResult c = measureConfiguration(r, mesh, *palette, mode, o);
         nonFinite += c.nonFinite;
+        for (const std::string& f : c.failures) failures.push_back(c.model + ", " + c.palette + ": " + f);
         results.push_back(std::move(c));
       }
     }
@@ -466,6 +467,10 @@ int runBenchmark(const Options& o) {
   writeOutputs(results, o.outDir, o.size, frames, session->context->description());
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
+  if (!failures.empty()) {
+    std::fprintf(stderr, "npr-viewer: %zu render(s) failed during the benchmark; the first: %s\n", failures.size(), failures.front().c_str());
+    return 1;
+  }
   if (nonFinite) {
     std::fprintf(stderr, "npr-viewer: %llu non-finite values seen during the benchmark\n", static_cast<unsigned long long>(nonFinite));
     return 1;

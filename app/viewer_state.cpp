@@ -41,8 +41,7 @@ void ViewerState::note(const std::string& message) {
 }
 
 Status ViewerState::loadModel(const std::string& path, Renderer& renderer) {
-  std::optional<Mesh> generated = generatedMesh(path);  // "generated:torus-871k" and friends
-  Result<Mesh> m = generated ? Result<Mesh>(std::move(*generated)) : npr::loadMesh(path);
+  Result<Mesh> m = npr::loadModel(path);
   if (!m) {
     note("model not loaded: " + m.error());
     return Error{m.error()};

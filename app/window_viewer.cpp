@@ -395,18 +395,20 @@ int runWindowViewer(const Options& o) {
       const CameraMatrices cam = v.state.camera.matrices(v.aspect());
       v.state.applyLight(*v.renderer, cam);
       const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);
+      auto drawView = [&](const RenderSettings& settings, const glm::ivec4& viewport) {
+        Status st = v.renderer->render(cam, settings, viewport);
+        if (st) st = v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, viewport);
+        if (!st) v.state.note(st.error());
+      };
       if (v.state.splitView) {
         // Left: the plain lit render the original showed beside its NPR images; right: the chosen path.
         const int half = fb.x / 2;
         RenderSettings ref = v.state.settings;
         ref.path = RenderPath::Reference;
-        if (Status s = v.renderer->render(cam, ref, {0, 0, half, fb.y}); !s) v.state.note(s.error());
-        v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, {0, 0, half, fb.y});
-        if (Status s = v.renderer->render(cam, v.state.settings, {half, 0, fb.x - half, fb.y}); !s) v.state.note(s.error());
-        v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, {half, 0, fb.x - half, fb.y});
+        drawView(ref, {0, 0, half, fb.y});
+        drawView(v.state.settings, {half, 0, fb.x - half, fb.y});
       } else {
-        if (Status s = v.renderer->render(cam, v.state.settings, {0, 0, fb.x, fb.y}); !s) v.state.note(s.error());
-        v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, {0, 0, fb.x, fb.y});
+        drawView(v.state.settings, {0, 0, fb.x, fb.y});
       }
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 

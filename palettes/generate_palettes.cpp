@@ -22,7 +22,7 @@
 #include "renderer/palette/palette.h"
 
 namespace fs = std::filesystem;
-using npr::RgbaImage;
+using npr::ImageRGBA8;
 
 namespace {
 
@@ -51,15 +51,15 @@ float valueNoise(float x, float y, int period, std::uint32_t seed) {
   return a + (b - a) * sy;
 }
 
-RgbaImage blank(int size = kSize) { return RgbaImage{size, size, std::vector<std::uint8_t>(size_t(size) * size * 4, 0)}; }
+ImageRGBA8 blank(int size = kSize) { return ImageRGBA8{size, size, std::vector<std::uint8_t>(size_t(size) * size * 4, 0)}; }
 
-void setPixel(RgbaImage& img, int x, int y, glm::vec3 c, float a) {
+void setPixel(ImageRGBA8& img, int x, int y, glm::vec3 c, float a) {
   std::uint8_t* p = &img.pixels[(size_t(y) * img.width + x) * 4];
   for (int k = 0; k < 3; ++k) p[k] = std::uint8_t(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
   p[3] = std::uint8_t(std::lround(std::clamp(a, 0.0f, 1.0f) * 255.0f));
 }
 
-bool write(const fs::path& path, const RgbaImage& img, int channels = 4) {
+bool write(const fs::path& path, const ImageRGBA8& img, int channels = 4) {
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) return false;
   OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::UINT8);
@@ -70,8 +70,8 @@ bool write(const fs::path& path, const RgbaImage& img, int channels = 4) {
   return out->open(path.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, data.data()) && out->close();
 }
 
-RgbaImage paper() {
-  RgbaImage img = blank();
+ImageRGBA8 paper() {
+  ImageRGBA8 img = blank();
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const float n = 0.6f * valueNoise(float(x), float(y), 32, 7) + 0.4f * valueNoise(float(x), float(y), 128, 8);
@@ -83,15 +83,15 @@ RgbaImage paper() {
 }
 
 // Inks (opaque `ink`) every texel whose field value is below s.
-RgbaImage inkLevel(const std::vector<float>& field, float s, glm::vec3 ink) {
-  RgbaImage img = blank();
+ImageRGBA8 inkLevel(const std::vector<float>& field, float s, glm::vec3 ink) {
+  ImageRGBA8 img = blank();
   for (int i = 0; i < kSize * kSize; ++i)
     if (field[size_t(i)] < s) setPixel(img, i % kSize, i / kSize, ink, 1.0f);
   return img;
 }
 
 // Levels from blank to solid with evenly spaced average intensity over `bg`.
-std::vector<RgbaImage> toneLevels(const std::vector<float>& field, int levels, const RgbaImage& bg, glm::vec3 ink) {
+std::vector<ImageRGBA8> toneLevels(const std::vector<float>& field, int levels, const ImageRGBA8& bg, glm::vec3 ink) {
   const glm::vec3 bgMean = [&] {
     glm::dvec3 s(0);
     for (size_t i = 0; i < bg.pixels.size(); i += 4) s += glm::dvec3(npr::srgbToLinear(bg.pixels[i] / 255.0f), npr::srgbToLinear(bg.pixels[i + 1] / 255.0f), npr::srgbToLinear(bg.pixels[i + 2] / 255.0f));
@@ -102,7 +102,7 @@ std::vector<RgbaImage> toneLevels(const std::vector<float>& field, int levels, c
     return a.r + a.g + a.b;
   };
   const float top = intensity(-1.0f), bottom = intensity(2.0f);
-  std::vector<RgbaImage> out;
+  std::vector<ImageRGBA8> out;
   for (int k = 0; k < levels; ++k) {
     const float target = top + (bottom - top) * float(k) / float(levels - 1);
     float lo = -1.0f, hi = 2.0f;  // intensity decreases as s grows
@@ -161,16 +161,16 @@ std::vector<float> stippleField() {
   return f;
 }
 
-RgbaImage solid(glm::vec3 c, int size = 64) {
-  RgbaImage img = blank(size);
+ImageRGBA8 solid(glm::vec3 c, int size = 64) {
+  ImageRGBA8 img = blank(size);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) setPixel(img, x, y, c, 1.0f);
   return img;
 }
 
 // A colourful painted base image for the order set.
-RgbaImage orderBase() {
-  RgbaImage img = blank();
+ImageRGBA8 orderBase() {
+  ImageRGBA8 img = blank();
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const float a = valueNoise(float(x), float(y), 4, 21), b = valueNoise(float(x), float(y), 8, 22), c = valueNoise(float(x), float(y), 16, 23);
@@ -179,12 +179,12 @@ RgbaImage orderBase() {
   return img;
 }
 
-RgbaImage boxBlur(const RgbaImage& src, int radius) {
+ImageRGBA8 boxBlur(const ImageRGBA8& src, int radius) {
   if (radius <= 0) return src;
-  RgbaImage tmp = src, out = src;
+  ImageRGBA8 tmp = src, out = src;
   for (int pass = 0; pass < 2; ++pass) {
-    const RgbaImage& in = pass == 0 ? src : tmp;
-    RgbaImage& dst = pass == 0 ? tmp : out;
+    const ImageRGBA8& in = pass == 0 ? src : tmp;
+    ImageRGBA8& dst = pass == 0 ? tmp : out;
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x)
         for (int k = 0; k < 3; ++k) {
@@ -200,8 +200,8 @@ RgbaImage boxBlur(const RgbaImage& src, int radius) {
 }
 
 // Solarizes: channel values above the threshold are inverted (the darker entries more so).
-RgbaImage solarize(const RgbaImage& src, float threshold) {
-  RgbaImage out = src;
+ImageRGBA8 solarize(const ImageRGBA8& src, float threshold) {
+  ImageRGBA8 out = src;
   for (size_t i = 0; i < out.pixels.size(); i += 4)
     for (int k = 0; k < 3; ++k) {
       const float v = out.pixels[i + size_t(k)] / 255.0f;
@@ -210,12 +210,12 @@ RgbaImage solarize(const RgbaImage& src, float threshold) {
   return out;
 }
 
-RgbaImage wood(float t) {
+ImageRGBA8 wood(float t) {
   // Pine (light, yellow) to cherry (dark, red-brown), with rings and fibre.
   const glm::vec3 light0(0.93f, 0.80f, 0.55f), light1(0.52f, 0.22f, 0.12f);
   const glm::vec3 dark0(0.80f, 0.62f, 0.38f), dark1(0.30f, 0.10f, 0.05f);
   const int size = 128;
-  RgbaImage img = blank(size);
+  ImageRGBA8 img = blank(size);
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const float n = valueNoise(float(x) * 2, float(y) * 2, 4, 41);
@@ -230,8 +230,8 @@ RgbaImage wood(float t) {
 struct Writer {
   fs::path root;
   bool ok = true;
-  void palette(const std::string& name, const std::string& header, const std::vector<RgbaImage>& images,
-               const RgbaImage* background = nullptr, const std::string& prefix = "level") {
+  void palette(const std::string& name, const std::string& header, const std::vector<ImageRGBA8>& images,
+               const ImageRGBA8* background = nullptr, const std::string& prefix = "level") {
     const fs::path dir = root / name;
     fs::create_directories(dir);
     std::ofstream pf(dir / (name + ".palette"));
@@ -260,7 +260,7 @@ struct Writer {
 
 int main(int argc, char** argv) {
   Writer w{argc > 1 ? fs::path(argv[1]) : fs::path("palettes")};
-  const RgbaImage bg = paper();
+  const ImageRGBA8 bg = paper();
   const glm::vec3 ink(0.06f, 0.05f, 0.08f);
 
   w.palette("crosshatch",
@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
             toneLevels(hatchField(), 10, bg, ink), &bg);
   w.palette("stipple", "name Stipple\nmatch intensity\n# 16 nested levels of ink dots.\n", toneLevels(stippleField(), 16, bg, ink), &bg);
 
-  std::vector<RgbaImage> cel;
+  std::vector<ImageRGBA8> cel;
   for (glm::vec3 c : {glm::vec3(0.16f, 0.18f, 0.30f), glm::vec3(0.38f, 0.42f, 0.62f), glm::vec3(0.66f, 0.71f, 0.88f), glm::vec3(0.95f, 0.96f, 1.0f)})
     cel.push_back(solid(c));
   w.palette("cel", "name Cel (4 tones)\nmatch intensity\nbackground #FFFFFF\n", cel, nullptr, "tone");
@@ -277,22 +277,22 @@ int main(int argc, char** argv) {
   // renderer's default tone parameters (blue = yellow = 0.4, alpha = 0.2, beta = 0.6) and
   // OpenGL's default diffuse (0.8): with --tone gooch and match colors every tone the model
   // produces has an entry, and the result is technical-illustration shading.
-  std::vector<RgbaImage> gooch;
+  std::vector<ImageRGBA8> gooch;
   const glm::vec3 kd(0.8f), cool = glm::vec3(0, 0, 0.4f) + 0.2f * kd, warm = glm::vec3(0.4f, 0.4f, 0) + 0.6f * kd;
   for (int i = 0; i < 16; ++i) gooch.push_back(solid(cool + (warm - cool) * (float(i) / 15.0f)));
   w.palette("gooch", "name Gooch cool-to-warm\nmatch colors\nbackground #F4F4F0\n", gooch, nullptr, "tone");
 
   // The order set: one image, blurred and solarized progressively; entry 0 is the most
   // transformed, so darker triangles get the stronger effect, as in the original.
-  std::vector<RgbaImage> order;
-  const RgbaImage base = orderBase();
+  std::vector<ImageRGBA8> order;
+  const ImageRGBA8 base = orderBase();
   for (int i = 0; i < 12; ++i) {
     const float k = float(11 - i) / 11.0f;
     order.push_back(solarize(boxBlur(base, int(k * 6)), 1.0f - 0.5f * k));
   }
   w.palette("solarize", "name Solarize (order)\nmatch order\nbackground #202020\n", order, nullptr, "step");
 
-  std::vector<RgbaImage> woods;
+  std::vector<ImageRGBA8> woods;
   for (int i = 0; i < 30; ++i) woods.push_back(wood(1.0f - float(i) / 29.0f));
   w.palette("wood", "name Wood (30, cherry to pine)\nmatch intensity\nbackground #FFFFFF\n", woods, nullptr, "wood");
   return w.ok ? 0 : 1;

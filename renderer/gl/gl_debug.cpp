@@ -37,6 +37,8 @@ bool installDebugOutput() {
   return true;
 }
 
+void reportError(const std::string& message) { record(message); }
+
 int errorCount() { return g_errors.load(); }
 
 std::vector<std::string> errorMessages() {

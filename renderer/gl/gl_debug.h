@@ -1,5 +1,6 @@
 // KHR_debug error capture: every GL error or high-severity message is counted and kept, so
-// tests can assert that a run ended with zero GL errors.
+// tests can assert that a run ended with zero GL errors. Program misuse the renderer detects
+// itself (see shader_program.h) is recorded the same way.
 #pragma once
 
 #include <string>
@@ -13,6 +14,9 @@ bool installDebugOutput();
 int errorCount();
 std::vector<std::string> errorMessages();
 void resetErrors();
+// Records a misuse of GL that GL itself cannot see (a uniform name no shader declares), so it
+// fails tests and headless runs exactly as a GL error does.
+void reportError(const std::string& message);
 // Polls glGetError too, for contexts without KHR_debug; returns the running error count.
 int checkErrors(const char* where);
 

@@ -2,25 +2,13 @@
 // headless rendering draws into and reads back from.
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include <glm/glm.hpp>
 
+#include "renderer/core/image.h"
 #include "renderer/gl/gl_handle.h"
 #include "renderer/core/result.h"
 
 namespace npr {
-
-struct ImageRGBA8 {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> pixels;  // top row first, 4 bytes per pixel
-};
-
-struct ImageRGBA32F {
-  int width = 0, height = 0;
-  std::vector<float> pixels;  // top row first, 4 floats per pixel
-};
 
 class OffscreenTarget {
  public:

@@ -57,8 +57,4 @@ Result<std::string> assembleShader(const std::string& name, const std::vector<st
   return withHeader(expandIncludes(name, 0), defines);
 }
 
-Result<std::string> assembleShaderText(const std::string& label, const std::string& text, const std::vector<std::string>& defines) {
-  return withHeader(expandText(label, text.c_str(), 0), defines);
-}
-
 }  // namespace npr

@@ -19,7 +19,5 @@ const std::vector<ShaderSource>& embeddedShaders();
 // Returns the named shader with #version first, then `defines` (each "NAME" or "NAME VALUE"),
 // then the text with every `#include "file.glsl"` replaced by that embedded file.
 Result<std::string> assembleShader(const std::string& name, const std::vector<std::string>& defines);
-// The same for GLSL text that is not one of the embedded files (it may #include them).
-Result<std::string> assembleShaderText(const std::string& label, const std::string& text, const std::vector<std::string>& defines);
 
 }  // namespace npr

@@ -3,18 +3,17 @@
 
 #include <vector>
 
-#include "renderer/gl/gl_program.h"
 
 namespace npr {
 
-void uploadLightingUniforms(GLuint program, const PreparedLighting<float>& p) {
+void uploadLightingUniforms(gl::ShaderProgram& program, const PreparedLighting<float>& p) {
   const glm::vec3 base[2] = {p.base[0], p.base[1]};
-  gl::setUniformArray(program, "uBase", base, 2);
+  program.setArray("uBase", base, 2);
   if (p.tone != ToneModel::OpenGL) {
     const glm::vec3 cool[2] = {p.cool[0], p.cool[1]}, warm[2] = {p.warm[0], p.warm[1]};
-    gl::setUniformArray(program, "uCool", cool, 2);
-    gl::setUniformArray(program, "uWarm", warm, 2);
-    gl::setUniform(program, "uSplash", glm::vec2(p.splashAlpha, p.splashPower));
+    program.setArray("uCool", cool, 2);
+    program.setArray("uWarm", warm, 2);
+    program.set("uSplash", glm::vec2(p.splashAlpha, p.splashPower));
   }
   const int n = p.count;
   if (!p.lighting || n == 0) return;
@@ -34,16 +33,16 @@ void uploadLightingUniforms(GLuint program, const PreparedLighting<float>& p) {
     spotCos[i] = l.spot ? l.spotCosCutoff : -2.0f;
     att[i] = glm::vec3(l.k0, l.k1, l.k2);
   }
-  // Uniforms a variant compiled out are simply not found (location -1): setting them is a no-op.
-  gl::setUniformArray(program, "uLightAmbient", amb.data(), 2 * n);
-  gl::setUniformArray(program, "uLightDiffuse", dif.data(), 2 * n);
-  gl::setUniformArray(program, "uLightSpecular", spec.data(), 2 * n);
-  gl::setUniformArray(program, "uLightPosition", pos.data(), n);
-  gl::setUniformArray(program, "uSpotDirection", spotDir.data(), n);
-  gl::setUniformArray(program, "uSpotExponent", spotExp.data(), n);
-  gl::setUniformArray(program, "uSpotCosCutoff", spotCos.data(), n);
-  gl::setUniformArray(program, "uAttenuation", att.data(), n);
-  gl::setUniformArray(program, "uShininess", p.shininess, 2);
+  // Uniforms a variant compiled out are not found (location -1): setting them is a no-op.
+  program.setArray("uLightAmbient", amb.data(), 2 * n);
+  program.setArray("uLightDiffuse", dif.data(), 2 * n);
+  program.setArray("uLightSpecular", spec.data(), 2 * n);
+  program.setArray("uLightPosition", pos.data(), n);
+  program.setArray("uSpotDirection", spotDir.data(), n);
+  program.setArray("uSpotExponent", spotExp.data(), n);
+  program.setArray("uSpotCosCutoff", spotCos.data(), n);
+  program.setArray("uAttenuation", att.data(), n);
+  program.setArray("uShininess", p.shininess, 2);
 }
 
 }  // namespace npr

@@ -16,6 +16,9 @@
 #include <limits>
 #include <sstream>
 
+#include "renderer/core/json.h"
+#include "renderer/mesh/mesh_generators.h"
+
 namespace npr {
 namespace fs = std::filesystem;
 
@@ -34,27 +37,6 @@ struct Warnings {
     if (dropped) out.push_back("... and " + std::to_string(dropped) + " more warnings");
   }
 };
-
-std::string jsonEscape(const std::string& s) {
-  std::string o;
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': o += "\\\""; break;
-      case '\\': o += "\\\\"; break;
-      case '\n': o += "\\n"; break;
-      case '\t': o += "\\t"; break;
-      default:
-        if (c < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", c);
-          o += buf;
-        } else {
-          o += static_cast<char>(c);
-        }
-    }
-  }
-  return o;
-}
 
 // Checks that `path` names a readable regular file and reads it whole.
 Result<std::string> readWholeFile(const std::string& path) {
@@ -414,13 +396,11 @@ Result<Mesh> loadWithOpenMesh(const std::string& path) {
 
 std::string LoadReport::toJson() const {
   std::ostringstream o;
-  o << "{\"file\":\"" << jsonEscape(file) << "\",\"vertices\":" << vertices << ",\"triangles\":" << triangles
+  o << "{\"file\":" << json::string(file) << ",\"vertices\":" << vertices << ",\"triangles\":" << triangles
     << ",\"polygons_triangulated\":" << polygons_triangulated << ",\"skipped_faces\":" << skipped_faces
     << ",\"non_manifold_faces\":" << non_manifold_faces << ",\"warnings\":[";
-  for (size_t i = 0; i < warnings.size(); ++i) o << (i ? "," : "") << '"' << jsonEscape(warnings[i]) << '"';
-  char ms[32];
-  std::snprintf(ms, sizeof ms, "%.3f", load_ms);
-  o << "],\"load_ms\":" << ms << "}";
+  for (size_t i = 0; i < warnings.size(); ++i) o << (i ? "," : "") << json::string(warnings[i]);
+  o << "],\"load_ms\":" << json::number(load_ms, "%.3f") << "}";
   return o.str();
 }
 
@@ -441,6 +421,11 @@ Result<Mesh> loadMesh(const std::string& path) {
   finalizeMesh(*m);
   m->report.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return m;
+}
+
+Result<Mesh> loadModel(const std::string& nameOrPath) {
+  if (std::optional<Mesh> generated = generatedMesh(nameOrPath)) return std::move(*generated);
+  return loadMesh(nameOrPath);
 }
 
 }  // namespace npr

@@ -5,12 +5,15 @@
 
 #include <string>
 
-#include "renderer/mesh/mesh.h"
 #include "renderer/core/result.h"
+#include "renderer/mesh/mesh.h"
 
 namespace npr {
 
-Result<Mesh> loadMesh(const std::string& path);
+[[nodiscard]] Result<Mesh> loadMesh(const std::string& path);
+// What the command line and the viewer accept as a model: a generated mesh's name
+// ("generated:torus-871k", see mesh_generators.h) or a file for loadMesh.
+[[nodiscard]] Result<Mesh> loadModel(const std::string& nameOrPath);
 
 // Ear-clipping triangulation of a planar-ish polygon (exposed for tests). Returns indices
 // into `poly`, 3 per triangle, n-2 triangles, preserving the polygon's winding.

@@ -1,6 +1,8 @@
 // Palette file parsing, image loading through OpenImageIO and alpha-aware analysis.
 #include "renderer/palette/palette.h"
 
+#include "renderer/core/json.h"
+
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -80,7 +82,7 @@ std::optional<glm::vec3> parseHexColour(const std::string& s) {
   return glm::vec3((v >> 16) & 255, (v >> 8) & 255, v & 255) / 255.0f;
 }
 
-glm::vec3 linearMean(const RgbaImage& img) {
+glm::vec3 linearMean(const ImageRGBA8& img) {
   const auto& lut = srgbTable();
   glm::dvec3 s(0.0);
   const size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height);
@@ -91,19 +93,19 @@ glm::vec3 linearMean(const RgbaImage& img) {
   return n ? glm::vec3(s / double(n)) : glm::vec3(1.0f);
 }
 
-Result<RgbaImage> resizeImage(const RgbaImage& img, int w, int h) {
+Result<ImageRGBA8> resizeImage(const ImageRGBA8& img, int w, int h) {
   OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
   OIIO::ImageBuf src(spec, const_cast<std::uint8_t*>(img.pixels.data()));
   OIIO::ImageBuf dst = OIIO::ImageBufAlgo::resize(src, "", 0.0f, OIIO::ROI(0, w, 0, h, 0, 1, 0, 4));
   if (dst.has_error()) return Error{"resize failed: " + dst.geterror()};
-  RgbaImage out{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
+  ImageRGBA8 out{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
   dst.get_pixels(OIIO::ROI(0, w, 0, h, 0, 1, 0, 4), OIIO::TypeDesc::UINT8, out.pixels.data());
   return out;
 }
 
 }  // namespace
 
-Result<RgbaImage> loadImage(const std::string& path) {
+Result<ImageRGBA8> loadImage(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return Error{path + ": no such image file"};
   if (fs::is_directory(path, ec)) return Error{path + ": is a directory, not an image"};
@@ -126,7 +128,7 @@ Result<RgbaImage> loadImage(const std::string& path) {
   const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 2 ? 1 : (nc >= 4 ? 3 : -1));
   const bool isFloat = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
                        spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-  RgbaImage img{spec.width, spec.height, std::vector<std::uint8_t>(static_cast<size_t>(spec.width) * spec.height * 4)};
+  ImageRGBA8 img{spec.width, spec.height, std::vector<std::uint8_t>(static_cast<size_t>(spec.width) * spec.height * 4)};
   const int rowsPerChunk = 64;
   std::vector<float> buf(static_cast<size_t>(spec.width) * rowsPerChunk * nc);
   for (int y0 = 0; y0 < spec.height; y0 += rowsPerChunk) {
@@ -151,9 +153,9 @@ Result<RgbaImage> loadImage(const std::string& path) {
   return img;
 }
 
-RgbaImage compositeOver(const RgbaImage& img, const glm::vec3& bgColour, const RgbaImage* bgImage) {
+ImageRGBA8 compositeOver(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage) {
   const bool perTexel = bgImage && bgImage->width == img.width && bgImage->height == img.height;
-  RgbaImage out{img.width, img.height, std::vector<std::uint8_t>(img.pixels.size())};
+  ImageRGBA8 out{img.width, img.height, std::vector<std::uint8_t>(img.pixels.size())};
   const size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height);
   const glm::vec3 bgMean = bgColour * 255.0f;
   for (size_t i = 0; i < n; ++i) {
@@ -168,8 +170,8 @@ RgbaImage compositeOver(const RgbaImage& img, const glm::vec3& bgColour, const R
   return out;
 }
 
-glm::vec3 compositeAverage(const RgbaImage& img, const glm::vec3& bgColour, const RgbaImage* bgImage) {
-  const RgbaImage c = compositeOver(img, bgColour, bgImage);
+glm::vec3 compositeAverage(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage) {
+  const ImageRGBA8 c = compositeOver(img, bgColour, bgImage);
   return linearToSrgb(linearMean(c));
 }
 
@@ -235,7 +237,7 @@ Result<Palette> loadPalette(const std::string& path) {
     } else if (bgSpec[0] == '#') {
       return Error{path + " line " + std::to_string(bgLine) + ": background colour '" + bgSpec + "' is not #RRGGBB"};
     } else {
-      Result<RgbaImage> bg = loadImage((dir / bgSpec).string());
+      Result<ImageRGBA8> bg = loadImage((dir / bgSpec).string());
       if (!bg) return Error{path + " line " + std::to_string(bgLine) + ": background: " + bg.error()};
       p.backgroundColour = linearToSrgb(linearMean(*bg));
       p.backgroundImage = std::move(*bg);
@@ -243,7 +245,7 @@ Result<Palette> loadPalette(const std::string& path) {
   }
   std::size_t maxW = 1, maxH = 1;
   for (const Pending& im : images) {
-    Result<RgbaImage> img = loadImage((dir / im.path).string());
+    Result<ImageRGBA8> img = loadImage((dir / im.path).string());
     if (!img) return Error{path + " line " + std::to_string(im.line) + ": " + img.error()};
     PaletteEntry e;
     e.path = im.path;
@@ -260,7 +262,7 @@ Result<Palette> loadPalette(const std::string& path) {
     const int w = std::max(1, int(double(maxW) * f)), h = std::max(1, int(double(maxH) * f));
     for (PaletteEntry& e : p.entries) {
       if (e.image.width <= w && e.image.height <= h) continue;
-      Result<RgbaImage> r = resizeImage(e.image, std::min(w, e.image.width), std::min(h, e.image.height));
+      Result<ImageRGBA8> r = resizeImage(e.image, std::min(w, e.image.width), std::min(h, e.image.height));
       if (!r) return Error{path + ": " + e.path + ": " + r.error()};
       e.image = std::move(*r);
     }
@@ -307,19 +309,8 @@ std::vector<std::string> PaletteAnalysis::suitabilityWarnings(MatchMode mode) co
 std::string paletteReportJson(const Palette& p) {
   const PaletteAnalysis a = analysePalette(p);
   std::ostringstream o;
-  auto num = [](float f) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.6g", f);
-    return std::string(b);
-  };
-  auto str = [](const std::string& s) {
-    std::string r = "\"";
-    for (char c : s) {
-      if (c == '"' || c == '\\') r += '\\';
-      if (static_cast<unsigned char>(c) >= 0x20) r += c;
-    }
-    return r + "\"";
-  };
+  auto num = [](float f) { return json::number(f); };
+  auto str = [](const std::string& s) { return json::string(s); };
   o << "{\"file\":" << str(p.file) << ",\"name\":" << str(p.name) << ",\"entries\":[";
   for (size_t i = 0; i < p.entries.size(); ++i) {
     const auto& e = p.entries[i];

@@ -17,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/core/image.h"
 #include "renderer/core/result.h"
 
 namespace npr {
@@ -27,14 +28,9 @@ std::optional<MatchMode> parseMatchMode(const std::string& s);
 
 constexpr int kMaxPaletteEntries = 256;
 
-struct RgbaImage {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> pixels;  // sRGB-encoded RGBA8, straight alpha, top row first
-};
-
 struct PaletteEntry {
   std::string path;
-  RgbaImage image;
+  ImageRGBA8 image;
   glm::vec3 average{0.0f};  // encoded colour of the texture composited over the background
   float intensity = 0.0f;   // sum of the average's channels, in [0, 3]
 };
@@ -44,7 +40,7 @@ struct Palette {
   std::string name;
   std::vector<PaletteEntry> entries;
   glm::vec3 backgroundColour{1.0f};  // encoded; the mean of the background image if there is one
-  std::optional<RgbaImage> backgroundImage;
+  std::optional<ImageRGBA8> backgroundImage;
   std::optional<MatchMode> defaultMatch;
   std::optional<float> defaultRangeScale;
   std::vector<std::string> warnings;
@@ -57,14 +53,14 @@ Result<Palette> loadPalette(const std::string& path);
 
 // Loads one image through OpenImageIO as sRGB-encoded RGBA8 (grey, grey+alpha, RGB, RGBA;
 // 8-bit, 16-bit or float, float images being taken as linear and encoded).
-Result<RgbaImage> loadImage(const std::string& path);
+Result<ImageRGBA8> loadImage(const std::string& path);
 
 // `img` composited over the background as the renderer shows it: blended on encoded values
 // (as OpenGL blends into an 8-bit framebuffer), texel over background texel where the two
 // have the same size, over the background's mean colour otherwise.
-RgbaImage compositeOver(const RgbaImage& img, const glm::vec3& bgColour, const RgbaImage* bgImage);
+ImageRGBA8 compositeOver(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage);
 // The average of that composite, taken in linear light and returned encoded.
-glm::vec3 compositeAverage(const RgbaImage& img, const glm::vec3& bgColour, const RgbaImage* bgImage);
+glm::vec3 compositeAverage(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage);
 
 // The palette report: one line of JSON (`npr-viewer --palette-info`).
 struct PaletteAnalysis {

@@ -1,7 +1,10 @@
-// The render paths users choose between, from fastest-and-coarsest to slowest-and-finest,
-// with the names the command line and the viewer show.
+// The render paths, from fastest-and-coarsest to slowest-and-finest, in one table that the
+// command line (help, validation), the overlay, the benchmark and the tests read. Adding a
+// path is a file in paths/ and a row here (plus its PATH_* block in shaders/mesh.frag if it
+// is a mesh shading).
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,17 +13,35 @@ namespace npr {
 
 enum class RenderPath {
   Stencil,      // the original: per-triangle CPU lighting, stencil buckets, two quads per bucket
-  Triangle,     // the same per-triangle choice in one pass (texture array, gl_PrimitiveID)
+  Triangle,     // the same per-triangle choice in one pass, one draw per bucket
   Vertex,       // lit per vertex, matched per pixel
   Pixel,        // lit and matched per pixel
   Smooth,       // lit per pixel, two bracketing entries blended
   Reference,    // plain lit render (Phong or Gouraud), no palette
-  LitTextured,  // benchmark floor: lighting plus one screen-space texture fetch
+  LitTextured,  // benchmark floor: lighting times one screen-space texture fetch
 };
 
+class RenderPass;
+
+struct PathInfo {
+  RenderPath id;
+  const char* name;          // on the command line, in files and reports
+  const char* label;         // in the overlay
+  bool userSelectable;       // offered by --path, the overlay and P; else internal (benchmark)
+  bool usesPalette;
+  bool perTriangle;          // lit and matched per triangle on the CPU
+  std::unique_ptr<RenderPass> (*create)();
+};
+
+// Every path, in the order P cycles through the user-selectable ones.
+const std::vector<PathInfo>& renderPaths();
+const PathInfo& pathInfo(RenderPath p);
 const char* renderPathName(RenderPath p);
-std::optional<RenderPath> parseRenderPath(const std::string& s);
-// The paths a user can pick, in the order P cycles through them.
+// Any path by name, internal ones included.
+std::optional<RenderPath> parseRenderPath(const std::string& name);
+// The user-selectable paths, in order.
 const std::vector<RenderPath>& userRenderPaths();
+// "stencil, triangle, ..., reference": the user-selectable names joined by `separator`.
+std::string userRenderPathNames(const std::string& separator = ", ");
 
 }  // namespace npr

@@ -19,8 +19,8 @@ namespace {
 
 using test::TempDir;
 
-RgbaImage solidImage(int w, int h, glm::vec3 c, float a = 1.0f) {
-  RgbaImage img{w, h, std::vector<std::uint8_t>(size_t(w) * h * 4)};
+ImageRGBA8 solidImage(int w, int h, glm::vec3 c, float a = 1.0f) {
+  ImageRGBA8 img{w, h, std::vector<std::uint8_t>(size_t(w) * h * 4)};
   for (size_t i = 0; i < img.pixels.size(); i += 4) {
     for (int k = 0; k < 3; ++k) img.pixels[i + size_t(k)] = std::uint8_t(std::lround(c[k] * 255));
     img.pixels[i + 3] = std::uint8_t(std::lround(a * 255));

@@ -5,6 +5,7 @@
 
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/headless_context.h"
+#include "renderer/gl/shader_program.h"
 
 namespace npr::test {
 
@@ -28,14 +29,32 @@ ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSetti
   return t->readRGBA8();
 }
 
-ImageRGBA32F renderFloat(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
+ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
+  auto t = OffscreenTarget::create(w, h);
+  EXPECT_TRUE(t) << t.error();
+  if (!t) return {};
+  t->clear(glm::vec4(0.0f));
+  const Status st = r.renderSelection(cam, s, SelectionOutput::Entry, {0, 0, w, h});
+  EXPECT_TRUE(st) << st.error();
+  return t->readRGBA8();
+}
+
+ImageRGBA32F renderBlend(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
   auto t = OffscreenTarget::create(w, h, OffscreenTarget::Format::RGBA32F);
   EXPECT_TRUE(t) << t.error();
   if (!t) return {};
   t->clear(glm::vec4(0.0f));
-  RenderSettings q = s;
-  q.drawBackground = false;
-  const Status st = r.render(cam, q, {0, 0, w, h});
+  const Status st = r.renderSelection(cam, s, SelectionOutput::Blend, {0, 0, w, h});
+  EXPECT_TRUE(st) << st.error();
+  return t->readRGBA32F();
+}
+
+ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h) {
+  auto t = OffscreenTarget::create(w, h, OffscreenTarget::Format::RGBA32F);
+  EXPECT_TRUE(t) << t.error();
+  if (!t) return {};
+  t->clear(glm::vec4(0.0f));
+  const Status st = r.renderGeometry(cam, output, {0, 0, w, h});
   EXPECT_TRUE(st) << st.error();
   return t->readRGBA32F();
 }
@@ -65,6 +84,7 @@ int main(int argc, char** argv) {
     return 1;  // a GL test program without GL fails; it never skips silently
   }
   std::fprintf(stderr, "GL: %s\n", (*ctx)->description().c_str());
+  npr::gl::setStrictUniforms(true);  // a misspelled uniform fails the test like a GL error
   ::testing::UnitTest::GetInstance()->listeners().Append(new npr::test::GlErrorCheck);
   return RUN_ALL_TESTS();
 }

@@ -25,7 +25,6 @@
 namespace npr {
 namespace {
 
-using test::renderFloat;
 using test::renderImage;
 using test::sourcePath;
 using test::testCamera;
@@ -43,7 +42,7 @@ Palette greyRamp(int n) {
   for (int i = 0; i < n; ++i) {
     PaletteEntry e;
     const float g = n == 1 ? 0.5f : 1.0f - float(i) / float(n - 1);
-    e.image = RgbaImage{4, 4, std::vector<std::uint8_t>(64)};
+    e.image = ImageRGBA8{4, 4, std::vector<std::uint8_t>(64)};
     for (size_t k = 0; k < 64; k += 4) {
       e.image.pixels[k] = e.image.pixels[k + 1] = e.image.pixels[k + 2] = std::uint8_t(std::lround(g * 255));
       e.image.pixels[k + 3] = 255;
@@ -76,9 +75,7 @@ int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {
 }
 
 int countCovered(Renderer& r, const CameraMatrices& cam, int w, int h) {
-  RenderSettings s;
-  s.output = RenderSettings::Output::EyeNormal;
-  const ImageRGBA32F img = renderFloat(r, cam, s, w, h);
+  const ImageRGBA32F img = test::renderGeometry(r, cam, GeometryOutput::EyeNormal, w, h);
   int n = 0;
   for (size_t i = 3; i < img.pixels.size(); i += 4) n += img.pixels[i] > 0.5f;
   return n;
@@ -168,17 +165,13 @@ TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
   ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
-  RenderSettings geo;
-  geo.output = RenderSettings::Output::EyePosition;
-  const ImageRGBA32F pos = renderFloat(*r, cam, geo, w, h);
-  geo.output = RenderSettings::Output::EyeNormal;
-  const ImageRGBA32F nrm = renderFloat(*r, cam, geo, w, h);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
   for (MatchMode mode : {MatchMode::Intensity, MatchMode::Order, MatchMode::Colors}) {
     RenderSettings s;
     s.path = RenderPath::Pixel;
     s.match = mode;
-    s.output = RenderSettings::Output::PaletteEntry;
-    const ImageRGBA8 entries = renderImage(*r, cam, s, w, h);
+    const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
     const PaletteMatcher& m = *r->matcher();
     const auto prepared = prepareLighting<float>(r->lighting());
     int sampled = 0, exact = 0, nearBoundary = 0;
@@ -219,7 +212,7 @@ TEST_F(Fixture, PaletteStaysInScreenSpace) {
   // whatever the depth or camera, so the pattern neither moves nor scales with the model.
   Palette p;
   PaletteEntry e;
-  e.image = RgbaImage{16, 16, std::vector<std::uint8_t>(16 * 16 * 4)};
+  e.image = ImageRGBA8{16, 16, std::vector<std::uint8_t>(16 * 16 * 4)};
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) {
       std::uint8_t* px = &e.image.pixels[size_t(y * 16 + x) * 4];
@@ -343,9 +336,7 @@ TEST_F(Fixture, ExtremesProduceNoErrorsOrNaN) {
       RenderSettings s;
       s.path = path;
       (void)renderImage(*r, c.matrices(1.0f), s, 32, 32);
-      RenderSettings g;
-      g.output = RenderSettings::Output::EyeNormal;
-      const ImageRGBA32F n = renderFloat(*r, c.matrices(1.0f), g, 32, 32);
+      const ImageRGBA32F n = test::renderGeometry(*r, c.matrices(1.0f), GeometryOutput::EyeNormal, 32, 32);
       for (float v : n.pixels) ASSERT_TRUE(std::isfinite(v)) << size;
     }
   }

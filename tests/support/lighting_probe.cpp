@@ -3,9 +3,9 @@
 
 #include <cstddef>
 
-#include "renderer/gl/gl_program.h"
-#include "renderer/lighting/lighting_uniforms.h"
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/gl/shader_program.h"
+#include "renderer/lighting/lighting_uniforms.h"
 
 namespace npr {
 
@@ -13,7 +13,7 @@ Result<std::vector<glm::vec3>> evaluateLightingOnGpu(const LightingState& state,
   if (samples.empty()) return std::vector<glm::vec3>{};
   const int width = 256;
   const int height = static_cast<int>((samples.size() + width - 1) / width);
-  Result<gl::Program> prog = gl::buildProgram("lighting_probe.vert", "lighting_probe.frag", state.features().glslDefines());
+  Result<gl::ShaderProgram> prog = gl::ShaderProgram::build("lighting_probe.vert", "lighting_probe.frag", state.features().glslDefines());
   if (!prog) return Error{prog.error()};
   Result<OffscreenTarget> target = OffscreenTarget::create(width, height, OffscreenTarget::Format::RGBA32F);
   if (!target) return Error{target.error()};
@@ -35,9 +35,9 @@ Result<std::vector<glm::vec3>> evaluateLightingOnGpu(const LightingState& state,
   target->bind();
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  glUseProgram(prog->id());
-  gl::setUniform(prog->id(), "uSize", glm::ivec2(width, height));
-  uploadLightingUniforms(prog->id(), prepareLighting<float>(state));
+  prog->use();
+  prog->set("uSize", glm::ivec2(width, height));
+  uploadLightingUniforms(*prog, prepareLighting<float>(state));
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(verts.size()));
   const ImageRGBA32F img = target->readRGBA32F();
   glBindVertexArray(0);

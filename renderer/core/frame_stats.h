@@ -1,0 +1,28 @@
+// What the last frame did. The counters are zero on frames where nothing they depend on
+// changed (the benchmark and the overlay show them; tests assert it).
+#pragma once
+
+namespace npr {
+
+struct FrameStats {
+  double cpuShadingMs = 0.0;   // per-triangle lighting, matching and bucketing
+  double cpuFrameMs = 0.0;     // everything render() did on the CPU
+  double gpuMs = -1.0;         // GPU time of the most recent frame whose timer query finished
+  int nonEmptyBuckets = 0;
+  int lightingRecomputes = 0;  // per-triangle shading runs
+  int bufferUploads = 0;       // mesh, bucket, per-triangle entry and LUT uploads
+  int shaderBuilds = 0;
+  int lutBuilds = 0;
+  int drawCalls = 0;
+  int lines = 0;               // feature lines drawn
+  double cpuLinesMs = 0.0;     // silhouette extraction
+
+  // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
+  void startFrame() {
+    const double gpu = gpuMs;
+    *this = FrameStats{};
+    gpuMs = gpu;
+  }
+};
+
+}  // namespace npr

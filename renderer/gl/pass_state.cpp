@@ -1,0 +1,37 @@
+// Applying pass states (see pass_state.h).
+#include "renderer/gl/pass_state.h"
+
+namespace npr::gl {
+
+void apply(const PassState& s) {
+  s.depthTest ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
+  glDepthFunc(s.depthFunc);
+  glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE);
+  const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
+  glColorMask(c, c, c, c);
+  if (s.blend) {
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  } else {
+    glDisable(GL_BLEND);
+  }
+  if (s.stencilTest) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(s.stencilFunc, 1, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass);
+    glStencilMask(0xFF);
+  } else {
+    glDisable(GL_STENCIL_TEST);
+  }
+  s.scissor ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
+  s.programPointSize ? glEnable(GL_PROGRAM_POINT_SIZE) : glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+void restoreDefaults() {
+  apply(pass::kBackground);
+  glStencilMask(0xFF);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace npr::gl

@@ -1,0 +1,69 @@
+// The fixed-function state of every pass, as one value per pass in one table (after bgfx's
+// per-draw state): a pass applies its preset and patches nothing by hand.
+#pragma once
+
+#include <epoxy/gl.h>
+
+namespace npr::gl {
+
+struct PassState {
+  bool depthTest = false, depthWrite = false;
+  GLenum depthFunc = GL_LESS;
+  bool colorWrite = true;
+  // Colour blends source-over; destination alpha is kept (opaque), so read-backs stay opaque.
+  bool blend = false;
+  bool stencilTest = false;
+  GLenum stencilFunc = GL_ALWAYS;
+  GLenum stencilPass = GL_KEEP;  // op when stencil and depth pass
+  bool scissor = false;
+  bool programPointSize = false;
+};
+
+namespace pass {
+// Background of every path and full-screen passes: behind everything, touches no depth.
+inline constexpr PassState kBackground{};
+// Mesh drawing: ordinary depth-tested drawing.
+inline constexpr PassState kMesh = [] { PassState s; s.depthTest = s.depthWrite = true; return s; }();
+// Stencil path, per bucket: (1) the bucket's triangles mark visible pixels in the stencil,
+inline constexpr PassState kStencilMask = [] {
+  PassState s;
+  s.depthTest = s.depthWrite = true;
+  s.colorWrite = false;
+  s.stencilTest = true;
+  s.stencilPass = GL_REPLACE;
+  return s;
+}();
+// (2) the background where marked, (3) the palette layer blended over it, clearing the mark.
+inline constexpr PassState kStencilBackground = [] {
+  PassState s;
+  s.stencilTest = s.scissor = true;
+  s.stencilFunc = GL_EQUAL;
+  return s;
+}();
+inline constexpr PassState kStencilLayer = [] {
+  PassState s;
+  s.blend = s.stencilTest = s.scissor = true;
+  s.stencilFunc = GL_EQUAL;
+  s.stencilPass = GL_ZERO;
+  return s;
+}();
+// Feature lines: depth-tested against the model (LEQUAL, so lines on its surface pass) but
+// writing no depth, blended.
+inline constexpr PassState kLines = [] {
+  PassState s;
+  s.depthTest = s.blend = true;
+  s.depthFunc = GL_LEQUAL;
+  return s;
+}();
+// Screen-space overlays over the frame (image-space edges): blended, no depth.
+inline constexpr PassState kScreenOverlay = [] { PassState s; s.blend = true; return s; }();
+// The light marker: a point sprite sized by the shader, over everything.
+inline constexpr PassState kMarker = [] { PassState s; s.programPointSize = true; return s; }();
+}  // namespace pass
+
+void apply(const PassState& state);
+// Leaves the context as an overlay drawn after the renderer expects it (Dear ImGui's backend
+// sets its own state but not the stencil mask, the bound program or the vertex array).
+void restoreDefaults();
+
+}  // namespace npr::gl

@@ -1,0 +1,90 @@
+// Variants to files and #define lines (see program_variants.h). The define names are the
+// ones the GLSL files test; the lighting defines come from LightingFeatures::glslDefines.
+#include "renderer/gl/program_variants.h"
+
+#include "renderer/palette/palette_matcher.h"
+
+namespace npr::gl {
+namespace {
+
+std::vector<std::string> paletteDefines(const PaletteVariant& p) {
+  std::vector<std::string> d;
+  d.push_back("PALETTE_SIZE " + std::to_string(p.size));
+  if (p.layerSizesDiffer) d.push_back("LAYER_SIZES_DIFFER");
+  if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
+  else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
+  d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
+  d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
+  d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));
+  return d;
+}
+
+std::vector<std::string> shadingDefines(MeshShading s) {
+  switch (s) {
+    case MeshShading::Mask: return {"PATH_MASK"};
+    case MeshShading::Triangle: return {"PATH_TRIANGLE"};
+    case MeshShading::Vertex: return {"PATH_VERTEX", "PER_VERTEX_LIGHTING"};
+    case MeshShading::Pixel: return {"PATH_PIXEL"};
+    case MeshShading::Smooth: return {"PATH_SMOOTH"};
+    case MeshShading::Phong: return {"PATH_PHONG"};
+    case MeshShading::Gouraud: return {"PATH_GOURAUD", "PER_VERTEX_LIGHTING"};
+    case MeshShading::LitTextured: return {"PATH_LIT_TEXTURED"};
+    case MeshShading::EyePosition: return {"PATH_EYE_POSITION"};
+    case MeshShading::EyeNormal: return {"PATH_EYE_NORMAL"};
+  }
+  return {};
+}
+
+struct SourceOf {
+  ProgramSource operator()(const MeshProgram& m) const {
+    ProgramSource s{"mesh.vert", "mesh.frag", {}};
+    if (m.lighting) s.defines = m.lighting->glslDefines();
+    for (auto& d : shadingDefines(m.shading)) s.defines.push_back(d);
+    if (m.palette) for (auto& d : paletteDefines(*m.palette)) s.defines.push_back(d);
+    if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
+    if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
+    return s;
+  }
+  ProgramSource operator()(const QuadProgram& q) const {
+    ProgramSource s{"fullscreen.vert", "quad.frag", {}};
+    s.defines.push_back(q.kind == QuadProgram::Kind::Background ? "QUAD_BACKGROUND" : "QUAD_LAYER");
+    if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
+    return s;
+  }
+  ProgramSource operator()(const LineProgram& l) const {
+    ProgramSource s{"lines.vert", "lines.frag", {}};
+    if (l.sketchy) s.defines.push_back("SKETCHY");
+    if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
+    return s;
+  }
+  ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
+  ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
+};
+
+auto lightingKey(const std::optional<LightingFeatures>& f) {
+  const LightingFeatures l = f.value_or(LightingFeatures{});
+  return std::make_tuple(f.has_value(), l.lightCount, l.lighting, l.positional, l.attenuation, l.spot, l.specular,
+                         l.localViewer, l.twoSided, l.tone);
+}
+
+}  // namespace
+
+ProgramSource programSource(const ProgramVariant& variant) { return std::visit(SourceOf{}, variant); }
+
+bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
+
+bool operator<(const MeshProgram& a, const MeshProgram& b) {
+  if (std::tie(a.shading, a.output) != std::tie(b.shading, b.output)) return std::tie(a.shading, a.output) < std::tie(b.shading, b.output);
+  if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
+  return a.palette < b.palette;
+}
+
+bool operator<(const QuadProgram& a, const QuadProgram& b) {
+  return std::tie(a.kind, a.backgroundImage) < std::tie(b.kind, b.backgroundImage);
+}
+
+bool operator<(const LineProgram& a, const LineProgram& b) {
+  return std::tie(a.sketchy, a.depthFalloff) < std::tie(b.sketchy, b.depthFalloff);
+}
+
+}  // namespace npr::gl

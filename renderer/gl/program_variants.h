@@ -1,0 +1,85 @@
+// Every shader program the renderer builds, as typed variants (after Magnum's shader Flags):
+// one struct per program family, whose fields are the features it is specialised for. The
+// program cache is keyed by these values, not by define strings, and each variant turns
+// itself into its files and #define lines in one place (program_variants.cpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <variant>
+#include <vector>
+
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/palette/palette.h"
+
+namespace npr::gl {
+
+// What palette.glsl is compiled for: the palette's layout and the match mode.
+struct PaletteVariant {
+  int size = 0;
+  bool layerSizesDiffer = false;
+  bool precomposited = false;    // layers stored over the background: one fetch per pixel
+  bool backgroundImage = false;  // only meaningful when not precomposited
+  MatchMode match = MatchMode::Intensity;
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match); }
+};
+
+// mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
+enum class MeshShading : std::uint8_t {
+  Mask,         // depth and stencil only (the stencil path's mask)
+  Triangle,     // the CPU's per-triangle entry, a uniform per bucket
+  Vertex,       // lit per vertex, matched per pixel
+  Pixel,        // lit and matched per pixel
+  Smooth,       // two bracketing entries blended
+  Phong,        // reference, per pixel
+  Gouraud,      // reference, per vertex
+  LitTextured,  // benchmark floor: lighting times one fetch
+  EyePosition,  // interpolated eye-space position (alpha -1 on back faces)
+  EyeNormal,    // interpolated eye-space normal
+};
+// What a palette pass writes: its texels, or (tests, the benchmark) the selection behind them.
+enum class MeshOutput : std::uint8_t { Colour, Entry, Blend };
+
+struct MeshProgram {
+  MeshShading shading = MeshShading::Pixel;
+  MeshOutput output = MeshOutput::Colour;
+  std::optional<LightingFeatures> lighting;  // for the shadings that light on the GPU
+  std::optional<PaletteVariant> palette;     // for the shadings that sample the palette
+};
+
+// fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
+struct QuadProgram {
+  enum class Kind : std::uint8_t { Background, Layer } kind = Kind::Background;
+  bool backgroundImage = false;
+};
+
+// lines.vert + lines.frag: feature lines as screen-space quads.
+struct LineProgram {
+  bool sketchy = false;
+  bool depthFalloff = false;
+};
+
+// fullscreen.vert + edges.frag: Sobel on the frame's depth and normals.
+struct EdgeProgram {};
+
+// marker.vert + marker.frag: the light marker.
+struct MarkerProgram {};
+
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram>;
+
+struct ProgramSource {
+  std::string vertexFile, fragmentFile;
+  std::vector<std::string> defines;
+};
+ProgramSource programSource(const ProgramVariant& variant);
+
+bool operator<(const PaletteVariant& a, const PaletteVariant& b);
+bool operator<(const MeshProgram& a, const MeshProgram& b);
+bool operator<(const QuadProgram& a, const QuadProgram& b);
+bool operator<(const LineProgram& a, const LineProgram& b);
+inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
+inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
+
+}  // namespace npr::gl

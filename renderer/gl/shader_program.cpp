@@ -1,0 +1,111 @@
+// Compiling, linking and uniform lookup (see shader_program.h).
+#include "renderer/gl/shader_program.h"
+
+#include <cctype>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "renderer/gl/gl_debug.h"
+#include "renderer/gl/shader_sources.h"
+
+namespace npr::gl {
+namespace {
+
+#ifdef NDEBUG
+bool g_strict = false;
+#else
+bool g_strict = true;
+#endif
+
+std::string variantLabel(const std::string& files, const std::vector<std::string>& defines) {
+  std::string s = files;
+  for (const auto& d : defines) s += " -D" + d;
+  return s;
+}
+
+std::string infoLog(GLuint object, bool isProgram) {
+  GLint len = 0;
+  isProgram ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &len) : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &len);
+  std::string log(static_cast<size_t>(len > 0 ? len : 1), '\0');
+  isProgram ? glGetProgramInfoLog(object, len, nullptr, log.data()) : glGetShaderInfoLog(object, len, nullptr, log.data());
+  return log;
+}
+
+Result<Shader> compile(GLenum type, const std::string& text, const std::string& label) {
+  Shader shader(glCreateShader(type));
+  const char* src = text.c_str();
+  glShaderSource(shader.id(), 1, &src, nullptr);
+  glCompileShader(shader.id());
+  GLint ok = 0;
+  glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+  if (!ok) return Error{"shader " + label + " failed to compile:\n" + infoLog(shader.id(), false)};
+  return shader;
+}
+
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Whether `name` occurs in `text` as a whole identifier.
+bool mentions(const std::string& text, const char* name) {
+  const size_t n = std::strlen(name);
+  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
+    const bool startOk = at == 0 || !isIdentifierChar(text[at - 1]);
+    const bool endOk = at + n >= text.size() || !isIdentifierChar(text[at + n]);
+    if (startOk && endOk) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void setStrictUniforms(bool on) { g_strict = on; }
+
+Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile, const std::string& fragmentFile,
+                                           const std::vector<std::string>& defines) {
+  Result<std::string> vsText = assembleShader(vertexFile, defines);
+  if (!vsText) return Error{vsText.error()};
+  Result<std::string> fsText = assembleShader(fragmentFile, defines);
+  if (!fsText) return Error{fsText.error()};
+  Result<Shader> vs = compile(GL_VERTEX_SHADER, *vsText, variantLabel(vertexFile, defines));
+  if (!vs) return Error{vs.error()};
+  Result<Shader> fs = compile(GL_FRAGMENT_SHADER, *fsText, variantLabel(fragmentFile, defines));
+  if (!fs) return Error{fs.error()};
+  ShaderProgram p;
+  p.label_ = variantLabel(vertexFile + "+" + fragmentFile, defines);
+  p.program_ = Program(glCreateProgram());
+  glAttachShader(p.program_.id(), vs->id());
+  glAttachShader(p.program_.id(), fs->id());
+  glLinkProgram(p.program_.id());
+  GLint ok = 0;
+  glGetProgramiv(p.program_.id(), GL_LINK_STATUS, &ok);
+  glDetachShader(p.program_.id(), vs->id());
+  glDetachShader(p.program_.id(), fs->id());
+  if (!ok) return Error{"program " + p.label_ + " failed to link:\n" + infoLog(p.program_.id(), true)};
+  p.source_ = *vsText + *fsText;
+  return p;
+}
+
+GLint ShaderProgram::location(const char* name) {
+  auto it = locations_.find(name);
+  if (it != locations_.end()) return it->second;
+  const GLint loc = glGetUniformLocation(program_.id(), name);
+  if (loc < 0 && g_strict && !mentions(source_, name))
+    reportError("uniform '" + std::string(name) + "' is declared by no stage of program " + label_);
+  locations_.emplace(name, loc);
+  return loc;
+}
+
+void ShaderProgram::set(const char* n, int v) { glUniform1i(location(n), v); }
+void ShaderProgram::set(const char* n, float v) { glUniform1f(location(n), v); }
+void ShaderProgram::set(const char* n, const glm::vec2& v) { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::vec3& v) { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::vec4& v) { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::ivec2& v) { glUniform2iv(location(n), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::mat3& v) { glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* n, const glm::mat4& v) { glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
+void ShaderProgram::setArray(const char* n, const glm::vec4* v, int c) { glUniform4fv(location(n), c, glm::value_ptr(*v)); }
+void ShaderProgram::setArray(const char* n, const glm::vec3* v, int c) { glUniform3fv(location(n), c, glm::value_ptr(*v)); }
+void ShaderProgram::setArray(const char* n, const float* v, int c) { glUniform1fv(location(n), c, v); }
+void ShaderProgram::setArray(const char* n, const glm::ivec2* v, int c) { glUniform2iv(location(n), c, glm::value_ptr(*v)); }
+
+}  // namespace npr::gl

@@ -1,0 +1,91 @@
+// Feature-line drawing (see line_pass.h).
+#include "renderer/lines/line_pass.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+
+#include "renderer/gl/pass_state.h"
+
+namespace npr {
+namespace {
+
+void uploadLines(const gl::Buffer& buffer, const std::vector<FeatureLine>& lines, GLenum usage) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(FeatureLine)), lines.data(), usage);
+}
+
+}  // namespace
+
+void LinePass::setMesh(const Mesh* mesh) {
+  mesh_ = mesh;
+  edges_.reset();
+  uploadedCreaseAngle_ = -1.0f;
+  silhouetteEye_ = glm::vec3(NAN);
+  staticCount_ = creaseCount_ = silhouetteCount_ = 0;
+}
+
+Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, gl::ProgramCache& programs,
+                      FrameStats& stats) {
+  if (!ls.objectSpace() || !mesh_) return okStatus();
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
+  if (!vao_) {
+    vao_ = gl::createVertexArray();
+    staticLines_ = gl::createBuffer();
+    silhouettes_ = gl::createBuffer();
+  }
+  if ((ls.creases || ls.boundaries) && uploadedCreaseAngle_ != ls.creaseAngle) {
+    // Static lines are creases first, then boundaries: the parts asked for are drawn as ranges.
+    const auto& lines = edges_->staticLines(ls.creaseAngle);
+    uploadLines(staticLines_, lines, GL_STATIC_DRAW);
+    staticCount_ = lines.size();
+    creaseCount_ = static_cast<std::size_t>(
+        std::count_if(lines.begin(), lines.end(), [](const FeatureLine& l) { return l.kind == float(EdgeKind::Crease); }));
+    uploadedCreaseAngle_ = ls.creaseAngle;
+    ++stats.bufferUploads;
+  }
+  const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
+  if (ls.silhouettes && !(eye == silhouetteEye_)) {
+    const auto& lines = edges_->silhouettes(eye);
+    uploadLines(silhouettes_, lines, GL_STREAM_DRAW);
+    silhouetteCount_ = lines.size();
+    silhouetteEye_ = eye;
+    ++stats.bufferUploads;
+  }
+  stats.cpuLinesMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+
+  Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{ls.sketchy, ls.depthFalloff}, stats.shaderBuilds);
+  if (!prog) return Error{prog.error()};
+  gl::ShaderProgram& p = **prog;
+  gl::apply(gl::pass::kLines);
+  p.use();
+  p.set("uModelViewProjection", camera.projection * camera.view);
+  p.set("uViewport", glm::vec2(viewport.z, viewport.w));
+  p.set("uWidth", std::max(ls.width, 0.5f));
+  const glm::vec3 colours[3] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour};
+  p.setArray("uColours", colours, 3);
+  p.set("uFalloffDepth", glm::length(eye));
+  glBindVertexArray(vao_.id());
+  // Sketchy lines draw each edge three times, jittered differently in the shader.
+  const int repeat = ls.sketchy ? 3 : 1;
+  auto drawRange = [&](const gl::Buffer& buffer, std::size_t first, std::size_t count) {
+    if (count == 0) return;
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    const auto base = static_cast<std::uintptr_t>(first * sizeof(FeatureLine));
+    for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, a)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, b)));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, kind)));
+    for (GLuint a = 0; a < 3; ++a) glVertexAttribDivisor(a, GLuint(repeat));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count) * repeat);
+    stats.lines += static_cast<int>(count);
+    ++stats.drawCalls;
+  };
+  if (ls.silhouettes) drawRange(silhouettes_, 0, silhouetteCount_);
+  if (ls.creases) drawRange(staticLines_, 0, creaseCount_);
+  if (ls.boundaries) drawRange(staticLines_, creaseCount_, staticCount_ - creaseCount_);
+  return okStatus();
+}
+
+}  // namespace npr

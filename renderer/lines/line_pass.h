@@ -1,0 +1,40 @@
+// Object-space feature lines drawn over any path: silhouettes, creases and boundaries from
+// FeatureEdges, as screen-space quads of a fixed pixel width (core profiles have no wide
+// lines), depth-tested against the model. Adjacency is built on first use per mesh; creases
+// and boundaries are uploaded once per mesh and angle, silhouettes when the eye moves.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/camera.h"
+#include "renderer/core/frame_stats.h"
+#include "renderer/core/result.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/lines/feature_edges.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/render_settings.h"
+
+namespace npr {
+
+class LinePass {
+ public:
+  // Forgets the previous mesh's lines (they are rebuilt on the next draw).
+  void setMesh(const Mesh* mesh);
+  [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport,
+                            gl::ProgramCache& programs, FrameStats& stats);
+
+ private:
+  const Mesh* mesh_ = nullptr;
+  std::unique_ptr<FeatureEdges> edges_;
+  gl::VertexArray vao_;
+  gl::Buffer staticLines_, silhouettes_;
+  std::size_t staticCount_ = 0, creaseCount_ = 0, silhouetteCount_ = 0;
+  float uploadedCreaseAngle_ = -1.0f;
+  glm::vec3 silhouetteEye_{NAN};
+};
+
+}  // namespace npr

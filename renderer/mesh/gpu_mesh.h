@@ -1,0 +1,41 @@
+// A mesh on the GPU: positions and normals (attributes 0 and 1 of mesh.vert), its index
+// buffer, and the vertex array that binds them. Draws the whole mesh or a range of triangles
+// of another index buffer over the same vertices (the per-triangle paths' buckets).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "renderer/core/camera.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/shader_program.h"
+#include "renderer/mesh/mesh.h"
+
+namespace npr {
+
+class GpuMesh {
+ public:
+  // Uploads `mesh` (replacing what was there); an empty mesh leaves nothing to draw.
+  void upload(const Mesh& mesh);
+  void clear();
+  bool empty() const { return triangleCount_ == 0; }
+  std::size_t triangleCount() const { return triangleCount_; }
+
+  // Binds the vertex array with the mesh's own indices and draws every triangle.
+  void drawAll() const;
+  // Binds the vertex array with `indices` (3 per triangle, over this mesh's vertices).
+  void bindIndices(const gl::Buffer& indices) const;
+  // Draws `count` triangles from triangle `first` of the bound index buffer.
+  void drawTriangles(std::uint32_t first, std::uint32_t count) const;
+
+ private:
+  gl::VertexArray vao_;
+  gl::Buffer positions_, normals_, indices_;
+  std::size_t triangleCount_ = 0;
+};
+
+// mesh.vert's transform uniforms. The mesh is already centred and scaled, so the modelview is
+// the camera's view.
+void setMeshTransform(gl::ShaderProgram& program, const CameraMatrices& camera);
+
+}  // namespace npr

@@ -1,0 +1,160 @@
+// Palette upload, lookup tables and binding (see gpu_palette.h).
+#include "renderer/palette/gpu_palette.h"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+
+#include "renderer/gl/texture.h"
+#include "renderer/gl/texture_units.h"
+
+namespace npr {
+namespace {
+
+using gl::TextureUnit;
+
+// Images are stored top row first; GL's rows start at the bottom of the screen.
+const std::uint8_t* flipRows(const ImageRGBA8& img, std::vector<std::uint8_t>& out) {
+  const size_t row = static_cast<size_t>(img.width) * 4;
+  out.resize(img.pixels.size());
+  for (int y = 0; y < img.height; ++y)
+    std::memcpy(&out[static_cast<size_t>(img.height - 1 - y) * row], &img.pixels[static_cast<size_t>(y) * row], row);
+  return out.data();
+}
+
+unsigned nextMatcherId() {
+  static unsigned id = 0;
+  return ++id;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
+  const int n = static_cast<int>(p.entries.size());
+  if (n < 1 || n > kMaxPaletteEntries) return Error{"palette must have 1.." + std::to_string(kMaxPaletteEntries) + " entries"};
+  GLint maxLayers = 0, maxSize = 0;
+  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (n > maxLayers) return Error{"palette has " + std::to_string(n) + " entries; this GPU holds " + std::to_string(maxLayers) + " layers"};
+  std::unique_ptr<GpuPalette> gp(new GpuPalette());
+  int w = 1, h = 1;
+  for (const auto& e : p.entries) {
+    w = std::max(w, e.image.width);
+    h = std::max(h, e.image.height);
+    gp->layerSizes_.push_back({e.image.width, e.image.height});
+    gp->sizesDiffer_ |= gp->layerSizes_.back() != gp->layerSizes_.front();
+  }
+  if (w > maxSize || h > maxSize)
+    return Error{"palette texture " + std::to_string(w) + "x" + std::to_string(h) + " exceeds this GPU's limit " + std::to_string(maxSize)};
+  const ImageRGBA8* bg = p.backgroundImage ? &*p.backgroundImage : nullptr;
+  // Precompositing each layer over the background is exact when the background is a solid
+  // colour or an image the size of every layer (both tile from the same screen corner).
+  gp->precomposited_ = !bg || (!gp->sizesDiffer_ && bg->width == w && bg->height == h);
+  gp->backgroundColour_ = p.backgroundColour;
+  gp->averages_ = p.averages();
+  std::vector<std::uint8_t> flipped;
+  gp->layers_ = gl::createTexture();
+  glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Palette));
+  glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers_.id());
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (int i = 0; i < n; ++i) {
+    const ImageRGBA8& src = p.entries[static_cast<size_t>(i)].image;
+    const ImageRGBA8 img = gp->precomposited_ ? compositeOver(src, p.backgroundColour, bg) : src;
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, flipped));
+  }
+  gl::setNearestSingleLevel(GL_TEXTURE_2D_ARRAY);
+  if (bg) {
+    gp->backgroundImage_ = true;
+    gp->backgroundSize_ = {bg->width, bg->height};
+    gp->background_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Background));
+    glBindTexture(GL_TEXTURE_2D, gp->background_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bg->width, bg->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(*bg, flipped));
+    gl::setNearestSingleLevel(GL_TEXTURE_2D);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  if (glGetError() == GL_OUT_OF_MEMORY) return Error{"palette upload failed: out of GPU memory"};
+  return gp;
+}
+
+Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<float>& bands, FrameStats& stats) {
+  if (matcher_ && matcherKey_.mode == mode && matcherKey_.scale == scale && matcherKey_.bands == bands) return okStatus();
+  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, mode, scale, bands);
+  if (!m) return Error{m.error()};
+  matcher_ = std::move(*m);
+  matcherKey_ = {mode, scale, bands};
+  matcherId_ = nextMatcherId();
+  ++stats.lutBuilds;
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  if (mode == MatchMode::Colors) {
+    const int G = PaletteMatcher::kLut3DSize;
+    const std::vector<std::uint8_t> lut = matcher_->buildLut3D();
+    lut3D_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Lut3D));
+    glBindTexture(GL_TEXTURE_3D, lut3D_.id());
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RG8UI, G, G, G, 0, GL_RG_INTEGER, GL_UNSIGNED_BYTE, lut.data());
+    gl::setNearestSingleLevel(GL_TEXTURE_3D);
+  } else {
+    const int L = PaletteMatcher::kLut1DSize;
+    const std::vector<std::uint8_t> index = matcher_->buildLutIndex1D();
+    const std::vector<float> blend = matcher_->buildLutBlend1D();
+    lutIndex_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutIndex));
+    glBindTexture(GL_TEXTURE_2D, lutIndex_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, L, 1, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, index.data());
+    gl::setNearestSingleLevel(GL_TEXTURE_2D);
+    lutBlend_ = gl::createTexture();
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutBlend));
+    glBindTexture(GL_TEXTURE_2D, lutBlend_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, L, 1, 0, GL_RGBA, GL_FLOAT, blend.data());
+    gl::setNearestSingleLevel(GL_TEXTURE_2D);
+  }
+  glActiveTexture(GL_TEXTURE0);
+  ++stats.bufferUploads;
+  return okStatus();
+}
+
+gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
+  gl::PaletteVariant v;
+  v.size = size();
+  v.layerSizesDiffer = sizesDiffer_;
+  v.precomposited = precomposited_;
+  v.backgroundImage = backgroundImage_;
+  v.match = mode;
+  return v;
+}
+
+void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
+  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, layers_.id());
+  prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
+}
+
+void GpuPalette::bindBackground(gl::ShaderProgram& prog) const {
+  if (backgroundImage_) {
+    gl::bindTexture(TextureUnit::Background, GL_TEXTURE_2D, background_.id());
+    prog.set("uBackground", gl::unitIndex(TextureUnit::Background));
+    prog.set("uBackgroundSize", backgroundSize_);
+  } else {
+    prog.set("uBackgroundColour", backgroundColour_);
+  }
+}
+
+void GpuPalette::bind(gl::ShaderProgram& prog) const {
+  bindLayers(prog);
+  if (sizesDiffer_) prog.setArray("uLayerSize", layerSizes_.data(), size());
+  else prog.set("uLayerSize0", layerSizes_[0]);
+  bindBackground(prog);
+  if (matcher_ && matcher_->mode() == MatchMode::Colors) {
+    gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, lut3D_.id());
+    prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));
+    prog.setArray("uAverages", matcher_->scaledAverages().data(), size());
+  } else {
+    gl::bindTexture(TextureUnit::LutIndex, GL_TEXTURE_2D, lutIndex_.id());
+    prog.set("uLutIndex", gl::unitIndex(TextureUnit::LutIndex));
+    gl::bindTexture(TextureUnit::LutBlend, GL_TEXTURE_2D, lutBlend_.id());
+    prog.set("uLutBlend", gl::unitIndex(TextureUnit::LutBlend));
+  }
+}
+
+}  // namespace npr

@@ -1,0 +1,71 @@
+// A palette on the GPU: its entries as one texture array (layers precomposited over the
+// background where that is exact), the background image, and the matcher with its lookup
+// tables for the current match mode, range scale and bands. Binds all of it for palette.glsl
+// and says which palette variant a program must be compiled for.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/frame_stats.h"
+#include "renderer/core/result.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/program_variants.h"
+#include "renderer/gl/shader_program.h"
+#include "renderer/palette/palette.h"
+#include "renderer/palette/palette_matcher.h"
+
+namespace npr {
+
+class GpuPalette {
+ public:
+  // Uploads the whole palette or fails with a message (too many layers or too large for this
+  // GPU, out of GPU memory); nothing is half-made.
+  [[nodiscard]] static Result<std::unique_ptr<GpuPalette>> upload(const Palette& palette);
+
+  int size() const { return static_cast<int>(layerSizes_.size()); }
+  bool backgroundImage() const { return backgroundImage_; }
+  glm::ivec2 layerSize(int entry) const { return layerSizes_[static_cast<size_t>(entry)]; }
+
+  // Brings the matcher and its lookup tables up to date; rebuilt only when one of the three
+  // changed (counted in stats.lutBuilds and stats.bufferUploads).
+  [[nodiscard]] Status updateMatcher(MatchMode mode, float rangeScale, const std::vector<float>& bands, FrameStats& stats);
+  // Null until updateMatcher succeeded once.
+  const PaletteMatcher* matcher() const { return matcher_ ? &*matcher_ : nullptr; }
+  // Unique across palettes and rebuilds: what per-triangle results computed with it are keyed by.
+  unsigned matcherId() const { return matcherId_; }
+
+  gl::PaletteVariant variant(MatchMode mode) const;
+  // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms.
+  void bind(gl::ShaderProgram& program) const;
+  // Only the layer array (the stencil path's layer quad).
+  void bindLayers(gl::ShaderProgram& program) const;
+  // What quad.frag's background needs (an image or a colour).
+  void bindBackground(gl::ShaderProgram& program) const;
+
+ private:
+  GpuPalette() = default;
+  gl::Texture layers_;      // GL_TEXTURE_2D_ARRAY, RGBA8, one layer per entry
+  gl::Texture background_;  // GL_TEXTURE_2D, only for an image background
+  std::vector<glm::ivec2> layerSizes_;
+  bool sizesDiffer_ = false;
+  bool precomposited_ = false;
+  bool backgroundImage_ = false;
+  glm::vec3 backgroundColour_{1.0f};
+  glm::ivec2 backgroundSize_{1, 1};
+  std::vector<glm::vec3> averages_;
+
+  std::optional<PaletteMatcher> matcher_;
+  struct MatcherKey {
+    MatchMode mode = MatchMode::Intensity;
+    float scale = 0;
+    std::vector<float> bands;
+  } matcherKey_;
+  unsigned matcherId_ = 0;
+  gl::Texture lutIndex_, lutBlend_, lut3D_;
+};
+
+}  // namespace npr

@@ -1,0 +1,22 @@
+// The geometry pass (see geometry_pass.h).
+#include "renderer/passes/geometry_pass.h"
+
+#include "renderer/gl/pass_state.h"
+
+namespace npr {
+
+Status drawGeometry(const GpuMesh& mesh, const CameraMatrices& camera, GeometryOutput output, gl::ProgramCache& programs,
+                    FrameStats& stats) {
+  gl::MeshProgram variant;
+  variant.shading = output == GeometryOutput::EyePosition ? gl::MeshShading::EyePosition : gl::MeshShading::EyeNormal;
+  Result<gl::ShaderProgram*> prog = programs.get(variant, stats.shaderBuilds);
+  if (!prog) return Error{prog.error()};
+  gl::apply(gl::pass::kMesh);
+  (*prog)->use();
+  setMeshTransform(**prog, camera);
+  mesh.drawAll();
+  ++stats.drawCalls;
+  return okStatus();
+}
+
+}  // namespace npr

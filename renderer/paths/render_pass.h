@@ -1,0 +1,48 @@
+// The interface every render path implements, and the frame context it is called with.
+// A path draws the model into the bound framebuffer over the background the Renderer has
+// drawn; it owns whatever GPU state it needs beyond the shared resources in the context,
+// and sets its fixed-function state from the presets in gl/pass_state.h.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/camera.h"
+#include "renderer/core/frame_stats.h"
+#include "renderer/core/result.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/gpu_mesh.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/gpu_palette.h"
+#include "renderer/render_settings.h"
+#include "renderer/shading/triangle_shading_cache.h"
+
+namespace npr {
+
+struct FrameContext {
+  const CameraMatrices& camera;
+  glm::ivec4 viewport;  // x, y, width, height in the bound framebuffer
+  const RenderSettings& settings;
+  const LightingState& lighting;
+  const Mesh& mesh;                  // the CPU mesh (per-triangle shading, bounds)
+  const GpuMesh& gpuMesh;
+  const GpuPalette* palette;         // set whenever the path uses a palette
+  TriangleShadingCache& triangles;   // shared by the per-triangle paths
+  gl::ProgramCache& programs;
+  FrameStats& stats;
+  const gl::VertexArray& emptyVao;   // for full-screen triangles (vertices made in the shader)
+  // Palette paths write their texels, or the selection behind them (tests, the benchmark).
+  gl::MeshOutput output = gl::MeshOutput::Colour;
+
+  [[nodiscard]] Result<gl::ShaderProgram*> program(const gl::ProgramVariant& variant) {
+    return programs.get(variant, stats.shaderBuilds);
+  }
+};
+
+class RenderPass {
+ public:
+  virtual ~RenderPass() = default;
+  [[nodiscard]] virtual Status draw(FrameContext& frame) = 0;
+};
+
+}  // namespace npr

@@ -1,0 +1,37 @@
+// Single-pass GPU-lit paths (see shaded_path.h).
+#include "renderer/paths/shaded_path.h"
+
+#include "renderer/gl/pass_state.h"
+#include "renderer/lighting/lighting_uniforms.h"
+
+namespace npr {
+
+Status ShadedPath::draw(FrameContext& f) {
+  gl::MeshProgram variant;
+  switch (kind_) {
+    case Kind::Vertex: variant.shading = gl::MeshShading::Vertex; break;
+    case Kind::Pixel: variant.shading = gl::MeshShading::Pixel; break;
+    case Kind::Smooth: variant.shading = gl::MeshShading::Smooth; break;
+    case Kind::LitTextured: variant.shading = gl::MeshShading::LitTextured; break;
+    case Kind::Reference:
+      variant.shading = f.settings.referenceGouraud ? gl::MeshShading::Gouraud : gl::MeshShading::Phong;
+      break;
+  }
+  const bool usesPalette = kind_ != Kind::Reference;
+  variant.output = f.output;
+  variant.lighting = f.lighting.features();
+  if (usesPalette) variant.palette = f.palette->variant(f.settings.match);
+  Result<gl::ShaderProgram*> prog = f.program(variant);
+  if (!prog) return Error{prog.error()};
+  gl::ShaderProgram& p = **prog;
+  gl::apply(gl::pass::kMesh);
+  p.use();
+  setMeshTransform(p, f.camera);
+  uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
+  if (usesPalette) f.palette->bind(p);
+  f.gpuMesh.drawAll();
+  ++f.stats.drawCalls;
+  return okStatus();
+}
+
+}  // namespace npr

@@ -1,0 +1,32 @@
+// The one-pass per-triangle path (see triangle_path.h).
+#include "renderer/paths/triangle_path.h"
+
+#include "renderer/gl/pass_state.h"
+
+namespace npr {
+
+Status TrianglePath::draw(FrameContext& f) {
+  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats);
+  gl::MeshProgram variant;
+  variant.shading = gl::MeshShading::Triangle;  // lit on the CPU: no lighting in the shader
+  variant.output = f.output;
+  variant.palette = f.palette->variant(f.settings.match);
+  Result<gl::ShaderProgram*> prog = f.program(variant);
+  if (!prog) return Error{prog.error()};
+  gl::ShaderProgram& p = **prog;
+  gl::apply(gl::pass::kMesh);
+  p.use();
+  setMeshTransform(p, f.camera);
+  f.palette->bind(p);
+  f.gpuMesh.bindIndices(f.triangles.bucketIndices());
+  for (int k = 0; k < f.palette->size(); ++k) {
+    const std::uint32_t count = f.triangles.bucketCount(k);
+    if (count == 0) continue;
+    p.set("uEntry", k);
+    f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
+    ++f.stats.drawCalls;
+  }
+  return okStatus();
+}
+
+}  // namespace npr

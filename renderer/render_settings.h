@@ -1,0 +1,42 @@
+// What the user chooses: the render path, matching, stencil refinements and lines. Only user
+// settings live here; the test and benchmark outputs are their own calls on the Renderer.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/palette/palette.h"
+#include "renderer/paths/path_table.h"
+
+namespace npr {
+
+// Lines drawn over any path (object-space feature edges, lines/feature_edges.h; image-space
+// edges, lines/image_edges_pass.h).
+struct LineSettings {
+  bool silhouettes = false, creases = false, boundaries = false;
+  float creaseAngle = 60.0f;  // degrees
+  float width = 2.0f;         // pixels
+  glm::vec3 silhouetteColour{0.0f}, creaseColour{1.0f}, boundaryColour{0.15f, 0.1f, 0.05f};
+  bool depthFalloff = false;
+  bool sketchy = false;
+  // Image space: Sobel on the depth and normal buffers, thresholded, drawn as a post-process.
+  bool imageSpace = false;
+  float imageThreshold = 0.4f;
+  bool objectSpace() const { return silhouettes || creases || boundaries; }
+  bool any() const { return objectSpace() || imageSpace; }
+};
+
+struct RenderSettings {
+  RenderPath path = RenderPath::Pixel;
+  MatchMode match = MatchMode::Intensity;
+  float rangeScale = 1.0f;
+  std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
+  bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
+  // Stencil path refinements over the original (off = the naive full-screen version):
+  bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
+  bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
+  LineSettings lines;
+};
+
+}  // namespace npr

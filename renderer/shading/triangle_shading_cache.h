@@ -1,0 +1,62 @@
+// The per-triangle paths' CPU work, done only when its inputs changed: the entries and
+// buckets of shadeTriangles (recomputed when the lighting as seen from the object, the
+// matcher or the mesh changed), the bucketed index buffer on the GPU (uploaded when the
+// buckets changed), and the stencil path's scissor rectangles (vertices projected when the
+// view changed, bounds rebuilt when the view or the buckets changed).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/frame_stats.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/palette_matcher.h"
+#include "renderer/shading/triangle_shading.h"
+
+namespace npr {
+
+class TriangleShadingCache {
+ public:
+  // Forgets everything computed for the previous mesh.
+  void setMesh(const Mesh* mesh);
+  // Entries and buckets for this frame, and the bucketed index buffer.
+  void update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
+              FrameStats& stats);
+  // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
+  // viewport of `size` pixels.
+  void updateBounds(const glm::mat4& modelViewProjection, const glm::ivec2& size, FrameStats& stats);
+
+  const TriangleShading& shading() const { return shading_; }
+  // Vertex indices grouped by bucket; bucket k is bucketCount(k) triangles from bucketFirst(k).
+  const gl::Buffer& bucketIndices() const { return bucketIndices_; }
+  std::uint32_t bucketFirst(int k) const { return shading_.bucketStart[static_cast<size_t>(k)]; }
+  std::uint32_t bucketCount(int k) const {
+    return shading_.bucketStart[static_cast<size_t>(k) + 1] - shading_.bucketStart[static_cast<size_t>(k)];
+  }
+
+ private:
+  const Mesh* mesh_ = nullptr;
+  unsigned meshId_ = 0;  // bumped per setMesh
+  TriangleShading shading_;
+  gl::Buffer bucketIndices_;
+  struct Key {
+    unsigned mesh = 0, matcher = 0;
+    PreparedLighting<float> lighting;
+    bool valid = false;
+  } key_;
+  bool bucketsUploaded_ = false;
+  // Scissor bounds: vertices projected once per view, bounds once per change of the buckets
+  // or the view.
+  std::vector<glm::vec2> screenVertices_;
+  glm::mat4 projectedWith_{0.0f};
+  glm::ivec2 projectedSize_{0};
+  unsigned projectedMesh_ = 0;
+  bool boundsValid_ = false;
+};
+
+}  // namespace npr
