@@ -41,7 +41,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
-  app.add_option("--path", path, "Render path: stencil|triangle|vertex|pixel|smooth|reference");
+  app.add_option("--path", path, "Render path: " + userRenderPathNames("|"));
+  app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
   app.add_option("--match", match, "Match mode: colors|intensity|order (default: the palette's); --benchmark also takes all");
   app.add_option("--range-scale", rangeScale, "IntensityRangeScale S > 0: spreads the palette about its midpoint");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
@@ -73,7 +74,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   }
   if (!path.empty()) {
     o.path = parseRenderPath(path);
-    if (!o.path || *o.path == RenderPath::LitTextured) return {std::nullopt, fail("unknown --path '" + path + "': use stencil, triangle, vertex, pixel, smooth or reference")};
+    if (!o.path || !pathInfo(*o.path).userSelectable)
+      return {std::nullopt, fail("unknown --path '" + path + "': use one of " + userRenderPathNames())};
   }
   if (!match.empty() && match == "all" && o.benchmark) {
     o.allMatchModes = true;
@@ -150,6 +152,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!o.paletteInfo.empty() && !std::filesystem::exists(o.paletteInfo))
     return {std::nullopt, fail("palette file '" + o.paletteInfo + "' does not exist")};
   return {o, 0};
+}
+
+int reportFailure(const std::string& message) {
+  std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());
+  return 1;
 }
 
 }  // namespace npr

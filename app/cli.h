@@ -17,6 +17,7 @@ struct Options {
   std::vector<std::string> models;  // the first is shown; --benchmark uses all
   std::vector<std::string> palettes;
   std::optional<RenderPath> path;
+  bool listPaths = false;
   std::optional<MatchMode> match;
   std::optional<float> rangeScale;
   glm::ivec2 size{1280, 720};
@@ -47,5 +48,9 @@ struct ParseOutcome {
   int exitCode = 0;
 };
 ParseOutcome parseCommandLine(int argc, char** argv);
+
+// The app's one way of ending on a runtime failure (a file that fails to load, a render that
+// fails, no display): prints "npr-viewer: MESSAGE" on stderr and returns exit status 1.
+int reportFailure(const std::string& message);
 
 }  // namespace npr

@@ -1,17 +1,18 @@
 // npr-viewer: parses the command line and hands over to the window, --headless, --info,
-// --palette-info or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
+// --palette-info, --list-paths or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
 // 2 bad arguments.
 #include <cstdio>
 
-#include "app/benchmark_run.h"
+#include "app/benchmark/benchmark_run.h"
 #include "app/cli.h"
-#include "app/headless_run.h"
-#include "app/window_viewer.h"
+#include "app/headless/headless_run.h"
+#include "app/window/window_viewer.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette.h"
+#include "renderer/paths/path_table.h"
 
 #if defined(__SANITIZE_ADDRESS__)
-// See tests/gl_test_env.cpp: Mesa's unloaded driver would be reported as leaking.
+// See tests/gl/gl_test_env.cpp: Mesa's unloaded driver would be reported as leaking.
 extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 #endif
 
@@ -20,12 +21,17 @@ int main(int argc, char** argv) {
   if (!parsed.options) return parsed.exitCode;
   const npr::Options& o = *parsed.options;
 
+  if (o.listPaths) {
+    for (const npr::PathInfo& p : npr::renderPaths())
+      std::printf("%s\t%s\t%s\n", p.name, p.userSelectable ? "user" : "internal", p.label);
+    return 0;
+  }
   if (o.info) {
     if (o.models.empty()) {
       std::fprintf(stderr, "npr-viewer: --info needs a MODEL file\n");
       return 2;
     }
-    npr::Result<npr::Mesh> m = npr::loadMesh(o.models.front());
+    npr::Result<npr::Mesh> m = npr::loadModel(o.models.front());
     if (!m) {
       std::fprintf(stderr, "npr-viewer: %s\n", m.error().c_str());
       return 1;

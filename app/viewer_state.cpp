@@ -89,12 +89,13 @@ glm::vec3 ViewerState::lightWorldPosition(const CameraMatrices& camera) const {
   return glm::vec3(glm::inverse(camera.view) * glm::vec4(light, 1.0f));
 }
 
-void ViewerState::applyLight(Renderer& renderer, const CameraMatrices& camera) const {
+Status ViewerState::applyLight(Renderer& renderer, const CameraMatrices& camera) const {
   LightingState& l = renderer.lighting();
   const float pos[4] = {light.x, light.y, light.z, 1.0f};
   l.setModelView(lightFollowsCamera ? glm::mat4(1.0f) : camera.view);
-  l.Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  Status st = l.Lightfv(GL_LIGHT0, GL_POSITION, pos);
   l.setModelView(camera.view);
+  return st;
 }
 
 }  // namespace npr

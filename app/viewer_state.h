@@ -41,8 +41,9 @@ struct ViewerState {
   void note(const std::string& message);
 
   // Sets the light for this frame's view (OpenGL semantics: the position is transformed by
-  // the modelview current when it is set).
-  void applyLight(Renderer& renderer, const CameraMatrices& camera) const;
+  // the modelview current when it is set). Fails, leaving the light where it was, when the
+  // position is not finite.
+  [[nodiscard]] Status applyLight(Renderer& renderer, const CameraMatrices& camera) const;
   glm::vec3 lightWorldPosition(const CameraMatrices& camera) const;
 };
 

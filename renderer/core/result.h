@@ -14,7 +14,7 @@ struct Error {
 };
 
 template <class T>
-class Result {
+class [[nodiscard]] Result {
  public:
   Result(T value) : value_(std::move(value)) {}          // NOLINT: implicit by design
   Result(Error error) : error_(std::move(error.message)) {}  // NOLINT: implicit by design

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/benchmark/interleaved_timing.h"
 #include "bench_common.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/gl/headless_context.h"
@@ -42,65 +43,11 @@ Palette paletteOf(const Palette& base, int n) {
   return p;
 }
 
-struct Timing {
-  double medianMs = 0, p95Ms = 0, cpuMs = 0, shadingMs = 0, gpuMs = 0;
-};
-
 struct PathRow {
-  const char* label;
+  std::string label;
   RenderPath path;
   bool skipEmpty = true, scissor = true;  // the stencil path's two savings
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return -1.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// Frames of every path interleaved, one frame of each in turn: the machine's load drifts over
-// seconds, and timing each path in its own block made ratios swing by 30%. The light moves
-// before every frame, so each per-triangle path redoes its CPU work (as while a user drags
-// the light) rather than reusing what the path before it computed.
-std::vector<Timing> timeFrames(Renderer& r, OffscreenTarget& target, const std::vector<PathRow>& paths,
-                               const OrbitCamera& camera, int frames) {
-  const float aspect = float(target.width()) / float(target.height());
-  const CameraMatrices cam = camera.matrices(aspect);
-  std::vector<std::vector<double>> wall(paths.size()), cpu(paths.size()), shading(paths.size()), gpu(paths.size());
-  int call = 0;
-  for (int f = -2; f < frames; ++f) {  // two warm-up rounds compile and upload
-    for (size_t p = 0; p < paths.size(); ++p) {
-      RenderSettings s;
-      s.path = paths[p].path;
-      s.match = MatchMode::Intensity;
-      s.stencilScissor = paths[p].scissor;
-      s.stencilSkipEmpty = paths[p].skipEmpty;
-      const float angle = 0.6f + 0.002f * float(call++);
-      const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
-      r.lighting().setModelView(cam.view);
-      (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
-      target.bind();
-      const auto t0 = std::chrono::steady_clock::now();
-      (void)r.render(cam, s, {0, 0, target.width(), target.height()});
-      finishGpuWork();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      r.collectGpuTime();
-      if (f < 0) continue;
-      wall[p].push_back(ms);
-      cpu[p].push_back(r.stats().cpuFrameMs);
-      shading[p].push_back(r.stats().cpuShadingMs);
-      if (r.stats().gpuMs >= 0) gpu[p].push_back(r.stats().gpuMs);
-    }
-  }
-  std::vector<Timing> out;
-  for (size_t p = 0; p < paths.size(); ++p) {
-    std::vector<double> sorted = wall[p];
-    std::sort(sorted.begin(), sorted.end());
-    out.push_back({median(wall[p]), sorted[std::min(sorted.size() - 1, size_t(double(sorted.size()) * 0.95))], median(cpu[p]),
-                   median(shading[p]), median(gpu[p])});
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -150,15 +97,19 @@ int main(int argc, char** argv) {
   if ((meshFilter.empty() && !quick) || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});
   // stencil-unbounded skips empty buckets but draws full-screen quads; stencil-naive does
   // neither (the original): the rows between them show what each saving is worth.
-  const std::vector<PathRow> allPaths = {{"reference", RenderPath::Reference},
-                                         {"lit-textured", RenderPath::LitTextured},
-                                         {"stencil", RenderPath::Stencil},
-                                         {"stencil-unbounded", RenderPath::Stencil, true, false},
-                                         {"stencil-naive", RenderPath::Stencil, false, false},
-                                         {"triangle", RenderPath::Triangle},
-                                         {"vertex", RenderPath::Vertex},
-                                         {"pixel", RenderPath::Pixel},
-                                         {"smooth", RenderPath::Smooth}};
+  // From the path table: the two floors (the paths without a palette or not offered to
+  // users: reference, lit-textured) first, then every palette path.
+  std::vector<PathRow> allPaths;
+  for (const PathInfo& p : renderPaths())
+    if (!(p.userSelectable && p.usesPalette)) allPaths.push_back({p.name, p.id});
+  for (const PathInfo& p : renderPaths()) {
+    if (!(p.userSelectable && p.usesPalette)) continue;
+    allPaths.push_back({p.name, p.id});
+    if (p.id == RenderPath::Stencil) {
+      allPaths.push_back({"stencil-unbounded", RenderPath::Stencil, true, false});
+      allPaths.push_back({"stencil-naive", RenderPath::Stencil, false, false});
+    }
+  }
   for (size_t at = 1; at < pathFilter.size();) {
     const size_t end = pathFilter.find(',', at);
     const std::string name = pathFilter.substr(at, end - at);
@@ -170,8 +121,8 @@ int main(int argc, char** argv) {
   }
   std::vector<PathRow> paths;
   for (const PathRow& p : allPaths)
-    if (pathFilter.empty() || p.path == RenderPath::Reference || p.path == RenderPath::LitTextured ||
-        pathFilter.find("," + std::string(p.label) + ",") != std::string::npos)
+    if (pathFilter.empty() || !pathInfo(p.path).userSelectable || !pathInfo(p.path).usesPalette ||
+        pathFilter.find("," + p.label + ",") != std::string::npos)
       paths.push_back(p);
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
@@ -182,10 +133,29 @@ int main(int argc, char** argv) {
     cam.frame(sc.mesh->radius);
     for (int n : sizes) {
       if (!r.setPalette(paletteOf(*crosshatch, n))) return 1;
-      const std::vector<Timing> t = timeFrames(r, *target, paths, cam, frames);
+      // The light moves before every frame, so each per-triangle path redoes its CPU work (as
+      // while a user drags the light) rather than reusing what the path before it computed.
+      const CameraMatrices matrices = cam.matrices(float(w) / float(h));
+      int call = 0, failed = 0;
+      const std::vector<FrameTiming> t = timeInterleaved(r, *target, paths.size(), frames, 2, [&](size_t p, int) {
+        RenderSettings s;
+        s.path = paths[p].path;
+        s.match = MatchMode::Intensity;
+        s.stencilScissor = paths[p].scissor;
+        s.stencilSkipEmpty = paths[p].skipEmpty;
+        const float angle = 0.6f + 0.002f * float(call++);
+        const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
+        r.lighting().setModelView(matrices.view);
+        if (!r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos)) ++failed;
+        return TimedFrame{matrices, s};
+      }, failed);
+      if (failed) {
+        std::fprintf(stderr, "bench_frames: %d frame(s) failed\n", failed);
+        return 1;
+      }
       const double reference = t[0].medianMs, litTextured = t[1].medianMs;
       for (size_t p = 0; p < paths.size(); ++p) {
-        std::printf("| %s | %d | %s | %.1f | %.1f | %.1f | %.1f | %s | %.2f | %.2f |\n", sc.name, n, paths[p].label, t[p].medianMs,
+        std::printf("| %s | %d | %s | %.1f | %.1f | %.1f | %.1f | %s | %.2f | %.2f |\n", sc.name, n, paths[p].label.c_str(), t[p].medianMs,
                     t[p].p95Ms, t[p].cpuMs, t[p].shadingMs, t[p].gpuMs >= 0 ? std::to_string(t[p].gpuMs).substr(0, 5).c_str() : "n/a",
                     t[p].medianMs / reference, t[p].medianMs / litTextured);
       }

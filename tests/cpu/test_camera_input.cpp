@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "app/frame_timer.h"
-#include "app/input_map.h"
+#include "app/window/frame_timer.h"
+#include "app/window/input_map.h"
 #include "renderer/core/camera.h"
 
 namespace npr {

@@ -5,7 +5,12 @@ set -u
 viewer="$1"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail=0
-for path in stencil triangle vertex pixel smooth reference; do
+# The user-selectable paths, from the binary's own path table.
+paths=$("$viewer" --list-paths | awk -F'\t' '$2 == "user" { print $1 }')
+for needed in stencil triangle pixel smooth reference; do  # the comparisons below use these
+  echo "$paths" | grep -qx "$needed" || { echo "FAIL: --list-paths lacks $needed: $paths"; fail=1; }
+done
+for path in $paths; do
   for match in colors intensity order; do
     if ! "$viewer" --headless --frames 3 --size 200x150 --path $path --match $match --screenshot "$tmp/$path-$match.png" 2>"$tmp/err"; then
       echo "FAIL: $path/$match: $(cat "$tmp/err")"; fail=1; continue

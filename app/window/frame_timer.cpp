@@ -1,5 +1,5 @@
 // Frame-time statistics (see frame_timer.h).
-#include "app/frame_timer.h"
+#include "app/window/frame_timer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Key-to-action table (see input_map.h).
-#include "app/input_map.h"
+#include "app/window/input_map.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

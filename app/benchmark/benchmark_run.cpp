@@ -5,7 +5,7 @@
 // [SECTION] Speed
 // [SECTION] Outputs: CSV, Markdown, plot
 // [SECTION] Driver
-#include "app/benchmark_run.h"
+#include "app/benchmark/benchmark_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -16,7 +16,8 @@
 #include <map>
 #include <sstream>
 
-#include "app/headless_run.h"
+#include "app/benchmark/interleaved_timing.h"
+#include "app/headless/headless_session.h"
 #include "app/viewer_state.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/headless_context.h"
@@ -61,17 +62,6 @@ class ErrorStats {
   std::vector<std::uint64_t> bins_;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return -1.0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-double percentile95(std::vector<double> v) {
-  if (v.empty()) return -1.0;
-  std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, static_cast<size_t>(0.95 * double(v.size())))];
-}
-
 struct PathResult {
   RenderPath path;
   // speed
@@ -88,7 +78,7 @@ struct ConfigResult {
   std::string errorUnit;
   std::vector<PathResult> paths;
   std::uint64_t nonFinite = 0;
-  std::vector<std::string> failures;  // renders that returned an error
+  std::vector<std::string> failures;  // renders and state changes that returned an error
   int staticFrames = 0, staticRecomputes = 0, staticUploads = 0, staticBuilds = 0;
   double lightMinimalMs = 0, lightFullMs = 0;
 };
@@ -106,17 +96,23 @@ MotionFrame motion(float frame, int frames, const OrbitCamera& base, float aspec
   return {cam.matrices(aspect), glm::vec3(2.5f * std::cos(a), 2.0f, 2.5f * std::sin(a))};
 }
 
-void setLight(Renderer& r, const MotionFrame& m) {
+Status setLight(Renderer& r, const MotionFrame& m) {
   const float pos[4] = {m.light.x, m.light.y, m.light.z, 1.0f};
   r.lighting().setModelView(m.camera.view);
-  (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  return r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+}
+
+// Benchmark runs go on past a failed call, but the run then fails and says why.
+void expectOk(const Status& s, std::vector<std::string>& failures) {
+  if (!s) failures.push_back(s.error());
 }
 
 // ---------------------------------------------------------------------------------------
 // [SECTION] Accuracy
 
-const std::vector<RenderPath> kPalettePaths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel,
-                                               RenderPath::Smooth};
+// The paths measured for accuracy: every palette path a user can pick (from the path table).
+// The others (the reference and the internal floor) are timed only.
+bool measuredForAccuracy(const PathInfo& p) { return p.userSelectable && p.usesPalette; }
 
 bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
@@ -133,16 +129,15 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
   std::vector<glm::dvec3> idealColour(n), prevIdealColour(n);
   for (int f = 0; f < frames; ++f) {
     const MotionFrame m = motion(float(f), frames, base, aspect);
-    setLight(r, m);
+    expectOk(setLight(r, m), out.failures);
     auto geometry = [&](GeometryOutput o) {
       target->clear(glm::vec4(0.0f));
-      if (Status st = r.renderGeometry(m.camera, o, {0, 0, size.x, size.y}); !st) out.failures.push_back(st.error());
+      expectOk(r.renderGeometry(m.camera, o, {0, 0, size.x, size.y}), out.failures);
       return target->readRGBA32F();
     };
     auto selection = [&](const RenderSettings& s) {
       target->clear(glm::vec4(0.0f));
-      if (Status st = r.renderSelection(m.camera, s, SelectionOutput::Blend, {0, 0, size.x, size.y}); !st)
-        out.failures.push_back(st.error());
+      expectOk(r.renderSelection(m.camera, s, SelectionOutput::Blend, {0, 0, size.x, size.y}), out.failures);
       return target->readRGBA32F();
     };
     const ImageRGBA32F pos = geometry(GeometryOutput::EyePosition);
@@ -225,39 +220,31 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
 // ---------------------------------------------------------------------------------------
 // [SECTION] Speed
 
-// Frames of every path interleaved, one of each in turn: the machine's load drifts over
-// seconds, and timing each path in its own block made their ratios swing. Each path's frame
-// is a fraction of a frame further along the motion, so every per-triangle path redoes its
-// CPU work instead of reusing what the path before it computed for the same light.
+// Each path's frame is a fraction of a frame further along the motion, so every per-triangle
+// path redoes its CPU work instead of reusing what the path before it computed for the same
+// light.
 void measureSpeed(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
-                  const std::vector<PathResult*>& paths) {
+                  const std::vector<PathResult*>& paths, std::vector<std::string>& failures) {
   auto target = OffscreenTarget::create(size.x, size.y);
-  if (!target) return;
-  const float aspect = float(size.x) / float(size.y);
-  std::vector<std::vector<double>> wall(paths.size()), cpu(paths.size()), gpu(paths.size());
-  for (int f = -2; f < frames; ++f) {
-    for (size_t p = 0; p < paths.size(); ++p) {
-      RenderSettings s = settings;
-      s.path = paths[p]->path;
-      const MotionFrame m = motion(float(std::max(f, 0)) + float(p) / float(paths.size()), frames, base, aspect);
-      setLight(r, m);
-      target->bind();
-      const auto t0 = std::chrono::steady_clock::now();
-      (void)r.render(m.camera, s, {0, 0, size.x, size.y});
-      finishGpuWork();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-      r.collectGpuTime();
-      if (f < 0) continue;  // warm-up: shader builds and uploads
-      wall[p].push_back(ms);
-      cpu[p].push_back(r.stats().cpuFrameMs);
-      if (r.stats().gpuMs >= 0) gpu[p].push_back(r.stats().gpuMs);
-    }
+  if (!target) {
+    failures.push_back(target.error());
+    return;
   }
+  const float aspect = float(size.x) / float(size.y);
+  int failed = 0;
+  const std::vector<FrameTiming> t = timeInterleaved(r, *target, paths.size(), frames, 2, [&](size_t p, int f) {
+    RenderSettings s = settings;
+    s.path = paths[p]->path;
+    const MotionFrame m = motion(float(std::max(f, 0)) + float(p) / float(paths.size()), frames, base, aspect);
+    expectOk(setLight(r, m), failures);
+    return TimedFrame{m.camera, s};
+  }, failed);
+  if (failed) failures.push_back(std::to_string(failed) + " frame(s) failed to render while timing");
   for (size_t p = 0; p < paths.size(); ++p) {
-    paths[p]->medianMs = median(wall[p]);
-    paths[p]->p95Ms = percentile95(wall[p]);
-    paths[p]->cpuMs = median(cpu[p]);
-    paths[p]->gpuMs = median(gpu[p]);
+    paths[p]->medianMs = t[p].medianMs;
+    paths[p]->p95Ms = t[p].p95Ms;
+    paths[p]->cpuMs = t[p].cpuMs;
+    paths[p]->gpuMs = t[p].gpuMs;
   }
 }
 
@@ -266,13 +253,14 @@ void measureStaticFrames(Renderer& r, const OrbitCamera& base, glm::ivec2 size, 
   auto target = OffscreenTarget::create(size.x, size.y);
   if (!target) return;
   const MotionFrame m = motion(0, 1, base, float(size.x) / float(size.y));
-  for (RenderPath p : kPalettePaths) {
+  for (const PathInfo& p : renderPaths()) {
+    if (!measuredForAccuracy(p)) continue;
     RenderSettings s = settings;
-    s.path = p;
+    s.path = p.id;
     for (int f = 0; f < 6; ++f) {
-      setLight(r, m);  // re-set every frame, as the viewer does: unchanged values cost nothing
+      expectOk(setLight(r, m), out.failures);  // re-set every frame, as the viewer does: unchanged values cost nothing
       target->bind();
-      (void)r.render(m.camera, s, {0, 0, size.x, size.y});
+      expectOk(r.render(m.camera, s, {0, 0, size.x, size.y}), out.failures);
       if (f == 0) continue;
       ++out.staticFrames;
       out.staticRecomputes += r.stats().lightingRecomputes;
@@ -291,22 +279,22 @@ void measureFeatureCost(Renderer& r, const OrbitCamera& base, glm::ivec2 size, i
   LightingState& l = r.lighting();
   l = LightingState();
   const float black[4] = {0, 0, 0, 1};
-  (void)l.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
-  measureSpeed(r, base, size, frames, settings, {&pr});
+  expectOk(l.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black), out.failures);
+  measureSpeed(r, base, size, frames, settings, {&pr}, out.failures);
   out.lightMinimalMs = pr.medianMs;
   applyDefaultMaterial(l);
-  (void)l.LightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+  expectOk(l.LightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, 1), out.failures);
   for (int i = 1; i < 4; ++i) {
     const float c[4] = {0.3f, 0.3f, 0.3f, 1}, p[4] = {float(i) - 2.0f, 2.0f, 2.0f, 1.0f}, d[3] = {0, -1, -1};
-    (void)l.Enable(GL_LIGHT0 + GLenum(i));
-    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, c);
-    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, c);
-    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, p);
-    (void)l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPOT_DIRECTION, d);
-    (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_SPOT_CUTOFF, 60.0f);
-    (void)l.Lightf(GL_LIGHT0 + GLenum(i), GL_QUADRATIC_ATTENUATION, 0.05f);
+    expectOk(l.Enable(GL_LIGHT0 + GLenum(i)), out.failures);
+    expectOk(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_DIFFUSE, c), out.failures);
+    expectOk(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPECULAR, c), out.failures);
+    expectOk(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_POSITION, p), out.failures);
+    expectOk(l.Lightfv(GL_LIGHT0 + GLenum(i), GL_SPOT_DIRECTION, d), out.failures);
+    expectOk(l.Lightf(GL_LIGHT0 + GLenum(i), GL_SPOT_CUTOFF, 60.0f), out.failures);
+    expectOk(l.Lightf(GL_LIGHT0 + GLenum(i), GL_QUADRATIC_ATTENUATION, 0.05f), out.failures);
   }
-  measureSpeed(r, base, size, frames, settings, {&pr});
+  measureSpeed(r, base, size, frames, settings, {&pr}, out.failures);
   out.lightFullMs = pr.medianMs;
   r.lighting() = saved;
 }
@@ -411,15 +399,16 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   c.mode = mode;
   c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
   const double range = mode == MatchMode::Colors ? 1.75 : double(palette.entries.size());
-  for (RenderPath p : kPalettePaths) c.paths.emplace_back(p, range);
+  for (const PathInfo& p : renderPaths())
+    if (measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
   std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
   measureAccuracy(r, camera, o.size, frames, settings, c);
-  c.paths.emplace_back(RenderPath::Reference, range);
-  c.paths.emplace_back(RenderPath::LitTextured, range);
+  for (const PathInfo& p : renderPaths())
+    if (!measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
   std::fprintf(stderr, "benchmark: speed...\n");
   std::vector<PathResult*> timed;
   for (PathResult& p : c.paths) timed.push_back(&p);
-  measureSpeed(r, camera, o.size, frames, settings, timed);
+  measureSpeed(r, camera, o.size, frames, settings, timed, c.failures);
   const double ref = std::find_if(c.paths.begin(), c.paths.end(), [](const PathResult& p) { return p.path == RenderPath::Reference; })->medianMs;
   for (PathResult& p : c.paths) p.xReference = ref > 0 ? p.medianMs / ref : 0.0;
   measureStaticFrames(r, camera, o.size, settings, c);
@@ -468,7 +457,7 @@ int runBenchmark(const Options& o) {
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   if (!failures.empty()) {
-    std::fprintf(stderr, "npr-viewer: %zu render(s) failed during the benchmark; the first: %s\n", failures.size(), failures.front().c_str());
+    std::fprintf(stderr, "npr-viewer: %zu call(s) failed during the benchmark; the first: %s\n", failures.size(), failures.front().c_str());
     return 1;
   }
   if (nonFinite) {

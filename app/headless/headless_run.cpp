@@ -1,30 +1,18 @@
 // Headless rendering (see headless_run.h).
-#include "app/headless_run.h"
+#include "app/headless/headless_run.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <vector>
 
+#include "app/headless/headless_session.h"
 #include "app/startup.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
 
 namespace npr {
-
-int reportFailure(const std::string& message) {
-  std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());
-  return 1;
-}
-
-Result<HeadlessSession> openHeadlessSession(bool debug) {
-  auto ctx = HeadlessContext::create(debug);
-  if (!ctx) return Error{ctx.error()};
-  auto renderer = Renderer::create();
-  if (!renderer) return Error{renderer.error()};
-  return HeadlessSession{std::move(*ctx), std::move(*renderer)};
-}
 
 int runHeadless(const Options& o) {
   auto session = openHeadlessSession(true);
@@ -41,7 +29,7 @@ int runHeadless(const Options& o) {
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     const CameraMatrices cam = state.camera.matrices(aspect);
-    state.applyLight(*renderer, cam);
+    if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
     target->bind();
     if (Status s = renderer->render(cam, state.settings, {0, 0, o.size.x, o.size.y}); !s)
       return reportFailure("render failed: " + s.error());

@@ -1,0 +1,82 @@
+// Mouse, keyboard and drop callbacks of the window (see input_callbacks.h).
+#include "app/window/input_callbacks.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <cmath>
+
+namespace npr {
+namespace {
+
+Viewer* viewerOf(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
+
+void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  if (action == GLFW_RELEASE) return;
+  const auto a = actionForKey(key, mods);
+  if (!a) return;
+  // Only light movement repeats while a key is held; toggles fire once per press.
+  if (action == GLFW_REPEAT && a->action != Action::MoveLight) return;
+  applyAction(*viewerOf(w), *a);
+}
+
+void onMouseButton(GLFWwindow* w, int button, int action, int mods) {
+  Viewer& v = *viewerOf(w);
+  if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;
+  if (button < 0 || button > 2) return;
+  v.dragging[button] = action == GLFW_PRESS;
+  if (button == GLFW_MOUSE_BUTTON_LEFT) v.lightDrag = action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL);
+  glfwGetCursorPos(w, &v.lastCursor.x, &v.lastCursor.y);
+}
+
+void onCursor(GLFWwindow* w, double x, double y) {
+  Viewer& v = *viewerOf(w);
+  const glm::dvec2 d = glm::dvec2(x, y) - v.lastCursor;
+  v.lastCursor = {x, y};
+  const glm::ivec2 ws = v.window->windowSize();
+  if (ws.x <= 0 || ws.y <= 0) return;
+  ViewerState& s = v.state;
+  if (v.dragging[GLFW_MOUSE_BUTTON_LEFT] && v.lightDrag) {
+    const CameraMatrices cam = s.camera.matrices(v.aspect());
+    const glm::mat3 camToWorld = glm::transpose(glm::mat3(cam.view));
+    const float scale = 2.0f * s.camera.distance() * std::tan(glm::radians(s.camera.fovY()) * 0.5f) / float(ws.y);
+    const glm::vec3 delta(float(d.x) * scale, -float(d.y) * scale, 0.0f);
+    s.light += s.lightFollowsCamera ? delta : camToWorld * delta;
+  } else if (v.dragging[GLFW_MOUSE_BUTTON_LEFT]) {
+    s.camera.orbit(-float(d.x) * 0.4f, float(d.y) * 0.4f);
+  } else if (v.dragging[GLFW_MOUSE_BUTTON_RIGHT] || v.dragging[GLFW_MOUSE_BUTTON_MIDDLE]) {
+    s.camera.pan(glm::vec2(float(d.x) * 2.0f / float(ws.y) , -float(d.y) * 2.0f / float(ws.y)) * glm::vec2(1.0f / v.aspect(), 1.0f), v.aspect());
+  }
+}
+
+void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
+  Viewer& v = *viewerOf(w);
+  const glm::ivec2 ws = v.window->windowSize();
+  if (ws.x <= 0 || ws.y <= 0) return;
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  glm::vec2 ndc(float(x / ws.x) * 2.0f - 1.0f, 1.0f - float(y / ws.y) * 2.0f);
+  if (v.state.splitView) ndc.x = ndc.x < 0.0f ? ndc.x * 2.0f + 1.0f : ndc.x * 2.0f - 1.0f;
+  v.state.camera.zoom(std::pow(0.88f, float(dy)), ndc, v.aspect());
+}
+
+void onDrop(GLFWwindow* w, int count, const char** paths) {
+  for (int i = 0; i < count; ++i) loadDropped(*viewerOf(w), paths[i]);
+}
+
+}  // namespace
+
+void installInputCallbacks(Viewer& v) {
+  GLFWwindow* w = v.window->handle();
+  glfwSetWindowUserPointer(w, &v);
+  glfwSetKeyCallback(w, onKey);
+  glfwSetMouseButtonCallback(w, onMouseButton);
+  glfwSetCursorPosCallback(w, onCursor);
+  glfwSetScrollCallback(w, onScroll);
+  glfwSetDropCallback(w, onDrop);
+}
+
+}  // namespace npr

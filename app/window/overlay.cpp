@@ -1,0 +1,145 @@
+// The Dear ImGui overlay (see overlay.h).
+#include "app/window/overlay.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace npr {
+namespace fs = std::filesystem;
+
+void drawOverlay(Viewer& v) {
+  ViewerState& s = v.state;
+  const FrameStats& st = v.renderer->stats();
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::Begin("npr-viewer (F1)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Text("%.2f ms mean, %.2f ms 1%% worst, %.0f fps", v.timer.meanMs(), v.timer.worst1PercentMs(), v.timer.fps());
+  const auto& h = v.timer.history();
+  if (!h.empty()) ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms", 0.0f, 50.0f, ImVec2(300, 50));
+  ImGui::Text("CPU: shading %.2f ms, frame %.2f ms   GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
+              st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
+  ImGui::Text("%zu triangles, %d non-empty buckets", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets);
+  ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
+  ImGui::Separator();
+  ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
+  // Palette list: the number keys and [ ] choose among these.
+  const std::string current = s.palette ? s.palette->name : "-";
+  if (ImGui::BeginCombo("palette", current.c_str())) {
+    for (int i = 0; i < static_cast<int>(s.palettes.size()); ++i) {
+      const std::string label = std::to_string(i + 1) + ": " + fs::path(s.palettes[static_cast<size_t>(i)]).stem().string();
+      if (ImGui::Selectable(label.c_str(), i == s.paletteIndex)) applyAction(v, {Action::SelectPalette, i});
+    }
+    ImGui::EndCombo();
+  }
+  int mode = static_cast<int>(s.settings.match);
+  if (ImGui::Combo("match (M)", &mode, "colors\0intensity\0order\0")) {
+    s.settings.match = static_cast<MatchMode>(mode);
+    s.settings.bands.clear();  // thresholds live on the previous mode's query axis
+  }
+  ImGui::SliderFloat("range scale (+/-)", &s.settings.rangeScale, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+  s.settings.rangeScale = std::clamp(std::isfinite(s.settings.rangeScale) ? s.settings.rangeScale : 1.0f, 0.01f, 100.0f);
+  const auto& paths = userRenderPaths();
+  int pathIndex = int(std::find(paths.begin(), paths.end(), s.settings.path) - paths.begin());
+  auto pathLabel = [](void* data, int i, const char** out) {
+    *out = pathInfo((*static_cast<const std::vector<RenderPath>*>(data))[static_cast<size_t>(i)]).label;
+    return true;
+  };
+  if (ImGui::Combo("path (P)", &pathIndex, pathLabel, const_cast<std::vector<RenderPath>*>(&paths), int(paths.size())))
+    s.settings.path = paths[static_cast<size_t>(pathIndex)];
+  if (s.settings.path == RenderPath::Stencil) {
+    ImGui::Checkbox("scissor buckets", &s.settings.stencilScissor);
+    ImGui::SameLine();
+    ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
+  }
+  ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
+  if (ImGui::CollapsingHeader("Lines and tone")) {
+    LineSettings& ls = s.settings.lines;
+    ImGui::Checkbox("silhouettes", &ls.silhouettes);
+    ImGui::SameLine();
+    ImGui::Checkbox("creases", &ls.creases);
+    ImGui::SameLine();
+    ImGui::Checkbox("boundaries", &ls.boundaries);
+    ImGui::Checkbox("image-space edges", &ls.imageSpace);
+    ImGui::SameLine();
+    ImGui::Checkbox("sketchy", &ls.sketchy);
+    ImGui::SameLine();
+    ImGui::Checkbox("depth falloff", &ls.depthFalloff);
+    ImGui::SliderFloat("crease angle", &ls.creaseAngle, 1.0f, 179.0f, "%.0f deg");
+    ImGui::SliderFloat("line width", &ls.width, 0.5f, 12.0f, "%.1f px");
+    ImGui::SliderFloat("edge threshold", &ls.imageThreshold, 0.05f, 2.0f, "%.2f");
+    ImGui::ColorEdit3("silhouette", &ls.silhouetteColour.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("crease", &ls.creaseColour.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("boundary", &ls.boundaryColour.x, ImGuiColorEditFlags_NoInputs);
+    // Cel bands: movable thresholds between the palette's tones (2 to 8 of them).
+    const PaletteMatcher* matcher = v.renderer->matcher();
+    if (matcher && s.settings.match != MatchMode::Colors && matcher->levels().size() >= 2 && matcher->levels().size() <= 8) {
+      bool bands = !s.settings.bands.empty();
+      if (ImGui::Checkbox("cel bands (thresholds)", &bands)) {
+        s.settings.bands.clear();
+        const auto& L = matcher->levels();
+        if (bands)
+          for (size_t i = 0; i + 1 < L.size(); ++i) s.settings.bands.push_back(std::clamp(0.5f * (L[i] + L[i + 1]), 0.0f, 3.0f));
+      }
+      for (size_t i = 0; i < s.settings.bands.size(); ++i) {
+        const float lo = i > 0 ? s.settings.bands[i - 1] + 0.01f : 0.0f;
+        const float hi = i + 1 < s.settings.bands.size() ? s.settings.bands[i + 1] - 0.01f : 3.0f;
+        ImGui::SliderFloat(("threshold " + std::to_string(i + 1)).c_str(), &s.settings.bands[i], lo, hi, "%.3f");
+        s.settings.bands[i] = std::clamp(s.settings.bands[i], lo, hi);
+      }
+    }
+    LightingState& lighting = v.renderer->lighting();
+    int tone = static_cast<int>(lighting.toneModel());
+    ToneParameters tp = lighting.toneParameters();
+    bool changed = ImGui::Combo("tone", &tone, "OpenGL\0Gooch\0splashback\0");
+    if (tone != 0) {
+      changed |= ImGui::SliderFloat("blue", &tp.blue, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("yellow", &tp.yellow, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("alpha", &tp.alpha, 0.0f, 1.0f);
+      changed |= ImGui::SliderFloat("beta", &tp.beta, 0.0f, 1.0f);
+      if (tone == 2) {
+        changed |= ImGui::SliderFloat("splash alpha", &tp.splashAlpha, 0.0f, 1.0f);
+        changed |= ImGui::SliderFloat("splash power", &tp.splashPower, 0.0f, 16.0f);
+      }
+    }
+    if (changed) {
+      if (Status st = lighting.setToneModel(static_cast<ToneModel>(tone), tp); !st) s.note(st.error());
+    }
+  }
+  ImGui::Checkbox("split view (B)", &s.splitView);
+  ImGui::Separator();
+  ImGui::DragFloat3("light", &s.light.x, 0.02f);
+  if (ImGui::Checkbox("light follows camera (L)", &s.lightFollowsCamera)) {
+    s.lightFollowsCamera = !s.lightFollowsCamera;  // undo, then convert through the action
+    applyAction(v, {Action::ToggleLightFollow});
+  }
+  if (ImGui::Button("frame (F)")) applyAction(v, {Action::FrameModel});
+  ImGui::SameLine();
+  if (ImGui::Button("reset view (R)")) applyAction(v, {Action::ResetView});
+  ImGui::SameLine();
+  if (ImGui::Button("screenshot (F12)")) applyAction(v, {Action::Screenshot});
+  ImGui::SameLine();
+  bool vsync = v.vsync;
+  if (ImGui::Checkbox("vsync (V)", &vsync)) applyAction(v, {Action::ToggleVsync});
+  ImGui::Checkbox("help (H)", &v.help);
+  ImGui::SameLine();
+  if (ImGui::Button("quit (Esc)")) applyAction(v, {Action::Quit});
+  if (!s.messages.empty()) {
+    ImGui::Separator();
+    for (const auto& m : s.messages) ImGui::TextWrapped("%s", m.c_str());
+    if (ImGui::Button("clear messages")) s.messages.clear();
+  }
+  if (v.help) {
+    ImGui::Separator();
+    for (const Binding& b : keyBindings()) ImGui::BulletText("%s: %s", b.keys, b.what);
+  }
+  ImGui::End();
+}
+
+}  // namespace npr

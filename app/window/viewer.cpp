@@ -1,0 +1,88 @@
+// Viewer actions (see viewer.h).
+#include "app/window/viewer.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+
+#include "renderer/core/image_io.h"
+#include "renderer/gl/offscreen_target.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+namespace {
+
+bool isPaletteFile(const std::string& path) {
+  std::error_code ec;
+  return fs::path(path).extension() == ".palette" || fs::is_directory(path, ec);
+}
+
+}  // namespace
+
+float Viewer::aspect() const {
+  const glm::ivec2 s = window->framebufferSize();
+  const float a = s.y > 0 ? float(s.x) / float(s.y) : 1.0f;
+  return state.splitView ? a * 0.5f : a;
+}
+
+void applyAction(Viewer& v, const KeyAction& a) {
+  ViewerState& s = v.state;
+  Renderer& r = *v.renderer;
+  const int paletteCount = static_cast<int>(s.palettes.size());
+  switch (a.action) {
+    case Action::Quit: v.quit = true; break;
+    case Action::ToggleOverlay: v.overlay = !v.overlay; break;
+    case Action::ToggleHelp: v.help = !v.help; v.overlay = v.overlay || v.help; break;
+    case Action::Screenshot: v.screenshotRequested = true; break;
+    // A palette that fails to load is noted for the overlay by ViewerState and the current one stays.
+    case Action::SelectPalette: (void)s.selectPalette(a.param, r); break;
+    case Action::NextPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + 1) % paletteCount, r); break;
+    case Action::PreviousPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r); break;
+    case Action::CycleMatch:
+      s.settings.bands.clear();
+      s.settings.match = s.settings.match == MatchMode::Colors ? MatchMode::Intensity
+                         : s.settings.match == MatchMode::Intensity ? MatchMode::Order : MatchMode::Colors;
+      if (s.palette)
+        for (const auto& w : analysePalette(*s.palette).suitabilityWarnings(s.settings.match)) s.note(s.palette->name + ": " + w);
+      break;
+    case Action::RangeScaleUp: s.settings.rangeScale = std::min(s.settings.rangeScale * 1.1f, 100.0f); break;
+    case Action::RangeScaleDown: s.settings.rangeScale = std::max(s.settings.rangeScale / 1.1f, 0.01f); break;
+    case Action::CyclePath: {
+      const auto& paths = userRenderPaths();
+      auto it = std::find(paths.begin(), paths.end(), s.settings.path);
+      s.settings.path = (it == paths.end() || it + 1 == paths.end()) ? paths.front() : *(it + 1);
+      break;
+    }
+    case Action::ToggleSplit: s.splitView = !s.splitView; break;
+    case Action::FrameModel: s.camera.frame(s.mesh ? s.mesh->radius : 1.0f); break;
+    case Action::ResetView: s.camera.reset(); break;
+    case Action::ToggleLightFollow: {
+      // Keep the light where it is on screen when switching: convert its position.
+      const CameraMatrices cam = s.camera.matrices(v.aspect());
+      const glm::vec3 world = s.lightWorldPosition(cam);
+      s.lightFollowsCamera = !s.lightFollowsCamera;
+      s.light = s.lightFollowsCamera ? glm::vec3(cam.view * glm::vec4(world, 1.0f)) : world;
+      break;
+    }
+    case Action::ToggleVsync: v.vsync = !v.vsync; glfwSwapInterval(v.vsync ? 1 : 0); break;
+    case Action::MoveLight: {
+      const float step = 0.1f * (s.mesh ? s.mesh->radius : 1.0f);
+      s.light[a.param / 2] += (a.param % 2) ? step : -step;
+      break;
+    }
+  }
+}
+
+void loadDropped(Viewer& v, const std::string& path) {
+  const Status st = isPaletteFile(path) ? v.state.loadPalette(path, *v.renderer) : v.state.loadModel(path, *v.renderer);
+  if (st) v.state.note("loaded " + path);
+}
+
+void takeScreenshot(Viewer& v, const fs::path& file) {
+  const glm::ivec2 fb = v.window->framebufferSize();
+  const Status s = writeImage(file.string(), readFramebufferRGBA8(0, 0, fb.x, fb.y));
+  v.state.note(s ? "screenshot written to " + file.string() : s.error());
+}
+
+}  // namespace npr

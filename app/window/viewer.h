@@ -1,0 +1,41 @@
+// The windowed viewer's state, shared by the frame loop, the input callbacks and the overlay,
+// and the actions that keys, overlay buttons and dropped files trigger.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "app/viewer_state.h"
+#include "app/window/frame_timer.h"
+#include "app/window/glfw_window.h"
+#include "app/window/input_map.h"
+#include "renderer/renderer.h"
+
+namespace npr {
+
+struct Viewer {
+  std::unique_ptr<GlfwWindow> window;
+  std::unique_ptr<Renderer> renderer;
+  ViewerState state;
+  FrameTimer timer;
+  bool overlay = true, help = false, vsync = true, quit = false;
+  bool screenshotRequested = false;
+  int screenshotCount = 0;
+  std::filesystem::path screenshotDir = ".";
+  glm::dvec2 lastCursor{0.0};
+  bool dragging[3] = {false, false, false};
+  bool lightDrag = false;
+
+  // Of one view: half the window in split view.
+  float aspect() const;
+};
+
+void applyAction(Viewer& viewer, const KeyAction& action);
+// A dropped .palette (or palette folder) or model; a failure keeps the current one and is noted.
+void loadDropped(Viewer& viewer, const std::string& path);
+void takeScreenshot(Viewer& viewer, const std::filesystem::path& file);
+
+}  // namespace npr

@@ -1,0 +1,83 @@
+// The windowed viewer's frame loop, top to bottom: poll input, build the overlay, light and
+// render the scene (or the split view) with the light marker, draw the overlay, swap. The
+// window, input, overlay and actions live in the other files of this folder.
+#include "app/window/window_viewer.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "app/startup.h"
+#include "app/window/input_callbacks.h"
+#include "app/window/overlay.h"
+#include "app/window/viewer.h"
+#include "renderer/gl/gl_debug.h"
+#include "renderer/gl/offscreen_target.h"
+
+namespace npr {
+
+int runWindowViewer(const Options& o) {
+  Viewer v;
+  Result<std::unique_ptr<GlfwWindow>> window = GlfwWindow::open(o.size, "npr-viewer");
+  if (!window) return reportFailure(window.error());
+  v.window = std::move(*window);
+  gl::installDebugOutput();
+  Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
+  if (!renderer) return reportFailure(renderer.error());
+  v.renderer = std::move(*renderer);
+  if (Status s = startScene(o, v.state, *v.renderer); !s) return reportFailure(s.error());
+  if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
+  if (v.screenshotDir.empty()) v.screenshotDir = ".";
+  installInputCallbacks(v);
+  ImGuiSession imgui(v.window->handle());
+
+  GLFWwindow* w = v.window->handle();
+  auto last = std::chrono::steady_clock::now();
+  const auto start = last;
+  for (int frame = 0; !glfwWindowShouldClose(w) && !v.quit; ++frame) {
+    glfwPollEvents();
+    imgui.newFrame();
+    if (v.overlay) drawOverlay(v);
+    imgui.endFrame();
+
+    const glm::ivec2 fb = v.window->framebufferSize();
+    bindWindowFramebuffer();
+    const CameraMatrices cam = v.state.camera.matrices(v.aspect());
+    if (Status st = v.state.applyLight(*v.renderer, cam); !st) v.state.note("light not moved: " + st.error());
+    const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);
+    auto drawView = [&](const RenderSettings& settings, const glm::ivec4& viewport) {
+      Status st = v.renderer->render(cam, settings, viewport);
+      if (st) st = v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, viewport);
+      if (!st) v.state.note(st.error());
+    };
+    if (v.state.splitView) {
+      // Left: the plain lit render the original showed beside its NPR images; right: the chosen path.
+      const int half = fb.x / 2;
+      RenderSettings ref = v.state.settings;
+      ref.path = RenderPath::Reference;
+      drawView(ref, {0, 0, half, fb.y});
+      drawView(v.state.settings, {half, 0, fb.x - half, fb.y});
+    } else {
+      drawView(v.state.settings, {0, 0, fb.x, fb.y});
+    }
+    imgui.draw();
+
+    const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
+    if (v.screenshotRequested) {
+      v.screenshotRequested = false;
+      takeScreenshot(v, v.screenshotDir / ("npr-screenshot-" + std::to_string(++v.screenshotCount) + ".png"));
+    }
+    if (lastFrame && !o.screenshot.empty()) takeScreenshot(v, o.screenshot);
+    glfwSwapBuffers(w);
+    const auto now = std::chrono::steady_clock::now();
+    v.timer.add(std::chrono::duration<double>(now - start).count(), std::chrono::duration<double, std::milli>(now - last).count());
+    last = now;
+    if (lastFrame) break;
+  }
+  if (const int errors = gl::checkErrors("end of viewer run")) return reportFailure(std::to_string(errors) + " OpenGL error(s) during the run");
+  return 0;
+}
+
+}  // namespace npr
