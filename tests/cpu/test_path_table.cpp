@@ -1,0 +1,121 @@
+// CPU tier: the path table every front end reads (CLI, overlay, benchmark, e2e scripts) and
+// the typed program variants the program cache is keyed by.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+
+#include "renderer/gl/program_variants.h"
+#include "renderer/paths/path_table.h"
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+namespace {
+
+TEST(PathTable, EveryPathHasExactlyOneRowWithAUniqueName) {
+  std::set<int> ids;
+  std::set<std::string> names;
+  for (const PathInfo& p : renderPaths()) {
+    EXPECT_TRUE(ids.insert(static_cast<int>(p.id)).second) << p.name;
+    EXPECT_TRUE(names.insert(p.name).second) << p.name;
+    EXPECT_FALSE(std::string(p.label).empty()) << p.name;
+    EXPECT_EQ(&pathInfo(p.id), &p) << p.name;
+    ASSERT_TRUE(parseRenderPath(p.name)) << p.name;
+    EXPECT_EQ(*parseRenderPath(p.name), p.id);
+    EXPECT_NE(p.create(), nullptr) << p.name;
+  }
+  // The enumerators run from Stencil to LitTextured without gaps.
+  EXPECT_EQ(ids.size(), static_cast<size_t>(RenderPath::LitTextured) + 1);
+  EXPECT_EQ(*ids.begin(), 0);
+  EXPECT_FALSE(parseRenderPath("sideways"));
+}
+
+TEST(PathTable, UserPathsAreTheSelectableRowsInTableOrder) {
+  std::vector<RenderPath> expected;
+  for (const PathInfo& p : renderPaths())
+    if (p.userSelectable) expected.push_back(p.id);
+  EXPECT_EQ(userRenderPaths(), expected);
+  EXPECT_EQ(userRenderPathNames(), "stencil, triangle, vertex, pixel, smooth, reference");
+  EXPECT_FALSE(pathInfo(RenderPath::LitTextured).userSelectable);
+  EXPECT_FALSE(pathInfo(RenderPath::Reference).usesPalette);
+  EXPECT_TRUE(pathInfo(RenderPath::Stencil).perTriangle && pathInfo(RenderPath::Triangle).perTriangle);
+  EXPECT_FALSE(pathInfo(RenderPath::Pixel).perTriangle);
+}
+
+bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+TEST(ProgramVariants, DefinesFollowTheFields) {
+  gl::MeshProgram m;
+  m.shading = gl::MeshShading::Vertex;
+  m.output = gl::MeshOutput::Blend;
+  LightingFeatures f;
+  f.lightCount = 2;
+  f.spot = true;
+  m.lighting = f;
+  gl::PaletteVariant pv;
+  pv.size = 10;
+  pv.match = MatchMode::Order;
+  m.palette = pv;
+  const gl::ProgramSource s = gl::programSource(m);
+  EXPECT_EQ(s.vertexFile, "mesh.vert");
+  EXPECT_EQ(s.fragmentFile, "mesh.frag");
+  for (const char* d : {"PATH_VERTEX", "PER_VERTEX_LIGHTING", "OUTPUT_BLEND", "NUM_LIGHTS 2", "HAS_SPOT", "PALETTE_SIZE 10", "MATCH_ORDER"})
+    EXPECT_TRUE(has(s.defines, d)) << d;
+  EXPECT_FALSE(has(s.defines, "PALETTE_PRECOMPOSITED"));
+  // The per-triangle path lights on the CPU: no lighting defines at all.
+  gl::MeshProgram t;
+  t.shading = gl::MeshShading::Triangle;
+  t.palette = pv;
+  for (const std::string& d : gl::programSource(t).defines) EXPECT_EQ(d.find("NUM_LIGHTS"), std::string::npos) << d;
+  const gl::ProgramSource q = gl::programSource(gl::QuadProgram{gl::QuadProgram::Kind::Background, true});
+  EXPECT_EQ(q.fragmentFile, "quad.frag");
+  EXPECT_TRUE(has(q.defines, "QUAD_BACKGROUND") && has(q.defines, "BACKGROUND_IMAGE"));
+}
+
+TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
+  // The cache is a std::map over the variant: equal variants must share a key and every
+  // field that changes the defines must change the key.
+  std::map<gl::ProgramVariant, int> cache;
+  gl::MeshProgram base;
+  base.lighting = LightingFeatures{};
+  base.palette = gl::PaletteVariant{};
+  std::vector<gl::ProgramVariant> variants = {base};
+  auto with = [&](auto change) {
+    gl::MeshProgram m = base;
+    change(m);
+    variants.push_back(m);
+  };
+  with([](gl::MeshProgram& m) { m.shading = gl::MeshShading::Smooth; });
+  with([](gl::MeshProgram& m) { m.output = gl::MeshOutput::Entry; });
+  with([](gl::MeshProgram& m) { m.lighting->specular = true; });
+  with([](gl::MeshProgram& m) { m.lighting->lightCount = 3; });
+  with([](gl::MeshProgram& m) { m.lighting->tone = ToneModel::Gooch; });
+  with([](gl::MeshProgram& m) { m.lighting.reset(); });
+  with([](gl::MeshProgram& m) { m.palette->size = 30; });
+  with([](gl::MeshProgram& m) { m.palette->precomposited = true; });
+  with([](gl::MeshProgram& m) { m.palette->match = MatchMode::Colors; });
+  with([](gl::MeshProgram& m) { m.palette.reset(); });
+  variants.push_back(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false});
+  variants.push_back(gl::QuadProgram{gl::QuadProgram::Kind::Background, false});
+  variants.push_back(gl::LineProgram{true, false});
+  variants.push_back(gl::LineProgram{false, true});
+  variants.push_back(gl::EdgeProgram{});
+  variants.push_back(gl::MarkerProgram{});
+  for (size_t i = 0; i < variants.size(); ++i) cache.emplace(variants[i], int(i));
+  EXPECT_EQ(cache.size(), variants.size());
+  std::set<std::vector<std::string>> defineSets;
+  for (const auto& v : variants) {
+    const gl::ProgramSource s = gl::programSource(v);
+    std::vector<std::string> key = s.defines;
+    key.push_back(s.vertexFile + "+" + s.fragmentFile);
+    defineSets.insert(key);
+  }
+  EXPECT_EQ(defineSets.size(), variants.size()) << "two variants compile to the same program";
+  gl::MeshProgram same = base;
+  EXPECT_FALSE(cache.emplace(same, -1).second);
+}
+
+}  // namespace
+}  // namespace npr

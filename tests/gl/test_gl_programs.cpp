@@ -1,0 +1,74 @@
+// GL tier: programs, their uniforms and the program cache. A uniform name that no stage
+// declares is reported like a GL error (so the test that triggers it fails); a uniform a
+// variant compiled out is skipped quietly; the cache builds each variant once.
+#include <gtest/gtest.h>
+
+#include "gl/gl_test_env.h"
+#include "renderer/gl/gl_debug.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/gl/shader_program.h"
+
+namespace npr {
+namespace {
+
+TEST(ShaderProgram, AMisspelledUniformIsReported) {
+  Result<gl::ShaderProgram> p = gl::ShaderProgram::build("marker.vert", "marker.frag", {});
+  ASSERT_TRUE(p) << p.error();
+  p->use();
+  const int before = gl::checkErrors("before");
+  p->set("uColour", glm::vec3(1.0f));
+  EXPECT_EQ(gl::checkErrors("declared uniform"), before);
+  p->set("uColor", glm::vec3(1.0f));  // the typo the driver would ignore
+  EXPECT_EQ(gl::checkErrors("misspelled uniform"), before + 1);
+  const auto messages = gl::errorMessages();
+  ASSERT_FALSE(messages.empty());
+  EXPECT_NE(messages.back().find("uColor"), std::string::npos) << messages.back();
+  EXPECT_NE(messages.back().find("marker.vert+marker.frag"), std::string::npos) << messages.back();
+  p->set("uColor", glm::vec3(1.0f));  // reported once per program and name, not per frame
+  EXPECT_EQ(gl::checkErrors("again"), before + 1);
+  gl::resetErrors();  // the error was this test's point
+  glUseProgram(0);
+}
+
+TEST(ShaderProgram, ACompiledOutUniformIsSkippedQuietly) {
+  // Without BACKGROUND_IMAGE the background quad has no uBackground sampler, but the name is
+  // in its source: setting it is a no-op, as glUniform at location -1 is.
+  Result<gl::ShaderProgram> p = gl::ShaderProgram::build("fullscreen.vert", "quad.frag", {"QUAD_BACKGROUND"});
+  ASSERT_TRUE(p) << p.error();
+  p->use();
+  const int before = gl::checkErrors("before");
+  p->set("uBackground", 1);
+  p->set("uBackgroundColour", glm::vec3(0.5f));
+  EXPECT_EQ(gl::checkErrors("after"), before);
+  glUseProgram(0);
+}
+
+TEST(ProgramCache, BuildsEachVariantOnce) {
+  gl::ProgramCache cache;
+  int builds = 0;
+  gl::MeshProgram pixel;
+  pixel.shading = gl::MeshShading::EyeNormal;
+  Result<gl::ShaderProgram*> a = cache.get(pixel, builds);
+  ASSERT_TRUE(a) << a.error();
+  Result<gl::ShaderProgram*> b = cache.get(pixel, builds);
+  ASSERT_TRUE(b);
+  EXPECT_EQ(*a, *b);
+  EXPECT_EQ(builds, 1);
+  pixel.shading = gl::MeshShading::EyePosition;
+  Result<gl::ShaderProgram*> c = cache.get(pixel, builds);
+  ASSERT_TRUE(c);
+  EXPECT_NE(*a, *c);
+  EXPECT_EQ(builds, 2);
+}
+
+TEST(ShaderProgram, ACompileErrorNamesTheFileAndVariant) {
+  // PALETTE_SIZE without a value makes palette.glsl's arrays invalid.
+  Result<gl::ShaderProgram> p = gl::ShaderProgram::build("mesh.vert", "mesh.frag", {"PATH_PIXEL", "PALETTE_SIZE", "MATCH_INTENSITY"});
+  ASSERT_FALSE(p);
+  EXPECT_NE(p.error().find("mesh.frag"), std::string::npos) << p.error();
+  EXPECT_NE(p.error().find("-DPATH_PIXEL"), std::string::npos) << p.error();
+  gl::resetErrors();  // the driver may report the failed compile through KHR_debug too
+}
+
+}  // namespace
+}  // namespace npr
