@@ -9,6 +9,7 @@
 #include "app/window/window_viewer.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette.h"
+#include "renderer/palette/palette_analysis.h"
 #include "renderer/paths/path_table.h"
 
 #if defined(__SANITIZE_ADDRESS__)

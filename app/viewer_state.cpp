@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/palette/palette_analysis.h"
 
 namespace npr {
 namespace fs = std::filesystem;

@@ -20,6 +20,7 @@
 
 #include "renderer/core/colour.h"
 #include "renderer/palette/palette.h"
+#include "renderer/palette/palette_analysis.h"
 
 namespace fs = std::filesystem;
 using npr::ImageRGBA8;

@@ -8,6 +8,7 @@
 
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/palette/palette_analysis.h"
 
 namespace npr {
 namespace fs = std::filesystem;

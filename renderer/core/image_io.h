@@ -1,6 +1,6 @@
-// Writing images through OpenImageIO (screenshots, test diffs, the palette generator): the
-// format follows the file's extension (PNG, TGA, EXR, ...). Reading is the palette's
-// loadImage, which also converts formats and colour encodings.
+// Images through OpenImageIO: reading any format it knows as encoded RGBA8 (palette textures),
+// resizing, and writing (screenshots, test diffs, the palette generator) in the format the
+// file's extension names (PNG, TGA, EXR, ...).
 #pragma once
 
 #include <string>
@@ -10,6 +10,10 @@
 
 namespace npr {
 
+// Grey, grey+alpha, RGB or RGBA; 8-bit, 16-bit or float (float taken as linear light and
+// encoded); at most 16384 pixels a side. Alpha stays straight (unassociated).
+[[nodiscard]] Result<ImageRGBA8> loadImage(const std::string& path);
+[[nodiscard]] Result<ImageRGBA8> resizeImage(const ImageRGBA8& image, int width, int height);
 [[nodiscard]] Status writeImage(const std::string& path, const ImageRGBA8& image);
 
 }  // namespace npr

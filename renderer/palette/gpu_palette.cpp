@@ -7,6 +7,7 @@
 
 #include "renderer/gl/texture.h"
 #include "renderer/gl/texture_units.h"
+#include "renderer/palette/palette_analysis.h"
 
 namespace npr {
 namespace {

@@ -1,6 +1,7 @@
 // Palettes: an ordered list of textures that replaces lighting (the user's whole style),
-// read from a plain-text palette file, loaded through OpenImageIO and analysed for their
-// average colour over the background, alpha taken into account.
+// read from a plain-text palette file (palette_file.cpp), its images loaded through
+// OpenImageIO and averaged over the background, alpha taken into account
+// (palette_analysis.h).
 //
 // Palette file: one image path per line, in order, relative to the palette file; lines
 // starting with '#' and blank lines are ignored; optional lines:
@@ -49,26 +50,6 @@ struct Palette {
 };
 
 // Loads the whole palette or nothing: a failure names the file, the line and the reason.
-Result<Palette> loadPalette(const std::string& path);
-
-// Loads one image through OpenImageIO as sRGB-encoded RGBA8 (grey, grey+alpha, RGB, RGBA;
-// 8-bit, 16-bit or float, float images being taken as linear and encoded).
-Result<ImageRGBA8> loadImage(const std::string& path);
-
-// `img` composited over the background as the renderer shows it: blended on encoded values
-// (as OpenGL blends into an 8-bit framebuffer), texel over background texel where the two
-// have the same size, over the background's mean colour otherwise.
-ImageRGBA8 compositeOver(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage);
-// The average of that composite, taken in linear light and returned encoded.
-glm::vec3 compositeAverage(const ImageRGBA8& img, const glm::vec3& bgColour, const ImageRGBA8* bgImage);
-
-// The palette report: one line of JSON (`npr-viewer --palette-info`).
-struct PaletteAnalysis {
-  float minIntensity = 0, maxIntensity = 0, largestGap = 0;
-  bool monotonic = true;  // intensities strictly decrease or increase along the order
-  std::vector<std::string> suitabilityWarnings(MatchMode mode) const;
-};
-PaletteAnalysis analysePalette(const Palette& p);
-std::string paletteReportJson(const Palette& p);
+[[nodiscard]] Result<Palette> loadPalette(const std::string& path);
 
 }  // namespace npr

@@ -11,6 +11,7 @@
 #include "renderer/core/colour.h"
 #include "renderer/core/image_io.h"
 #include "renderer/palette/palette.h"
+#include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_matcher.h"
 #include "support/test_util.h"
 

@@ -1,0 +1,162 @@
+// Palette files: parsing a .palette, loading its images and their averages (see palette.h).
+#include "renderer/palette/palette.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "renderer/core/colour.h"
+#include "renderer/core/image_io.h"
+#include "renderer/palette/palette_analysis.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+
+const char* matchModeName(MatchMode m) {
+  switch (m) {
+    case MatchMode::Colors: return "colors";
+    case MatchMode::Intensity: return "intensity";
+    case MatchMode::Order: return "order";
+  }
+  return "?";
+}
+
+std::optional<MatchMode> parseMatchMode(const std::string& s) {
+  if (s == "colors" || s == "colours" || s == "color") return MatchMode::Colors;
+  if (s == "intensity") return MatchMode::Intensity;
+  if (s == "order") return MatchMode::Order;
+  return std::nullopt;
+}
+
+std::vector<glm::vec3> Palette::averages() const {
+  std::vector<glm::vec3> a;
+  a.reserve(entries.size());
+  for (const auto& e : entries) a.push_back(e.average);
+  return a;
+}
+
+namespace {
+
+// Layers of the palette's texture array share one size; beyond this budget entries are
+// downsampled with OpenImageIO so the array still fits in memory.
+constexpr std::size_t kTextureBudgetBytes = std::size_t(1) << 30;
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r\n");
+  return s.substr(a, b - a + 1);
+}
+
+std::optional<glm::vec3> parseHexColour(const std::string& s) {
+  if (s.size() != 7 || s[0] != '#') return std::nullopt;
+  unsigned v = 0;
+  for (size_t i = 1; i < 7; ++i) {
+    const char c = static_cast<char>(std::tolower(static_cast<unsigned char>(s[i])));
+    if (!std::isxdigit(static_cast<unsigned char>(c))) return std::nullopt;
+    v = v * 16 + static_cast<unsigned>(std::isdigit(static_cast<unsigned char>(c)) ? c - '0' : c - 'a' + 10);
+  }
+  return glm::vec3((v >> 16) & 255, (v >> 8) & 255, v & 255) / 255.0f;
+}
+
+}  // namespace
+
+Result<Palette> loadPalette(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return Error{path + ": no such palette file"};
+  if (fs::is_directory(path, ec)) {
+    // A palette folder holds its palette file: accept the folder for convenience.
+    for (const auto& e : fs::directory_iterator(path, ec))
+      if (e.path().extension() == ".palette") return loadPalette(e.path().string());
+    return Error{path + ": is a directory with no .palette file in it"};
+  }
+  std::ifstream in(path);
+  if (!in) return Error{path + ": cannot be opened for reading"};
+  const fs::path dir = fs::path(path).parent_path();
+  Palette p;
+  p.file = path;
+  p.name = fs::path(path).stem().string();
+  std::string bgSpec;
+  int bgLine = 0;
+  struct Pending { std::string path; int line; };
+  std::vector<Pending> images;
+  std::string raw;
+  int lineNo = 0;
+  while (std::getline(in, raw)) {
+    ++lineNo;
+    if (lineNo == 1 && raw.size() >= 2 && static_cast<unsigned char>(raw[0]) >= 0xFE) return Error{path + ": palette file is UTF-16; save it as UTF-8"};
+    if (raw.find('\0') != std::string::npos) return Error{path + " line " + std::to_string(lineNo) + ": binary data in a palette file"};
+    const std::string line = trim(raw);
+    if (line.empty() || line[0] == '#') continue;
+    const std::string where = path + " line " + std::to_string(lineNo);
+    const auto sp = line.find_first_of(" \t");
+    const std::string key = line.substr(0, sp);
+    const std::string arg = sp == std::string::npos ? "" : trim(line.substr(sp));
+    if (key == "background") {
+      if (arg.empty()) return Error{where + ": 'background' needs an image path or a #RRGGBB colour"};
+      bgSpec = arg;
+      bgLine = lineNo;
+    } else if (key == "match") {
+      auto m = parseMatchMode(arg);
+      if (!m) return Error{where + ": unknown match mode '" + arg + "' (use colors, intensity or order)"};
+      p.defaultMatch = m;
+    } else if (key == "range-scale") {
+      char* end = nullptr;
+      const float s = std::strtof(arg.c_str(), &end);
+      if (arg.empty() || *end != '\0' || !std::isfinite(s) || s <= 0.0f)
+        return Error{where + ": range-scale must be a finite number > 0, got '" + arg + "'"};
+      p.defaultRangeScale = s;
+    } else if (key == "name") {
+      p.name = arg;
+    } else {
+      images.push_back({line, lineNo});
+    }
+  }
+  if (images.empty()) return Error{path + ": the palette lists no images (one image path per line)"};
+  if (images.size() > static_cast<size_t>(kMaxPaletteEntries))
+    return Error{path + " line " + std::to_string(images[kMaxPaletteEntries].line) + ": more than " +
+                 std::to_string(kMaxPaletteEntries) + " entries (a palette holds at most " + std::to_string(kMaxPaletteEntries) + ")"};
+
+  if (!bgSpec.empty()) {
+    if (auto c = parseHexColour(bgSpec)) {
+      p.backgroundColour = *c;
+    } else if (bgSpec[0] == '#') {
+      return Error{path + " line " + std::to_string(bgLine) + ": background colour '" + bgSpec + "' is not #RRGGBB"};
+    } else {
+      Result<ImageRGBA8> bg = loadImage((dir / bgSpec).string());
+      if (!bg) return Error{path + " line " + std::to_string(bgLine) + ": background: " + bg.error()};
+      p.backgroundColour = linearToSrgb(linearMean(*bg));
+      p.backgroundImage = std::move(*bg);
+    }
+  }
+  std::size_t maxW = 1, maxH = 1;
+  for (const Pending& im : images) {
+    Result<ImageRGBA8> img = loadImage((dir / im.path).string());
+    if (!img) return Error{path + " line " + std::to_string(im.line) + ": " + img.error()};
+    PaletteEntry e;
+    e.path = im.path;
+    e.image = std::move(*img);
+    e.average = compositeAverage(e.image, p.backgroundColour, p.backgroundImage ? &*p.backgroundImage : nullptr);
+    e.intensity = e.average.r + e.average.g + e.average.b;
+    maxW = std::max<std::size_t>(maxW, static_cast<size_t>(e.image.width));
+    maxH = std::max<std::size_t>(maxH, static_cast<size_t>(e.image.height));
+    p.entries.push_back(std::move(e));
+  }
+  const std::size_t bytes = maxW * maxH * 4 * p.entries.size();
+  if (bytes > kTextureBudgetBytes) {
+    const double f = std::sqrt(double(kTextureBudgetBytes) / double(bytes));
+    const int w = std::max(1, int(double(maxW) * f)), h = std::max(1, int(double(maxH) * f));
+    for (PaletteEntry& e : p.entries) {
+      if (e.image.width <= w && e.image.height <= h) continue;
+      Result<ImageRGBA8> r = resizeImage(e.image, std::min(w, e.image.width), std::min(h, e.image.height));
+      if (!r) return Error{path + ": " + e.path + ": " + r.error()};
+      e.image = std::move(*r);
+    }
+    p.warnings.push_back("textures downsampled to at most " + std::to_string(w) + "x" + std::to_string(h) +
+                         " so the palette's texture array fits in " + std::to_string(kTextureBudgetBytes >> 20) + " MiB");
+  }
+  return p;
+}
+
+}  // namespace npr
