@@ -1,0 +1,21 @@
+// Turning parsed positions and triangles into a Mesh, shared by every reader: positions
+// centred and scaled into the unit sphere in double precision before they become float, and
+// triangles added to OpenMesh's halfedge structure with the faces it refuses kept on copied
+// vertices (never dropped, never handed to OpenMesh in a form it asserts on).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/mesh/mesh.h"
+
+namespace npr {
+
+// `valid` (optional) marks the positions to fit; the others are transformed but not counted.
+std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& positions, const std::vector<char>* valid,
+                                          LoadReport& report);
+void buildTriMesh(const std::vector<glm::vec3>& positions, const std::vector<std::array<int, 3>>& triangles, Mesh& mesh);
+
+}  // namespace npr
