@@ -1,7 +1,8 @@
 // Per-triangle lighting of a whole mesh on the CPU, as the original renderer did: the OpenGL
 // lighting model at each triangle's centroid with its face normal, then a palette match, then
-// (for the stencil path) bucketing of triangles by palette entry. Data-parallel over
-// contiguous chunks of the mesh's structure-of-arrays data.
+// bucketing of triangles by palette entry (what the stencil and triangle paths draw).
+// Data-parallel over contiguous chunks of the mesh's structure-of-arrays data. The cache that
+// runs it only when its inputs changed is triangle_shading_cache.h.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +17,7 @@
 namespace npr {
 
 struct TriangleShadingOptions {
-  bool buildBuckets = false;   // the stencil path needs triangles grouped by palette entry
+  bool buildBuckets = false;   // group triangles by palette entry (both per-triangle paths draw them so)
   int threads = 0;             // 0: one per hardware thread
 };
 

@@ -2,6 +2,8 @@
 #include "gl/gl_test_env.h"
 
 #include <cstdio>
+#include <functional>
+#include <type_traits>
 
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/headless_context.h"
@@ -19,44 +21,51 @@ void GlErrorCheck::OnTestEnd(const ::testing::TestInfo& info) {
   }
 }
 
-ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
-  auto t = OffscreenTarget::create(w, h);
+namespace {
+// Runs `draw` into a fresh w x h target (cleared to zero unless it is the image render, which
+// draws its own background) and reads it back.
+template <class Image>
+Image renderInto(int w, int h, bool clear, const std::function<Status(const glm::ivec4&)>& draw) {
+  constexpr bool floats = std::is_same_v<Image, ImageRGBA32F>;
+  auto t = OffscreenTarget::create(w, h, floats ? OffscreenTarget::Format::RGBA32F : OffscreenTarget::Format::RGBA8);
   EXPECT_TRUE(t) << t.error();
   if (!t) return {};
-  t->bind();
-  const Status st = r.render(cam, s, {0, 0, w, h});
+  if (clear) t->clear(glm::vec4(0.0f));
+  else t->bind();
+  const Status st = draw({0, 0, w, h});
   EXPECT_TRUE(st) << st.error();
-  return t->readRGBA8();
+  if constexpr (floats) return t->readRGBA32F();
+  else return t->readRGBA8();
+}
+}  // namespace
+
+ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
+  return renderInto<ImageRGBA8>(w, h, false, [&](const glm::ivec4& vp) { return r.render(cam, s, vp); });
 }
 
 ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
-  auto t = OffscreenTarget::create(w, h);
-  EXPECT_TRUE(t) << t.error();
-  if (!t) return {};
-  t->clear(glm::vec4(0.0f));
-  const Status st = r.renderSelection(cam, s, SelectionOutput::Entry, {0, 0, w, h});
-  EXPECT_TRUE(st) << st.error();
-  return t->readRGBA8();
-}
-
-ImageRGBA32F renderBlend(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
-  auto t = OffscreenTarget::create(w, h, OffscreenTarget::Format::RGBA32F);
-  EXPECT_TRUE(t) << t.error();
-  if (!t) return {};
-  t->clear(glm::vec4(0.0f));
-  const Status st = r.renderSelection(cam, s, SelectionOutput::Blend, {0, 0, w, h});
-  EXPECT_TRUE(st) << st.error();
-  return t->readRGBA32F();
+  return renderInto<ImageRGBA8>(w, h, true, [&](const glm::ivec4& vp) { return r.renderSelection(cam, s, SelectionOutput::Entry, vp); });
 }
 
 ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h) {
-  auto t = OffscreenTarget::create(w, h, OffscreenTarget::Format::RGBA32F);
-  EXPECT_TRUE(t) << t.error();
-  if (!t) return {};
-  t->clear(glm::vec4(0.0f));
-  const Status st = r.renderGeometry(cam, output, {0, 0, w, h});
-  EXPECT_TRUE(st) << st.error();
-  return t->readRGBA32F();
+  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.renderGeometry(cam, output, vp); });
+}
+
+int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {
+  int n = 0;
+  for (size_t i = 0; i < a.pixels.size(); i += 4)
+    if (a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2]) ++n;
+  return n;
+}
+
+void RendererFixture::SetUp() {
+  auto made = Renderer::create();
+  ASSERT_TRUE(made) << made.error();
+  r = std::move(*made);
+  applyDefaultMaterial(r->lighting());
+  const float pos[4] = {2.0f, 2.5f, 3.0f, 1.0f};
+  r->lighting().setModelView(testCamera(1.0f).view);
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
 }
 
 CameraMatrices testCamera(float aspect, float yaw, float pitch) {

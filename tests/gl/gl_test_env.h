@@ -20,10 +20,18 @@ class GlErrorCheck : public ::testing::EmptyTestEventListener {
 // Renders one frame at w x h and reads it back.
 ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
 // The selection and geometry outputs (Renderer::renderSelection, renderGeometry) into a
-// target cleared to zero: entries from an 8-bit target, blends and geometry as floats.
+// target cleared to zero: entries from an 8-bit target, geometry as floats.
 ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
-ImageRGBA32F renderBlend(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
 ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h);
+// Pixels whose colour differs (alpha ignored).
+int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b);
+
+// A renderer with the viewer's default material and a point light at (2, 2.5, 3) in the
+// standard test view.
+struct RendererFixture : ::testing::Test {
+  std::unique_ptr<Renderer> r;
+  void SetUp() override;
+};
 
 // The standard test view of a mesh fitted to the unit sphere.
 CameraMatrices testCamera(float aspect, float yaw = 30.0f, float pitch = 20.0f);

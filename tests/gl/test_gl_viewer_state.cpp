@@ -13,25 +13,8 @@ using test::renderImage;
 using test::sourcePath;
 using test::testCamera;
 
-struct Fixture : ::testing::Test {
-  std::unique_ptr<Renderer> r;
-  void SetUp() override {
-    auto made = Renderer::create();
-    ASSERT_TRUE(made) << made.error();
-    r = std::move(*made);
-    applyDefaultMaterial(r->lighting());
-    const float pos[4] = {2.0f, 2.5f, 3.0f, 1.0f};
-    r->lighting().setModelView(testCamera(1.0f).view);
-    ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
-  }
-};
-
-int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {
-  int n = 0;
-  for (size_t i = 0; i < a.pixels.size(); i += 4)
-    if (a.pixels[i] != b.pixels[i] || a.pixels[i + 1] != b.pixels[i + 1] || a.pixels[i + 2] != b.pixels[i + 2]) ++n;
-  return n;
-}
+using Fixture = test::RendererFixture;
+using test::countDiffering;
 
 TEST_F(Fixture, FailedPaletteLoadKeepsTheCurrentOne) {
   ViewerState state;
