@@ -29,7 +29,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   lines.depthFalloff = o.lineFalloff;
   if (o.creaseAngle) lines.creaseAngle = *o.creaseAngle;
   if (o.lineWidth) lines.width = *o.lineWidth;
-  if (o.tone) (void)renderer.lighting().setToneModel(*o.tone, renderer.lighting().toneParameters());
+  if (o.tone)
+    if (Status s = renderer.lighting().setToneModel(*o.tone, renderer.lighting().toneParameters()); !s) return s;
   if (o.light) state.light = *o.light;
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());
   return okStatus();

@@ -1,10 +1,9 @@
 // The speed/accuracy benchmark (see benchmark_run.h).
 //
-// [SECTION] Statistics
 // [SECTION] Accuracy: the independent per-pixel reference and each path's error
 // [SECTION] Speed
-// [SECTION] Outputs: CSV, Markdown, plot
 // [SECTION] Driver
+// The results' types are in benchmark_results.h, their files in benchmark_report.cpp.
 #include "app/benchmark/benchmark_run.h"
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/benchmark/benchmark_results.h"
 #include "app/benchmark/interleaved_timing.h"
 #include "app/headless/headless_session.h"
 #include "app/viewer_state.h"
@@ -30,58 +30,6 @@ namespace npr {
 namespace fs = std::filesystem;
 
 namespace {
-
-// ---------------------------------------------------------------------------------------
-// [SECTION] Statistics
-
-// Mean, maximum and an approximate 95th percentile (a fine histogram) of many values.
-class ErrorStats {
- public:
-  explicit ErrorStats(double range = 1.0) : range_(range), bins_(8192, 0) {}
-  void add(double v) {
-    sum_ += v;
-    ++count_;
-    max_ = std::max(max_, v);
-    const size_t b = std::min(bins_.size() - 1, static_cast<size_t>(v / range_ * double(bins_.size())));
-    ++bins_[b];
-  }
-  double mean() const { return count_ ? sum_ / double(count_) : 0.0; }
-  double max() const { return max_; }
-  double p95() const {
-    std::uint64_t seen = 0;
-    for (size_t b = 0; b < bins_.size(); ++b) {
-      seen += bins_[b];
-      if (double(seen) >= 0.95 * double(count_)) return double(b + 1) / double(bins_.size()) * range_;
-    }
-    return max_;
-  }
-
- private:
-  double range_, sum_ = 0.0, max_ = 0.0;
-  std::uint64_t count_ = 0;
-  std::vector<std::uint64_t> bins_;
-};
-
-struct PathResult {
-  RenderPath path;
-  // speed
-  double medianMs = 0, p95Ms = 0, cpuMs = 0, gpuMs = -1, xReference = 0;
-  // accuracy
-  ErrorStats error;
-  std::uint64_t pixels = 0, mismatched = 0, compared = 0, jumps = 0, pops = 0;
-  explicit PathResult(RenderPath p, double range) : path(p), error(range) {}
-};
-
-struct ConfigResult {
-  std::string model, palette;
-  MatchMode mode;
-  std::string errorUnit;
-  std::vector<PathResult> paths;
-  std::uint64_t nonFinite = 0;
-  std::vector<std::string> failures;  // renders and state changes that returned an error
-  int staticFrames = 0, staticRecomputes = 0, staticUploads = 0, staticBuilds = 0;
-  double lightMinimalMs = 0, lightFullMs = 0;
-};
 
 // The scripted motion: a quarter orbit of the light and a sixth of the camera over the run.
 struct MotionFrame {
@@ -299,89 +247,6 @@ void measureFeatureCost(Renderer& r, const OrbitCamera& base, glm::ivec2 size, i
   r.lighting() = saved;
 }
 
-// ---------------------------------------------------------------------------------------
-// [SECTION] Outputs
-
-std::string fmt(double v, int digits = 3) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.*f", digits, v);
-  return b;
-}
-
-std::string slug(const std::string& s) {
-  std::string o;
-  for (char c : s) o += std::isalnum(static_cast<unsigned char>(c)) ? char(std::tolower(static_cast<unsigned char>(c))) : '-';
-  return o;
-}
-
-void writeOutputs(const std::vector<ConfigResult>& results, const fs::path& dir, glm::ivec2 size, int frames, const std::string& gl) {
-  std::ofstream csv(dir / "results.csv");
-  csv << "model,palette,match,path,frames,width,height,median_ms,p95_ms,cpu_ms,gpu_ms,x_reference,error_unit,mean_error,p95_error,"
-         "max_error,index_mismatch_share,jump_share,pop_share,nonfinite\n";
-  std::ofstream md(dir / "results.md");
-  md << "Measured on " << gl << ", " << size.x << "x" << size.y << ", " << frames
-     << " frames of a scripted light and camera orbit per path.\n\n";
-  for (const ConfigResult& c : results) {
-    md << "### " << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << "\n\n";
-    md << "| path | median ms | p95 ms | CPU ms | x reference | mean error | p95 error | max error | index differs | jumps > 1 step | pops |\n";
-    md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const PathResult& p : c.paths) {
-      const bool hasAccuracy = p.pixels > 0;
-      const double mismatch = hasAccuracy ? double(p.mismatched) / double(p.pixels) : 0.0;
-      const double jump = p.compared ? double(p.jumps) / double(p.compared) : 0.0;
-      const double pop = p.compared ? double(p.pops) / double(p.compared) : 0.0;
-      csv << '"' << c.model << "\",\"" << c.palette << "\"," << matchModeName(c.mode) << ',' << renderPathName(p.path) << ',' << frames
-          << ',' << size.x << ',' << size.y << ',' << fmt(p.medianMs) << ',' << fmt(p.p95Ms) << ',' << fmt(p.cpuMs) << ','
-          << fmt(p.gpuMs) << ',' << fmt(p.xReference) << ',' << c.errorUnit << ',';
-      if (hasAccuracy) csv << fmt(p.error.mean(), 5) << ',' << fmt(p.error.p95(), 5) << ',' << fmt(p.error.max(), 5) << ',' << fmt(mismatch, 5);
-      else csv << ",,,";
-      csv << ',' << fmt(jump, 5) << ',' << fmt(pop, 5) << ',' << c.nonFinite << '\n';
-      md << "| " << renderPathName(p.path) << " | " << fmt(p.medianMs, 1) << " | " << fmt(p.p95Ms, 1) << " | " << fmt(p.cpuMs, 1) << " | "
-         << fmt(p.xReference, 2) << " | ";
-      if (hasAccuracy)
-        md << fmt(p.error.mean(), 4) << " | " << fmt(p.error.p95(), 4) << " | " << fmt(p.error.max(), 3) << " | " << fmt(100 * mismatch, 2)
-           << "% | " << fmt(100 * jump, 3) << "% | " << fmt(100 * pop, 3) << "% |\n";
-      else
-        md << "- | - | - | - | - | - |\n";
-    }
-    md << "\nError unit: " << c.errorUnit << ". Static frames (nothing changed): " << c.staticRecomputes << " lighting recomputations, "
-       << c.staticUploads << " uploads, " << c.staticBuilds << " shader builds over " << c.staticFrames
-       << " frames. Pixel path, one directional light without specular: " << fmt(c.lightMinimalMs, 1)
-       << " ms; four lights with specular, spots and attenuation: " << fmt(c.lightFullMs, 1) << " ms. Non-finite values: " << c.nonFinite
-       << ".\n\n";
-
-    // The plot: frame time against mean error, one labelled point per path.
-    const std::string stem = "plot-" + slug(c.model) + "-" + slug(c.palette) + "-" + matchModeName(c.mode);
-    std::ofstream data(dir / (stem + ".dat"));
-    for (const PathResult& p : c.paths)
-      if (p.pixels > 0) data << renderPathName(p.path) << ' ' << p.medianMs << ' ' << p.error.mean() << '\n';
-    data.close();
-    std::ofstream gp(dir / (stem + ".gp"));
-    gp << "set terminal pngcairo size 900,600 noenhanced\nset output '" << (dir / (stem + ".png")).string() << "'\n"
-        << "set title '" << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << " (" << size.x << "x" << size.y
-        << ")'\nset xlabel 'median frame time (ms)'\nset ylabel 'mean error (" << c.errorUnit << ")'\n"
-        << "set grid\nset key outside right title 'path'\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\n";
-    // The plain lit render's frame time, for scale: a dashed vertical line.
-    for (const PathResult& p : c.paths)
-      if (p.path == RenderPath::Reference && p.medianMs > 0)
-        gp << "set arrow from " << p.medianMs << ", graph 0 to " << p.medianMs << ", graph 1 nohead dashtype 2\n"
-           << "set label 'reference' at " << p.medianMs << ", graph 0.95 offset 0.5, 0\n";
-    gp << "plot ";
-    int k = 0;
-    for (const PathResult& p : c.paths) {
-      if (p.pixels == 0) continue;
-      gp << (k ? ", " : "") << "'" << (dir / (stem + ".dat")).string() << "' using (strcol(1) eq '" << renderPathName(p.path)
-          << "' ? $2 : 1/0):3 with points pointsize 2.5 pointtype " << (k + 5) << " title '" << renderPathName(p.path) << "'";
-      ++k;
-    }
-    gp << "\n";
-    gp.close();
-    const std::string cmd = "gnuplot '" + (dir / (stem + ".gp")).string() + "' 2>&1";
-    if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "npr-viewer: gnuplot failed for %s (is gnuplot installed?)\n", stem.c_str());
-    md << "![" << stem << "](" << stem << ".png)\n\n";
-  }
-}
-
 // One model, palette and match mode: accuracy of every palette path, then the speed of all
 // paths, the static-frame counters and the cost of lighting features.
 ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& palette, MatchMode mode, const Options& o) {
@@ -453,7 +318,7 @@ int runBenchmark(const Options& o) {
       }
     }
   }
-  writeOutputs(results, o.outDir, o.size, frames, session->context->description());
+  writeBenchmarkReport(results, o.outDir, o.size, frames, session->context->description());
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   if (!failures.empty()) {

@@ -36,7 +36,8 @@ void applyAction(Viewer& v, const KeyAction& a) {
     case Action::ToggleOverlay: v.overlay = !v.overlay; break;
     case Action::ToggleHelp: v.help = !v.help; v.overlay = v.overlay || v.help; break;
     case Action::Screenshot: v.screenshotRequested = true; break;
-    // A palette that fails to load is noted for the overlay by ViewerState and the current one stays.
+    // A palette that fails to load is noted for the overlay by ViewerState and the current one
+    // stays: the statuses below are already reported.
     case Action::SelectPalette: (void)s.selectPalette(a.param, r); break;
     case Action::NextPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + 1) % paletteCount, r); break;
     case Action::PreviousPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r); break;

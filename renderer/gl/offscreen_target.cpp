@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include "renderer/gl/texture.h"
+
 namespace npr {
 
 Result<OffscreenTarget> OffscreenTarget::create(int width, int height, Format format) {
@@ -18,8 +20,7 @@ Result<OffscreenTarget> OffscreenTarget::create(int width, int height, Format fo
   glBindTexture(GL_TEXTURE_2D, t.color_.id());
   const bool f32 = format == Format::RGBA32F;
   glTexImage2D(GL_TEXTURE_2D, 0, f32 ? GL_RGBA32F : GL_RGBA8, width, height, 0, GL_RGBA, f32 ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl::setNearestSingleLevel(GL_TEXTURE_2D);
   glBindTexture(GL_TEXTURE_2D, 0);
   t.depthStencil_ = gl::createRenderbuffer();
   glBindRenderbuffer(GL_RENDERBUFFER, t.depthStencil_.id());

@@ -1,6 +1,7 @@
 // OpenGL-shaped lighting state calls with OpenGL's validation rules (see lighting_state.h).
 #include "renderer/lighting/lighting_state.h"
 
+#include <cassert>
 #include <cmath>
 #include <cstdio>
 
@@ -220,8 +221,9 @@ LightingFeatures LightingState::features() const {
 
 void applyDefaultMaterial(LightingState& lighting) {
   const float spec[4] = {0.35f, 0.35f, 0.35f, 1.0f};
-  (void)lighting.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
-  (void)lighting.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f);
+  [[maybe_unused]] const bool ok =
+      lighting.Materialfv(GL_FRONT_AND_BACK, GL_SPECULAR, spec).ok() && lighting.Materialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0f).ok();
+  assert(ok && "the default material is within OpenGL's ranges");
 }
 
 }  // namespace npr
