@@ -1,5 +1,5 @@
 // The OpenGL 2.1 lighting equation (section 2.14.1), in eye space: the same equation as
-// renderer/lighting_model.h, specialised by #defines to the features the scene uses:
+// renderer/lighting/lighting_model.h, specialised by #defines to the features the scene uses:
 // NUM_LIGHTS, HAS_POSITIONAL, HAS_ATTENUATION, HAS_SPOT, HAS_SPECULAR, LOCAL_VIEWER,
 // TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
 // the prepared products of light and material colours.

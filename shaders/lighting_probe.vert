@@ -1,5 +1,7 @@
 // Evaluates shaders/lighting.glsl at given eye-space points and normals, one point per
 // pixel of a float target: how the CPU and GLSL lighting are checked against each other.
+// Used only by the GL tests (tests/support/lighting_probe.cpp); it lives here, embedded with
+// the others, because it #includes lighting.glsl from the same table.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in float aBack;

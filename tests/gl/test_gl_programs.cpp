@@ -1,10 +1,12 @@
-// GL tier: programs, their uniforms and the program cache. A uniform name that no stage
-// declares is reported like a GL error (so the test that triggers it fails); a uniform a
-// variant compiled out is skipped quietly; the cache builds each variant once.
+// GL tier: programs, their uniforms, the program cache and the pass states. A uniform name
+// that no stage declares is reported like a GL error (so the test that triggers it fails); a
+// uniform a variant compiled out is skipped quietly; the cache builds each variant once; each
+// pass-state preset is what GL holds after it is applied.
 #include <gtest/gtest.h>
 
 #include "gl/gl_test_env.h"
 #include "renderer/gl/gl_debug.h"
+#include "renderer/gl/pass_state.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/shader_program.h"
 
@@ -68,6 +70,57 @@ TEST(ShaderProgram, ACompileErrorNamesTheFileAndVariant) {
   EXPECT_NE(p.error().find("mesh.frag"), std::string::npos) << p.error();
   EXPECT_NE(p.error().find("-DPATH_PIXEL"), std::string::npos) << p.error();
   gl::resetErrors();  // the driver may report the failed compile through KHR_debug too
+}
+
+bool enabled(GLenum cap) { return glIsEnabled(cap) == GL_TRUE; }
+GLint integer(GLenum what) {
+  GLint v = 0;
+  glGetIntegerv(what, &v);
+  return v;
+}
+
+void expectApplied(const gl::PassState& s, const char* name) {
+  SCOPED_TRACE(name);
+  gl::apply(s);
+  EXPECT_EQ(enabled(GL_DEPTH_TEST), s.depthTest);
+  EXPECT_EQ(GLenum(integer(GL_DEPTH_FUNC)), s.depthFunc);
+  EXPECT_EQ(integer(GL_DEPTH_WRITEMASK) != 0, s.depthWrite);
+  GLboolean colour[4] = {};
+  glGetBooleanv(GL_COLOR_WRITEMASK, colour);
+  for (GLboolean c : colour) EXPECT_EQ(c == GL_TRUE, s.colorWrite);
+  EXPECT_EQ(enabled(GL_BLEND), s.blend);
+  if (s.blend) {
+    EXPECT_EQ(integer(GL_BLEND_SRC_RGB), GL_SRC_ALPHA);
+    EXPECT_EQ(integer(GL_BLEND_DST_RGB), GL_ONE_MINUS_SRC_ALPHA);
+    EXPECT_EQ(integer(GL_BLEND_SRC_ALPHA), GL_ZERO);  // destination alpha stays opaque
+    EXPECT_EQ(integer(GL_BLEND_DST_ALPHA), GL_ONE);
+  }
+  EXPECT_EQ(enabled(GL_STENCIL_TEST), s.stencilTest);
+  if (s.stencilTest) {
+    EXPECT_EQ(GLenum(integer(GL_STENCIL_FUNC)), s.stencilFunc);
+    EXPECT_EQ(GLenum(integer(GL_STENCIL_PASS_DEPTH_PASS)), s.stencilPass);
+  }
+  EXPECT_EQ(enabled(GL_SCISSOR_TEST), s.scissor);
+  EXPECT_EQ(enabled(GL_PROGRAM_POINT_SIZE), s.programPointSize);
+}
+
+TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
+  // Applied in an order where each preset differs from the previous one in what it sets.
+  expectApplied(gl::pass::kStencilMask, "stencil mask");
+  expectApplied(gl::pass::kLines, "lines");
+  expectApplied(gl::pass::kStencilLayer, "stencil layer");
+  expectApplied(gl::pass::kMarker, "marker");
+  expectApplied(gl::pass::kStencilBackground, "stencil background");
+  expectApplied(gl::pass::kMesh, "mesh");
+  expectApplied(gl::pass::kScreenOverlay, "screen overlay");
+  expectApplied(gl::pass::kBackground, "background");
+  // What an overlay drawn after the renderer finds.
+  gl::apply(gl::pass::kStencilLayer);
+  gl::restoreDefaults();
+  EXPECT_FALSE(enabled(GL_DEPTH_TEST) || enabled(GL_STENCIL_TEST) || enabled(GL_SCISSOR_TEST) || enabled(GL_BLEND));
+  EXPECT_EQ(integer(GL_STENCIL_WRITEMASK) & 0xFF, 0xFF);
+  EXPECT_EQ(integer(GL_CURRENT_PROGRAM), 0);
+  EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), 0);
 }
 
 }  // namespace
