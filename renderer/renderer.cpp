@@ -49,12 +49,10 @@ Status Renderer::prepare(const RenderSettings& s) {
 void Renderer::clearViewport(const glm::ivec4& viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
-  gl::apply(gl::pass::kMesh);  // depth and stencil writes on for the clear
-  glEnable(GL_SCISSOR_TEST);   // confines the clears to our viewport
+  gl::apply(gl::pass::kClearViewport);
   glClearDepth(1.0);
   glClearStencil(0);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  glDisable(GL_SCISSOR_TEST);
 }
 
 Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {

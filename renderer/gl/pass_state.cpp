@@ -15,11 +15,11 @@ void apply(const PassState& s) {
   } else {
     glDisable(GL_BLEND);
   }
+  glStencilMask(0xFF);
   if (s.stencilTest) {
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(s.stencilFunc, 1, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass);
-    glStencilMask(0xFF);
   } else {
     glDisable(GL_STENCIL_TEST);
   }
@@ -29,7 +29,6 @@ void apply(const PassState& s) {
 
 void restoreDefaults() {
   apply(pass::kBackground);
-  glStencilMask(0xFF);
   glBindVertexArray(0);
   glUseProgram(0);
 }

@@ -20,6 +20,10 @@ struct PassState {
 };
 
 namespace pass {
+// Clears: depth (and stencil) writes on, scissored to the viewport when only part of the
+// framebuffer is ours (the split view clears two viewports of one window).
+inline constexpr PassState kClearTarget = [] { PassState s; s.depthWrite = true; return s; }();
+inline constexpr PassState kClearViewport = [] { PassState s; s.depthWrite = true; s.scissor = true; return s; }();
 // Background of every path and full-screen passes: behind everything, touches no depth.
 inline constexpr PassState kBackground{};
 // Mesh drawing: ordinary depth-tested drawing.
@@ -62,8 +66,10 @@ inline constexpr PassState kMarker = [] { PassState s; s.programPointSize = true
 }  // namespace pass
 
 void apply(const PassState& state);
-// Leaves the context as an overlay drawn after the renderer expects it (Dear ImGui's backend
-// sets its own state but not the stencil mask, the bound program or the vertex array).
+// Every pass writes all stencil bits: the mask is set whatever the preset.
+// restoreDefaults leaves the context as an overlay drawn after the renderer expects it (Dear
+// ImGui's backend sets its own state but not the stencil mask, the bound program or the
+// vertex array).
 void restoreDefaults();
 
 }  // namespace npr::gl

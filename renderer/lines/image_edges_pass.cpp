@@ -39,7 +39,7 @@ Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, c
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size.x, size.y);
   glClearColor(0, 0, 0, 0);
-  gl::apply(gl::pass::kMesh);  // depth writes on for the clear
+  gl::apply(gl::pass::kClearTarget);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   Status status = drawGeometry(mesh, camera, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> sobel = programs.get(gl::EdgeProgram{}, stats.shaderBuilds);

@@ -102,10 +102,12 @@ void expectApplied(const gl::PassState& s, const char* name) {
   }
   EXPECT_EQ(enabled(GL_SCISSOR_TEST), s.scissor);
   EXPECT_EQ(enabled(GL_PROGRAM_POINT_SIZE), s.programPointSize);
+  EXPECT_EQ(integer(GL_STENCIL_WRITEMASK) & 0xFF, 0xFF);
 }
 
 TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
   // Applied in an order where each preset differs from the previous one in what it sets.
+  expectApplied(gl::pass::kClearViewport, "clear viewport");
   expectApplied(gl::pass::kStencilMask, "stencil mask");
   expectApplied(gl::pass::kLines, "lines");
   expectApplied(gl::pass::kStencilLayer, "stencil layer");
@@ -113,6 +115,7 @@ TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
   expectApplied(gl::pass::kStencilBackground, "stencil background");
   expectApplied(gl::pass::kMesh, "mesh");
   expectApplied(gl::pass::kScreenOverlay, "screen overlay");
+  expectApplied(gl::pass::kClearTarget, "clear target");
   expectApplied(gl::pass::kBackground, "background");
   // What an overlay drawn after the renderer finds.
   gl::apply(gl::pass::kStencilLayer);
