@@ -37,7 +37,12 @@ TEST(PathTable, UserPathsAreTheSelectableRowsInTableOrder) {
   for (const PathInfo& p : renderPaths())
     if (p.userSelectable) expected.push_back(p.id);
   EXPECT_EQ(userRenderPaths(), expected);
-  EXPECT_EQ(userRenderPathNames(), "stencil, triangle, vertex, pixel, smooth, reference");
+  std::string joined;
+  for (RenderPath p : expected) joined += (joined.empty() ? "" : "|") + std::string(renderPathName(p));
+  EXPECT_EQ(userRenderPathNames("|"), joined);
+  // The shipped paths stay offered (a new row adds to these; it needs no edit here).
+  for (const char* name : {"stencil", "triangle", "vertex", "pixel", "smooth", "reference"})
+    EXPECT_TRUE(std::find(expected.begin(), expected.end(), *parseRenderPath(name)) != expected.end()) << name;
   EXPECT_FALSE(pathInfo(RenderPath::LitTextured).userSelectable);
   EXPECT_FALSE(pathInfo(RenderPath::Reference).usesPalette);
   EXPECT_TRUE(pathInfo(RenderPath::Stencil).perTriangle && pathInfo(RenderPath::Triangle).perTriangle);
