@@ -41,8 +41,11 @@ TEST(PathTable, UserPathsAreTheSelectableRowsInTableOrder) {
   for (RenderPath p : expected) joined += (joined.empty() ? "" : "|") + std::string(renderPathName(p));
   EXPECT_EQ(userRenderPathNames("|"), joined);
   // The shipped paths stay offered (a new row adds to these; it needs no edit here).
-  for (const char* name : {"stencil", "triangle", "vertex", "pixel", "smooth", "reference"})
-    EXPECT_TRUE(std::find(expected.begin(), expected.end(), *parseRenderPath(name)) != expected.end()) << name;
+  for (const char* name : {"stencil", "triangle", "vertex", "pixel", "smooth", "reference"}) {
+    const std::optional<RenderPath> p = parseRenderPath(name);
+    ASSERT_TRUE(p) << name;
+    EXPECT_TRUE(std::find(expected.begin(), expected.end(), *p) != expected.end()) << name;
+  }
   EXPECT_FALSE(pathInfo(RenderPath::LitTextured).userSelectable);
   EXPECT_FALSE(pathInfo(RenderPath::Reference).usesPalette);
   EXPECT_TRUE(pathInfo(RenderPath::Stencil).perTriangle && pathInfo(RenderPath::Triangle).perTriangle);
