@@ -33,19 +33,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     npr::Result<npr::Mesh> m = npr::loadModel(o.models.front());
-    if (!m) {
-      std::fprintf(stderr, "npr-viewer: %s\n", m.error().c_str());
-      return 1;
-    }
+    if (!m) return npr::reportFailure(m.error());
     std::printf("%s\n", m->report.toJson().c_str());
     return 0;
   }
   if (!o.paletteInfo.empty()) {
     npr::Result<npr::Palette> p = npr::loadPalette(o.paletteInfo);
-    if (!p) {
-      std::fprintf(stderr, "npr-viewer: %s\n", p.error().c_str());
-      return 1;
-    }
+    if (!p) return npr::reportFailure(p.error());
     std::printf("%s\n", npr::paletteReportJson(*p).c_str());
     return 0;
   }

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/marker_pass.h"
@@ -38,7 +39,9 @@ Status Renderer::setPalette(const Palette& palette) {
   return okStatus();
 }
 
-void Renderer::collectGpuTime() { stats_.gpuMs = timer_.collect(stats_.gpuMs); }
+void Renderer::collectGpuTime() {
+  if (std::optional<double> ms = timer_.collect()) stats_.gpuMs = *ms;
+}
 
 Status Renderer::prepare(const RenderSettings& s) {
   if (!palette_ && pathInfo(s.path).usesPalette) return Error{"no palette loaded"};
@@ -57,8 +60,8 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 
 Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
   if (!mesh_) return okStatus();
-  FrameContext frame{camera, viewport, s, lighting_, *mesh_, gpuMesh_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
-  return paths_[static_cast<size_t>(&pathInfo(s.path) - renderPaths().data())]->draw(frame);
+  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
+  return paths_[pathIndex(s.path)]->draw(frame);
 }
 
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
@@ -75,7 +78,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (result && mesh_) result = lines_.draw(camera, s.lines, viewport, programs_, stats_);
   timer_.end();
   gl::restoreDefaults();
-  stats_.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+  stats_.cpuFrameMs = msSince(frameStart);
   return result;
 }
 

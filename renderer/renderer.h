@@ -95,7 +95,7 @@ class Renderer {
   gl::ProgramCache programs_;
   gl::GpuTimer timer_;
   gl::VertexArray emptyVao_;  // full-screen passes make their vertices in the shader
-  std::vector<std::unique_ptr<RenderPass>> paths_;  // indexed like renderPaths()
+  std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
   LinePass lines_;
   ImageEdgesPass imageEdges_;
 };

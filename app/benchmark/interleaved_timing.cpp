@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "renderer/core/elapsed.h"
+
 namespace npr {
 
 double median(std::vector<double> v) {
@@ -28,7 +30,7 @@ std::vector<FrameTiming> timeInterleaved(Renderer& r, const OffscreenTarget& tar
       const auto t0 = std::chrono::steady_clock::now();
       const Status st = r.render(frame.camera, frame.settings, {0, 0, target.width(), target.height()});
       finishGpuWork();
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      const double ms = msSince(t0);
       r.collectGpuTime();
       if (!st) ++failures;
       if (round < 0) continue;

@@ -8,6 +8,7 @@
 
 #include "app/headless/headless_session.h"
 #include "app/startup.h"
+#include "renderer/core/elapsed.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
@@ -34,7 +35,7 @@ int runHeadless(const Options& o) {
     if (Status s = renderer->render(cam, state.settings, {0, 0, o.size.x, o.size.y}); !s)
       return reportFailure("render failed: " + s.error());
     finishGpuWork();
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    ms.push_back(msSince(t0));
   }
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,

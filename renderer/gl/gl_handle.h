@@ -4,6 +4,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cstddef>
 #include <utility>
 
 namespace npr::gl {
@@ -63,5 +64,13 @@ inline Texture createTexture() { GLuint n = 0; glGenTextures(1, &n); return Text
 inline Framebuffer createFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return Framebuffer(n); }
 inline Renderbuffer createRenderbuffer() { GLuint n = 0; glGenRenderbuffers(1, &n); return Renderbuffer(n); }
 inline Query createQuery() { GLuint n = 0; glGenQueries(1, &n); return Query(n); }
+
+// Replaces `buffer`'s contents. Goes through the copy-write target, so neither the array-buffer
+// binding nor any vertex array's element binding changes.
+inline void uploadBuffer(const Buffer& buffer, const void* data, std::size_t bytes, GLenum usage) {
+  glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+  glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
 
 }  // namespace npr::gl

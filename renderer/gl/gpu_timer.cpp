@@ -20,9 +20,9 @@ void GpuTimer::end() {
   running_ = false;
 }
 
-double GpuTimer::collect(double previous) {
+std::optional<double> GpuTimer::collect() {
   // Queries finish in the order they were issued: read from the oldest pending one.
-  double ms = previous;
+  std::optional<double> ms;
   for (int k = 0; k < kSlots; ++k) {
     const int i = (next_ + k) % kSlots;
     if (!pending_[i]) continue;

@@ -3,6 +3,8 @@
 // submission, not rasterisation: there they read microseconds for milliseconds of work.)
 #pragma once
 
+#include <optional>
+
 #include "renderer/gl/gl_handle.h"
 
 namespace npr::gl {
@@ -13,8 +15,8 @@ class GpuTimer {
   // Starts timing this frame unless every query is still in flight (then the frame is not timed).
   void begin();
   void end();
-  // Reads finished queries; returns the newest finished frame's milliseconds, or `previous`.
-  double collect(double previous);
+  // Reads finished queries; the newest finished frame's milliseconds, if any finished.
+  std::optional<double> collect();
 
  private:
   static constexpr int kSlots = 4;

@@ -5,18 +5,10 @@
 #include <chrono>
 #include <cstdint>
 
+#include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
 
 namespace npr {
-namespace {
-
-void uploadLines(const gl::Buffer& buffer, const std::vector<FeatureLine>& lines, GLenum usage) {
-  glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(FeatureLine)), lines.data(), usage);
-}
-
-}  // namespace
-
 void LinePass::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   edges_.reset();
@@ -38,7 +30,7 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   if ((ls.creases || ls.boundaries) && uploadedCreaseAngle_ != ls.creaseAngle) {
     // Static lines are creases first, then boundaries: the parts asked for are drawn as ranges.
     const auto& lines = edges_->staticLines(ls.creaseAngle);
-    uploadLines(staticLines_, lines, GL_STATIC_DRAW);
+    gl::uploadBuffer(staticLines_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STATIC_DRAW);
     staticCount_ = lines.size();
     creaseCount_ = static_cast<std::size_t>(
         std::count_if(lines.begin(), lines.end(), [](const FeatureLine& l) { return l.kind == float(EdgeKind::Crease); }));
@@ -48,12 +40,12 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
   if (ls.silhouettes && !(eye == silhouetteEye_)) {
     const auto& lines = edges_->silhouettes(eye);
-    uploadLines(silhouettes_, lines, GL_STREAM_DRAW);
+    gl::uploadBuffer(silhouettes_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STREAM_DRAW);
     silhouetteCount_ = lines.size();
     silhouetteEye_ = eye;
     ++stats.bufferUploads;
   }
-  stats.cpuLinesMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  stats.cpuLinesMs += msSince(t0);
 
   Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{ls.sketchy, ls.depthFalloff}, stats.shaderBuilds);
   if (!prog) return Error{prog.error()};

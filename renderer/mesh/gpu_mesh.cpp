@@ -4,12 +4,9 @@
 namespace npr {
 namespace {
 
-gl::Buffer uploadBuffer(const void* data, std::size_t bytes) {
+gl::Buffer staticBuffer(const void* data, std::size_t bytes) {
   gl::Buffer b = gl::createBuffer();
-  // The copy-write target leaves the array-buffer binding and every vertex array as they are.
-  glBindBuffer(GL_COPY_WRITE_BUFFER, b.id());
-  glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
-  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  gl::uploadBuffer(b, data, bytes, GL_STATIC_DRAW);
   return b;
 }
 
@@ -27,9 +24,9 @@ void GpuMesh::upload(const Mesh& mesh) {
   clear();
   if (mesh.indices.empty()) return;
   triangleCount_ = mesh.triangleCount();
-  positions_ = uploadBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-  normals_ = uploadBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
-  indices_ = uploadBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  positions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+  normals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   vao_ = gl::createVertexArray();
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_ARRAY_BUFFER, positions_.id());

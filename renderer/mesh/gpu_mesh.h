@@ -18,8 +18,6 @@ class GpuMesh {
   // Uploads `mesh` (replacing what was there); an empty mesh leaves nothing to draw.
   void upload(const Mesh& mesh);
   void clear();
-  bool empty() const { return triangleCount_ == 0; }
-  std::size_t triangleCount() const { return triangleCount_; }
 
   // Binds the vertex array with the mesh's own indices and draws every triangle.
   void drawAll() const;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "renderer/core/elapsed.h"
 #include "renderer/core/json.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
@@ -81,7 +82,7 @@ Result<Mesh> loadMesh(const std::string& path) {
   }
   if (!m) return m;
   finalizeMesh(*m);
-  m->report.load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  m->report.load_ms = msSince(t0);
   return m;
 }
 

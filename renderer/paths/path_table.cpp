@@ -32,11 +32,14 @@ const std::vector<PathInfo>& renderPaths() {
   return table;
 }
 
-const PathInfo& pathInfo(RenderPath p) {
-  for (const PathInfo& info : renderPaths())
-    if (info.id == p) return info;
-  return renderPaths().front();  // unreachable: every enumerator has a row (tested)
+std::size_t pathIndex(RenderPath p) {
+  const auto& table = renderPaths();
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (table[i].id == p) return i;
+  return 0;  // unreachable: every enumerator has a row (tested)
 }
+
+const PathInfo& pathInfo(RenderPath p) { return renderPaths()[pathIndex(p)]; }
 
 const char* renderPathName(RenderPath p) { return pathInfo(p).name; }
 

@@ -4,6 +4,7 @@
 // is a mesh shading).
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,6 +37,8 @@ struct PathInfo {
 // Every path, in the order P cycles through the user-selectable ones.
 const std::vector<PathInfo>& renderPaths();
 const PathInfo& pathInfo(RenderPath p);
+// The row of `p` in renderPaths().
+std::size_t pathIndex(RenderPath p);
 const char* renderPathName(RenderPath p);
 // Any path by name, internal ones included.
 std::optional<RenderPath> parseRenderPath(const std::string& name);

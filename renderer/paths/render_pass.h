@@ -12,7 +12,6 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/gpu_mesh.h"
-#include "renderer/mesh/mesh.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
@@ -24,7 +23,6 @@ struct FrameContext {
   glm::ivec4 viewport;  // x, y, width, height in the bound framebuffer
   const RenderSettings& settings;
   const LightingState& lighting;
-  const Mesh& mesh;                  // the CPU mesh (per-triangle shading, bounds)
   const GpuMesh& gpuMesh;
   const GpuPalette* palette;         // set whenever the path uses a palette
   TriangleShadingCache& triangles;   // shared by the per-triangle paths

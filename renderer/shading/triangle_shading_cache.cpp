@@ -5,12 +5,10 @@
 #include <chrono>
 #include <cmath>
 
+#include "renderer/core/elapsed.h"
+
 namespace npr {
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 bool nearlyEqual(float a, float b) { return std::fabs(a - b) <= 1e-5f * std::max(1.0f, std::max(std::fabs(a), std::fabs(b))); }
 bool nearlyEqual(const glm::vec3& a, const glm::vec3& b) { return nearlyEqual(a.x, b.x) && nearlyEqual(a.y, b.y) && nearlyEqual(a.z, b.z); }
@@ -78,11 +76,8 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     boundsValid_ = false;
   }
   if (!bucketsUploaded_) {
-    // The copy-write target leaves every vertex array's element binding as it is.
-    glBindBuffer(GL_COPY_WRITE_BUFFER, bucketIndices_.id());
-    glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(shading_.bucketIndices.size() * sizeof(std::uint32_t)),
-                 shading_.bucketIndices.data(), GL_STREAM_DRAW);
-    glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+    gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t),
+                     GL_STREAM_DRAW);
     bucketsUploaded_ = true;
     ++stats.bufferUploads;
   }
