@@ -18,7 +18,9 @@ header=$(head -1 "$csv")
 [ "$(echo "$header" | tr ',' '\n' | wc -l)" = 20 ] || { echo "FAIL: unexpected CSV header: $header"; fail=1; }
 awk -F, 'NR > 1 && NF != 20 { bad = 1 } END { exit bad }' "$csv" || { echo "FAIL: a CSV row does not have 20 fields"; fail=1; }
 # Every path of the binary's path table, internal ones included.
-for path in $("$viewer" --list-paths | cut -f1); do
+all_paths=$("$viewer" --list-paths | cut -f1)
+[ -n "$all_paths" ] || { echo "FAIL: --list-paths printed nothing"; fail=1; }
+for path in $all_paths; do
   grep -q ",$path," "$csv" || { echo "FAIL: path $path missing from results.csv"; fail=1; }
 done
 err() { awk -F, -v p="$1" 'NR > 1 && $4 == p { print $14 }' "$csv"; }   # mean_error

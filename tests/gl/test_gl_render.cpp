@@ -14,11 +14,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/lighting/lighting_state.h"
 #include "gl/gl_test_env.h"
 #include "renderer/core/image_io.h"
 #include "renderer/immediate_api.h"
 #include "renderer/lighting/lighting_model.h"
+#include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
