@@ -6,20 +6,17 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <filesystem>
+#include <memory>
 
 #include "renderer/core/colour.h"
+#include "renderer/core/input_file.h"
 
 namespace npr {
-namespace fs = std::filesystem;
 namespace {
-constexpr int kMaxImageSide = 16384;
-}  // namespace
 
-Result<ImageRGBA8> loadImage(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return Error{path + ": no such image file"};
-  if (fs::is_directory(path, ec)) return Error{path + ": is a directory, not an image"};
+// Opens the image after the input-file checks; returns the reader and its spec checked.
+Result<std::unique_ptr<OIIO::ImageInput>> openImage(const std::string& path) {
+  if (Result<std::uintmax_t> f = checkInputFile(path, InputKind::Image); !f) return Error{f.error()};
   // Keep straight (unassociated) alpha: OpenImageIO would otherwise premultiply PNG and TGA
   // colours on read, and the compositing below expects straight alpha.
   OIIO::ImageSpec config;
@@ -30,22 +27,85 @@ Result<ImageRGBA8> loadImage(const std::string& path) {
     if (why.empty()) why = "unsupported or corrupt image";
     return Error{path + ": cannot read image: " + why};
   }
-  const OIIO::ImageSpec spec = in->spec();
+  const OIIO::ImageSpec& spec = in->spec();
   if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
     return Error{path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                  " is outside 1.." + std::to_string(kMaxImageSide)};
+  if (spec.nchannels < 1 || spec.nchannels > 64) return Error{path + ": image has " + std::to_string(spec.nchannels) + " channels"};
+  return in;
+}
+
+// Area weights of source columns for each output column: output x covers source
+// [x * scale, (x + 1) * scale).
+struct Footprint {
+  std::vector<int> first;       // per output: index into taps
+  std::vector<int> src;         // per tap: source index
+  std::vector<float> weight;    // per tap: covered fraction of that source pixel
+};
+
+Footprint footprint(int srcSize, int outSize) {
+  Footprint f;
+  const double scale = double(srcSize) / outSize;
+  for (int o = 0; o < outSize; ++o) {
+    f.first.push_back(static_cast<int>(f.src.size()));
+    const double a = o * scale, b = (o + 1) * scale;
+    for (int s = static_cast<int>(a); s < srcSize && s < b; ++s) {
+      const double w = std::min<double>(b, s + 1) - std::max<double>(a, s);
+      if (w > 0) f.src.push_back(s), f.weight.push_back(static_cast<float>(w));
+    }
+  }
+  f.first.push_back(static_cast<int>(f.src.size()));
+  return f;
+}
+
+}  // namespace
+
+Result<ImageSize> readImageSize(const std::string& path) {
+  Result<std::unique_ptr<OIIO::ImageInput>> in = openImage(path);
+  if (!in) return Error{in.error()};
+  return ImageSize{(*in)->spec().width, (*in)->spec().height};
+}
+
+Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit) {
+  Result<std::unique_ptr<OIIO::ImageInput>> opened = openImage(path);
+  if (!opened) return Error{opened.error()};
+  OIIO::ImageInput& in = **opened;
+  const OIIO::ImageSpec spec = in.spec();
   const int nc = spec.nchannels;
-  if (nc < 1) return Error{path + ": image has no channels"};
-  const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (nc == 2 ? 1 : (nc >= 4 ? 3 : -1));
+  const int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < nc ? spec.alpha_channel : (nc == 2 ? 1 : (nc >= 4 ? 3 : -1));
   const bool isFloat = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
                        spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-  ImageRGBA8 img{spec.width, spec.height, std::vector<std::uint8_t>(static_cast<size_t>(spec.width) * spec.height * 4)};
+  const int outW = std::max(1, std::min(spec.width, fit.width)), outH = std::max(1, std::min(spec.height, fit.height));
+  const bool reduce = outW != spec.width || outH != spec.height;
+  ImageRGBA8 img{outW, outH, std::vector<std::uint8_t>(static_cast<size_t>(outW) * outH * 4)};
+  // Reduction: each source row is averaged horizontally into linear, alpha-weighted sums
+  // (r a, g a, b a, a) and added to the output rows it overlaps, weighted by the overlap.
+  const Footprint fx = reduce ? footprint(spec.width, outW) : Footprint{};
+  const double scaleY = double(spec.height) / outH;
+  std::vector<double> acc(reduce ? static_cast<size_t>(outW) * 4 * 2 : 0);  // two output rows in flight
+  std::vector<float> rowSum(reduce ? static_cast<size_t>(outW) * 4 : 0);
+  int accRow = 0;  // the output row in acc's first half
+  const double area = scaleY * double(spec.width) / outW;  // of one output pixel, in source pixels
+  auto finishRow = [&](int oy) {
+    double* a = &acc[0];
+    for (int x = 0; x < outW; ++x) {
+      const double* s = &a[static_cast<size_t>(x) * 4];
+      std::uint8_t* d = &img.pixels[(static_cast<size_t>(oy) * outW + x) * 4];
+      const double cover = s[3];
+      for (int k = 0; k < 3; ++k) d[k] = toByte(linearToSrgb(cover > 1e-12 ? float(s[k] / cover) : 0.0f));
+      d[3] = toByte(float(cover / area));
+    }
+    std::copy(acc.begin() + outW * 4, acc.end(), acc.begin());
+    std::fill(acc.begin() + outW * 4, acc.end(), 0.0);
+  };
+
   const int rowsPerChunk = 64;
   std::vector<float> buf(static_cast<size_t>(spec.width) * rowsPerChunk * nc);
+  std::vector<float> lin(reduce ? static_cast<size_t>(spec.width) * 4 : 0);
   for (int y0 = 0; y0 < spec.height; y0 += rowsPerChunk) {
     const int y1 = std::min(spec.height, y0 + rowsPerChunk);
-    if (!in->read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data())) {
-      std::string why = in->geterror();
+    if (!in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data())) {
+      std::string why = in.geterror();
       return Error{path + ": image data could not be read (truncated or corrupt): " + (why.empty() ? "read failed" : why)};
     }
     for (int y = y0; y < y1; ++y) {
@@ -54,13 +114,41 @@ Result<ImageRGBA8> loadImage(const std::string& path) {
         float rgb[3];
         if (nc <= 2) rgb[0] = rgb[1] = rgb[2] = s[0];
         else for (int k = 0; k < 3; ++k) rgb[k] = s[k];
+        const float a = alpha >= 0 ? std::clamp(s[alpha], 0.0f, 1.0f) : 1.0f;
+        if (reduce) {
+          float* l = &lin[static_cast<size_t>(x) * 4];
+          for (int k = 0; k < 3; ++k) {
+            const float v = std::isfinite(rgb[k]) ? std::clamp(rgb[k], 0.0f, 1.0f) : 0.0f;
+            l[k] = (isFloat ? v : srgbToLinear(v)) * a;
+          }
+          l[3] = std::isfinite(a) ? a : 0.0f;
+          continue;
+        }
         if (isFloat) for (float& v : rgb) v = linearToSrgb(v);  // float images hold linear light
         std::uint8_t* d = &img.pixels[(static_cast<size_t>(y) * spec.width + x) * 4];
         for (int k = 0; k < 3; ++k) d[k] = toByte(rgb[k]);
-        d[3] = alpha >= 0 ? toByte(s[alpha]) : 255;
+        d[3] = toByte(a);
       }
+      if (!reduce) continue;
+      for (int x = 0; x < outW; ++x) {
+        float sum[4] = {0, 0, 0, 0};
+        for (int t = fx.first[x]; t < fx.first[x + 1]; ++t)
+          for (int k = 0; k < 4; ++k) sum[k] += lin[static_cast<size_t>(fx.src[t]) * 4 + k] * fx.weight[t];
+        for (int k = 0; k < 4; ++k) rowSum[static_cast<size_t>(x) * 4 + k] = sum[k];
+      }
+      // Source row y covers [y, y + 1) and output row o covers [o * scaleY, (o + 1) * scaleY).
+      const double top = y, bottom = y + 1.0;
+      for (int o = accRow; o <= accRow + 1 && o < outH; ++o) {
+        const double w = std::min(bottom, (o + 1) * scaleY) - std::max(top, o * scaleY);
+        if (w <= 0) continue;
+        double* a = &acc[static_cast<size_t>(o - accRow) * outW * 4];
+        for (size_t k = 0; k < rowSum.size(); ++k) a[k] += rowSum[k] * w;
+      }
+      while (accRow < outH && bottom >= (accRow + 1) * scaleY - 1e-9) finishRow(accRow++);
     }
   }
+  if (reduce)
+    while (accRow < outH) finishRow(accRow++);
   return img;
 }
 

@@ -10,9 +10,23 @@
 
 namespace npr {
 
+inline constexpr int kMaxImageSide = 16384;
+
+struct ImageSize {
+  int width = 0, height = 0;
+};
+
+// The size the file declares, from its header alone (nothing decoded): what budgets are
+// checked against before any pixel is read. Refuses non-regular files, files over
+// kMaxImageFileBytes and sides outside 1..kMaxImageSide.
+[[nodiscard]] Result<ImageSize> readImageSize(const std::string& path);
+
 // Grey, grey+alpha, RGB or RGBA; 8-bit, 16-bit or float (float taken as linear light and
-// encoded); at most 16384 pixels a side. Alpha stays straight (unassociated).
-[[nodiscard]] Result<ImageRGBA8> loadImage(const std::string& path);
+// encoded); at most kMaxImageSide pixels a side. Alpha stays straight (unassociated).
+// An image larger than `fit` is reduced to fit while it is read (an area average in linear
+// light, weighted by alpha, streamed a few rows at a time), so the full-size pixels never
+// exist in memory.
+[[nodiscard]] Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit = {kMaxImageSide, kMaxImageSide});
 [[nodiscard]] Result<ImageRGBA8> resizeImage(const ImageRGBA8& image, int width, int height);
 [[nodiscard]] Status writeImage(const std::string& path, const ImageRGBA8& image);
 

@@ -19,6 +19,8 @@ struct LoadReport {
   std::size_t triangles = 0;              // every triangle that will be drawn
   std::size_t polygons_triangulated = 0;  // faces with more than 3 corners
   std::size_t skipped_faces = 0;          // faces that could not be drawn at all
+  std::size_t repeated_corner_faces = 0;  // faces that named a vertex twice in a row; drawn without the repeat
+  std::size_t degenerate_triangles = 0;   // triangles (of faces or their triangulation) naming one vertex twice: not drawn
   std::size_t non_manifold_faces = 0;     // refused by the halfedge structure, drawn on copied vertices
   std::vector<std::string> warnings;
   double load_ms = 0.0;

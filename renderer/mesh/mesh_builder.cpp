@@ -8,18 +8,27 @@
 
 namespace npr {
 
-// Adds triangles to the halfedge mesh; faces it refuses (complex edges, duplicates, flipped
-// neighbours, repeated corners) are drawn on their own copies of the vertices and counted.
+// Adds triangles to the halfedge mesh. OpenMesh asserts (and so aborts the viewer) on a face
+// that names one vertex twice or a vertex that does not exist, so those never reach it: they
+// are dropped here and counted, whichever reader produced them. Faces it refuses for other
+// reasons (complex edges, duplicates, flipped neighbours) are drawn on their own copies of the
+// vertices and counted.
 void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::array<int, 3>>& tris, Mesh& m) {
   TriMesh& mesh = m.mesh;
   mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
   std::vector<TriMesh::VertexHandle> vh(verts.size());
   for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));
-  std::size_t refused = 0;
+  std::size_t refused = 0, degenerate = 0;
+  const long nv = static_cast<long>(verts.size());
   // OpenMesh prints an error line for each refused face; we count them in the report instead.
   auto& errlog = omerr();
   errlog.disable();
   for (const auto& t : tris) {
+    const bool inRange = t[0] >= 0 && t[1] >= 0 && t[2] >= 0 && t[0] < nv && t[1] < nv && t[2] < nv;
+    if (!inRange || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      ++degenerate;
+      continue;
+    }
     const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
     if (fh.is_valid()) continue;
     ++refused;
@@ -32,6 +41,10 @@ void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::ar
   }
   errlog.enable();
   m.report.non_manifold_faces = refused;
+  m.report.degenerate_triangles += degenerate;
+  if (degenerate)
+    m.report.warnings.push_back(std::to_string(degenerate) +
+                                " triangles named one vertex twice (a polygon touching itself, or a vertex that does not exist) and were not drawn");
   if (refused)
     m.report.warnings.push_back(std::to_string(refused) +
                                 " faces were refused by the halfedge structure (non-manifold edge, duplicate or "
@@ -39,7 +52,10 @@ void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::ar
 }
 
 // Centres the model on its bounding-box centre and scales it into the unit sphere, in double
-// precision, before anything becomes float.
+// precision, before anything becomes float. Coordinates near the double range (1e308) must not
+// overflow: the centre is taken as lo/2 + hi/2, offsets are halved before subtracting, and the
+// radius is a length computed relative to the largest component, so every intermediate stays
+// finite for any finite input.
 std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& in, const std::vector<char>* valid, LoadReport& report) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (size_t i = 0; i < in.size(); ++i) {
@@ -48,15 +64,25 @@ std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& in, con
     hi = glm::max(hi, in[i]);
   }
   if (lo.x > hi.x) lo = hi = glm::dvec3(0.0);
-  const glm::dvec3 centre = (lo + hi) * 0.5;
-  double radius = 0.0;
+  const glm::dvec3 halfCentre = lo * 0.25 + hi * 0.25;  // centre / 2
+  auto halfOffset = [&](const glm::dvec3& p) { return p * 0.5 - halfCentre; };  // (p - centre) / 2, finite
+  auto safeLength = [](const glm::dvec3& d) {
+    const double big = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    if (!(big > 0.0)) return 0.0;
+    return big * glm::length(d / big);
+  };
+  double halfRadius = 0.0;
   for (size_t i = 0; i < in.size(); ++i)
-    if (!valid || (*valid)[i]) radius = std::max(radius, glm::length(in[i] - centre));
-  const double scale = radius > 0.0 && std::isfinite(1.0 / radius) ? 1.0 / radius : 1.0;
-  report.original_centre = centre;
-  report.original_scale = scale;
+    if (!valid || (*valid)[i]) halfRadius = std::max(halfRadius, safeLength(halfOffset(in[i])));
+  // Dividing by the radius (not multiplying by its inverse) keeps tiny models finite too.
+  const bool usable = halfRadius > 0.0 && std::isfinite(halfRadius);
+  report.original_centre = halfCentre * 2.0;
+  report.original_scale = usable ? 0.5 / halfRadius : 1.0;
   std::vector<glm::vec3> out(in.size());
-  for (size_t i = 0; i < in.size(); ++i) out[i] = glm::vec3((in[i] - centre) * scale);
+  for (size_t i = 0; i < in.size(); ++i) {
+    const glm::dvec3 d = halfOffset(in[i]);
+    out[i] = glm::vec3(usable ? d / halfRadius : d * 2.0);
+  }
   return out;
 }
 

@@ -1,6 +1,7 @@
 // Loading meshes from files: OBJ through our own parser (obj_parser.h: double precision,
-// ear-clipped polygons, every face it cannot use reported), PLY/OFF/STL/OM through
-// OpenMesh's readers. Nothing is dropped without a warning in the report.
+// ear-clipped polygons, every face it cannot use reported), PLY/OFF/STL through our own readers
+// and OM through OpenMesh's in a child process (mesh_formats.h). Nothing is dropped without a
+// warning in the report, and OpenMesh's halfedge structure only sees faces it accepts.
 #pragma once
 
 #include <string>

@@ -7,46 +7,14 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 
-#include "renderer/mesh/mesh_builder.h"
-#include "renderer/mesh/polygon_triangulation.h"
+#include "renderer/core/input_file.h"
+#include "renderer/mesh/polygon_soup.h"
 
 namespace npr {
 namespace fs = std::filesystem;
 namespace {
-
-constexpr std::size_t kMaxWarnings = 50;
-
-struct Warnings {
-  std::vector<std::string>& out;
-  std::size_t dropped = 0;
-  void add(std::string w) {
-    if (out.size() < kMaxWarnings) out.push_back(std::move(w));
-    else ++dropped;
-  }
-  void finish() {
-    if (dropped) out.push_back("... and " + std::to_string(dropped) + " more warnings");
-  }
-};
-
-// Checks that `path` names a readable regular file and reads it whole.
-Result<std::string> readWholeFile(const std::string& path) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) return Error{path + ": no such file"};
-  if (fs::is_directory(st)) return Error{path + ": is a directory, not a mesh file"};
-  if (!fs::is_regular_file(st)) return Error{path + ": not a regular file"};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path + ": cannot be opened for reading (permissions?)"};
-  std::string data;
-  const auto size = fs::file_size(path, ec);
-  if (!ec) data.reserve(size);
-  data.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{path + ": read error"};
-  return data;
-}
 
 Status checkText(const std::string& path, const std::string& data) {
   if (data.size() >= 2 && ((unsigned char)data[0] == 0xFF && (unsigned char)data[1] == 0xFE))
@@ -58,33 +26,24 @@ Status checkText(const std::string& path, const std::string& data) {
   return okStatus();
 }
 
-struct ObjData {
-  std::vector<glm::dvec3> vertices;
-  std::vector<char> vertexValid;
-  std::vector<std::array<int, 3>> triangles;  // 0-based
-};
-
 class ObjParser {
  public:
-  ObjParser(const std::string& path, const std::string& text, LoadReport& report)
-      : path_(path), text_(text), report_(report), warn_{report.warnings} {}
+  ObjParser(const std::string& path, const std::string& text, PolygonSoup& soup, LoadReport& report)
+      : path_(path), text_(text), soup_(soup), report_(report), warn_(report.warnings), faces_(soup, report, warn_) {}
 
-  Status parse(ObjData& out) {
+  void parse() {
     const char* p = text_.data();
     const char* end = p + text_.size();
     if (end - p >= 3 && std::memcmp(p, "\xEF\xBB\xBF", 3) == 0) p += 3;  // UTF-8 byte order mark
     std::size_t line = 0;
-    std::vector<int> face;
-    std::vector<glm::dvec3> poly;
     while (p < end) {
       ++line;
       const char* eol = static_cast<const char*>(std::memchr(p, '\n', static_cast<size_t>(end - p)));
       if (!eol) eol = end;
-      parseLine(p, eol, line, out, face, poly);
+      parseLine(p, eol, line);
       p = eol + 1;
     }
     warn_.finish();
-    return okStatus();
   }
 
  private:
@@ -97,8 +56,7 @@ class ObjParser {
 
   std::string where(std::size_t line) const { return path_ + " line " + std::to_string(line); }
 
-  void parseLine(const char* p, const char* e, std::size_t line, ObjData& out, std::vector<int>& face,
-                 std::vector<glm::dvec3>& poly) {
+  void parseLine(const char* p, const char* e, std::size_t line) {
     p = skipSpace(p, e);
     if (p == e || *p == '#') return;
     const char* kw = p;
@@ -110,60 +68,32 @@ class ObjParser {
       for (int i = 0; i < 3; ++i) ok = ok && parseDouble(p, e, v[i]);
       if (!ok) {
         warn_.add(where(line) + ": vertex has fewer than 3 numeric coordinates; faces using it are skipped");
-        out.vertices.push_back(glm::dvec3(0.0));
-        out.vertexValid.push_back(0);
+        soup_.vertices.push_back(glm::dvec3(0.0));
+        soup_.vertexValid.push_back(0);
         return;
       }
-      const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-      if (!finite) warn_.add(where(line) + ": vertex has a non-finite coordinate; faces using it are skipped");
-      out.vertices.push_back(finite ? v : glm::dvec3(0.0));
-      out.vertexValid.push_back(finite ? 1 : 0);
+      if (!soup_.addVertex(v)) warn_.add(where(line) + ": vertex has a non-finite coordinate; faces using it are skipped");
     } else if (key == "f") {
-      face.clear();
+      corners_.clear();
+      const long long count = static_cast<long long>(soup_.vertices.size());
       while (true) {
         p = skipSpace(p, e);
         if (p >= e || *p == '#') break;
-        long idx = 0;
+        long long idx = 0;
         const char* start = p;
         if (*p == '+') ++p;
         auto [q, ec] = std::from_chars(p, e, idx);
-        if (ec != std::errc() ) {
+        if (ec != std::errc() || idx == 0) {
           warn_.add(where(line) + ": face has a malformed index '" + std::string(start, std::min<const char*>(e, start + 16)) + "'; face skipped");
           ++report_.skipped_faces;
           return;
         }
         p = q;
         while (p < e && !isSpace(*p)) ++p;  // the /vt/vn parts are not needed
-        const long count = static_cast<long>(out.vertices.size());
-        const long resolved = idx > 0 ? idx - 1 : count + idx;  // negative indices are relative
-        if (idx == 0 || resolved < 0 || resolved >= count) {
-          warn_.add(where(line) + ": face references vertex " + std::to_string(idx) + " but only " +
-                    std::to_string(count) + " vertices are defined so far; face skipped");
-          ++report_.skipped_faces;
-          return;
-        }
-        if (!out.vertexValid[static_cast<size_t>(resolved)]) {
-          warn_.add(where(line) + ": face uses an invalid vertex; face skipped");
-          ++report_.skipped_faces;
-          return;
-        }
-        face.push_back(static_cast<int>(resolved));
+        // Negative indices count back from the last vertex so far; clamp so no arithmetic overflows.
+        corners_.push_back(idx > 0 ? idx - 1 : (idx < -count ? -1 : count + idx));
       }
-      if (face.size() < 3) {
-        warn_.add(where(line) + ": face has fewer than 3 vertices; skipped");
-        ++report_.skipped_faces;
-        return;
-      }
-      if (face.size() == 3) {
-        out.triangles.push_back({face[0], face[1], face[2]});
-        return;
-      }
-      ++report_.polygons_triangulated;
-      poly.clear();
-      for (int i : face) poly.push_back(out.vertices[static_cast<size_t>(i)]);
-      const std::vector<int> tri = triangulatePolygon(poly);
-      for (size_t k = 0; k + 2 < tri.size(); k += 3)
-        out.triangles.push_back({face[static_cast<size_t>(tri[k])], face[static_cast<size_t>(tri[k + 1])], face[static_cast<size_t>(tri[k + 2])]});
+      faces_.add(corners_, "line", line);
     } else if (key == "mtllib") {
       p = skipSpace(p, e);
       const char* q = e;
@@ -203,32 +133,29 @@ class ObjParser {
 
   const std::string& path_;
   const std::string& text_;
+  PolygonSoup& soup_;
   LoadReport& report_;
   Warnings warn_;
+  FaceBuilder faces_;
+  std::vector<long long> corners_;
   std::size_t unknownKeywords_ = 0;
 };
 
 }  // namespace
 
 Result<Mesh> loadObj(const std::string& path) {
-  Result<std::string> text = readWholeFile(path);
+  Result<std::string> text = readInputFile(path, InputKind::Mesh);
   if (!text) return Error{text.error()};
   if (Status s = checkText(path, *text); !s) return Error{s.error()};
-  Mesh m;
-  m.report.file = path;
-  ObjData data;
-  data.vertices.reserve(text->size() / 60);
-  data.triangles.reserve(text->size() / 30);
-  ObjParser parser(path, *text, m.report);
-  if (Status s = parser.parse(data); !s) return Error{s.error()};
-  if (data.triangles.empty()) {
-    if (text->find_first_not_of(" \t\r\n") == std::string::npos) return Error{path + ": the file is empty"};
-    return Error{path + ": contains no faces (" + std::to_string(data.vertices.size()) +
-                 " vertices, but no 'f' lines that could be used); nothing to draw"};
-  }
-  std::vector<glm::vec3> verts = normalizePositions(data.vertices, &data.vertexValid, m.report);
-  buildTriMesh(verts, data.triangles, m);
-  return m;
+  if (text->find_first_not_of(" \t\r\n") == std::string::npos) return Error{path + ": the file is empty"};
+  LoadReport report;
+  report.file = path;
+  PolygonSoup soup;
+  soup.vertices.reserve(text->size() / 60);
+  soup.vertexValid.reserve(text->size() / 60);
+  soup.triangles.reserve(text->size() / 30);
+  ObjParser(path, *text, soup, report).parse();
+  return buildMesh(soup, std::move(report));
 }
 
 }  // namespace npr

@@ -16,6 +16,11 @@ bool pointInTriangle(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2&
 }  // namespace
 
 std::vector<int> triangulatePolygon(const std::vector<glm::dvec3>& poly) {
+  TriangulationBudget unlimited{INT64_MAX};
+  return triangulatePolygon(poly, unlimited);
+}
+
+std::vector<int> triangulatePolygon(const std::vector<glm::dvec3>& poly, TriangulationBudget& budget) {
   const int n = static_cast<int>(poly.size());
   std::vector<int> tris;
   if (n < 3) return tris;
@@ -37,31 +42,56 @@ std::vector<int> triangulatePolygon(const std::vector<glm::dvec3>& poly) {
   std::vector<glm::dvec2> p(n);
   for (int i = 0; i < n; ++i) p[i] = {poly[i][u], poly[i][v] * sign};
 
-  std::vector<int> ring(n);
-  for (int i = 0; i < n; ++i) ring[i] = i;
-  int guard = 0;
-  while (ring.size() > 3 && guard < n * n) {
-    ++guard;
-    bool clipped = false;
-    const int m = static_cast<int>(ring.size());
-    for (int k = 0; k < m; ++k) {
-      const int i0 = ring[(k + m - 1) % m], i1 = ring[k], i2 = ring[(k + 1) % m];
-      if (cross2(p[i0], p[i1], p[i2]) <= 0) continue;  // reflex or degenerate corner
-      bool inside = false;
-      for (int j : ring) {
-        if (j == i0 || j == i1 || j == i2) continue;
-        if (pointInTriangle(p[j], p[i0], p[i1], p[i2])) { inside = true; break; }
-      }
-      if (inside) continue;
-      tris.insert(tris.end(), {i0, i1, i2});
-      ring.erase(ring.begin() + k);
-      clipped = true;
-      break;
+  // The ring as a doubly linked list; `reflex` lists the corners that are not strictly convex
+  // (the only ones that can lie inside an ear), compacted lazily as corners turn convex or go.
+  std::vector<int> prev(n), next(n);
+  for (int i = 0; i < n; ++i) prev[i] = (i + n - 1) % n, next[i] = (i + 1) % n;
+  std::vector<char> isReflex(n), removed(n, 0);
+  std::vector<int> reflex;
+  for (int i = 0; i < n; ++i) {
+    isReflex[i] = cross2(p[prev[i]], p[i], p[next[i]]) <= 0;
+    if (isReflex[i]) reflex.push_back(i);
+  }
+  auto isEar = [&](int i1) {
+    const int i0 = prev[i1], i2 = next[i1];
+    if (isReflex[i1]) return false;
+    std::size_t kept = 0;
+    bool inside = false;
+    for (std::size_t k = 0; k < reflex.size(); ++k) {
+      const int j = reflex[k];
+      if (removed[j] || !isReflex[j]) continue;  // compact as we go
+      reflex[kept++] = j;
+      if (inside || j == i0 || j == i2) continue;
+      --budget.tests;
+      inside = pointInTriangle(p[j], p[i0], p[i1], p[i2]);
     }
-    if (!clipped) break;  // degenerate or self-intersecting: finish with a fan below
+    reflex.resize(kept);
+    return !inside;
+  };
+  int remaining = n, cur = 0, sinceClip = 0;
+  while (remaining > 3 && sinceClip < remaining && !budget.exhausted()) {
+    if (!isEar(cur)) {
+      cur = next[cur];
+      ++sinceClip;
+      continue;
+    }
+    const int i0 = prev[cur], i2 = next[cur];
+    tris.insert(tris.end(), {i0, cur, i2});
+    removed[cur] = 1;
+    next[i0] = i2;
+    prev[i2] = i0;
+    --remaining;
+    for (int j : {i0, i2}) {
+      const bool was = isReflex[j];
+      isReflex[j] = cross2(p[prev[j]], p[j], p[next[j]]) <= 0;
+      if (isReflex[j] && !was) reflex.push_back(j);  // only in self-intersecting polygons
+    }
+    cur = i0;
+    sinceClip = 0;
   }
   // What is left (a triangle, or a polygon with no ear) is fanned so coverage stays n-2 triangles.
-  for (size_t k = 1; k + 1 < ring.size(); ++k) tris.insert(tris.end(), {ring[0], ring[k], ring[k + 1]});
+  const int first = cur;
+  for (int k = next[first]; next[k] != first; k = next[k]) tris.insert(tris.end(), {first, k, next[k]});
   return tris;
 }
 

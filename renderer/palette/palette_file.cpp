@@ -4,10 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "renderer/core/colour.h"
 #include "renderer/core/image_io.h"
+#include "renderer/core/input_file.h"
 #include "renderer/palette/palette_analysis.h"
 
 namespace npr {
@@ -39,8 +40,11 @@ std::vector<glm::vec3> Palette::averages() const {
 namespace {
 
 // Layers of the palette's texture array share one size; beyond this budget entries are
-// downsampled with OpenImageIO so the array still fits in memory.
+// reduced as they are read so the array still fits in memory.
 constexpr std::size_t kTextureBudgetBytes = std::size_t(1) << 30;
+// Images declaring more than this in all (four 16384 x 16384 images) are refused before any is
+// decoded: reducing them would still mean inflating every declared pixel, minutes of work.
+constexpr double kMaxDeclaredPixels = 4.0 * 16384.0 * 16384.0;
 
 std::string trim(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r\n");
@@ -64,15 +68,15 @@ std::optional<glm::vec3> parseHexColour(const std::string& s) {
 
 Result<Palette> loadPalette(const std::string& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) return Error{path + ": no such palette file"};
   if (fs::is_directory(path, ec)) {
     // A palette folder holds its palette file: accept the folder for convenience.
     for (const auto& e : fs::directory_iterator(path, ec))
       if (e.path().extension() == ".palette") return loadPalette(e.path().string());
     return Error{path + ": is a directory with no .palette file in it"};
   }
-  std::ifstream in(path);
-  if (!in) return Error{path + ": cannot be opened for reading"};
+  Result<std::string> text = readInputFile(path, InputKind::Palette);
+  if (!text) return Error{text.error()};
+  std::istringstream in(*text);
   const fs::path dir = fs::path(path).parent_path();
   Palette p;
   p.file = path;
@@ -118,43 +122,53 @@ Result<Palette> loadPalette(const std::string& path) {
     return Error{path + " line " + std::to_string(images[kMaxPaletteEntries].line) + ": more than " +
                  std::to_string(kMaxPaletteEntries) + " entries (a palette holds at most " + std::to_string(kMaxPaletteEntries) + ")"};
 
+  // Every image's declared size is read from its header first, so the budget decides how
+  // large each is decoded before any pixel exists in memory.
+  std::vector<ImageSize> sizes;
+  double declaredPixels = 0.0;
+  std::size_t maxW = 1, maxH = 1;
+  for (const Pending& im : images) {
+    Result<ImageSize> size = readImageSize((dir / im.path).string());
+    if (!size) return Error{path + " line " + std::to_string(im.line) + ": " + size.error()};
+    sizes.push_back(*size);
+    declaredPixels += double(size->width) * size->height;
+    maxW = std::max<std::size_t>(maxW, static_cast<size_t>(size->width));
+    maxH = std::max<std::size_t>(maxH, static_cast<size_t>(size->height));
+  }
+  if (declaredPixels > kMaxDeclaredPixels)
+    return Error{path + ": its images declare " + std::to_string(static_cast<long long>(declaredPixels / 1e6)) +
+                 " megapixels in all, more than the " + std::to_string(static_cast<long long>(kMaxDeclaredPixels / 1e6)) +
+                 " a palette may hold; use smaller images"};
+  ImageSize fit{kMaxImageSide, kMaxImageSide};
+  const std::size_t bytes = maxW * maxH * 4 * images.size();
+  if (bytes > kTextureBudgetBytes) {
+    const double f = std::sqrt(double(kTextureBudgetBytes) / double(bytes));
+    fit = {std::max(1, int(double(maxW) * f)), std::max(1, int(double(maxH) * f))};
+    p.warnings.push_back("textures reduced to at most " + std::to_string(fit.width) + "x" + std::to_string(fit.height) +
+                         " so the palette's texture array fits in " + std::to_string(kTextureBudgetBytes >> 20) + " MiB");
+  }
+
   if (!bgSpec.empty()) {
     if (auto c = parseHexColour(bgSpec)) {
       p.backgroundColour = *c;
     } else if (bgSpec[0] == '#') {
       return Error{path + " line " + std::to_string(bgLine) + ": background colour '" + bgSpec + "' is not #RRGGBB"};
     } else {
-      Result<ImageRGBA8> bg = loadImage((dir / bgSpec).string());
+      Result<ImageRGBA8> bg = loadImage((dir / bgSpec).string(), fit);
       if (!bg) return Error{path + " line " + std::to_string(bgLine) + ": background: " + bg.error()};
       p.backgroundColour = linearToSrgb(linearMean(*bg));
       p.backgroundImage = std::move(*bg);
     }
   }
-  std::size_t maxW = 1, maxH = 1;
   for (const Pending& im : images) {
-    Result<ImageRGBA8> img = loadImage((dir / im.path).string());
+    Result<ImageRGBA8> img = loadImage((dir / im.path).string(), fit);
     if (!img) return Error{path + " line " + std::to_string(im.line) + ": " + img.error()};
     PaletteEntry e;
     e.path = im.path;
     e.image = std::move(*img);
     e.average = compositeAverage(e.image, p.backgroundColour, p.backgroundImage ? &*p.backgroundImage : nullptr);
     e.intensity = e.average.r + e.average.g + e.average.b;
-    maxW = std::max<std::size_t>(maxW, static_cast<size_t>(e.image.width));
-    maxH = std::max<std::size_t>(maxH, static_cast<size_t>(e.image.height));
     p.entries.push_back(std::move(e));
-  }
-  const std::size_t bytes = maxW * maxH * 4 * p.entries.size();
-  if (bytes > kTextureBudgetBytes) {
-    const double f = std::sqrt(double(kTextureBudgetBytes) / double(bytes));
-    const int w = std::max(1, int(double(maxW) * f)), h = std::max(1, int(double(maxH) * f));
-    for (PaletteEntry& e : p.entries) {
-      if (e.image.width <= w && e.image.height <= h) continue;
-      Result<ImageRGBA8> r = resizeImage(e.image, std::min(w, e.image.width), std::min(h, e.image.height));
-      if (!r) return Error{path + ": " + e.path + ": " + r.error()};
-      e.image = std::move(*r);
-    }
-    p.warnings.push_back("textures downsampled to at most " + std::to_string(w) + "x" + std::to_string(h) +
-                         " so the palette's texture array fits in " + std::to_string(kTextureBudgetBytes >> 20) + " MiB");
   }
   return p;
 }

@@ -1,0 +1,29 @@
+// Our readers for the small mesh formats: PLY (ascii and binary, either byte order), OFF
+// (ascii) and STL (ascii and binary). OpenMesh's own readers crash, hang or exhaust memory on
+// small hostile files (a PLY property before its element, an OFF header alone, absurd element
+// counts), so every header is validated against the file's size before anything is allocated,
+// and OpenMesh only ever sees the triangles FaceBuilder accepted. Coordinates are read in
+// double precision where the file has them. OM, OpenMesh's own format, is read by OpenMesh in
+// an isolated child process (om_reader.cpp).
+#pragma once
+
+#include <string>
+
+#include "renderer/core/result.h"
+#include "renderer/mesh/mesh.h"
+
+namespace npr {
+
+// Each parses the whole file and builds the mesh (not yet finalised: see loadMesh).
+[[nodiscard]] Result<Mesh> loadPly(const std::string& path);
+[[nodiscard]] Result<Mesh> loadOff(const std::string& path);
+[[nodiscard]] Result<Mesh> loadStl(const std::string& path);
+[[nodiscard]] Result<Mesh> loadOm(const std::string& path);
+
+// The same, on bytes already in memory (`name` stands for the file in messages): what the
+// fuzz harnesses call.
+[[nodiscard]] Result<Mesh> parsePly(const std::string& name, const std::string& bytes);
+[[nodiscard]] Result<Mesh> parseOff(const std::string& name, const std::string& bytes);
+[[nodiscard]] Result<Mesh> parseStl(const std::string& name, const std::string& bytes);
+
+}  // namespace npr

@@ -1,0 +1,65 @@
+// What every mesh reader (OBJ, PLY, OFF, STL, OM) produces before the mesh is built: positions
+// in double precision with a flag for the unusable ones, and triangles. Faces enter through one
+// FaceBuilder, so repeated corners, polygons, bad indices and the warning budget are handled the
+// same way whatever the format, and buildMesh is the one way from a soup to a Mesh.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/result.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/mesh/polygon_triangulation.h"
+
+namespace npr {
+
+struct PolygonSoup {
+  std::vector<glm::dvec3> vertices;
+  std::vector<char> vertexValid;  // 0: non-finite or unparsable; faces using it are skipped
+  std::vector<std::array<int, 3>> triangles;
+
+  // Adds a vertex; a non-finite one is stored at the origin, marked invalid, and false returned.
+  bool addVertex(const glm::dvec3& v);
+};
+
+// Collects warnings up to a limit, so a file with a million bad lines cannot flood the report.
+class Warnings {
+ public:
+  explicit Warnings(std::vector<std::string>& out) : out_(out) {}
+  void add(std::string w);
+  void finish();  // appends "... and N more warnings"
+
+ private:
+  std::vector<std::string>& out_;
+  std::size_t dropped_ = 0;
+};
+
+class FaceBuilder {
+ public:
+  FaceBuilder(PolygonSoup& soup, LoadReport& report, Warnings& warnings) : soup_(soup), report_(report), warn_(warnings) {}
+
+  // `corners` are 0-based vertex indices as the file gives them; warnings name the file and
+  // `unit` `number` ("line 12", "face 7"). Out-of-range or invalid vertices skip the face;
+  // corners repeated in a row are dropped; polygons are ear-clipped. Returns whether anything
+  // was added. `corners` is used as scratch.
+  bool add(std::vector<long long>& corners, const char* unit, std::size_t number);
+
+ private:
+  PolygonSoup& soup_;
+  LoadReport& report_;
+  Warnings& warn_;
+  TriangulationBudget budget_;
+  bool budgetWarned_ = false;
+  std::vector<int> face_;
+  std::vector<glm::dvec3> poly_;
+};
+
+// Centres and scales the soup's positions into the unit sphere and builds the halfedge mesh
+// (not yet finalised: see loadMesh). Fails when there is no triangle to draw.
+[[nodiscard]] Result<Mesh> buildMesh(const PolygonSoup& soup, LoadReport report);
+
+}  // namespace npr
