@@ -80,6 +80,8 @@ std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& in, con
   report.original_scale = usable ? 0.5 / halfRadius : 1.0;
   std::vector<glm::vec3> out(in.size());
   for (size_t i = 0; i < in.size(); ++i) {
+    // Unusable vertices (no face draws them) go to the centre, so they cannot widen the bounds.
+    if (valid && !(*valid)[i]) continue;
     const glm::dvec3 d = halfOffset(in[i]);
     out[i] = glm::vec3(usable ? d / halfRadius : d * 2.0);
   }

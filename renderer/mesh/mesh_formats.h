@@ -18,7 +18,8 @@ namespace npr {
 [[nodiscard]] Result<Mesh> loadPly(const std::string& path);
 [[nodiscard]] Result<Mesh> loadOff(const std::string& path);
 [[nodiscard]] Result<Mesh> loadStl(const std::string& path);
-[[nodiscard]] Result<Mesh> loadOm(const std::string& path);
+// `seconds` bounds the child process that runs OpenMesh's reader.
+[[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
 
 // The same, on bytes already in memory (`name` stands for the file in messages): what the
 // fuzz harnesses call.

@@ -146,15 +146,19 @@ class ObjParser {
 Result<Mesh> loadObj(const std::string& path) {
   Result<std::string> text = readInputFile(path, InputKind::Mesh);
   if (!text) return Error{text.error()};
-  if (Status s = checkText(path, *text); !s) return Error{s.error()};
-  if (text->find_first_not_of(" \t\r\n") == std::string::npos) return Error{path + ": the file is empty"};
+  return parseObj(path, *text);
+}
+
+Result<Mesh> parseObj(const std::string& path, const std::string& text) {
+  if (Status s = checkText(path, text); !s) return Error{s.error()};
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) return Error{path + ": the file is empty"};
   LoadReport report;
   report.file = path;
   PolygonSoup soup;
-  soup.vertices.reserve(text->size() / 60);
-  soup.vertexValid.reserve(text->size() / 60);
-  soup.triangles.reserve(text->size() / 30);
-  ObjParser(path, *text, soup, report).parse();
+  soup.vertices.reserve(text.size() / 60);
+  soup.vertexValid.reserve(text.size() / 60);
+  soup.triangles.reserve(text.size() / 30);
+  ObjParser(path, text, soup, report).parse();
   return buildMesh(soup, std::move(report));
 }
 

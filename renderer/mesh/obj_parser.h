@@ -12,5 +12,7 @@ namespace npr {
 
 // Parses the file and builds the mesh (not yet finalised: see loadMesh).
 [[nodiscard]] Result<Mesh> loadObj(const std::string& path);
+// The same on text already in memory (`path` names it in messages): what the fuzz harness calls.
+[[nodiscard]] Result<Mesh> parseObj(const std::string& path, const std::string& text);
 
 }  // namespace npr

@@ -179,8 +179,9 @@ Result<Mesh> parsePly(const std::string& name, const std::string& bytes) {
       need += static_cast<long double>(e.count) * static_cast<long double>(per);
     }
     if (need > static_cast<long double>(in.left()) + (format == Format::Ascii ? 1 : 0))
-      return Error{name + ": the header's element counts need at least " + std::to_string(static_cast<unsigned long long>(need)) +
-                   " bytes but only " + std::to_string(in.left()) + " follow: the header is corrupt or the file truncated"};
+      return Error{name + ": the header's element counts need at least " +
+                   (need < 1e18L ? std::to_string(static_cast<unsigned long long>(need)) : std::string("10^18")) + " bytes but only " +
+                   std::to_string(in.left()) + " follow: the header is corrupt or the file truncated"};
   }
 
   LoadReport report;

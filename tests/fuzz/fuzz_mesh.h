@@ -1,0 +1,32 @@
+// What every mesh harness checks on a mesh a reader accepted: the invariants the renderer
+// relies on (finite positions and normals inside the unit sphere, indices in range). A
+// violation traps, so libFuzzer reports it like a crash.
+#pragma once
+
+#include <cmath>
+
+#include "renderer/core/result.h"
+#include "renderer/mesh/mesh.h"
+
+namespace npr::fuzz {
+
+inline void checkMesh(Result<Mesh>& m) {
+  if (!m) {
+    if (m.error().empty()) __builtin_trap();  // every refusal says why
+    return;
+  }
+  finalizeMesh(*m);
+  const std::size_t nv = m->positions.size();
+  if (m->indices.size() != m->triangleCount() * 3 || m->normals.size() != nv) __builtin_trap();
+  for (std::uint32_t i : m->indices)
+    if (i >= nv) __builtin_trap();
+  for (std::size_t i = 0; i < nv; ++i) {
+    const glm::vec3& p = m->positions[i];
+    const glm::vec3& n = m->normals[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) __builtin_trap();
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) __builtin_trap();
+    if (glm::length(p) > 1.0f + 1e-3f) __builtin_trap();
+  }
+}
+
+}  // namespace npr::fuzz
