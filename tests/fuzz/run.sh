@@ -13,7 +13,7 @@ seconds="${1:-30}"; shift || true
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(obj ply off stl om palette image)
 jobs="${FUZZ_JOBS:-$(nproc)}"
-build=build-fuzz
+build="${FUZZ_BUILD_DIR:-build-fuzz}"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DNPR_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || exit 1
 cmake --build "$build" -j"$(nproc)" >/dev/null || { echo "fuzz: build failed"; exit 1; }
 
