@@ -1,0 +1,97 @@
+// CPU tier: our PLY, OFF and STL readers (and OM through OpenMesh in a child process) read what
+// OpenMesh's writers write, in every variant, into the same mesh the OBJ reader makes of the
+// same model; plus the format details real files use (extra properties and elements, colours,
+// comments, double coordinates, several solids).
+#include <gtest/gtest.h>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/mesh/mesh_loader.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::TempDir;
+
+double totalArea(const Mesh& m) {
+  double a = 0.0;
+  for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+    const glm::dvec3 p(m.positions[m.indices[t * 3]]), q(m.positions[m.indices[t * 3 + 1]]), r(m.positions[m.indices[t * 3 + 2]]);
+    a += 0.5 * glm::length(glm::cross(q - p, r - p));
+  }
+  return a;
+}
+
+TEST(MeshFormats, EveryWriterVariantReadsBackAsTheObjMesh) {
+  TempDir d;
+  const std::string obj = std::string(NPR_SOURCE_DIR) + "/models/bunny.obj";
+  auto reference = loadMesh(obj);
+  ASSERT_TRUE(reference) << reference.error();
+  TriMesh om;
+  ASSERT_TRUE(OpenMesh::IO::read_mesh(om, obj));
+  using O = OpenMesh::IO::Options;
+  struct Variant { const char* name; O::Flag flags; bool sameOrder; };
+  const Variant variants[] = {{"ascii.ply", O::Default, true},       {"le.ply", O::Binary, true},
+                              {"be.ply", O::Flag(O::Binary | O::MSB), true}, {"a.off", O::Default, true},
+                              {"ascii.stl", O::Default, false},      {"binary.stl", O::Binary, false},
+                              {"b.om", O::Binary, true}};
+  for (const Variant& v : variants) {
+    const std::string path = (d.path() / v.name).string();
+    ASSERT_TRUE(OpenMesh::IO::write_mesh(om, path, O(v.flags))) << v.name;
+    auto m = loadMesh(path);
+    ASSERT_TRUE(m) << v.name << ": " << m.error();
+    EXPECT_EQ(m->triangleCount(), reference->triangleCount()) << v.name;
+    EXPECT_EQ(m->positions.size(), reference->positions.size()) << v.name << " (STL corners must be welded)";
+    EXPECT_EQ(m->report.skipped_faces, 0u) << v.name;
+    EXPECT_NEAR(totalArea(*m), totalArea(*reference), 1e-4 * totalArea(*reference)) << v.name;
+    if (!v.sameOrder) continue;
+    for (std::size_t i = 0; i < m->positions.size(); ++i)
+      ASSERT_LT(glm::length(m->positions[i] - reference->positions[i]), 1e-5f) << v.name << " vertex " << i;
+  }
+}
+
+TEST(MeshFormats, PlyExtraPropertiesElementsAndDoubles) {
+  TempDir d;
+  // Colours, an extra element before the faces, a face property after the list, and double
+  // coordinates offset by 1e7 (single precision would lose the triangle's shape).
+  auto m = loadMesh(d.write("x.ply", "ply\nformat ascii 1.0\ncomment made by hand\nobj_info x\nelement vertex 4\n"
+                                     "property double x\nproperty double y\nproperty double z\nproperty uchar red\n"
+                                     "element material 1\nproperty float shininess\n"
+                                     "element face 2\nproperty list uchar uint vertex_index\nproperty int flags\nend_header\n"
+                                     "10000000 0 0 255\n10000000.001 0 0 0\n10000000.001 0.001 0 0\n10000000 0.001 0 0\n"
+                                     "0.5\n3 0 1 2 7\n3 0 2 3 9\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 2u);
+  EXPECT_NEAR(totalArea(*m), 2.0, 1e-3);  // a square of side sqrt(2) in the unit sphere
+}
+
+TEST(MeshFormats, OffColoursCommentsAndPolygons) {
+  TempDir d;
+  auto m = loadMesh(d.write("c.off", "COFF\n# a comment line\n5 2 0\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n"
+                                     "0 1 0 1 0 0 1\n0.5 2 0 0 0 0 1\n4 0 1 2 3 255 0 0\n3 3 2 4\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 3u);
+  EXPECT_EQ(m->report.polygons_triangulated, 1u);
+  auto binary = loadMesh(d.write("b.off", "OFF BINARY\n"));
+  ASSERT_FALSE(binary);
+  EXPECT_NE(binary.error().find("binary OFF"), std::string::npos) << binary.error();
+}
+
+TEST(MeshFormats, StlAsciiWithSeveralSolidsAndNonFiniteFacets) {
+  TempDir d;
+  const std::string facet = "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  const std::string facet2 = "facet normal 0 0 1\n outer loop\n  vertex 1 0 0\n  vertex 1 1 0\n  vertex 0 1 0\n endloop\nendfacet\n";
+  const std::string bad = "facet normal 0 0 1\nouter loop\nvertex nan 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n";
+  auto m = loadMesh(d.write("s.stl", "solid a\n" + facet + "endsolid a\nsolid b\n" + facet2 + bad + "endsolid b\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 2u);
+  EXPECT_EQ(m->positions.size(), 4u);  // the shared edge's corners welded
+  EXPECT_EQ(m->report.skipped_faces, 1u);
+}
+
+}  // namespace
+}  // namespace npr
