@@ -2,6 +2,7 @@
 #include "app/viewer_state.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -36,6 +37,9 @@ std::vector<std::string> discoverPalettes() {
 }
 
 void ViewerState::note(const std::string& message) {
+  // Also on stderr: a user who started the viewer from a terminal, and the soak test's log,
+  // see every load failure and warning without the overlay.
+  std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());
   messages.push_back(message);
   if (messages.size() > 20) messages.erase(messages.begin());
 }

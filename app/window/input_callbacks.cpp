@@ -13,10 +13,14 @@ namespace {
 Viewer* viewerOf(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
 
 void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
-  if (ImGui::GetIO().WantCaptureKeyboard) return;
   if (action == GLFW_RELEASE) return;
   const auto a = actionForKey(key, mods);
   if (!a) return;
+  // While an overlay widget has the keyboard (a slider being typed into) keys go to it, except
+  // F1 and Esc: otherwise the overlay could not be hidden, nor the viewer closed, until the
+  // user clicked elsewhere (found by the soak test).
+  const bool always = key == GLFW_KEY_F1 || key == GLFW_KEY_ESCAPE;
+  if (ImGui::GetIO().WantCaptureKeyboard && !always) return;
   // Only light movement repeats while a key is held; toggles fire once per press.
   if (action == GLFW_REPEAT && a->action != Action::MoveLight) return;
   applyAction(*viewerOf(w), *a);

@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# Soak test of the real window under Xvfb: SECONDS of scripted random input (keys from the
+# binding table, drags with each button and with Ctrl, scrolls, resizes, and file drops through
+# XDND, good and broken models and palettes). Fails on a crash, a GL error, resident memory that
+# grows more than 5% between the end of the first phase (a third of the run, at most a minute)
+# and the end, or a failed drop that changes the picture (the current model and palette must
+# stay). Usage: soak.sh VIEWER SOURCE_DIR [SECONDS=60] [SEED=1]
+set -u
+viewer="$1"; src="$2"; duration="${3:-60}"; seed="${4:-1}"
+if [ -z "${DISPLAY:-}" ]; then exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$@"; fi
+here="$(cd "$(dirname "$0")" && pwd)"
+tmp=$(mktemp -d); trap 'kill $pid 2>/dev/null; rm -rf "$tmp"' EXIT
+cd "$tmp"
+RANDOM=$seed
+
+# Files to drop: good ones change the scene, broken ones must leave it as it was.
+cp "$src/models/teapot.obj" good.obj
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\nf 1 2 3\n' > repeated.obj   # aborted the viewer before
+printf 'v 0 0 0\nv 1 0 0\n' > nofaces.obj
+printf 'ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\nend_header\n' > broken.ply
+printf 'OFF\n' > broken.off
+mkfifo fifo.obj
+printf 'missing.png\n' > missing.palette
+printf '/dev/zero\n' > device.palette
+good_palettes=("$src"/palettes/*/*.palette)
+broken=(nofaces.obj broken.ply broken.off fifo.obj missing.palette device.palette)
+keys=(1 2 3 4 5 6 bracketleft bracketright m plus minus p b f r l w a s d q e)
+# The overlay must be hidden whenever a check shoots: F1 (which always toggles) is pressed in
+# pairs, and H (help, which also shows the overlay) twice and then F1. Tab is left out: while
+# an overlay widget has the keyboard, Tab moves between widgets instead, as in every ImGui tool.
+
+"$viewer" --size 480x360 >"$tmp/log" 2>&1 &
+pid=$!
+wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
+[ -n "$wid" ] || { echo "FAIL: no viewer window"; cat "$tmp/log"; exit 1; }
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+sleep 1
+
+fail=0
+shots=0
+shot() {  # F12, then wait for the numbered screenshot; sets $last to its name
+  shots=$((shots + 1)); last="npr-screenshot-$shots.png"
+  xdotool key --clearmodifiers F12
+  for _ in $(seq 150); do [ -s "$last" ] && sleep 0.3 && return 0; sleep 0.1; done
+  echo "FAIL: screenshot $shots was not written" >&2; return 1
+}
+drop() { /usr/bin/python3 "$here/xdnd_drop.py" "$wid" "$@" >>"$tmp/drops.log" 2>&1 || echo "drop of $* not taken" >>"$tmp/drops.log"; }
+# Resident memory depends on the scene (llvmpipe keeps textures in it), so it is read with the
+# same model and palette loaded each time.
+rss() {
+  drop "$tmp/good.obj"; drop "$src/palettes/crosshatch/crosshatch.palette"; sleep 1
+  awk '/VmRSS/ {print $2}' "/proc/$pid/status" 2>/dev/null
+}
+alive() { kill -0 "$pid" 2>/dev/null; }
+
+# A failed drop must keep the picture: hide the overlay (its timings change every frame),
+# shoot, drop a broken file, shoot again, compare.
+check_failed_drop() {
+  local a b file="${broken[$((RANDOM % ${#broken[@]}))]}"
+  shot || { fail=1; return; }; a=$last
+  drop "$tmp/$file"; sleep 0.5
+  shot || { fail=1; return; }; b=$last
+  if ! idiff -q -fail 0 "$a" "$b" >/dev/null 2>&1; then
+    echo "FAIL: dropping the broken $file changed the scene ($a vs $b)"; fail=1
+    [ -n "${SOAK_KEEP:-}" ] && mkdir -p "$SOAK_KEEP" && cp "$a" "$b" "$SOAK_KEEP"/
+  fi
+  checks=$((checks + 1))
+}
+
+# Drops must reach the viewer for the checks to mean anything: a good palette changes the picture.
+xdotool key --clearmodifiers F1; sleep 0.3  # hide the overlay: its timings change every frame
+shot || exit 1; a=$last
+drop "$src/palettes/wood/wood.palette"; sleep 1
+shot || exit 1; b=$last
+if idiff -q -fail 0 "$a" "$b" >/dev/null 2>&1; then echo "FAIL: dropping a palette did not change the picture (drops do not arrive)"; cat "$tmp/drops.log" "$tmp/log"; exit 1; fi
+
+# Warm-up: every path with every match mode, split view on and off, so the shader variants the
+# random phase will meet are compiled (and cached, as designed) before memory is measured.
+for _ in 1 2 3 4 5 6; do
+  xdotool key --clearmodifiers p; sleep 0.15
+  for _ in 1 2 3; do xdotool key --clearmodifiers m; sleep 0.15; done
+  xdotool key --clearmodifiers b; sleep 0.15; xdotool key --clearmodifiers b; sleep 0.15
+done
+
+start=$(date +%s); baseline_at=$((duration / 3)); [ $baseline_at -gt 60 ] && baseline_at=60
+baseline=""; actions=0; checks=0; drops_good=0
+while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
+  elapsed=$(( $(date +%s) - start ))
+  [ -z "$baseline" ] && [ $elapsed -ge $baseline_at ] && baseline=$(rss)
+  w=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $4; exit}'); w=${w:-480}
+  h=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $5; exit}'); h=${h:-360}
+  case $((RANDOM % 20)) in
+    0|1|2|3|4)    xdotool key --clearmodifiers "${keys[$((RANDOM % ${#keys[@]}))]}" ;;
+    5)            if [ $((RANDOM % 2)) = 0 ]; then xdotool key --clearmodifiers F1; sleep 0.3; xdotool key --clearmodifiers F1
+                  else xdotool key --clearmodifiers h; sleep 0.3; xdotool key --clearmodifiers h; sleep 0.2; xdotool key --clearmodifiers F1; fi ;;
+    6|7|8|9)      b=$((RANDOM % 3 + 1)); mod=""; [ $((RANDOM % 4)) = 0 ] && mod=ctrl
+                  xdotool mousemove --window "$wid" $((RANDOM % w)) $((RANDOM % h)) mousedown $b
+                  [ -n "$mod" ] && xdotool keydown $mod
+                  for _ in 1 2 3; do xdotool mousemove --window "$wid" $((RANDOM % w)) $((RANDOM % h)); done
+                  xdotool mouseup $b; [ -n "$mod" ] && xdotool keyup $mod ;;
+    10|11|12)     xdotool mousemove --window "$wid" $((RANDOM % w)) $((RANDOM % h)) click --repeat $((RANDOM % 4 + 1)) $((RANDOM % 2 + 4)) ;;
+    13)           xdotool windowsize "$wid" $((RANDOM % 700 + 1)) $((RANDOM % 500 + 1)) ;;
+    14)           xdotool windowsize "$wid" 480 360 ;;
+    15|16)        if [ $((RANDOM % 2)) = 0 ]; then drop "$tmp/good.obj"; else drop "$tmp/repeated.obj"; fi; drops_good=$((drops_good + 1)) ;;
+    17)           drop "${good_palettes[$((RANDOM % ${#good_palettes[@]}))]}"; drops_good=$((drops_good + 1)) ;;
+    18|19)        xdotool windowsize "$wid" 480 360; sleep 0.3; check_failed_drop ;;
+  esac
+  actions=$((actions + 1))
+  sleep 0.05
+done
+final=$(rss)
+if ! alive; then wait $pid; echo "FAIL: the viewer died (exit $?) after $actions actions"; tail -20 "$tmp/log"; exit 1; fi
+[ -n "$baseline" ] || baseline=$final
+growth=$(( (final - baseline) * 1000 / (baseline > 0 ? baseline : 1) ))
+echo "soak: $actions actions in ${duration} s ($drops_good good drops, $checks failed-drop checks), RSS ${baseline} kB at ${baseline_at} s -> ${final} kB at the end (${growth} per mille)"
+[ $growth -le 50 ] || { echo "FAIL: resident memory grew by more than 5%"; fail=1; }
+[ $checks -gt 0 ] || { echo "FAIL: no failed drop was checked"; fail=1; }
+grep -c "not taken" "$tmp/drops.log" 2>/dev/null | grep -qx 0 || { echo "FAIL: some drops were not taken:"; grep "not taken" "$tmp/drops.log" | head; fail=1; }
+xdotool key --clearmodifiers Escape
+for _ in $(seq 100); do alive || break; sleep 0.1; done
+if alive; then echo "FAIL: Esc did not close the viewer"; fail=1; else
+  wait $pid; status=$?
+  [ $status = 0 ] || { echo "FAIL: exit status $status"; tail -20 "$tmp/log"; fail=1; }
+fi
+grep -q "OpenGL error" "$tmp/log" && { echo "FAIL: GL errors"; grep "OpenGL error" "$tmp/log" | head; fail=1; }
+[ $fail = 0 ] && echo "soak: all checks passed"
+exit $fail
