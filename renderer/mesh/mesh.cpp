@@ -6,7 +6,7 @@
 namespace npr {
 
 void finalizeMesh(Mesh& m) {
-  TriMesh& mesh = m.mesh;
+  TriMesh& mesh = *m.mesh;
   const size_t nv = mesh.n_vertices(), nf = mesh.n_faces();
   const auto* pts = mesh.points();
   m.positions.resize(nv);

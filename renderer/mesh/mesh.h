@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,11 @@ struct LoadReport {
 };
 
 struct Mesh {
-  TriMesh mesh;
+  // Behind a pointer because OpenMesh's meshes have no move constructor (a user-declared
+  // destructor suppresses it): held by value, every move of a Mesh (returning it in a Result,
+  // handing it to the viewer) deep-copied the halfedge structure, which cost an 871K-triangle
+  // load a third of its time and a second copy of its memory.
+  std::unique_ptr<TriMesh> mesh = std::make_unique<TriMesh>();
   // Flat copies for upload and for cache-friendly per-triangle work (structure of arrays).
   std::vector<glm::vec3> positions;       // per vertex, centred and scaled
   std::vector<glm::vec3> normals;         // per vertex, unit length (never NaN)

@@ -14,7 +14,7 @@ namespace npr {
 // reasons (complex edges, duplicates, flipped neighbours) are drawn on their own copies of the
 // vertices and counted.
 void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::array<int, 3>>& tris, Mesh& m) {
-  TriMesh& mesh = m.mesh;
+  TriMesh& mesh = *m.mesh;
   mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
   std::vector<TriMesh::VertexHandle> vh(verts.size());
   for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));

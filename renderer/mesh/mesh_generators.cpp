@@ -37,8 +37,8 @@ Mesh icosphere(int level) {
   }
   Mesh m;
   std::vector<TriMesh::VertexHandle> vh;
-  for (auto& p : v) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
-  for (auto& tri : f) m.mesh.add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
+  for (auto& p : v) vh.push_back(m.mesh->add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+  for (auto& tri : f) m.mesh->add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
   m.report.file = "generated:icosphere-" + std::to_string(level);
   finalizeMesh(m);
   return m;
@@ -47,19 +47,19 @@ Mesh icosphere(int level) {
 Mesh torus(int nu, int nv) {
   Mesh m;
   std::vector<TriMesh::VertexHandle> vh(size_t(nu) * size_t(nv));
-  m.mesh.reserve(vh.size(), vh.size() * 3, vh.size() * 2);
+  m.mesh->reserve(vh.size(), vh.size() * 3, vh.size() * 2);
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
       const double r = 1.0 + 0.35 * std::cos(v);
       vh[size_t(i) * size_t(nv) + size_t(j)] =
-          m.mesh.add_vertex(TriMesh::Point(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35)));
+          m.mesh->add_vertex(TriMesh::Point(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35)));
     }
   auto at = [&](int i, int j) { return vh[size_t((i + nu) % nu) * size_t(nv) + size_t((j + nv) % nv)]; };
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      m.mesh.add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
-      m.mesh.add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+      m.mesh->add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+      m.mesh->add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
     }
   m.report.file = "generated:torus-" + std::to_string(2 * nu * nv);
   finalizeMesh(m);

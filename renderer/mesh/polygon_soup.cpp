@@ -83,7 +83,7 @@ Result<Mesh> buildMesh(const PolygonSoup& soup, LoadReport report) {
   m.report = std::move(report);
   const std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
   buildTriMesh(verts, soup.triangles, m);
-  if (m.mesh.n_faces() == 0)
+  if (m.mesh->n_faces() == 0)
     return Error{m.report.file + ": every face is degenerate (names one vertex more than once); nothing to draw"};
   return m;
 }

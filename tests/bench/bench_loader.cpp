@@ -35,18 +35,34 @@ bool tinyObjParse(const std::string& path, std::size_t& triangles) {
   return ok;
 }
 
-// Peak resident memory of a fresh process that does `work` once (fork: nothing else grown).
+struct ChildFigures {
+  double peakMiB = 0.0, ms = 0.0;
+};
+
+// Peak resident memory and time of a fresh process that does `work` once (fork: nothing else
+// grown, every page still to be faulted in, as on a user's first load).
 template <class F>
-double childPeakMiB(F work) {
+ChildFigures inChild(F work) {
+  int fds[2];
+  if (pipe(fds) != 0) return {};
   const pid_t pid = fork();
   if (pid == 0) {
+    close(fds[0]);
+    const auto t0 = std::chrono::steady_clock::now();
     work();
+    const double ms = npr::msSince(t0);
+    (void)!write(fds[1], &ms, sizeof ms);
     _exit(0);
   }
+  close(fds[1]);
+  ChildFigures f;
+  (void)!read(fds[0], &f.ms, sizeof f.ms);
+  close(fds[0]);
   int status = 0;
   rusage u{};
   wait4(pid, &status, 0, &u);
-  return double(u.ru_maxrss) / 1024.0;
+  f.peakMiB = double(u.ru_maxrss) / 1024.0;
+  return f;
 }
 
 double median(std::vector<double> v) {
@@ -118,11 +134,11 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--rounds") == 0) rounds = std::max(1, std::atoi(argv[i + 1]));
   const std::string& path = npr::bench::largeObjPath();
   std::printf("file: %s, %.1f MB\n", path.c_str(), double(std::filesystem::file_size(path)) / 1e6);
-  const double empty = npr::bench::childPeakMiB([] {});
-  const double ours = npr::bench::childPeakMiB([&] { (void)npr::loadMesh(path); });
-  const double tiny = npr::bench::childPeakMiB([&] { std::size_t t; npr::bench::tinyObjParse(path, t); });
-  std::printf("peak RSS of a process doing one load: ours %.0f MiB, tinyobjloader %.0f MiB (an idle process: %.0f MiB)\n", ours,
-              tiny, empty);
+  const auto empty = npr::bench::inChild([] {});
+  const auto ours = npr::bench::inChild([&] { (void)npr::loadMesh(path); });
+  const auto tiny = npr::bench::inChild([&] { std::size_t t; npr::bench::tinyObjParse(path, t); });
+  std::printf("a fresh process doing one load: ours %.0f ms and %.0f MiB peak RSS, tinyobjloader %.0f ms and %.0f MiB "
+              "(an idle process: %.0f MiB)\n", ours.ms, ours.peakMiB, tiny.ms, tiny.peakMiB, empty.peakMiB);
   npr::bench::interleaved(path, rounds);
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {

@@ -19,8 +19,8 @@ const int kCubeFaces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1
 Mesh weldedCube() {
   Mesh m;
   std::vector<TriMesh::VertexHandle> vh;
-  for (const auto& p : kCube) vh.push_back(m.mesh.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
-  for (const auto& f : kCubeFaces) m.mesh.add_face(vh[size_t(f[0])], vh[size_t(f[1])], vh[size_t(f[2])]);
+  for (const auto& p : kCube) vh.push_back(m.mesh->add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+  for (const auto& f : kCubeFaces) m.mesh->add_face(vh[size_t(f[0])], vh[size_t(f[1])], vh[size_t(f[2])]);
   finalizeMesh(m);
   return m;
 }
