@@ -1,9 +1,11 @@
-// The mesh as the renderer sees it: an OpenMesh TriMesh (adjacency, normals) plus flat
-// arrays ready for the GPU and for per-triangle lighting, and the load report.
+// The mesh as the renderer sees it: flat arrays ready for the GPU and for per-triangle
+// lighting, and the load report. OpenMesh's halfedge structure is built while loading (it
+// decides which faces must be drawn on copied vertices, mesh_builder.h) and by the feature
+// lines on a welded copy, but not kept: nothing draws from it, it held a third of a large
+// mesh's memory, and without it a Mesh is plain arrays that move cheaply and cache to disk.
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,12 +33,7 @@ struct LoadReport {
 };
 
 struct Mesh {
-  // Behind a pointer because OpenMesh's meshes have no move constructor (a user-declared
-  // destructor suppresses it): held by value, every move of a Mesh (returning it in a Result,
-  // handing it to the viewer) deep-copied the halfedge structure, which cost an 871K-triangle
-  // load a third of its time and a second copy of its memory.
-  std::unique_ptr<TriMesh> mesh = std::make_unique<TriMesh>();
-  // Flat copies for upload and for cache-friendly per-triangle work (structure of arrays).
+  // Structure of arrays, for upload and for cache-friendly per-triangle work.
   std::vector<glm::vec3> positions;       // per vertex, centred and scaled
   std::vector<glm::vec3> normals;         // per vertex, unit length (never NaN)
   std::vector<std::uint32_t> indices;     // 3 per triangle, counter-clockwise
@@ -48,8 +45,8 @@ struct Mesh {
   std::size_t triangleCount() const { return indices.size() / 3; }
 };
 
-// Fills the flat arrays and the normals from `mesh.mesh` (used by the loader and by meshes
-// built in code, e.g. the benchmark's generated icosphere).
+// Fills the radius, centroids and normals from `positions` and `indices` (used by the loader
+// and by meshes built in code, e.g. the benchmark's generated icosphere).
 void finalizeMesh(Mesh& m);
 
 }  // namespace npr

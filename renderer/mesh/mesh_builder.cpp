@@ -13,13 +13,14 @@ namespace npr {
 // are dropped here and counted, whichever reader produced them. Faces it refuses for other
 // reasons (complex edges, duplicates, flipped neighbours) are drawn on their own copies of the
 // vertices and counted.
-void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::array<int, 3>>& tris, Mesh& m) {
-  TriMesh& mesh = *m.mesh;
+void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> tris, Mesh& m) {
+  TriMesh mesh;
   mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
   std::vector<TriMesh::VertexHandle> vh(verts.size());
   for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));
   std::size_t refused = 0, degenerate = 0;
   const long nv = static_cast<long>(verts.size());
+  verts = {};
   // OpenMesh prints an error line for each refused face; we count them in the report instead.
   auto& errlog = omerr();
   errlog.disable();
@@ -40,6 +41,21 @@ void buildTriMesh(const std::vector<glm::vec3>& verts, const std::vector<std::ar
     mesh.add_face(c[0], c[1], c[2]);
   }
   errlog.enable();
+  tris = {};
+  // The arrays the renderer draws: every vertex (copies for refused faces included) and each
+  // face's corners in the halfedge structure's order, a cyclic rotation of the file's (the
+  // winding is kept).
+  const auto* pts = mesh.points();
+  m.positions.resize(mesh.n_vertices());
+  for (size_t i = 0; i < m.positions.size(); ++i) m.positions[i] = glm::vec3(pts[i][0], pts[i][1], pts[i][2]);
+  m.indices.resize(mesh.n_faces() * 3);
+  for (auto f : mesh.faces()) {
+    auto h = mesh.halfedge_handle(f);
+    for (int k = 0; k < 3; ++k) {
+      m.indices[static_cast<size_t>(f.idx()) * 3 + static_cast<size_t>(k)] = static_cast<std::uint32_t>(mesh.to_vertex_handle(h).idx());
+      h = mesh.next_halfedge_handle(h);
+    }
+  }
   m.report.non_manifold_faces = refused;
   m.report.degenerate_triangles += degenerate;
   if (degenerate)

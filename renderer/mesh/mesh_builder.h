@@ -16,6 +16,8 @@ namespace npr {
 // `valid` (optional) marks the positions to fit; the others are transformed but not counted.
 std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& positions, const std::vector<char>* valid,
                                           LoadReport& report);
-void buildTriMesh(const std::vector<glm::vec3>& positions, const std::vector<std::array<int, 3>>& triangles, Mesh& mesh);
+// Fills mesh.positions and mesh.indices. Takes its inputs so they are freed once the halfedge
+// structure holds them (an 871K-triangle load peaks here).
+void buildTriMesh(std::vector<glm::vec3> positions, std::vector<std::array<int, 3>> triangles, Mesh& mesh);
 
 }  // namespace npr

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <map>
 
+#include "renderer/mesh/mesh_builder.h"
+
 namespace npr {
 
 Mesh icosphere(int level) {
@@ -36,9 +38,11 @@ Mesh icosphere(int level) {
     f.swap(nf);
   }
   Mesh m;
-  std::vector<TriMesh::VertexHandle> vh;
-  for (auto& p : v) vh.push_back(m.mesh->add_vertex(TriMesh::Point(p.x, p.y, p.z)));
-  for (auto& tri : f) m.mesh->add_face(vh[size_t(tri[0])], vh[size_t(tri[1])], vh[size_t(tri[2])]);
+  std::vector<glm::vec3> verts;
+  for (auto& p : v) verts.push_back(glm::vec3(p));
+  std::vector<std::array<int, 3>> tris;
+  for (auto& tri : f) tris.push_back({tri[0], tri[1], tri[2]});
+  buildTriMesh(std::move(verts), std::move(tris), m);
   m.report.file = "generated:icosphere-" + std::to_string(level);
   finalizeMesh(m);
   return m;
@@ -46,21 +50,23 @@ Mesh icosphere(int level) {
 
 Mesh torus(int nu, int nv) {
   Mesh m;
-  std::vector<TriMesh::VertexHandle> vh(size_t(nu) * size_t(nv));
-  m.mesh->reserve(vh.size(), vh.size() * 3, vh.size() * 2);
+  std::vector<glm::vec3> verts(size_t(nu) * size_t(nv));
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
       const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
       const double r = 1.0 + 0.35 * std::cos(v);
-      vh[size_t(i) * size_t(nv) + size_t(j)] =
-          m.mesh->add_vertex(TriMesh::Point(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35)));
+      verts[size_t(i) * size_t(nv) + size_t(j)] =
+          glm::vec3(float(r * std::cos(u) / 1.35), float(0.35 * std::sin(v) / 1.35), float(r * std::sin(u) / 1.35));
     }
-  auto at = [&](int i, int j) { return vh[size_t((i + nu) % nu) * size_t(nv) + size_t((j + nv) % nv)]; };
+  auto at = [&](int i, int j) { return (((i + nu) % nu) * nv + (j + nv) % nv); };
+  std::vector<std::array<int, 3>> tris;
+  tris.reserve(size_t(nu) * size_t(nv) * 2);
   for (int i = 0; i < nu; ++i)
     for (int j = 0; j < nv; ++j) {
-      m.mesh->add_face(at(i, j), at(i, j + 1), at(i + 1, j + 1));
-      m.mesh->add_face(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+      tris.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      tris.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
     }
+  buildTriMesh(std::move(verts), std::move(tris), m);
   m.report.file = "generated:torus-" + std::to_string(2 * nu * nv);
   finalizeMesh(m);
   return m;

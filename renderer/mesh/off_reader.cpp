@@ -81,7 +81,7 @@ Result<Mesh> parseOff(const std::string& name, const std::string& bytes) {
     faces.add(corners, "line", line);
   }
   warn.finish();
-  return buildMesh(soup, std::move(report));
+  return buildMesh(std::move(soup), std::move(report));
 }
 
 Result<Mesh> loadOff(const std::string& path) {

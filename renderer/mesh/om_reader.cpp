@@ -193,7 +193,7 @@ Result<Mesh> loadOm(const std::string& path, int seconds) {
     faces.add(corners, "face", f);
   }
   warn.finish();
-  return buildMesh(soup, std::move(report));
+  return buildMesh(std::move(soup), std::move(report));
 }
 
 }  // namespace npr

@@ -252,7 +252,7 @@ Result<Mesh> parsePly(const std::string& name, const std::string& bytes) {
     if (badVertices) warn.add(name + ": " + std::to_string(badVertices) + " vertices have non-finite coordinates; faces using them are skipped");
   }
   warn.finish();
-  return buildMesh(soup, std::move(report));
+  return buildMesh(std::move(soup), std::move(report));
 }
 
 Result<Mesh> loadPly(const std::string& path) {

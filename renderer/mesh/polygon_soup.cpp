@@ -75,15 +75,17 @@ bool FaceBuilder::add(std::vector<long long>& corners, const char* unit, std::si
   return true;
 }
 
-Result<Mesh> buildMesh(const PolygonSoup& soup, LoadReport report) {
+Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
   if (soup.triangles.empty())
     return Error{report.file + ": contains no faces (" + std::to_string(soup.vertices.size()) +
                  " vertices, but no face that could be used); nothing to draw"};
   Mesh m;
   m.report = std::move(report);
-  const std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
-  buildTriMesh(verts, soup.triangles, m);
-  if (m.mesh->n_faces() == 0)
+  std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
+  soup.vertices = {};
+  soup.vertexValid = {};
+  buildTriMesh(std::move(verts), std::move(soup.triangles), m);
+  if (m.indices.empty())
     return Error{m.report.file + ": every face is degenerate (names one vertex more than once); nothing to draw"};
   return m;
 }

@@ -58,8 +58,9 @@ class FaceBuilder {
   std::vector<glm::dvec3> poly_;
 };
 
-// Centres and scales the soup's positions into the unit sphere and builds the halfedge mesh
-// (not yet finalised: see loadMesh). Fails when there is no triangle to draw.
-[[nodiscard]] Result<Mesh> buildMesh(const PolygonSoup& soup, LoadReport report);
+// Centres and scales the soup's positions into the unit sphere and builds the mesh (not yet
+// finalised: see loadMesh). Fails when there is no triangle to draw. Takes the soup so its
+// double-precision positions are freed as soon as they are converted (peak memory).
+[[nodiscard]] Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report);
 
 }  // namespace npr

@@ -89,7 +89,7 @@ Result<Mesh> parseBinary(const std::string& name, const std::string& bytes, std:
   }
   if (nonFinite) warn.add(name + ": " + std::to_string(nonFinite) + " facets have non-finite coordinates; skipped");
   warn.finish();
-  return buildMesh(soup, std::move(report));
+  return buildMesh(std::move(soup), std::move(report));
 }
 
 Result<Mesh> parseAscii(const std::string& name, const std::string& bytes) {
@@ -131,7 +131,7 @@ Result<Mesh> parseAscii(const std::string& name, const std::string& bytes) {
   }
   flush();
   warn.finish();
-  return buildMesh(soup, std::move(report));
+  return buildMesh(std::move(soup), std::move(report));
 }
 
 }  // namespace

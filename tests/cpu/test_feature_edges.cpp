@@ -6,6 +6,7 @@
 #include <map>
 
 #include "renderer/lines/feature_edges.h"
+#include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
 #include "renderer/mesh/mesh_generators.h"
 
@@ -18,9 +19,10 @@ const int kCubeFaces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1
 
 Mesh weldedCube() {
   Mesh m;
-  std::vector<TriMesh::VertexHandle> vh;
-  for (const auto& p : kCube) vh.push_back(m.mesh->add_vertex(TriMesh::Point(p.x, p.y, p.z)));
-  for (const auto& f : kCubeFaces) m.mesh->add_face(vh[size_t(f[0])], vh[size_t(f[1])], vh[size_t(f[2])]);
+  std::vector<glm::vec3> verts(std::begin(kCube), std::end(kCube));
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& f : kCubeFaces) tris.push_back({f[0], f[1], f[2]});
+  buildTriMesh(verts, tris, m);
   finalizeMesh(m);
   return m;
 }
