@@ -27,6 +27,7 @@ struct LoadReport {
   std::size_t non_manifold_faces = 0;     // refused by the halfedge structure, drawn on copied vertices
   std::vector<std::string> warnings;
   double load_ms = 0.0;
+  bool from_cache = false;          // read from the mesh cache (mesh_cache.h), not parsed
   glm::dvec3 original_centre{0.0};  // the model was translated by -centre ...
   double original_scale = 1.0;      // ... then scaled by this to fit a unit sphere
   std::string toJson() const;

@@ -11,6 +11,7 @@
 #include "renderer/core/elapsed.h"
 #include "renderer/core/json.h"
 #include "renderer/core/input_file.h"
+#include "renderer/mesh/mesh_cache.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/obj_parser.h"
@@ -24,27 +25,31 @@ std::string LoadReport::toJson() const {
     << ",\"repeated_corner_faces\":" << repeated_corner_faces << ",\"degenerate_triangles\":" << degenerate_triangles
     << ",\"non_manifold_faces\":" << non_manifold_faces << ",\"warnings\":[";
   for (size_t i = 0; i < warnings.size(); ++i) o << (i ? "," : "") << json::string(warnings[i]);
-  o << "],\"load_ms\":" << json::number(load_ms, "%.3f") << "}";
+  o << "],\"load_ms\":" << json::number(load_ms, "%.3f") << ",\"from_cache\":" << (from_cache ? "true" : "false") << "}";
   return o.str();
 }
 
 Result<Mesh> loadMesh(const std::string& path) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (Result<std::uintmax_t> f = checkInputFile(path, InputKind::Mesh); !f) return Error{f.error()};
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  Result<Mesh> m = Error{""};
-  if (ext == ".obj") m = loadObj(path);
-  else if (ext == ".ply") m = loadPly(path);
-  else if (ext == ".off") m = loadOff(path);
-  else if (ext == ".stl") m = loadStl(path);
-  else if (ext == ".om") m = loadOm(path);
-  else {
-    if (Result<std::uintmax_t> f = checkInputFile(path, InputKind::Mesh); !f) return Error{f.error()};
-    return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .ply, .off, .stl or .om)"};
+  Result<Mesh> (*reader)(const std::string&) = nullptr;
+  if (ext == ".obj") reader = loadObj;
+  else if (ext == ".ply") reader = loadPly;
+  else if (ext == ".off") reader = loadOff;
+  else if (ext == ".stl") reader = loadStl;
+  else if (ext == ".om") reader = [](const std::string& p) { return loadOm(p); };
+  else return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .ply, .off, .stl or .om)"};
+  if (std::optional<Mesh> cached = readMeshCache(path)) {
+    cached->report.load_ms = msSince(t0);
+    return std::move(*cached);
   }
+  Result<Mesh> m = reader(path);
   if (!m) return m;
   finalizeMesh(*m);
   m->report.load_ms = msSince(t0);
+  (void)writeMeshCache(path, *m);  // best effort: a read-only cache folder only costs the next load time
   return m;
 }
 
