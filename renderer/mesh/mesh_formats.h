@@ -22,9 +22,9 @@ namespace npr {
 [[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
 
 // The same, on bytes already in memory (`name` stands for the file in messages): what the
-// fuzz harnesses call.
-[[nodiscard]] Result<Mesh> parsePly(const std::string& name, const std::string& bytes);
-[[nodiscard]] Result<Mesh> parseOff(const std::string& name, const std::string& bytes);
-[[nodiscard]] Result<Mesh> parseStl(const std::string& name, const std::string& bytes);
+// fuzz harnesses call. The bytes are taken so they are freed before the mesh is built.
+[[nodiscard]] Result<Mesh> parsePly(const std::string& name, std::string bytes);
+[[nodiscard]] Result<Mesh> parseOff(const std::string& name, std::string bytes);
+[[nodiscard]] Result<Mesh> parseStl(const std::string& name, std::string bytes);
 
 }  // namespace npr

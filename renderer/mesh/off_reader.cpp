@@ -10,7 +10,7 @@
 
 namespace npr {
 
-Result<Mesh> parseOff(const std::string& name, const std::string& bytes) {
+Result<Mesh> parseOff(const std::string& name, std::string bytes) {
   TextCursor in(bytes.data(), bytes.data() + bytes.size());
   auto at = [&](const std::string& what) { return Error{name + " line " + std::to_string(in.line()) + ": " + what}; };
   std::string_view magic = in.token();
@@ -81,6 +81,7 @@ Result<Mesh> parseOff(const std::string& name, const std::string& bytes) {
     faces.add(corners, "line", line);
   }
   warn.finish();
+  std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
 }
 
@@ -88,7 +89,7 @@ Result<Mesh> loadOff(const std::string& path) {
   Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
   if (!bytes) return Error{bytes.error()};
   if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parseOff(path, *bytes);
+  return parseOff(path, std::move(*bytes));
 }
 
 }  // namespace npr

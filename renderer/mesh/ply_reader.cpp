@@ -110,7 +110,7 @@ class BodyReader {
 
 }  // namespace
 
-Result<Mesh> parsePly(const std::string& name, const std::string& bytes) {
+Result<Mesh> parsePly(const std::string& name, std::string bytes) {
   TextCursor header(bytes.data(), bytes.data() + bytes.size());
   auto at = [&](const std::string& what) { return Error{name + " line " + std::to_string(header.line()) + ": " + what}; };
   auto lineRest = [&] {
@@ -252,6 +252,7 @@ Result<Mesh> parsePly(const std::string& name, const std::string& bytes) {
     if (badVertices) warn.add(name + ": " + std::to_string(badVertices) + " vertices have non-finite coordinates; faces using them are skipped");
   }
   warn.finish();
+  std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
 }
 
@@ -259,7 +260,7 @@ Result<Mesh> loadPly(const std::string& path) {
   Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
   if (!bytes) return Error{bytes.error()};
   if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parsePly(path, *bytes);
+  return parsePly(path, std::move(*bytes));
 }
 
 }  // namespace npr

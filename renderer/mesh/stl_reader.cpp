@@ -59,7 +59,7 @@ float readFloatLE(const unsigned char* b) {
   return f;
 }
 
-Result<Mesh> parseBinary(const std::string& name, const std::string& bytes, std::uint32_t n) {
+Result<Mesh> parseBinary(const std::string& name, std::string bytes, std::uint32_t n) {
   LoadReport report;
   report.file = name;
   Warnings warn(report.warnings);
@@ -89,10 +89,11 @@ Result<Mesh> parseBinary(const std::string& name, const std::string& bytes, std:
   }
   if (nonFinite) warn.add(name + ": " + std::to_string(nonFinite) + " facets have non-finite coordinates; skipped");
   warn.finish();
+  std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
 }
 
-Result<Mesh> parseAscii(const std::string& name, const std::string& bytes) {
+Result<Mesh> parseAscii(const std::string& name, std::string bytes) {
   TextCursor in(bytes.data(), bytes.data() + bytes.size());
   LoadReport report;
   report.file = name;
@@ -131,20 +132,21 @@ Result<Mesh> parseAscii(const std::string& name, const std::string& bytes) {
   }
   flush();
   warn.finish();
+  std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
 }
 
 }  // namespace
 
-Result<Mesh> parseStl(const std::string& name, const std::string& bytes) {
+Result<Mesh> parseStl(const std::string& name, std::string bytes) {
   if (bytes.size() >= 84) {
     const auto* b = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
     const std::uint32_t n = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 | std::uint32_t(b[3]) << 24;
-    if (84 + 50 * std::uint64_t(n) == bytes.size()) return parseBinary(name, bytes, n);
+    if (84 + 50 * std::uint64_t(n) == bytes.size()) return parseBinary(name, std::move(bytes), n);
   }
   const std::size_t start = bytes.find_first_not_of(" \t\r\n");
   if (start != std::string::npos && bytes.compare(start, 5, "solid") == 0) {
-    if (std::memchr(bytes.data(), '\0', std::min<std::size_t>(bytes.size(), 4096)) == nullptr) return parseAscii(name, bytes);
+    if (std::memchr(bytes.data(), '\0', std::min<std::size_t>(bytes.size(), 4096)) == nullptr) return parseAscii(name, std::move(bytes));
   }
   if (bytes.size() >= 84) {
     const auto* b = reinterpret_cast<const unsigned char*>(bytes.data()) + 80;
@@ -159,7 +161,7 @@ Result<Mesh> loadStl(const std::string& path) {
   Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
   if (!bytes) return Error{bytes.error()};
   if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parseStl(path, *bytes);
+  return parseStl(path, std::move(*bytes));
 }
 
 }  // namespace npr
