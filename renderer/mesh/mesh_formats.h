@@ -14,17 +14,13 @@
 
 namespace npr {
 
-// Each parses the whole file and builds the mesh (not yet finalised: see loadMesh).
-[[nodiscard]] Result<Mesh> loadPly(const std::string& path);
-[[nodiscard]] Result<Mesh> loadOff(const std::string& path);
-[[nodiscard]] Result<Mesh> loadStl(const std::string& path);
-// `seconds` bounds the child process that runs OpenMesh's reader.
-[[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
-
-// The same, on bytes already in memory (`name` stands for the file in messages): what the
-// fuzz harnesses call. The bytes are taken so they are freed before the mesh is built.
+// Each parses a whole file already in memory (`name` stands for it in messages) and builds the
+// mesh (not yet finalised: see loadMesh, which reads the file). The bytes are taken so they
+// are freed before the mesh is built.
 [[nodiscard]] Result<Mesh> parsePly(const std::string& name, std::string bytes);
 [[nodiscard]] Result<Mesh> parseOff(const std::string& name, std::string bytes);
 [[nodiscard]] Result<Mesh> parseStl(const std::string& name, std::string bytes);
+// OM is read from the file by OpenMesh in a child process; `seconds` bounds that process.
+[[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
 
 }  // namespace npr

@@ -34,18 +34,25 @@ Result<Mesh> loadMesh(const std::string& path) {
   if (Result<std::uintmax_t> f = checkInputFile(path, InputKind::Mesh); !f) return Error{f.error()};
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  Result<Mesh> (*reader)(const std::string&) = nullptr;
-  if (ext == ".obj") reader = loadObj;
-  else if (ext == ".ply") reader = loadPly;
-  else if (ext == ".off") reader = loadOff;
-  else if (ext == ".stl") reader = loadStl;
-  else if (ext == ".om") reader = [](const std::string& p) { return loadOm(p); };
-  else return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .ply, .off, .stl or .om)"};
+  Result<Mesh> (*parse)(const std::string&, std::string) = nullptr;
+  if (ext == ".obj") parse = parseObj;
+  else if (ext == ".ply") parse = parsePly;
+  else if (ext == ".off") parse = parseOff;
+  else if (ext == ".stl") parse = parseStl;
+  else if (ext != ".om") return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .ply, .off, .stl or .om)"};
   if (std::optional<Mesh> cached = readMeshCache(path)) {
     cached->report.load_ms = msSince(t0);
     return std::move(*cached);
   }
-  Result<Mesh> m = reader(path);
+  Result<Mesh> m = Error{""};
+  if (parse) {
+    Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
+    if (!bytes) return Error{bytes.error()};
+    if (bytes->empty()) return Error{path + ": the file is empty"};
+    m = parse(path, std::move(*bytes));
+  } else {
+    m = loadOm(path);
+  }
   if (!m) return m;
   finalizeMesh(*m);
   m->report.load_ms = msSince(t0);

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <limits>
 
-#include "renderer/core/input_file.h"
 #include "renderer/mesh/polygon_soup.h"
 
 namespace npr {
@@ -159,22 +158,13 @@ Status parseInto(const std::string& path, const std::string& text, PolygonSoup& 
 
 }  // namespace
 
-Result<Mesh> loadObj(const std::string& path) {
-  Result<std::string> text = readInputFile(path, InputKind::Mesh);
-  if (!text) return Error{text.error()};
-  LoadReport report;
-  PolygonSoup soup;
-  if (Status s = parseInto(path, *text, soup, report); !s) return Error{s.error()};
-  // 34 MB for the 871K-triangle model, not needed while building. (Assigning an empty string
-  // would keep the buffer: libstdc++ moves a short string in by copying it.)
-  std::string().swap(*text);
-  return buildMesh(std::move(soup), std::move(report));
-}
-
-Result<Mesh> parseObj(const std::string& path, const std::string& text) {
+Result<Mesh> parseObj(const std::string& path, std::string text) {
   LoadReport report;
   PolygonSoup soup;
   if (Status s = parseInto(path, text, soup, report); !s) return Error{s.error()};
+  // 34 MB for the 871K-triangle model, not needed while building. (Assigning an empty string
+  // would keep the buffer: libstdc++ moves a short string in by copying it.)
+  std::string().swap(text);
   return buildMesh(std::move(soup), std::move(report));
 }
 

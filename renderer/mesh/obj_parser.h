@@ -10,9 +10,9 @@
 
 namespace npr {
 
-// Parses the file and builds the mesh (not yet finalised: see loadMesh).
-[[nodiscard]] Result<Mesh> loadObj(const std::string& path);
-// The same on text already in memory (`path` names it in messages): what the fuzz harness calls.
-[[nodiscard]] Result<Mesh> parseObj(const std::string& path, const std::string& text);
+// Parses the file's text (`path` names it in messages) and builds the mesh (not yet
+// finalised: see loadMesh, which reads the file). The text is taken so it is freed before the
+// mesh is built.
+[[nodiscard]] Result<Mesh> parseObj(const std::string& path, std::string text);
 
 }  // namespace npr

@@ -3,7 +3,6 @@
 // a colour may follow). Binary OFF and the 4D/nD variants are refused with a message.
 #include <string_view>
 
-#include "renderer/core/input_file.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/polygon_soup.h"
 #include "renderer/mesh/text_cursor.h"
@@ -83,13 +82,6 @@ Result<Mesh> parseOff(const std::string& name, std::string bytes) {
   warn.finish();
   std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
-}
-
-Result<Mesh> loadOff(const std::string& path) {
-  Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
-  if (!bytes) return Error{bytes.error()};
-  if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parseOff(path, std::move(*bytes));
 }
 
 }  // namespace npr

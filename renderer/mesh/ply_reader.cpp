@@ -10,7 +10,6 @@
 #include <cstring>
 #include <string_view>
 
-#include "renderer/core/input_file.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/polygon_soup.h"
 #include "renderer/mesh/text_cursor.h"
@@ -254,13 +253,6 @@ Result<Mesh> parsePly(const std::string& name, std::string bytes) {
   warn.finish();
   std::string().swap(bytes);  // not needed while building
   return buildMesh(std::move(soup), std::move(report));
-}
-
-Result<Mesh> loadPly(const std::string& path) {
-  Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
-  if (!bytes) return Error{bytes.error()};
-  if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parsePly(path, std::move(*bytes));
 }
 
 }  // namespace npr

@@ -10,7 +10,6 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "renderer/core/input_file.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/polygon_soup.h"
 #include "renderer/mesh/text_cursor.h"
@@ -155,13 +154,6 @@ Result<Mesh> parseStl(const std::string& name, std::string bytes) {
                  " bytes) but the file has " + std::to_string(bytes.size()) + " bytes: truncated or not an STL file"};
   }
   return Error{name + ": not an STL file (too short for binary STL, and it does not begin with 'solid')"};
-}
-
-Result<Mesh> loadStl(const std::string& path) {
-  Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
-  if (!bytes) return Error{bytes.error()};
-  if (bytes->empty()) return Error{path + ": the file is empty"};
-  return parseStl(path, std::move(*bytes));
 }
 
 }  // namespace npr
