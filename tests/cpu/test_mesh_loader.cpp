@@ -186,7 +186,7 @@ TEST(MeshLoader, NonFiniteVerticesAreRefusedNotPropagated) {
   for (const auto& p : m->positions) EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
 }
 
-TEST(MeshLoader, ReadsOtherFormatsThroughOpenMesh) {
+TEST(MeshLoader, ReadsOtherFormatsThroughTheirReaders) {
   TempDir d;
   auto m = loadMesh(d.write("t.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
   ASSERT_TRUE(m) << m.error();
