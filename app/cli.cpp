@@ -37,7 +37,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
                "whose average colour or intensity matches best, in screen space."};
   Options o;
-  std::string path, match, size, light, camera, rangeScale, lines, tone, bands;
+  std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -55,6 +55,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
   app.add_option("--out", o.outDir, "Benchmark output folder (default benchmark-results)");
+  app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
   app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
@@ -82,6 +83,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   } else if (!match.empty()) {
     o.match = parseMatchMode(match);
     if (!o.match) return {std::nullopt, fail("unknown --match '" + match + "': use colors, intensity or order")};
+  }
+  if (!materials.empty()) {
+    if (materials != "on" && materials != "off") return {std::nullopt, fail("--materials must be on or off, got '" + materials + "'")};
+    o.materials = materials == "on";
   }
   if (!rangeScale.empty()) {
     char* end = nullptr;

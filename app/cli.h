@@ -32,6 +32,7 @@ struct Options {
   bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";
   bool gouraud = false;
+  bool materials = true;
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
   bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;

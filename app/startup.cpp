@@ -18,6 +18,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.match) state.settings.match = *o.match;
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;
   state.settings.referenceGouraud = o.gouraud;
+  state.settings.materials = o.materials;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

@@ -32,6 +32,9 @@ struct RenderSettings {
   MatchMode match = MatchMode::Intensity;
   float rangeScale = 1.0f;
   std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
+  // Light each face with the model's own materials, vertex colours and texture maps (when it
+  // has any); off: the lighting state's one material, as the original.
+  bool materials = true;
   bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle

@@ -24,10 +24,12 @@ Renderer::~Renderer() = default;
 void Renderer::setMesh(const Mesh* mesh) {
   mesh_ = mesh && !mesh->indices.empty() ? mesh : nullptr;
   gpuMesh_.clear();
+  materials_.clear();
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
   if (!mesh_) return;
   gpuMesh_.upload(*mesh_);
+  materials_.upload(*mesh_);
   stats_.bufferUploads += 3;
 }
 
@@ -60,7 +62,8 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 
 Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
   if (!mesh_) return okStatus();
-  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
+  if (s.materials) materials_.update(*mesh_, lighting_, stats_);
+  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
   return paths_[pathIndex(s.path)]->draw(frame);
 }
 

@@ -19,6 +19,7 @@
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/lines/image_edges_pass.h"
 #include "renderer/lines/line_pass.h"
+#include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/gpu_palette.h"
@@ -90,6 +91,7 @@ class Renderer {
   FrameStats stats_;
   const Mesh* mesh_ = nullptr;
   GpuMesh gpuMesh_;
+  GpuMaterials materials_;
   std::unique_ptr<GpuPalette> palette_;
   TriangleShadingCache triangles_;
   gl::ProgramCache programs_;

@@ -2,19 +2,54 @@
 // renderer/lighting/lighting_model.h, specialised by #defines to the features the scene uses:
 // NUM_LIGHTS, HAS_POSITIONAL, HAS_ATTENUATION, HAS_SPOT, HAS_SPECULAR, LOCAL_VIEWER,
 // TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
-// the prepared products of light and material colours.
+// the prepared products of light and material colours; with MATERIALS (the mesh's own
+// materials) they are the lights' own colours, multiplied here by the material that
+// loadMaterial() read from the material table for the vertex or fragment.
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
 #endif
 
+#ifdef MATERIALS
+// One row of 4 texels per material: (ambient, map layer or -1), (diffuse, 0),
+// (specular, shininess), (emission, 0). See renderer/mesh/gpu_materials.h.
+uniform samplerBuffer uMaterialTable;
+uniform vec3 uModelAmbient;
+struct SurfaceMaterial {
+  vec3 ambient, diffuse, specular, emission;
+  float shininess, map;
+};
+SurfaceMaterial gMaterial;
+void loadMaterial(uint index) {
+  int row = int(index) * 4;
+  vec4 a = texelFetch(uMaterialTable, row), d = texelFetch(uMaterialTable, row + 1);
+  vec4 s = texelFetch(uMaterialTable, row + 2), e = texelFetch(uMaterialTable, row + 3);
+  gMaterial = SurfaceMaterial(a.rgb, d.rgb, s.rgb, e.rgb, s.a, a.a);
+}
+#define LIGHT_SLOTS NUM_LIGHTS
+#define EMISSION(side) gMaterial.emission
+#define AMBIENT_BASE(side) (gMaterial.ambient * uModelAmbient)
+#define LIGHT_AMBIENT(side, i) (gMaterial.ambient * uLightAmbient[i])
+#define LIGHT_DIFFUSE(side, i) (gMaterial.diffuse * uLightDiffuse[i])
+#define LIGHT_SPECULAR(side, i) (gMaterial.specular * uLightSpecular[i])
+#define SHININESS(side) gMaterial.shininess
+#else
 uniform vec3 uBase[2];  // emission + ambient x light-model ambient, [front, back]
+#define LIGHT_SLOTS (2 * NUM_LIGHTS)
+#define EMISSION(side) vec3(0.0)
+#define AMBIENT_BASE(side) uBase[side]
+#define LIGHT_AMBIENT(side, i) uLightAmbient[(side) * NUM_LIGHTS + (i)]
+#define LIGHT_DIFFUSE(side, i) uLightDiffuse[(side) * NUM_LIGHTS + (i)]
+#define LIGHT_SPECULAR(side, i) uLightSpecular[(side) * NUM_LIGHTS + (i)]
+#define SHININESS(side) uShininess[side]
+#endif
+
 #if NUM_LIGHTS > 0
-uniform vec3 uLightAmbient[2 * NUM_LIGHTS];  // front products, then back products
-uniform vec3 uLightDiffuse[2 * NUM_LIGHTS];
+uniform vec3 uLightAmbient[LIGHT_SLOTS];  // products: front, then back; MATERIALS: the lights' colours
+uniform vec3 uLightDiffuse[LIGHT_SLOTS];
 uniform vec4 uLightPosition[NUM_LIGHTS];  // w = 0: unit direction; w = 1: eye-space point
 #ifdef HAS_SPECULAR
-uniform vec3 uLightSpecular[2 * NUM_LIGHTS];
+uniform vec3 uLightSpecular[LIGHT_SLOTS];
 uniform float uShininess[2];
 #endif
 #ifdef HAS_SPOT
@@ -28,9 +63,12 @@ uniform vec3 uAttenuation[NUM_LIGHTS];  // constant, linear, quadratic
 #endif
 
 #if defined(TONE_GOOCH) || defined(TONE_SPLASHBACK)
-uniform vec3 uCool[2];
-uniform vec3 uWarm[2];
-uniform vec2 uSplash;  // alpha, power
+uniform vec3 uCool[2];  // MATERIALS: [0] is k_blue alone, [1] unused
+uniform vec3 uWarm[2];  // MATERIALS: [0] is k_yellow alone
+uniform vec2 uSplash;   // alpha, power
+#ifdef MATERIALS
+uniform vec2 uToneWeights;  // alpha, beta: k_cool = k_blue + alpha k_d
+#endif
 #endif
 
 const float kMaxFloat = 3.402823e38;
@@ -51,7 +89,12 @@ vec3 clamp01(vec3 c) {  // NaN -> 0, like the CPU
   return mix(vec3(0.0), min(c, vec3(1.0)), positive);
 }
 
-vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) {
+// The lit colour in two parts: the return value is what a surface colour does not scale
+// (emission, specular), `scaled` what it does (ambient and diffuse), so a vertex colour or a
+// texture map can modulate the reflectance after lighting (per vertex: the triangle's map
+// average is applied per fragment). shadeGL is their sum, clamped.
+vec3 shadeParts(vec3 pos, vec3 normal, bool backFacing, out vec3 scaled) {
+  scaled = vec3(0.0);
 #ifdef LIGHTING_OFF
   return vec3(1.0);
 #else
@@ -69,13 +112,21 @@ vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) {
 #endif
   float ndl = dot(n, vp);
   float t = (1.0 - ndl) * 0.5;
+#ifdef MATERIALS
+  vec3 tone = t * uCool[0] + (1.0 - t) * uWarm[0];
+  scaled = gMaterial.diffuse * (t * uToneWeights.x + (1.0 - t) * uToneWeights.y);
+#else
   vec3 tone = t * uCool[side] + (1.0 - t) * uWarm[side];
+#endif
 #ifdef TONE_SPLASHBACK
-  tone *= powGL(uSplash.x * abs(ndl) + (1.0 - uSplash.x), uSplash.y);
+  float splash = powGL(uSplash.x * abs(ndl) + (1.0 - uSplash.x), uSplash.y);
+  tone *= splash;
+  scaled *= splash;
 #endif
-  return clamp01(tone);
+  return tone;
 #endif
-  vec3 c = uBase[side];
+  vec3 c = EMISSION(side);
+  scaled = AMBIENT_BASE(side);
 #if NUM_LIGHTS > 0
 #ifdef HAS_SPECULAR
   vec3 toEye = vec3(0.0, 0.0, 1.0);
@@ -106,18 +157,27 @@ vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) {
 #endif
     if (spot == 0.0) continue;
     float ndl = max(dot(n, vp), 0.0);
-    vec3 term = uLightAmbient[side * NUM_LIGHTS + i] + ndl * uLightDiffuse[side * NUM_LIGHTS + i];
+    vec3 term = LIGHT_AMBIENT(side, i) + ndl * LIGHT_DIFFUSE(side, i);
+    vec3 contrib = (att * spot) * term;
+    scaled += mix(contrib, vec3(0.0), isnan(contrib));
 #ifdef HAS_SPECULAR
     if (ndl > 0.0) {
       vec3 h = safeNormalize(vp + toEye);
-      term += powGL(max(dot(n, h), 0.0), uShininess[side]) * uLightSpecular[side * NUM_LIGHTS + i];
+      vec3 spec = (att * spot) * powGL(max(dot(n, h), 0.0), SHININESS(side)) * LIGHT_SPECULAR(side, i);
+      c += mix(spec, vec3(0.0), isnan(spec));
     }
 #endif
-    vec3 contrib = (att * spot) * term;
-    contrib = mix(contrib, vec3(0.0), isnan(contrib));
-    c += contrib;
   }
 #endif
-  return clamp01(c);
+  return c;
 #endif
 }
+
+// The lit colour with the surface's ambient and diffuse reflectance scaled by `scale`.
+vec3 shadeScaled(vec3 pos, vec3 normal, bool backFacing, vec3 scale) {
+  vec3 scaled;
+  vec3 c = shadeParts(pos, normal, backFacing, scaled);
+  return clamp01(c + scaled * scale);
+}
+
+vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) { return shadeScaled(pos, normal, backFacing, vec3(1.0)); }

@@ -1,6 +1,8 @@
 // Vertex stage shared by every mesh pass. gl_Position is computed by the same expression in
 // every variant and declared invariant, so the stencil path's passes produce equal depths.
-// PER_VERTEX_LIGHTING (the `vertex` path and Gouraud reference) lights here.
+// PER_VERTEX_LIGHTING (the `vertex` path and Gouraud reference) lights here. MATERIALS adds
+// the mesh's own appearance: a colour (white where the mesh has none), texture coordinates
+// and a material index per vertex (vertices are split where these differ).
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -14,10 +16,25 @@ invariant gl_Position;
 out vec3 vPosition;  // eye space
 out vec3 vNormal;    // eye space, not normalised
 
+#ifdef MATERIALS
+layout(location = 2) in vec3 aColour;
+layout(location = 3) in vec2 aTexcoord;
+layout(location = 4) in uint aMaterial;
+out vec3 vColour;
+out vec2 vTexcoord;
+flat out uint vMaterial;
+#endif
+
 #ifdef PER_VERTEX_LIGHTING
 #include "lighting.glsl"
 out vec3 vColorFront;
 out vec3 vColorBack;
+#ifdef MATERIALS
+// The ambient and diffuse part, kept apart so the fragment stage can scale it by the
+// triangle's texture average.
+out vec3 vScaledFront;
+out vec3 vScaledBack;
+#endif
 #endif
 
 void main() {
@@ -25,7 +42,23 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
-#ifdef PER_VERTEX_LIGHTING
+#ifdef MATERIALS
+  vColour = aColour;
+  vTexcoord = aTexcoord;
+  vMaterial = aMaterial;
+#endif
+#if defined(PER_VERTEX_LIGHTING) && defined(MATERIALS)
+  loadMaterial(aMaterial);
+  vColorFront = shadeParts(eye.xyz, vNormal, false, vScaledFront);
+  vScaledFront *= aColour;
+#ifdef TWO_SIDED
+  vColorBack = shadeParts(eye.xyz, vNormal, true, vScaledBack);
+  vScaledBack *= aColour;
+#else
+  vColorBack = vColorFront;
+  vScaledBack = vScaledFront;
+#endif
+#elif defined(PER_VERTEX_LIGHTING)
   vColorFront = shadeGL(eye.xyz, vNormal, false);
 #ifdef TWO_SIDED
   vColorBack = shadeGL(eye.xyz, vNormal, true);

@@ -57,6 +57,7 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
   }
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
+  ImGui::Checkbox("Model materials", &s.settings.materials);
   if (ImGui::CollapsingHeader("Lines and tone")) {
     LineSettings& ls = s.settings.lines;
     ImGui::Checkbox("silhouettes", &ls.silhouettes);

@@ -16,6 +16,7 @@ const char* article(InputKind k) {
     case InputKind::Mesh: return "a mesh file";
     case InputKind::Palette: return "a palette file";
     case InputKind::Image: return "an image";
+    case InputKind::MaterialLibrary: return "a material library (.mtl)";
   }
   return "a file";
 }
@@ -25,6 +26,7 @@ std::uintmax_t limit(InputKind k) {
     case InputKind::Mesh: return kMaxModelFileBytes;
     case InputKind::Palette: return kMaxPaletteFileBytes;
     case InputKind::Image: return kMaxImageFileBytes;
+    case InputKind::MaterialLibrary: return kMaxMaterialFileBytes;
   }
   return 0;
 }

@@ -47,6 +47,8 @@ struct MeshProgram {
   MeshOutput output = MeshOutput::Colour;
   std::optional<LightingFeatures> lighting;  // for the shadings that light on the GPU
   std::optional<PaletteVariant> palette;     // for the shadings that sample the palette
+  bool materials = false;     // the mesh's own materials, colours and maps (GPU-lit shadings)
+  bool materialMaps = false;  // ... some of which have a diffuse map
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.

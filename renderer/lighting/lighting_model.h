@@ -32,6 +32,7 @@ struct PreparedLighting {
   L lights[kMaxLights];
   int count = 0;
   V3 base[2];  // emission + material ambient x light-model ambient, [front, back]
+  V3 emission[2];  // the part of base that a surface colour does not scale
   T shininess[2] = {0, 0};
   bool lighting = true, specular = false, localViewer = false, twoSided = false;
   V3 eye{0};              // local viewer: the eye's position in the lighting space
@@ -40,6 +41,8 @@ struct PreparedLighting {
   // Tone models (Gooch, splashback): cool and warm colours per side, the splash multiplier.
   ToneModel tone = ToneModel::OpenGL;
   V3 cool[2], warm[2];
+  V3 coolBase{0}, warmBase{0}, kd[2];  // cool = coolBase + alpha kd (kd scaled by a surface colour)
+  T toneAlpha = 0, toneBeta = 0;
   T splashAlpha = 0, splashPower = 0;
 };
 
@@ -62,6 +65,7 @@ PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toS
   p.viewDirection = glm::normalize(V3(m * V4(0, 0, 1, 0)));
   const Material* mats[2] = {&s.front(), &s.back()};
   for (int side = 0; side < 2; ++side) {
+    p.emission[side] = V3(mats[side]->emission);
     p.base[side] = V3(mats[side]->emission) + V3(mats[side]->ambient) * V3(s.modelAmbient());
     p.shininess[side] = static_cast<T>(mats[side]->shininess);
   }
@@ -71,7 +75,12 @@ PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toS
     const V3 kd(mats[side]->diffuse);
     p.cool[side] = V3(0, 0, tp.blue) + T(tp.alpha) * kd;
     p.warm[side] = V3(tp.yellow, tp.yellow, 0) + T(tp.beta) * kd;
+    p.kd[side] = kd;
   }
+  p.coolBase = V3(0, 0, tp.blue);
+  p.warmBase = V3(tp.yellow, tp.yellow, 0);
+  p.toneAlpha = T(tp.alpha);
+  p.toneBeta = T(tp.beta);
   p.splashAlpha = T(tp.splashAlpha);
   p.splashPower = T(tp.splashPower);
   for (int i = 0; i < kMaxLights; ++i) {
@@ -127,10 +136,13 @@ glm::vec<3, T> safeNormalize(const glm::vec<3, T>& v) {
 
 // The lit colour at point `pos` with normal `normal`, both in the prepared space. `back`
 // selects the back material and the flipped normal (only when two-sided lighting is on).
+// `scale` multiplies the material's ambient and diffuse reflectance (a vertex colour or a
+// texture's colour at the point), as a colour-material or a modulating texture would.
 // Always finite and in [0,1]: degenerate input (zero or NaN normal, NaN position, a light
 // at the point, zero attenuation) gives a defined colour, never NaN.
 template <class T>
-glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, const glm::vec<3, T>& normal, bool back = false) {
+glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, const glm::vec<3, T>& normal, bool back = false,
+                     const glm::vec<3, T>& scale = glm::vec<3, T>(1)) {
   using namespace lighting_detail;
   using V3 = glm::vec<3, T>;
   if (!p.lighting) return p.unlit;
@@ -147,11 +159,12 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
     }
     const T ndl = glm::dot(n, vp);
     const T t = (T(1) - ndl) * T(0.5);  // (1 + l.n) / 2 with l = -vp
-    V3 c = t * p.cool[side] + (T(1) - t) * p.warm[side];
+    V3 c = t * (p.coolBase + p.toneAlpha * p.kd[side] * scale) + (T(1) - t) * (p.warmBase + p.toneBeta * p.kd[side] * scale);
     if (p.tone == ToneModel::Splashback) c *= powGL(p.splashAlpha * std::fabs(ndl) + (T(1) - p.splashAlpha), p.splashPower);
     return V3(clamp01(c.x), clamp01(c.y), clamp01(c.z));
   }
-  V3 c = p.base[side];
+  V3 c = p.emission[side];               // what the surface colour does not scale
+  V3 scaled = p.base[side] - p.emission[side];  // ambient and diffuse: what it does
   V3 toEye = p.viewDirection;
   if (p.localViewer) {
     toEye = safeNormalize(p.eye - pos);
@@ -180,15 +193,22 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
     if (spot == T(0)) continue;
     const T ndl = std::max(glm::dot(n, vp), T(0));
     V3 term = l.ambient[side] + ndl * l.diffuse[side];
+    V3 spec(0);
     if (p.specular && ndl > T(0)) {
       const V3 h = safeNormalize(vp + toEye);
-      term += powGL(std::max(glm::dot(n, h), T(0)), p.shininess[side]) * l.specular[side];
+      spec = powGL(std::max(glm::dot(n, h), T(0)), p.shininess[side]) * l.specular[side];
     }
-    V3 contrib = (att * spot) * term;
-    for (int k = 0; k < 3; ++k)
+    V3 contrib = (att * spot) * term, contribSpec = (att * spot) * spec;
+    for (int k = 0; k < 3; ++k) {
       if (std::isnan(contrib[k])) contrib[k] = T(0);  // inf x 0 from huge colours
-    c += contrib;
+      if (std::isnan(contribSpec[k])) contribSpec[k] = T(0);
+    }
+    scaled += contrib;
+    c += contribSpec;
   }
+  c += scaled * scale;
+  for (int k = 0; k < 3; ++k)
+    if (std::isnan(c[k])) c[k] = T(0);
   return V3(clamp01(c.x), clamp01(c.y), clamp01(c.z));
 }
 

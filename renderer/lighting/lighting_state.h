@@ -105,6 +105,13 @@ class LightingState {
   glm::vec4 unlitColor() const { return {1, 1, 1, 1}; }  // glColor's default: what "lighting off" shows
 
   LightingFeatures features() const;
+  // This state with `m` as the front and back material: how a mesh's own material is lit (the
+  // material's values are the caller's to keep in OpenGL's ranges).
+  LightingState withMaterial(const Material& m) const {
+    LightingState s = *this;
+    s.front_ = s.back_ = m;
+    return s;
+  }
   // Bumped on every successful change, so dependants recompute only when something changed.
   unsigned revision() const { return revision_; }
 

@@ -45,4 +45,20 @@ void uploadLightingUniforms(gl::ShaderProgram& program, const PreparedLighting<f
   program.setArray("uShininess", p.shininess, 2);
 }
 
+void uploadMaterialLightingUniforms(gl::ShaderProgram& program, const LightingState& lighting, const glm::mat4& toEyeSpace) {
+  // Lit with a white material, the prepared products are the lights' own colours.
+  Material white;
+  white.ambient = white.diffuse = white.specular = glm::vec4(1.0f);
+  white.emission = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  const PreparedLighting<float> p = prepareLighting<float>(lighting.withMaterial(white), toEyeSpace);
+  uploadLightingUniforms(program, p);
+  program.set("uModelAmbient", glm::vec3(lighting.modelAmbient()));
+  if (p.tone != ToneModel::OpenGL) {
+    const glm::vec3 cool[2] = {p.coolBase, p.coolBase}, warm[2] = {p.warmBase, p.warmBase};
+    program.setArray("uCool", cool, 2);
+    program.setArray("uWarm", warm, 2);
+    program.set("uToneWeights", glm::vec2(p.toneAlpha, p.toneBeta));
+  }
+}
+
 }  // namespace npr

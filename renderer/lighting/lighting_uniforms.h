@@ -7,5 +7,8 @@
 namespace npr {
 
 void uploadLightingUniforms(gl::ShaderProgram& program, const PreparedLighting<float>& eyeSpace);
+// For a MATERIALS program: the lights' own colours (the material comes from the table), the
+// light-model ambient, and the tone parameters without a material.
+void uploadMaterialLightingUniforms(gl::ShaderProgram& program, const LightingState& lighting, const glm::mat4& toEyeSpace);
 
 }  // namespace npr

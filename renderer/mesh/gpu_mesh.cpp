@@ -17,6 +17,9 @@ void GpuMesh::clear() {
   positions_.reset();
   normals_.reset();
   indices_.reset();
+  colours_.reset();
+  texcoords_.reset();
+  materials_.reset();
   triangleCount_ = 0;
 }
 
@@ -35,8 +38,36 @@ void GpuMesh::upload(const Mesh& mesh) {
   glBindBuffer(GL_ARRAY_BUFFER, normals_.id());
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  if (mesh.hasAppearance()) uploadAppearance(mesh);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBindVertexArray(0);
+}
+
+void GpuMesh::uploadAppearance(const Mesh& mesh) {
+  const std::size_t nv = mesh.positions.size();
+  // Attributes 2-4 of mesh.vert's MATERIALS variant; where the mesh lacks one, a neutral array
+  // (white, (0,0), material 0) keeps one vertex layout for every mesh with an appearance.
+  const std::vector<glm::vec3> white(mesh.colours.size() == nv ? 0 : nv, glm::vec3(1.0f));
+  const std::vector<glm::vec3>& colours = mesh.colours.size() == nv ? mesh.colours : white;
+  colours_ = staticBuffer(colours.data(), nv * sizeof(glm::vec3));
+  const std::vector<glm::vec2> zero(mesh.texcoords.size() == nv ? 0 : nv, glm::vec2(0.0f));
+  const std::vector<glm::vec2>& uv = mesh.texcoords.size() == nv ? mesh.texcoords : zero;
+  texcoords_ = staticBuffer(uv.data(), nv * sizeof(glm::vec2));
+  // Vertices are split per material while loading, so each has one.
+  std::vector<std::uint16_t> material(nv, 0);
+  if (mesh.faceMaterials.size() == mesh.triangleCount())
+    for (std::size_t f = 0; f < mesh.faceMaterials.size(); ++f)
+      for (int k = 0; k < 3; ++k) material[mesh.indices[f * 3 + static_cast<std::size_t>(k)]] = mesh.faceMaterials[f];
+  materials_ = staticBuffer(material.data(), nv * sizeof(std::uint16_t));
+  glBindBuffer(GL_ARRAY_BUFFER, colours_.id());
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, texcoords_.id());
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, materials_.id());
+  glEnableVertexAttribArray(4);
+  glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
 }
 
 void GpuMesh::drawAll() const {

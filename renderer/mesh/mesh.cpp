@@ -1,9 +1,32 @@
-// Derives the radius, centroids and normals of a Mesh from its positions and indices.
+// Derives the radius, centroids, normals and texture averages of a Mesh from its arrays.
 #include "renderer/mesh/mesh.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+
+#include "renderer/mesh/texture_average.h"
 
 namespace npr {
+
+void computeFaceTints(Mesh& m) {
+  m.faceTints.clear();
+  const size_t nf = m.indices.size() / 3;
+  bool textured = false;
+  for (const MeshMaterial& mat : m.materials) textured |= mat.diffuseMap >= 0;
+  if (!textured || m.texcoords.size() != m.positions.size() || m.faceMaterials.size() != nf) return;
+  std::vector<std::unique_ptr<TextureAverager>> maps(m.textures.size());
+  for (size_t t = 0; t < maps.size(); ++t) maps[t] = std::make_unique<TextureAverager>(m.textures[t].image);
+  m.faceTints.assign(nf, glm::vec3(1.0f));
+  for (size_t f = 0; f < nf; ++f) {
+    const std::uint16_t mi = m.faceMaterials[f];
+    if (mi >= m.materials.size()) continue;
+    const int map = m.materials[mi].diffuseMap;
+    if (map < 0 || static_cast<size_t>(map) >= maps.size()) continue;
+    const std::uint32_t* id = &m.indices[f * 3];
+    m.faceTints[f] = maps[static_cast<size_t>(map)]->average(m.texcoords[id[0]], m.texcoords[id[1]], m.texcoords[id[2]]);
+  }
+}
 
 void finalizeMesh(Mesh& m) {
   const size_t nv = m.positions.size(), nf = m.indices.size() / 3;
@@ -12,7 +35,16 @@ void finalizeMesh(Mesh& m) {
   m.radius = r2 > 0.0f ? std::sqrt(r2) : 1.0f;
   m.faceCentroids.resize(nf);
   m.faceNormals.resize(nf);
-  std::vector<glm::dvec3> accum(nv, glm::dvec3(0.0));
+  // Vertices split for texture coordinates or materials share one normal: accumulate on the
+  // file's vertex.
+  const bool split = m.sourceVertex.size() == nv;
+  auto slot = [&](std::uint32_t v) -> std::size_t { return split ? m.sourceVertex[v] : v; };
+  std::size_t slots = nv;
+  if (split) {
+    slots = 0;
+    for (std::uint32_t s : m.sourceVertex) slots = std::max<std::size_t>(slots, std::size_t(s) + 1);
+  }
+  std::vector<glm::dvec3> accum(slots, glm::dvec3(0.0));
   for (size_t fi = 0; fi < nf; ++fi) {
     const std::uint32_t* id = &m.indices[fi * 3];
     const glm::vec3 a = m.positions[id[0]], b = m.positions[id[1]], c = m.positions[id[2]];
@@ -20,14 +52,16 @@ void finalizeMesh(Mesh& m) {
     const double len = glm::length(cr);
     m.faceCentroids[fi] = (a + b + c) / 3.0f;
     m.faceNormals[fi] = len > 0.0 && std::isfinite(len) ? glm::vec3(cr / len) : glm::vec3(0.0f);
-    for (int k = 0; k < 3; ++k) accum[id[k]] += cr;  // area weighting
+    for (int k = 0; k < 3; ++k) accum[slot(id[k])] += cr;  // area weighting
   }
   m.normals.resize(nv);
   for (size_t i = 0; i < nv; ++i) {
-    const double len = glm::length(accum[i]);
+    const glm::dvec3& a = accum[slot(static_cast<std::uint32_t>(i))];
+    const double len = glm::length(a);
     // Vertices touching only zero-area faces (or none) get +Z: finite, and harmless to light.
-    m.normals[i] = len > 0.0 && std::isfinite(len) ? glm::vec3(accum[i] / len) : glm::vec3(0.0f, 0.0f, 1.0f);
+    m.normals[i] = len > 0.0 && std::isfinite(len) ? glm::vec3(a / len) : glm::vec3(0.0f, 0.0f, 1.0f);
   }
+  computeFaceTints(m);
   m.report.vertices = nv;
   m.report.triangles = nf;
 }

@@ -12,6 +12,8 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <glm/glm.hpp>
 
+#include "renderer/core/image.h"
+
 namespace npr {
 
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<>;
@@ -26,11 +28,39 @@ struct LoadReport {
   std::size_t degenerate_triangles = 0;   // triangles (of faces or their triangulation) naming one vertex twice: not drawn
   std::size_t non_manifold_faces = 0;     // refused by the halfedge structure, drawn on copied vertices
   std::vector<std::string> warnings;
+  // Materials (OBJ's .mtl): the libraries read, the materials defined and used, and texture
+  // maps found and missing (each names the file and line).
+  std::vector<std::string> material_libraries;
+  std::size_t materials = 0;
+  std::vector<std::string> textures_loaded;
+  std::vector<std::string> textures_missing;
+  bool vertex_colours = false;
+  bool texture_coordinates = false;
   double load_ms = 0.0;
   bool from_cache = false;          // read from the mesh cache (mesh_cache.h), not parsed
   glm::dvec3 original_centre{0.0};  // the model was translated by -centre ...
   double original_scale = 1.0;      // ... then scaled by this to fit a unit sphere
   std::string toJson() const;
+};
+
+// A surface material as a .mtl file describes it, mapped to OpenGL's material (Materialfv):
+// Ka, Kd, Ks, Ke become the four colours, Ns (Phong exponent, 0..1000) the shininess clamped
+// to GL's 0..128, and illum 0 and 1 turn the specular term off (illum 0 also the lighting:
+// the diffuse colour is emitted).
+struct MeshMaterial {
+  std::string name;
+  glm::vec3 ambient{0.2f}, diffuse{0.8f}, specular{0.0f}, emission{0.0f};
+  float shininess = 0.0f;
+  float opacity = 1.0f;  // d (or 1 - Tr); reported, drawn opaque
+  int illum = 2;
+  int diffuseMap = -1;   // into Mesh::textures; modulates ambient and diffuse (map_Kd)
+  int opacityMap = -1;   // map_d: reported, not drawn
+  bool fromLightingState = false;  // the default material: taken from the lighting state at draw time
+};
+
+struct MeshTexture {
+  std::string path;
+  ImageRGBA8 image;  // as stored (no colour conversion, as fixed-function GL sampled)
 };
 
 struct Mesh {
@@ -41,13 +71,30 @@ struct Mesh {
   std::vector<glm::vec3> faceCentroids;   // per triangle
   std::vector<glm::vec3> faceNormals;     // per triangle; zero for zero-area triangles
   float radius = 1.0f;                    // bounding sphere radius about the origin
+  // Appearance from the file, all optional (empty when the file has none). Vertices are split
+  // where a file vertex has two texture coordinates or borders two materials, so every
+  // attribute is per vertex; split vertices share their normal (sourceVertex).
+  std::vector<MeshMaterial> materials;
+  std::vector<MeshTexture> textures;
+  std::vector<std::uint16_t> faceMaterials;  // per triangle, into materials
+  std::vector<glm::vec3> colours;            // per vertex, as `v x y z r g b` gives them
+  std::vector<glm::vec2> texcoords;          // per vertex
+  std::vector<std::uint32_t> sourceVertex;   // per vertex: the vertex it was split from (normals are shared)
+  // Per triangle: its diffuse map averaged over the triangle (white without one), what the
+  // per-triangle and per-vertex paths modulate ambient and diffuse by (finalizeMesh fills it;
+  // empty when no material has a map).
+  std::vector<glm::vec3> faceTints;
   LoadReport report;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
+  // Whether the file gave anything beyond the shape (what `--materials on` draws).
+  bool hasAppearance() const { return !materials.empty() || !colours.empty(); }
 };
 
 // Fills the radius, centroids and normals from `positions` and `indices` (used by the loader
 // and by meshes built in code, e.g. the benchmark's generated icosphere).
 void finalizeMesh(Mesh& m);
+// faceTints from the texture maps (part of finalizeMesh; empty when no material has a map).
+void computeFaceTints(Mesh& m);
 
 }  // namespace npr

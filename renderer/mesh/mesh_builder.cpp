@@ -13,7 +13,8 @@ namespace npr {
 // are dropped here and counted, whichever reader produced them. Faces it refuses for other
 // reasons (complex edges, duplicates, flipped neighbours) are drawn on their own copies of the
 // vertices and counted.
-void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> tris, Mesh& m) {
+void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> tris, Mesh& m,
+                  std::vector<std::uint32_t>* vertexOrigin, std::vector<std::uint32_t>* faceOrigin) {
   TriMesh mesh;
   mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
   std::vector<TriMesh::VertexHandle> vh(verts.size());
@@ -24,12 +25,19 @@ void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> 
   // OpenMesh prints an error line for each refused face; we count them in the report instead.
   auto& errlog = omerr();
   errlog.disable();
-  for (const auto& t : tris) {
+  if (vertexOrigin) {
+    vertexOrigin->resize(static_cast<std::size_t>(nv));
+    for (std::size_t i = 0; i < vertexOrigin->size(); ++i) (*vertexOrigin)[i] = static_cast<std::uint32_t>(i);
+  }
+  if (faceOrigin) faceOrigin->clear();
+  for (std::size_t ti = 0; ti < tris.size(); ++ti) {
+    const auto& t = tris[ti];
     const bool inRange = t[0] >= 0 && t[1] >= 0 && t[2] >= 0 && t[0] < nv && t[1] < nv && t[2] < nv;
     if (!inRange || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       ++degenerate;
       continue;
     }
+    if (faceOrigin) faceOrigin->push_back(static_cast<std::uint32_t>(ti));
     const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
     if (fh.is_valid()) continue;
     ++refused;
@@ -37,6 +45,7 @@ void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> 
     for (int k = 0; k < 3; ++k) {
       const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
       c[k] = mesh.add_vertex(p);
+      if (vertexOrigin) vertexOrigin->push_back(static_cast<std::uint32_t>(t[k]));
     }
     mesh.add_face(c[0], c[1], c[2]);
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,10 @@ std::vector<glm::vec3> normalizePositions(const std::vector<glm::dvec3>& positio
                                           LoadReport& report);
 // Fills mesh.positions and mesh.indices. Takes its inputs so they are freed once the halfedge
 // structure holds them (an 871K-triangle load peaks here).
-void buildTriMesh(std::vector<glm::vec3> positions, std::vector<std::array<int, 3>> triangles, Mesh& mesh);
+// When `vertexOrigin` / `faceOrigin` are given, they receive for every mesh vertex the input
+// vertex it is (or was copied from, for a refused face) and for every mesh triangle its input
+// triangle, so per-vertex and per-face attributes can follow.
+void buildTriMesh(std::vector<glm::vec3> positions, std::vector<std::array<int, 3>> triangles, Mesh& mesh,
+                  std::vector<std::uint32_t>* vertexOrigin = nullptr, std::vector<std::uint32_t>* faceOrigin = nullptr);
 
 }  // namespace npr

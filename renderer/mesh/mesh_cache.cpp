@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'N', 'P', 'R', 'M', 'E', 'S', 'H', '\0'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: models with materials are no longer cached
 
 struct SourceKey {
   std::string path;
@@ -185,6 +185,9 @@ std::optional<Mesh> readMeshCache(const std::string& path) {
 }
 
 bool writeMeshCache(const std::string& path, const Mesh& m) {
+  // A model with materials depends on its .mtl and texture files too, which the key does not
+  // cover: it is parsed each time.
+  if (m.hasAppearance()) return false;
   const std::optional<SourceKey> key = sourceKey(path);
   if (!key || key->size < kMinCachedBytes) return false;
   const fs::path entry = entryFor(*key);

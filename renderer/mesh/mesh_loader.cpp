@@ -25,7 +25,19 @@ std::string LoadReport::toJson() const {
     << ",\"repeated_corner_faces\":" << repeated_corner_faces << ",\"degenerate_triangles\":" << degenerate_triangles
     << ",\"non_manifold_faces\":" << non_manifold_faces << ",\"warnings\":[";
   for (size_t i = 0; i < warnings.size(); ++i) o << (i ? "," : "") << json::string(warnings[i]);
-  o << "],\"load_ms\":" << json::number(load_ms, "%.3f") << ",\"from_cache\":" << (from_cache ? "true" : "false") << "}";
+  auto list = [&](const char* name, const std::vector<std::string>& v) {
+    o << ",\"" << name << "\":[";
+    for (size_t i = 0; i < v.size(); ++i) o << (i ? "," : "") << json::string(v[i]);
+    o << "]";
+  };
+  o << "]";
+  list("material_libraries", material_libraries);
+  o << ",\"materials\":" << materials;
+  list("textures_loaded", textures_loaded);
+  list("textures_missing", textures_missing);
+  o << ",\"vertex_colours\":" << (vertex_colours ? "true" : "false")
+    << ",\"texture_coordinates\":" << (texture_coordinates ? "true" : "false");
+  o << ",\"load_ms\":" << json::number(load_ms, "%.3f") << ",\"from_cache\":" << (from_cache ? "true" : "false") << "}";
   return o.str();
 }
 

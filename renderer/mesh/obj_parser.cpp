@@ -1,4 +1,4 @@
-// OBJ parsing (see obj_parser.h).
+// OBJ parsing (see obj_parser.h), with its material libraries (mtl_parser.h).
 #include "renderer/mesh/obj_parser.h"
 
 #include <algorithm>
@@ -8,12 +8,21 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <unordered_map>
+
+#include "renderer/core/image_io.h"
+#include "renderer/core/input_file.h"
+#include "renderer/mesh/mtl_parser.h"
 
 #include "renderer/mesh/polygon_soup.h"
 
 namespace npr {
 namespace fs = std::filesystem;
 namespace {
+
+constexpr std::size_t kMaxMaterials = 65535;
+constexpr std::size_t kMaxTextures = 64;  // distinct texture maps, each at most kMaxTextureSide
+constexpr int kMaxTextureSide = 2048;
 
 Status checkText(const std::string& path, const std::string& data) {
   if (data.size() >= 2 && ((unsigned char)data[0] == 0xFF && (unsigned char)data[1] == 0xFE))
@@ -42,6 +51,9 @@ class ObjParser {
       parseLine(p, eol, line);
       p = eol + 1;
     }
+    resolveMaterials();
+    report_.vertex_colours = !soup_.colours.empty();
+    report_.texture_coordinates = soup_.tracksTexcoords;
     warn_.finish();
   }
 
@@ -69,12 +81,37 @@ class ObjParser {
         warn_.add(where(line) + ": vertex has fewer than 3 numeric coordinates; faces using it are skipped");
         soup_.vertices.push_back(glm::dvec3(0.0));
         soup_.vertexValid.push_back(0);
+        if (!soup_.colours.empty()) soup_.colours.push_back(glm::vec3(1.0f));
         return;
       }
       if (!soup_.addVertex(v)) warn_.add(where(line) + ": vertex has a non-finite coordinate; faces using it are skipped");
+      // `v x y z r g b`: a vertex colour (a fourth number alone is the rational weight w).
+      double extra[4];
+      int n = 0;
+      while (n < 4 && parseDouble(p, e, extra[n])) ++n;
+      if (n >= 3) {
+        // Vertices before the first coloured one are white, glColor's default.
+        if (soup_.colours.empty()) soup_.colours.assign(soup_.vertices.size() - 1, glm::vec3(1.0f));
+        glm::vec3 c(1.0f);
+        for (int k = 0; k < 3; ++k) {
+          const double x = extra[n - 3 + k];
+          c[k] = std::isfinite(x) ? static_cast<float>(std::clamp(x, 0.0, 1.0)) : 1.0f;
+        }
+        soup_.colours.push_back(c);
+      } else if (!soup_.colours.empty()) {
+        soup_.colours.push_back(glm::vec3(1.0f));
+      }
+    } else if (key == "vt") {
+      double uv[2] = {0.0, 0.0};
+      if (parseDouble(p, e, uv[0])) (void)parseDouble(p, e, uv[1]);
+      for (double& x : uv) x = std::isfinite(x) ? std::clamp(x, -1e6, 1e6) : 0.0;
+      soup_.texcoords.emplace_back(static_cast<float>(uv[0]), static_cast<float>(uv[1]));
     } else if (key == "f") {
       corners_.clear();
+      cornerTex_.clear();
       const long long count = static_cast<long long>(soup_.vertices.size());
+      const long long tcount = static_cast<long long>(soup_.texcoords.size());
+      bool allTex = true;
       while (true) {
         p = skipSpace(p, e);
         if (p >= e || *p == '#') break;
@@ -88,30 +125,156 @@ class ObjParser {
           return;
         }
         p = q;
-        while (p < e && !isSpace(*p)) ++p;  // the /vt/vn parts are not needed
         // Negative indices count back from the last vertex so far; clamp so no arithmetic overflows.
         corners_.push_back(idx > 0 ? idx - 1 : (idx < -count ? -1 : count + idx));
+        long long t = 0;  // v/vt/vn: the texture coordinate, if any
+        if (p < e && *p == '/') {
+          ++p;
+          if (p < e && *p == '+') ++p;
+          auto [q2, ec2] = std::from_chars(p, e, t);
+          if (ec2 == std::errc()) p = q2;
+          else t = 0;
+        }
+        while (p < e && !isSpace(*p)) ++p;  // the normal index is not needed: normals are recomputed
+        long long ti = t > 0 ? t - 1 : (t < 0 ? (t < -tcount ? tcount : tcount + t) : -1);
+        if (ti >= tcount) {
+          if (!texWarned_)
+            warn_.add(where(line) + ": face references texture coordinate " + std::to_string(t) + " but only " + std::to_string(tcount) +
+                      " are defined; such faces have no texture coordinates");
+          texWarned_ = true;
+          ti = -1;
+        }
+        allTex = allTex && ti >= 0;
+        cornerTex_.push_back(ti >= 0 ? static_cast<int>(std::min<long long>(ti, std::numeric_limits<int>::max())) : -1);
       }
-      faces_.add(corners_, "line", line);
+      if (allTex && !cornerTex_.empty() && !soup_.tracksTexcoords) soup_.trackTexcoords();
+      if (!allTex) cornerTex_.clear();
+      faces_.add(corners_, cornerTex_, currentMaterial_, "line", line);
+    } else if (key == "usemtl") {
+      useMaterial(restOfLine(p, e), line);
     } else if (key == "mtllib") {
-      p = skipSpace(p, e);
-      const char* q = e;
-      while (q > p && isSpace(q[-1])) --q;
-      const std::string name(p, q);
-      const fs::path mtl = fs::path(path_).parent_path() / name;
-      std::error_code ec;
-      if (name.empty() || !fs::exists(mtl, ec))
-        warn_.add(where(line) + ": material library '" + name + "' not found; materials are not used anyway");
-    } else if (key == "vn" || key == "vt" || key == "vp" || key == "g" || key == "o" || key == "s" ||
-               key == "usemtl" || key == "l" || key == "p" || key == "cstype" || key == "deg" ||
-               key == "curv" || key == "surf" || key == "parm" || key == "end") {
-      // Accepted and not needed: normals are recomputed, texture coordinates are unused
-      // (palette textures are applied in screen space), groups and materials do not matter.
+      readLibraries(restOfLine(p, e), line);
+    } else if (key == "vn" || key == "vp" || key == "g" || key == "o" || key == "s" || key == "l" || key == "p" ||
+               key == "cstype" || key == "deg" || key == "curv" || key == "surf" || key == "parm" || key == "end") {
+      // Accepted and not needed: normals are recomputed, groups do not matter.
     } else {
       if (unknownKeywords_ < 5)
         warn_.add(where(line) + ": unknown statement '" + std::string(key.substr(0, 32)) + "' ignored");
       ++unknownKeywords_;
     }
+  }
+
+  static std::string restOfLine(const char* p, const char* e) {
+    p = skipSpace(p, e);
+    const char* q = e;
+    while (q > p && isSpace(q[-1])) --q;
+    return std::string(p, q);
+  }
+
+  void useMaterial(const std::string& name, std::size_t line) {
+    if (!soup_.tracksMaterials) {
+      soup_.trackMaterials();
+      // Material 0: faces before any usemtl, drawn with the lighting state's material.
+      soup_.materials.emplace_back();
+      soup_.materials[0].name = "(default)";
+      soup_.materials[0].fromLightingState = true;
+    }
+    auto it = materialIndex_.find(name);
+    if (it == materialIndex_.end()) {
+      if (soup_.materials.size() >= kMaxMaterials) {
+        if (!materialsWarned_) warn_.add(where(line) + ": more than " + std::to_string(kMaxMaterials - 1) + " materials; the rest use the default");
+        materialsWarned_ = true;
+        currentMaterial_ = 0;
+        return;
+      }
+      it = materialIndex_.emplace(name, static_cast<std::uint16_t>(soup_.materials.size())).first;
+      soup_.materials.emplace_back();
+      soup_.materials.back().name = name;
+      firstUse_.push_back(where(line));
+    }
+    currentMaterial_ = it->second;
+  }
+
+  // `mtllib a.mtl b.mtl`: several libraries, or one whose name has spaces (tried first).
+  void readLibraries(const std::string& names, std::size_t line) {
+    if (names.empty()) {
+      warn_.add(where(line) + ": mtllib without a file name");
+      return;
+    }
+    const std::string folder = fs::path(path_).parent_path().string();
+    std::vector<std::string> files;
+    std::error_code ec;
+    if (fs::exists(resolveMaterialFile(folder, names), ec)) {
+      files.push_back(names);
+    } else {
+      std::size_t a = 0;
+      while (a < names.size()) {
+        while (a < names.size() && isSpace(names[a])) ++a;
+        std::size_t b = a;
+        while (b < names.size() && !isSpace(names[b])) ++b;
+        if (b > a) files.push_back(names.substr(a, b - a));
+        a = b;
+      }
+    }
+    for (const std::string& name : files) {
+      const std::string file = resolveMaterialFile(folder, name);
+      auto& libs = report_.material_libraries;
+      if (std::find(libs.begin(), libs.end(), file) != libs.end()) continue;
+      Result<std::string> text = readInputFile(file, InputKind::MaterialLibrary);
+      if (!text) {
+        warn_.add(where(line) + ": material library '" + name + "' cannot be read (" + text.error() + "); its materials use the default");
+        continue;
+      }
+      libs.push_back(file);
+      parseMtl(file, *text, library_, warn_);
+    }
+  }
+
+  // Gives the used materials the values their libraries define (whichever of usemtl and
+  // mtllib came first), and loads their texture maps, each file once.
+  void resolveMaterials() {
+    if (!soup_.tracksMaterials) return;
+    std::unordered_map<std::string, const MtlMaterial*> defined;
+    for (const MtlMaterial& m : library_) defined.emplace(m.material.name, &m);  // the first definition wins
+    std::unordered_map<std::string, int> textureIndex;
+    auto texture = [&](const std::string& file, const std::string& where) -> int {
+      if (file.empty()) return -1;
+      if (auto it = textureIndex.find(file); it != textureIndex.end()) return it->second;
+      int index = -1;
+      if (soup_.textures.size() >= kMaxTextures) {
+        warn_.add(where + ": more than " + std::to_string(kMaxTextures) + " texture maps; '" + file + "' is not used");
+      } else if (Result<ImageRGBA8> img = loadImage(file, {kMaxTextureSide, kMaxTextureSide}); !img) {
+        warn_.add(where + ": texture map cannot be used (" + img.error() + "); the material is drawn without it");
+        report_.textures_missing.push_back(file);
+      } else {
+        index = static_cast<int>(soup_.textures.size());
+        soup_.textures.push_back({file, std::move(*img)});
+        report_.textures_loaded.push_back(file);
+      }
+      textureIndex.emplace(file, index);
+      return index;
+    };
+    for (std::size_t i = 1; i < soup_.materials.size(); ++i) {
+      MeshMaterial& m = soup_.materials[i];
+      auto it = defined.find(m.name);
+      if (it == defined.end()) {
+        warn_.add(firstUse_[i - 1] + ": material '" + m.name + "' is not defined in any material library; drawn with the default material");
+        m.fromLightingState = true;
+        continue;
+      }
+      const MtlMaterial& def = *it->second;
+      m = def.material;
+      // illum 0: a constant colour (Kd, unlit); 1: no specular highlight.
+      if (m.illum == 0) {
+        m.emission = m.diffuse;
+        m.ambient = m.diffuse = m.specular = glm::vec3(0.0f);
+      } else if (m.illum == 1) {
+        m.specular = glm::vec3(0.0f);
+      }
+      m.diffuseMap = texture(def.diffuseMapPath.empty() ? def.ambientMapPath : def.diffuseMapPath, def.where);
+      m.opacityMap = texture(def.opacityMapPath, def.where);
+    }
+    report_.materials = soup_.materials.size() - 1;
   }
 
   bool parseDouble(const char*& p, const char* e, double& out) {
@@ -137,7 +300,13 @@ class ObjParser {
   Warnings warn_;
   FaceBuilder faces_;
   std::vector<long long> corners_;
+  std::vector<int> cornerTex_;
   std::size_t unknownKeywords_ = 0;
+  std::uint16_t currentMaterial_ = 0;
+  std::unordered_map<std::string, std::uint16_t> materialIndex_;
+  std::vector<std::string> firstUse_;  // where each material (after the default) was first used
+  std::vector<MtlMaterial> library_;
+  bool texWarned_ = false, materialsWarned_ = false;
 };
 
 }  // namespace

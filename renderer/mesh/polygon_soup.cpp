@@ -3,12 +3,64 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "renderer/mesh/mesh_builder.h"
 
 namespace npr {
 namespace {
 constexpr std::size_t kMaxWarnings = 50;
+
+struct CornerKey {
+  std::uint32_t vertex;
+  std::int32_t texcoord;
+  std::uint16_t material;
+  bool operator==(const CornerKey& o) const { return vertex == o.vertex && texcoord == o.texcoord && material == o.material; }
+};
+struct CornerHash {
+  std::size_t operator()(const CornerKey& k) const {
+    return (std::size_t(k.vertex) * 0x9E3779B97F4A7C15ull) ^ (std::size_t(std::uint32_t(k.texcoord)) * 0xC2B2AE3D27D4EB4Full) ^
+           (std::size_t(k.material) * 0x165667B19E3779F9ull);
+  }
+};
+
+// Makes every attribute per vertex: a file vertex used with two texture coordinates, or by
+// faces of two materials (whose colours must not blend across the edge), becomes one vertex
+// per combination. Rewrites the soup's vertices, colours, texture coordinates and triangles;
+// returns for each new vertex the file vertex it came from (they share a normal).
+std::vector<std::uint32_t> splitVertices(PolygonSoup& soup) {
+  std::unordered_map<CornerKey, std::uint32_t, CornerHash> ids;
+  ids.reserve(soup.vertices.size() + soup.vertices.size() / 4);
+  std::vector<std::uint32_t> source;
+  std::vector<glm::dvec3> vertices;
+  std::vector<char> valid;
+  std::vector<glm::vec3> colours;
+  std::vector<glm::vec2> texcoords;
+  const bool tex = soup.tracksTexcoords && !soup.texcoords.empty();
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = static_cast<std::uint32_t>(soup.triangles[t][static_cast<std::size_t>(k)]);
+      const int tc = tex ? soup.triangleTexcoords[t][static_cast<std::size_t>(k)] : -1;
+      const std::uint16_t mat = soup.tracksMaterials ? soup.triangleMaterials[t] : 0;
+      auto [it, inserted] = ids.emplace(CornerKey{v, tc, mat}, static_cast<std::uint32_t>(vertices.size()));
+      if (inserted) {
+        source.push_back(v);
+        vertices.push_back(soup.vertices[v]);
+        valid.push_back(soup.vertexValid[v]);
+        if (!soup.colours.empty()) colours.push_back(soup.colours[v]);
+        if (tex) texcoords.push_back(tc >= 0 ? soup.texcoords[static_cast<std::size_t>(tc)] : glm::vec2(0.0f));
+      }
+      soup.triangles[t][static_cast<std::size_t>(k)] = static_cast<int>(it->second);
+    }
+  }
+  soup.vertices = std::move(vertices);
+  soup.vertexValid = std::move(valid);
+  soup.colours = std::move(colours);
+  soup.texcoords = std::move(texcoords);
+  soup.triangleTexcoords = {};
+  return source;
+}
+
 }  // namespace
 
 bool PolygonSoup::addVertex(const glm::dvec3& v) {
@@ -29,10 +81,19 @@ void Warnings::finish() {
 }
 
 bool FaceBuilder::add(std::vector<long long>& corners, const char* unit, std::size_t number) {
+  static const std::vector<int> none;
+  return add(corners, none, 0, unit, number);
+}
+
+bool FaceBuilder::add(std::vector<long long>& corners, const std::vector<int>& texcoords, std::uint16_t material,
+                      const char* unit, std::size_t number) {
   auto where = [&] { return report_.file + " " + unit + " " + std::to_string(number); };
   const long long count = static_cast<long long>(soup_.vertices.size());
   face_.clear();
-  for (long long c : corners) {
+  faceTex_.clear();
+  const bool hasTex = !texcoords.empty() && texcoords.size() == corners.size();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const long long c = corners[k];
     if (c < 0 || c >= count) {
       warn_.add(where() + ": face references vertex " + std::to_string(c + 1) + " but only " + std::to_string(count) +
                 " vertices are defined; face skipped");
@@ -45,20 +106,42 @@ bool FaceBuilder::add(std::vector<long long>& corners, const char* unit, std::si
       return false;
     }
     face_.push_back(static_cast<int>(c));
+    faceTex_.push_back(hasTex ? texcoords[k] : -1);
   }
   // A corner named twice in a row ("f 1 2 2 3", a common export glitch) adds nothing: drop the
   // repeat, keep the rest of the face, and count it. OpenMesh would assert on it.
   const std::size_t before = face_.size();
-  face_.erase(std::unique(face_.begin(), face_.end()), face_.end());
-  while (face_.size() > 1 && face_.front() == face_.back()) face_.pop_back();
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < face_.size(); ++k) {
+    if (kept > 0 && face_[k] == face_[kept - 1]) continue;
+    face_[kept] = face_[k];
+    faceTex_[kept] = faceTex_[k];
+    ++kept;
+  }
+  face_.resize(kept);
+  faceTex_.resize(kept);
+  while (face_.size() > 1 && face_.front() == face_.back()) {
+    face_.pop_back();
+    faceTex_.pop_back();
+  }
   if (face_.size() != before) ++report_.repeated_corner_faces;
   if (face_.size() < 3) {
     warn_.add(where() + (before >= 3 ? ": face names fewer than 3 different vertices; skipped" : ": face has fewer than 3 vertices; skipped"));
     ++report_.skipped_faces;
     return false;
   }
+  // A texture coordinate index out of range drops the face's texture coordinates (warned by the parser).
+  const long long nt = static_cast<long long>(soup_.texcoords.size());
+  bool texOk = hasTex;
+  for (int t : faceTex_) texOk = texOk && t >= 0 && t < nt;
+  auto emit = [&](std::size_t a, std::size_t b, std::size_t c) {
+    soup_.triangles.push_back({face_[a], face_[b], face_[c]});
+    if (soup_.tracksTexcoords)
+      soup_.triangleTexcoords.push_back(texOk ? std::array<int, 3>{faceTex_[a], faceTex_[b], faceTex_[c]} : std::array<int, 3>{-1, -1, -1});
+    if (soup_.tracksMaterials) soup_.triangleMaterials.push_back(material);
+  };
   if (face_.size() == 3) {
-    soup_.triangles.push_back({face_[0], face_[1], face_[2]});
+    emit(0, 1, 2);
     return true;
   }
   ++report_.polygons_triangulated;
@@ -70,8 +153,7 @@ bool FaceBuilder::add(std::vector<long long>& corners, const char* unit, std::si
   }
   const std::vector<int> tri = triangulatePolygon(poly_, budget_);
   for (std::size_t k = 0; k + 2 < tri.size(); k += 3)
-    soup_.triangles.push_back({face_[static_cast<std::size_t>(tri[k])], face_[static_cast<std::size_t>(tri[k + 1])],
-                               face_[static_cast<std::size_t>(tri[k + 2])]});
+    emit(static_cast<std::size_t>(tri[k]), static_cast<std::size_t>(tri[k + 1]), static_cast<std::size_t>(tri[k + 2]));
   return true;
 }
 
@@ -81,10 +163,37 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
                  " vertices, but no face that could be used); nothing to draw"};
   Mesh m;
   m.report = std::move(report);
-  std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
-  soup.vertices = {};
-  soup.vertexValid = {};
-  buildTriMesh(std::move(verts), std::move(soup.triangles), m);
+  const bool appearance = soup.tracksTexcoords || soup.tracksMaterials || !soup.colours.empty();
+  if (!appearance) {
+    std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
+    soup.vertices = {};
+    soup.vertexValid = {};
+    buildTriMesh(std::move(verts), std::move(soup.triangles), m);
+  } else {
+    std::vector<std::uint32_t> split = splitVertices(soup);
+    std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
+    soup.vertices = {};
+    soup.vertexValid = {};
+    std::vector<std::uint32_t> vertexOrigin, faceOrigin;
+    buildTriMesh(std::move(verts), std::move(soup.triangles), m, &vertexOrigin, &faceOrigin);
+    const std::size_t nv = m.positions.size(), nf = m.indices.size() / 3;
+    m.sourceVertex.resize(nv);
+    for (std::size_t i = 0; i < nv; ++i) m.sourceVertex[i] = split[vertexOrigin[i]];
+    if (!soup.colours.empty()) {
+      m.colours.resize(nv);
+      for (std::size_t i = 0; i < nv; ++i) m.colours[i] = soup.colours[vertexOrigin[i]];
+    }
+    if (!soup.texcoords.empty()) {
+      m.texcoords.resize(nv);
+      for (std::size_t i = 0; i < nv; ++i) m.texcoords[i] = soup.texcoords[vertexOrigin[i]];
+    }
+    if (!soup.materials.empty()) {
+      m.faceMaterials.resize(nf);
+      for (std::size_t f = 0; f < nf; ++f) m.faceMaterials[f] = soup.triangleMaterials[faceOrigin[f]];
+      m.materials = std::move(soup.materials);
+      m.textures = std::move(soup.textures);
+    }
+  }
   if (m.indices.empty())
     return Error{m.report.file + ": every face is degenerate (names one vertex more than once); nothing to draw"};
   return m;

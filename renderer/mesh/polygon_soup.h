@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,19 @@ struct PolygonSoup {
   std::vector<glm::dvec3> vertices;
   std::vector<char> vertexValid;  // 0: non-finite or unparsable; faces using it are skipped
   std::vector<std::array<int, 3>> triangles;
+  // Appearance (OBJ only), each empty until the file uses it: a colour per vertex, texture
+  // coordinates, and per triangle its corners' texture coordinates (-1: none) and material.
+  std::vector<glm::vec3> colours;
+  std::vector<glm::vec2> texcoords;
+  std::vector<std::array<int, 3>> triangleTexcoords;
+  std::vector<std::uint16_t> triangleMaterials;
+  std::vector<MeshMaterial> materials;  // what triangleMaterials index
+  std::vector<MeshTexture> textures;
+
+  // Starts per-triangle texture coordinates / materials, giving the triangles so far none / 0.
+  void trackTexcoords() { triangleTexcoords.resize(triangles.size(), {-1, -1, -1}); tracksTexcoords = true; }
+  void trackMaterials() { triangleMaterials.resize(triangles.size(), 0); tracksMaterials = true; }
+  bool tracksTexcoords = false, tracksMaterials = false;
 
   // Adds a vertex; a non-finite one is stored at the origin, marked invalid, and false returned.
   bool addVertex(const glm::dvec3& v);
@@ -47,6 +61,10 @@ class FaceBuilder {
   // corners repeated in a row are dropped; polygons are ear-clipped. Returns whether anything
   // was added. `corners` is used as scratch.
   bool add(std::vector<long long>& corners, const char* unit, std::size_t number);
+  // The same with each corner's texture coordinate index (-1: none; same length as `corners`)
+  // and the face's material, kept through the repeat removal and the triangulation.
+  bool add(std::vector<long long>& corners, const std::vector<int>& texcoords, std::uint16_t material, const char* unit,
+           std::size_t number);
 
  private:
   PolygonSoup& soup_;
@@ -54,7 +72,7 @@ class FaceBuilder {
   Warnings& warn_;
   TriangulationBudget budget_;
   bool budgetWarned_ = false;
-  std::vector<int> face_;
+  std::vector<int> face_, faceTex_;
   std::vector<glm::dvec3> poly_;
 };
 

@@ -11,6 +11,7 @@
 #include "renderer/core/result.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
@@ -24,6 +25,8 @@ struct FrameContext {
   const RenderSettings& settings;
   const LightingState& lighting;
   const GpuMesh& gpuMesh;
+  const Mesh& mesh;
+  const GpuMaterials& materials;      // active when the mesh has an appearance
   const GpuPalette* palette;         // set whenever the path uses a palette
   TriangleShadingCache& triangles;   // shared by the per-triangle paths
   gl::ProgramCache& programs;
@@ -31,6 +34,9 @@ struct FrameContext {
   const gl::VertexArray& emptyVao;   // for full-screen triangles (vertices made in the shader)
   // Palette paths write their texels, or the selection behind them (tests, the benchmark).
   gl::MeshOutput output = gl::MeshOutput::Colour;
+
+  // Whether this frame lights with the mesh's own materials.
+  bool drawMaterials() const { return settings.materials && materials.active(); }
 
   [[nodiscard]] Result<gl::ShaderProgram*> program(const gl::ProgramVariant& variant) {
     return programs.get(variant, stats.shaderBuilds);

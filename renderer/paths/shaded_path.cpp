@@ -3,6 +3,7 @@
 
 #include "renderer/gl/pass_state.h"
 #include "renderer/lighting/lighting_uniforms.h"
+#include "renderer/lighting/mesh_materials.h"
 
 namespace npr {
 
@@ -19,7 +20,10 @@ Status ShadedPath::draw(FrameContext& f) {
   }
   const bool usesPalette = kind_ != Kind::Reference;
   variant.output = f.output;
-  variant.lighting = f.lighting.features();
+  const bool materials = f.drawMaterials();
+  variant.materials = materials;
+  variant.materialMaps = materials && f.materials.hasMaps();
+  variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (usesPalette) variant.palette = f.palette->variant(f.settings.match);
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
@@ -27,7 +31,12 @@ Status ShadedPath::draw(FrameContext& f) {
   gl::apply(gl::pass::kMesh);
   p.use();
   setMeshTransform(p, f.camera);
-  uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
+  if (materials) {
+    uploadMaterialLightingUniforms(p, f.lighting, glm::mat4(1.0f));
+    f.materials.bind(p);
+  } else {
+    uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
+  }
   if (usesPalette) f.palette->bind(p);
   f.gpuMesh.drawAll();
   ++f.stats.drawCalls;

@@ -6,7 +6,7 @@
 namespace npr {
 
 Status TrianglePath::draw(FrameContext& f) {
-  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats);
+  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials);
   gl::MeshProgram variant;
   variant.shading = gl::MeshShading::Triangle;  // lit on the CPU: no lighting in the shader
   variant.output = f.output;

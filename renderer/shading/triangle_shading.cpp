@@ -30,6 +30,7 @@ namespace {
 struct SimpleLighting {
   int count = 0;
   glm::vec3 base{0.0f};
+  glm::vec3 emission{0.0f}, ambientBase{0.0f};  // base = emission + ambientBase
   glm::vec3 position[kMaxLights];  // directional: unit direction; positional: the point
   glm::vec3 half[kMaxLights];      // directional only
   glm::vec3 diffuse[kMaxLights], specular[kMaxLights];
@@ -49,7 +50,7 @@ struct SimpleLighting {
     return true;
   }
 
-  explicit SimpleLighting(const PreparedLighting<float>& p)
+  explicit SimpleLighting(const PreparedLighting<float>& p, bool powTableAlways = false)
       : count(p.count), base(p.base[0]), hasSpecular(p.specular), viewDirection(p.viewDirection) {
     for (int i = 0; i < count; ++i) {
       const auto& l = p.lights[i];
@@ -61,7 +62,9 @@ struct SimpleLighting {
       diffuse[i] = l.diffuse[0];
       specular[i] = l.specular[0];
     }
-    if (hasSpecular) {
+    emission = p.emission[0];
+    ambientBase = base - emission;
+    if (hasSpecular || powTableAlways) {
       powTable.resize(kPowSteps + 2);
       for (int k = 0; k <= kPowSteps; ++k) powTable[static_cast<size_t>(k)] = lighting_detail::powGL(float(k) / kPowSteps, p.shininess[0]);
       powTable[kPowSteps + 1] = powTable[kPowSteps];
@@ -152,10 +155,86 @@ void shadeSimple(const SimpleLighting& light, const PaletteMatcher::UnitLookup l
   else shadeSimpleLights<0>(light, lookup, centroids, normals, n, entry, cnt);
 }
 
+// The same loop with a material per triangle: the lights' products come from the triangle's
+// material's row of `table` (kept in L1 for the few materials a model has), and the ambient
+// and diffuse sum is scaled by the triangle's colour.
+template <int kLights, bool kSpecular, bool kPositional>
+void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restrict material, const glm::vec3* __restrict scale,
+                       const PaletteMatcher::UnitLookup lookup, const glm::vec3* __restrict centroids,
+                       const glm::vec3* __restrict normals, size_t n, std::uint8_t* __restrict entry, std::uint32_t* __restrict cnt) {
+  const glm::vec3 view = table[0].viewDirection;
+  for (size_t i = 0; i < n; ++i) {
+    const SimpleLighting& L = table[material ? material[i] : 0];
+    const int count = kLights > 0 ? kLights : L.count;
+    const glm::vec3 nrm = normals[i];
+    glm::vec3 sc = L.ambientBase, c = L.emission;
+    for (int l = 0; l < count; ++l) {
+      glm::vec3 vp = L.position[l], h = L.half[l];
+      float ndl;
+      if (kPositional && L.positional[l]) {
+        const glm::vec3 d = L.position[l] - centroids[i];
+        const float dist2 = glm::dot(d, d);
+        if (dist2 > 0.0f && dist2 <= std::numeric_limits<float>::max()) {
+          const float nd = glm::dot(nrm, d);
+          if (nd <= 0.0f) continue;
+          const float inv = 1.0f / std::sqrt(dist2);
+          vp = d * inv;
+          ndl = nd * inv;
+        } else {
+          vp = nrm;
+          ndl = glm::dot(nrm, nrm);
+        }
+      } else {
+        ndl = glm::dot(nrm, vp);
+      }
+      if (ndl <= 0.0f) continue;
+      sc += ndl * L.diffuse[l];
+      if (kSpecular) {
+        if (kPositional && L.positional[l]) {
+          h = vp + view;
+          const float len2 = glm::dot(h, h);
+          h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
+        }
+        const float t = lighting_detail::clamp01(glm::dot(nrm, h)) * float(SimpleLighting::kPowSteps);
+        const int k = static_cast<int>(t);
+        const float* pow = L.powTable.data();
+        c += (pow[k] + (t - float(k)) * (pow[k + 1] - pow[k])) * L.specular[l];
+      }
+    }
+    c += scale ? sc * scale[i] : sc;
+    using lighting_detail::clamp01;
+    const int k = lookup(glm::vec3(clamp01(c.r), clamp01(c.g), clamp01(c.b)));
+    entry[i] = static_cast<std::uint8_t>(k);
+    ++cnt[k];
+  }
+}
+
+void shadeMaterials(const std::vector<SimpleLighting>& table, const std::uint16_t* material, const glm::vec3* scale,
+                    const PaletteMatcher::UnitLookup lookup, const glm::vec3* centroids, const glm::vec3* normals, size_t n,
+                    std::uint8_t* entry, std::uint32_t* cnt) {
+  bool specular = false, positional = false;
+  for (const SimpleLighting& l : table) {
+    specular |= l.hasSpecular;
+    positional |= l.anyPositional;
+  }
+  const SimpleLighting* t = table.data();
+  const bool one = table[0].count == 1;
+#define NPR_MATERIAL_LOOP(L, S, P) shadeMaterialLoop<L, S, P>(t, material, scale, lookup, centroids, normals, n, entry, cnt)
+  if (specular) {
+    if (positional) one ? NPR_MATERIAL_LOOP(1, true, true) : NPR_MATERIAL_LOOP(0, true, true);
+    else one ? NPR_MATERIAL_LOOP(1, true, false) : NPR_MATERIAL_LOOP(0, true, false);
+  } else {
+    if (positional) one ? NPR_MATERIAL_LOOP(1, false, true) : NPR_MATERIAL_LOOP(0, false, true);
+    else one ? NPR_MATERIAL_LOOP(1, false, false) : NPR_MATERIAL_LOOP(0, false, false);
+  }
+#undef NPR_MATERIAL_LOOP
+}
+
 }  // namespace
 
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
-                    const PaletteMatcher& matcher, const TriangleShadingOptions& opt, TriangleShading& out) {
+                    const PaletteMatcher& matcher, const TriangleShadingOptions& opt, TriangleShading& out,
+                    const FaceMaterials* fm) {
   const size_t nt = mesh.triangleCount();
   const int entries = matcher.size();
   out.entry.resize(nt);
@@ -168,7 +247,43 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const glm::vec3* normals = mesh.faceNormals.data();
   std::uint8_t* entry = out.entry.data();
 
-  if (rigid && SimpleLighting::applies(p)) {
+  // One preparation per material when the mesh's own materials are drawn.
+  std::vector<PreparedLighting<float>> perMaterial;
+  if (fm && !fm->materials.empty())
+    for (const Material& m : fm->materials)
+      perMaterial.push_back(prepareLighting<float>(lighting.withMaterial(m), rigid ? glm::inverse(modelView) : glm::mat4(1.0f)));
+  const std::uint16_t* faceMaterial = fm ? fm->faceMaterial : nullptr;
+  const glm::vec3* faceScale = fm ? fm->faceScale : nullptr;
+
+  if (!perMaterial.empty() && rigid && SimpleLighting::applies(perMaterial[0])) {
+    std::vector<SimpleLighting> table;
+    bool anySpecular = false;
+    for (const auto& q : perMaterial) anySpecular |= q.specular;
+    for (const auto& q : perMaterial) table.emplace_back(q, anySpecular);
+    parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+      std::uint32_t cnt[kMaxPaletteEntries] = {};
+      shadeMaterials(table, faceMaterial ? faceMaterial + b : nullptr, faceScale ? faceScale + b : nullptr, matcher.unitLookup(),
+                     centroids + b, normals + b, e - b, entry + b, cnt);
+      std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
+    });
+  } else if (!perMaterial.empty()) {
+    parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+      std::uint32_t cnt[kMaxPaletteEntries] = {};
+      for (size_t i = b; i < e; ++i) {
+        const PreparedLighting<float>& q = perMaterial[faceMaterial ? faceMaterial[i] : 0];
+        glm::vec3 pos = centroids[i], n = normals[i];
+        if (!rigid) {
+          pos = glm::vec3(modelView * glm::vec4(pos, 1.0f));
+          n = normalMatrix * n;
+        }
+        const bool back = q.twoSided && glm::dot(n, q.eye - pos) < 0.0f;
+        const int k = matcher.match(shade(q, pos, n, back, faceScale ? faceScale[i] : glm::vec3(1.0f)));
+        entry[i] = static_cast<std::uint8_t>(k);
+        ++cnt[k];
+      }
+      std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
+    });
+  } else if (rigid && SimpleLighting::applies(p)) {
     const SimpleLighting fast(p);
     parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
       // Counting into a thread-local array: the threads' shared vectors could sit on one

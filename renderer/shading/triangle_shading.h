@@ -16,6 +16,15 @@
 
 namespace npr {
 
+// A mesh's own materials, for per-face lighting (--materials on): each triangle is lit with
+// its material (and, where the mesh has vertex colours or texture maps, its ambient and
+// diffuse reflectance scaled by the triangle's colour).
+struct FaceMaterials {
+  std::vector<Material> materials;             // GL materials, by mesh material
+  const std::uint16_t* faceMaterial = nullptr;  // per triangle; nullptr: all use materials[0]
+  const glm::vec3* faceScale = nullptr;         // per triangle; nullptr: 1
+};
+
 struct TriangleShadingOptions {
   bool buildBuckets = false;   // group triangles by palette entry (both per-triangle paths draw them so)
   int threads = 0;             // 0: one per hardware thread
@@ -33,7 +42,8 @@ struct TriangleShading {
 // translation: dot products and distances are unchanged, so the loop needs no matrix work),
 // eye space otherwise.
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
-                    const PaletteMatcher& matcher, const TriangleShadingOptions& options, TriangleShading& out);
+                    const PaletteMatcher& matcher, const TriangleShadingOptions& options, TriangleShading& out,
+                    const FaceMaterials* materials = nullptr);
 
 // Every vertex in window pixels (NaN where it lies behind the eye). Depends only on the view,
 // so callers keep it while only the lighting changes.

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "renderer/core/elapsed.h"
+#include "renderer/lighting/mesh_materials.h"
 
 namespace npr {
 namespace {
@@ -49,6 +50,8 @@ bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float
 
 void TriangleShadingCache::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
+  faceScale_.clear();
+  faceScaleValid_ = false;
   ++meshId_;
   key_.valid = false;
   bucketsUploaded_ = false;
@@ -57,10 +60,19 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
 }
 
 void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher,
-                                  unsigned matcherId, FrameStats& stats) {
+                                  unsigned matcherId, FrameStats& stats, bool materials) {
   const bool rigid = isRigid(modelView);
-  PreparedLighting<float> prepared = prepareLighting<float>(lighting, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
-  const bool same = key_.valid && rigid && key_.mesh == meshId_ && key_.matcher == matcherId && sameLighting(key_.lighting, prepared);
+  materials = materials && mesh_->hasAppearance();
+  const glm::mat4 toSpace = rigid ? glm::inverse(modelView) : glm::mat4(1.0f);
+  PreparedLighting<float> prepared = prepareLighting<float>(lighting, toSpace);
+  // With the mesh's materials, the lights' own colours matter even where the state's
+  // material hides them (a zero specular): compare the lighting of a white material too.
+  Material white;
+  white.ambient = white.diffuse = white.specular = white.emission = glm::vec4(1.0f);
+  white.shininess = lighting.front().shininess;
+  PreparedLighting<float> probe = materials ? prepareLighting<float>(lighting.withMaterial(white), toSpace) : prepared;
+  const bool same = key_.valid && rigid && key_.mesh == meshId_ && key_.matcher == matcherId && key_.materials == materials &&
+                    sameLighting(key_.lighting, prepared) && sameLighting(key_.probe, probe);
   if (!same) {
     const auto t0 = std::chrono::steady_clock::now();
     TriangleShadingOptions opt;
@@ -68,10 +80,22 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
     // process the 871K-triangle mesh about 30% slower than the reference render.
     opt.buildBuckets = true;
-    shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_);
+    if (materials) {
+      if (!faceScaleValid_) {
+        faceScale_ = faceColourScale(*mesh_);
+        faceScaleValid_ = true;
+      }
+      FaceMaterials fm;
+      fm.materials = glMaterials(*mesh_, lighting);
+      fm.faceMaterial = mesh_->faceMaterials.size() == mesh_->triangleCount() ? mesh_->faceMaterials.data() : nullptr;
+      fm.faceScale = faceScale_.empty() ? nullptr : faceScale_.data();
+      shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_, &fm);
+    } else {
+      shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_);
+    }
     stats.cpuShadingMs += msSince(t0);
     ++stats.lightingRecomputes;
-    key_ = {meshId_, matcherId, prepared, /*valid=*/rigid};  // eye-space results are not reusable
+    key_ = {meshId_, matcherId, prepared, probe, materials, /*valid=*/rigid};  // eye-space results are not reusable
     bucketsUploaded_ = false;
     boundsValid_ = false;
   }

@@ -25,8 +25,9 @@ class TriangleShadingCache {
   // Forgets everything computed for the previous mesh.
   void setMesh(const Mesh* mesh);
   // Entries and buckets for this frame, and the bucketed index buffer.
+  // `materials`: light each face with the mesh's own material (when it has any).
   void update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
-              FrameStats& stats);
+              FrameStats& stats, bool materials = false);
   // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
   // viewport of `size` pixels.
   void updateBounds(const glm::mat4& modelViewProjection, const glm::ivec2& size, FrameStats& stats);
@@ -46,9 +47,12 @@ class TriangleShadingCache {
   gl::Buffer bucketIndices_;
   struct Key {
     unsigned mesh = 0, matcher = 0;
-    PreparedLighting<float> lighting;
+    PreparedLighting<float> lighting, probe;
+    bool materials = false;
     bool valid = false;
   } key_;
+  std::vector<glm::vec3> faceScale_;  // faceColourScale, computed once per mesh when materials are drawn
+  bool faceScaleValid_ = false;
   bool bucketsUploaded_ = false;
   // Scissor bounds: vertices projected once per view, bounds once per change of the buckets
   // or the view.

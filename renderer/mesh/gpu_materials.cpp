@@ -1,0 +1,125 @@
+// The mesh's appearance on the GPU (see gpu_materials.h).
+#include "renderer/mesh/gpu_materials.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "renderer/core/image_io.h"
+#include "renderer/gl/texture_units.h"
+#include "renderer/lighting/mesh_materials.h"
+
+namespace npr {
+namespace {
+
+// Maps share one array: each is resized to the largest map's size, at most this a side.
+constexpr int kMaxMapSide = 1024;
+
+gl::Texture bufferTexture(const gl::Buffer& buffer, GLenum format, gl::TextureUnit unit) {
+  gl::Texture t = gl::createTexture();
+  gl::bindTexture(unit, GL_TEXTURE_BUFFER, t.id());
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(gl::unitIndex(unit)));
+  glTexBuffer(GL_TEXTURE_BUFFER, format, buffer.id());
+  glActiveTexture(GL_TEXTURE0);
+  return t;
+}
+
+}  // namespace
+
+void GpuMaterials::clear() {
+  active_ = false;
+  tableBuffer_.reset();
+  tintBuffer_.reset();
+  table_.reset();
+  maps_.reset();
+  tints_.reset();
+  mapSide_ = 0;
+  rows_.clear();
+}
+
+void GpuMaterials::upload(const Mesh& mesh) {
+  clear();
+  if (!mesh.hasAppearance()) return;
+  active_ = true;
+  tableBuffer_ = gl::createBuffer();
+  const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1) * 4;
+  gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::vec4), GL_DYNAMIC_DRAW);
+  table_ = bufferTexture(tableBuffer_, GL_RGBA32F, gl::TextureUnit::MaterialTable);
+
+  if (mesh.textures.empty() || mesh.faceTints.size() != mesh.triangleCount()) return;
+  int side = 1;
+  for (const MeshTexture& t : mesh.textures) side = std::max({side, t.image.width, t.image.height});
+  mapSide_ = std::min(side, kMaxMapSide);
+  maps_ = gl::createTexture();
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(gl::unitIndex(gl::TextureUnit::MaterialMaps)));
+  glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, mapSide_, mapSide_, static_cast<GLsizei>(mesh.textures.size()), 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, nullptr);
+  std::vector<std::uint8_t> flipped;
+  for (std::size_t i = 0; i < mesh.textures.size(); ++i) {
+    const ImageRGBA8* img = &mesh.textures[i].image;
+    Result<ImageRGBA8> resized = Error{""};
+    if (img->width != mapSide_ || img->height != mapSide_) {
+      resized = resizeImage(*img, mapSide_, mapSide_);
+      if (!resized) continue;  // left black; cannot happen for a decoded image
+      img = &*resized;
+    }
+    // Image rows are top first; texture coordinates count v from the bottom.
+    const std::size_t row = static_cast<std::size_t>(img->width) * 4;
+    flipped.resize(img->pixels.size());
+    for (int y = 0; y < img->height; ++y)
+      std::memcpy(&flipped[static_cast<std::size_t>(img->height - 1 - y) * row], &img->pixels[static_cast<std::size_t>(y) * row], row);
+    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<GLint>(i), img->width, img->height, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                    flipped.data());
+  }
+  glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glActiveTexture(GL_TEXTURE0);
+
+  std::vector<std::uint8_t> tints(mesh.faceTints.size() * 4);
+  for (std::size_t f = 0; f < mesh.faceTints.size(); ++f) {
+    const glm::vec3 c = glm::clamp(mesh.faceTints[f], 0.0f, 1.0f) * 255.0f + 0.5f;
+    tints[f * 4 + 0] = static_cast<std::uint8_t>(c.r);
+    tints[f * 4 + 1] = static_cast<std::uint8_t>(c.g);
+    tints[f * 4 + 2] = static_cast<std::uint8_t>(c.b);
+    tints[f * 4 + 3] = 255;
+  }
+  tintBuffer_ = gl::createBuffer();
+  gl::uploadBuffer(tintBuffer_, tints.data(), tints.size(), GL_STATIC_DRAW);
+  tints_ = bufferTexture(tintBuffer_, GL_RGBA8, gl::TextureUnit::FaceTints);
+}
+
+void GpuMaterials::update(const Mesh& mesh, const LightingState& lighting, FrameStats& stats) {
+  if (!active_) return;
+  const std::vector<Material> mats = glMaterials(mesh, lighting);
+  std::vector<glm::vec4> rows;
+  rows.reserve(mats.size() * 4);
+  for (std::size_t i = 0; i < mats.size(); ++i) {
+    const Material& m = mats[i];
+    const int map = i < mesh.materials.size() && hasMaps() ? mesh.materials[i].diffuseMap : -1;
+    rows.push_back(glm::vec4(glm::vec3(m.ambient), float(map)));
+    rows.push_back(glm::vec4(glm::vec3(m.diffuse), 0.0f));
+    rows.push_back(glm::vec4(glm::vec3(m.specular), m.shininess));
+    rows.push_back(glm::vec4(glm::vec3(m.emission), 0.0f));
+  }
+  if (rows == rows_) return;
+  rows_ = std::move(rows);
+  glBindBuffer(GL_TEXTURE_BUFFER, tableBuffer_.id());
+  glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(rows_.size() * sizeof(glm::vec4)), rows_.data());
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  ++stats.bufferUploads;
+}
+
+void GpuMaterials::bind(gl::ShaderProgram& p) const {
+  gl::bindTexture(gl::TextureUnit::MaterialTable, GL_TEXTURE_BUFFER, table_.id());
+  p.set("uMaterialTable", gl::unitIndex(gl::TextureUnit::MaterialTable));
+  if (!hasMaps()) return;
+  gl::bindTexture(gl::TextureUnit::MaterialMaps, GL_TEXTURE_2D_ARRAY, maps_.id());
+  p.set("uMaterialMaps", gl::unitIndex(gl::TextureUnit::MaterialMaps));
+  gl::bindTexture(gl::TextureUnit::FaceTints, GL_TEXTURE_BUFFER, tints_.id());
+  p.set("uFaceTints", gl::unitIndex(gl::TextureUnit::FaceTints));
+}
+
+}  // namespace npr
