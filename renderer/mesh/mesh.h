@@ -46,7 +46,7 @@ struct LoadReport {
 // A surface material as a .mtl file describes it, mapped to OpenGL's material (Materialfv):
 // Ka, Kd, Ks, Ke become the four colours, Ns (Phong exponent, 0..1000) the shininess clamped
 // to GL's 0..128, and illum 0 and 1 turn the specular term off (illum 0 also the lighting:
-// the diffuse colour is emitted).
+// the diffuse colour is emitted), as does an Ns below 1 (GL would light the whole side white).
 struct MeshMaterial {
   std::string name;
   glm::vec3 ambient{0.2f}, diffuse{0.8f}, specular{0.0f}, emission{0.0f};

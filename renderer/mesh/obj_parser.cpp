@@ -271,6 +271,10 @@ class ObjParser {
       } else if (m.illum == 1) {
         m.specular = glm::vec3(0.0f);
       }
+      // Ns 0 (what many exporters write for "no gloss") would make GL's highlight cover the
+      // whole lit side (x^0 = 1): no modeller means that, and Blender's importer reads it as
+      // fully rough. Below an exponent of 1 there is no highlight.
+      if (m.shininess < 1.0f) m.specular = glm::vec3(0.0f);
       m.diffuseMap = texture(def.diffuseMapPath.empty() ? def.ambientMapPath : def.diffuseMapPath, def.where);
       m.opacityMap = texture(def.opacityMapPath, def.where);
     }

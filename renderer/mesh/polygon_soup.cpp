@@ -177,8 +177,15 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
     std::vector<std::uint32_t> vertexOrigin, faceOrigin;
     buildTriMesh(std::move(verts), std::move(soup.triangles), m, &vertexOrigin, &faceOrigin);
     const std::size_t nv = m.positions.size(), nf = m.indices.size() / 3;
+    // Split vertices share their file vertex's normal; the copies made for faces the halfedge
+    // structure refused keep their own (a face glued back to back to another, say, would
+    // cancel its neighbour's normal), as they do in a mesh without an appearance.
+    const std::size_t splitCount = split.size();
+    std::uint32_t files = 0;
+    for (std::uint32_t s : split) files = std::max(files, s + 1);
     m.sourceVertex.resize(nv);
-    for (std::size_t i = 0; i < nv; ++i) m.sourceVertex[i] = split[vertexOrigin[i]];
+    for (std::size_t i = 0; i < nv; ++i)
+      m.sourceVertex[i] = i < splitCount ? split[i] : files + static_cast<std::uint32_t>(i - splitCount);
     if (!soup.colours.empty()) {
       m.colours.resize(nv);
       for (std::size_t i = 0; i < nv; ++i) m.colours[i] = soup.colours[vertexOrigin[i]];

@@ -54,14 +54,15 @@ glm::vec3 TextureAverager::sample(const Level& l, glm::vec2 uv) const {
 
 glm::vec3 TextureAverager::average(const glm::vec2& a, const glm::vec2& b, const glm::vec2& c) const {
   if (!(std::isfinite(a.x + a.y + b.x + b.y + c.x + c.y))) return whole();
-  // Footprint in texels on the base level: pick the level where the triangle spans about 2
-  // texels across, so seven samples see all of it.
+  // Footprint in texels on the base level: pick the level where the triangle spans about 4
+  // texels across: seven bilinear samples then see all of it without blurring in much of
+  // what lies outside.
   const Level& base = levels_.front();
   const glm::vec2 size(base.width, base.height);
   const glm::vec2 lo = glm::min(a, glm::min(b, c)) * size, hi = glm::max(a, glm::max(b, c)) * size;
   const float extent = std::max(hi.x - lo.x, hi.y - lo.y);
   if (!(extent < 1e7f)) return whole();
-  const int level = std::clamp(static_cast<int>(std::ceil(std::log2(std::max(extent, 1.0f) / 2.0f))), 0,
+  const int level = std::clamp(static_cast<int>(std::ceil(std::log2(std::max(extent, 1.0f) / 4.0f))), 0,
                                static_cast<int>(levels_.size()) - 1);
   const Level& l = levels_[static_cast<std::size_t>(level)];
   const glm::vec2 centre = (a + b + c) / 3.0f;

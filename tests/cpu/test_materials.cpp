@@ -1,0 +1,182 @@
+// CPU tier: OBJ material libraries, vertex colours and texture coordinates through the loader
+// (obj_parser, mtl_parser, polygon_soup): every statement, and every bad input a warning that
+// names the file and line while the model still loads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "renderer/core/image_io.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/texture_average.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::TempDir;
+
+bool anyWarning(const Mesh& m, const std::string& needle) {
+  return std::any_of(m.report.warnings.begin(), m.report.warnings.end(), [&](const std::string& w) { return w.find(needle) != std::string::npos; });
+}
+
+const MeshMaterial* material(const Mesh& m, const std::string& name) {
+  for (const MeshMaterial& x : m.materials)
+    if (x.name == name) return &x;
+  return nullptr;
+}
+
+const char* kQuad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+TEST(Materials, EveryStatementReachesTheMaterial) {
+  TempDir d;
+  d.write("a.mtl",
+          "# comment\nnewmtl shiny\nKa 0.1 0.2 0.3\nKd 0.4 0.5 0.6\nKs 0.7 0.8 0.9\nKe 0.01 0.02 0.03\nNs 250\nd 0.5\nillum 2\n"
+          "Ni 1.5\nTf 1 1 1\nbump foo.png\nPr 0.3\n"  // unknown to GL's model: ignored
+          "newmtl grey\nKd 0.25\nTr 0.2\nNs 10\n"
+          "newmtl flat\nKd 0.3 0.6 0.9\nKs 1 1 1\nNs 30\nillum 0\n"
+          "newmtl matte\nKs 1 1 1\nNs 30\nillum 1\n"
+          "newmtl dull\nKs 1 1 1\nNs 0\n");
+  auto m = loadMesh(d.write("a.obj", std::string("mtllib a.mtl\n") + kQuad +
+                                         "usemtl shiny\nf 1 2 3\nusemtl grey\nf 1 3 4\nusemtl flat\nf 1 2 4\nusemtl matte\nf 2 3 4\nusemtl dull\nf 1 2 3\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.materials, 5u);
+  EXPECT_TRUE(m->report.warnings.empty()) << m->report.toJson();
+  const MeshMaterial* s = material(*m, "shiny");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->ambient, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(s->diffuse, glm::vec3(0.4f, 0.5f, 0.6f));
+  EXPECT_EQ(s->specular, glm::vec3(0.7f, 0.8f, 0.9f));
+  EXPECT_EQ(s->emission, glm::vec3(0.01f, 0.02f, 0.03f));
+  EXPECT_EQ(s->shininess, 128.0f);  // Ns 250 clamped to GL's range
+  EXPECT_EQ(s->opacity, 0.5f);
+  const MeshMaterial* g = material(*m, "grey");
+  EXPECT_EQ(g->diffuse, glm::vec3(0.25f));  // one number: grey
+  EXPECT_FLOAT_EQ(g->opacity, 0.8f);        // Tr is 1 - d
+  const MeshMaterial* f = material(*m, "flat");  // illum 0: the diffuse colour, unlit
+  EXPECT_EQ(f->emission, glm::vec3(0.3f, 0.6f, 0.9f));
+  EXPECT_EQ(f->diffuse, glm::vec3(0.0f));
+  EXPECT_EQ(f->specular, glm::vec3(0.0f));
+  EXPECT_EQ(material(*m, "matte")->specular, glm::vec3(0.0f));  // illum 1: no highlight
+  EXPECT_EQ(material(*m, "dull")->specular, glm::vec3(0.0f));   // Ns 0: no highlight
+  // Faces keep their material through loading, in file order.
+  ASSERT_EQ(m->faceMaterials.size(), 5u);
+  std::vector<std::string> names;
+  for (std::uint16_t i : m->faceMaterials) names.push_back(m->materials[i].name);
+  EXPECT_EQ(names, (std::vector<std::string>{"shiny", "grey", "flat", "matte", "dull"}));
+}
+
+TEST(Materials, UsemtlBeforeMtllibAndSeveralLibraries) {
+  TempDir d;
+  d.write("one.mtl", "newmtl a\nKd 1 0 0\n");
+  d.write("two.mtl", "newmtl b\nKd 0 1 0\n");
+  auto m = loadMesh(d.write("x.obj", std::string(kQuad) + "usemtl b\nf 1 2 3\nusemtl a\nf 1 3 4\nmtllib one.mtl two.mtl\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.material_libraries.size(), 2u);
+  EXPECT_EQ(material(*m, "a")->diffuse, glm::vec3(1, 0, 0));
+  EXPECT_EQ(material(*m, "b")->diffuse, glm::vec3(0, 1, 0));
+  EXPECT_FALSE(material(*m, "b")->fromLightingState);
+}
+
+TEST(Materials, NamesWithSpacesAndBackslashes) {
+  TempDir d;
+  std::filesystem::create_directories(d.path() / "maps");
+  ASSERT_TRUE(writeImage((d.path() / "maps" / "wood grain.png").string(), ImageRGBA8{2, 2, std::vector<std::uint8_t>(16, 200)}));
+  d.write("my materials.mtl", "newmtl wood\nmap_Kd -o 0 0 -clamp off .\\maps\\wood grain.png\n");
+  auto m = loadMesh(d.write("x.obj", std::string("mtllib my materials.mtl\n") + kQuad + "vt 0 0\nvt 1 0\nvt 1 1\nusemtl wood\nf 1/1 2/2 3/3\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_TRUE(m->report.warnings.empty()) << m->report.toJson();
+  ASSERT_EQ(m->report.textures_loaded.size(), 1u);
+  EXPECT_NE(m->report.textures_loaded[0].find("wood grain.png"), std::string::npos);
+  EXPECT_EQ(material(*m, "wood")->diffuseMap, 0);
+  ASSERT_EQ(m->faceTints.size(), 1u);
+  EXPECT_NEAR(m->faceTints[0].r, 200.0f / 255.0f, 1e-3f);
+}
+
+TEST(Materials, MissingAndBrokenFilesAreWarningsNamingFileAndLine) {
+  TempDir d;
+  d.write("broken.png", "not a png at all");
+  d.write("m.mtl", "Kd 1 1 1\nnewmtl a\nKd one two\nmap_Kd nowhere.png\nnewmtl b\nmap_Kd broken.png\nmap_Kd\n");
+  auto m = loadMesh(d.write("x.obj", std::string("mtllib missing.mtl\nmtllib m.mtl\n") + kQuad +
+                                         "vt 0 0\nusemtl a\nf 1/1 2/1 3/1\nusemtl b\nf 1/1 3/1 4/1\nusemtl ghost\nf 1 2 4\n"));
+  ASSERT_TRUE(m) << m.error();  // never a failure: the faces keep the default material
+  EXPECT_EQ(m->triangleCount(), 3u);
+  EXPECT_TRUE(anyWarning(*m, "x.obj line 1: material library 'missing.mtl' cannot be read")) << m->report.toJson();
+  EXPECT_TRUE(anyWarning(*m, "m.mtl line 1: 'Kd' before any newmtl"));
+  EXPECT_TRUE(anyWarning(*m, "m.mtl line 3: Kd needs 1 or 3 numbers"));
+  EXPECT_TRUE(anyWarning(*m, "m.mtl line 2: texture map cannot be used"));  // the material's newmtl line
+  EXPECT_TRUE(anyWarning(*m, "m.mtl line 7: map_Kd without a file name"));
+  EXPECT_TRUE(anyWarning(*m, "x.obj line 12: material 'ghost' is not defined"));
+  EXPECT_EQ(m->report.textures_missing.size(), 2u);
+  EXPECT_TRUE(material(*m, "ghost")->fromLightingState);
+  EXPECT_EQ(material(*m, "a")->diffuseMap, -1);
+  EXPECT_EQ(material(*m, "a")->diffuse, glm::vec3(0.8f));  // the malformed Kd left the default
+}
+
+TEST(Materials, VertexColoursAndTextureCoordinatesSurviveTriangulation) {
+  TempDir d;
+  // A concave pentagon (ear-clipped) with a colour and a texture coordinate per corner.
+  auto m = loadMesh(d.write("c.obj",
+                            "v 0 0 0 1 0 0\nv 2 0 0 0 1 0\nv 2 2 0 0 0 1\nv 1 0.5 0 1 1 0\nv 0 2 0 0 1 1\n"
+                            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0.5 0.25\nvt 0 1\nf 1/1 2/2 3/3 4/4 5/5\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_TRUE(m->report.vertex_colours);
+  EXPECT_TRUE(m->report.texture_coordinates);
+  EXPECT_EQ(m->triangleCount(), 3u);
+  ASSERT_EQ(m->colours.size(), m->positions.size());
+  ASSERT_EQ(m->texcoords.size(), m->positions.size());
+  // Every vertex keeps the colour and coordinate of the file vertex at its position.
+  const glm::vec3 colourAt[5] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}};
+  const glm::vec2 uvAt[5] = {{0, 0}, {1, 0}, {1, 1}, {0.5f, 0.25f}, {0, 1}};
+  const glm::vec3 rawAt[5] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5f, 0}, {0, 2, 0}};
+  for (std::size_t i = 0; i < m->positions.size(); ++i) {
+    const glm::dvec3 raw = glm::dvec3(m->positions[i]) / m->report.original_scale + m->report.original_centre;
+    int k = -1;
+    for (int j = 0; j < 5; ++j)
+      if (glm::length(raw - glm::dvec3(rawAt[j])) < 1e-4) k = j;
+    ASSERT_GE(k, 0);
+    EXPECT_EQ(m->colours[i], colourAt[k]);
+    EXPECT_EQ(m->texcoords[i], uvAt[k]);
+  }
+}
+
+TEST(Materials, SplitVerticesShareNormalsAndRefusedFacesKeepTheirAttributes) {
+  TempDir d;
+  d.write("m.mtl", "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 0 1\n");
+  // Two triangles of different materials share an edge (the vertices are split, normals
+  // shared); a third repeats the first, which the halfedge structure refuses (copied).
+  auto m = loadMesh(d.write("x.obj", std::string("mtllib m.mtl\n") + "v 0 0 0 1 0 0\nv 1 0 0.2\nv 1 1 0\nv 0 1 0.3\n" +
+                                         "usemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\nusemtl a\nf 1 2 3\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->report.non_manifold_faces, 1u);
+  ASSERT_EQ(m->faceMaterials.size(), 3u);
+  EXPECT_EQ(m->materials[m->faceMaterials[0]].name, "a");
+  EXPECT_EQ(m->materials[m->faceMaterials[1]].name, "b");
+  EXPECT_EQ(m->materials[m->faceMaterials[2]].name, "a");
+  // Vertex 1 of the file appears once per material, and both copies have one normal.
+  std::vector<std::size_t> ofFirst;
+  for (std::size_t i = 0; i < m->positions.size(); ++i)
+    if (m->colours[i] == glm::vec3(1, 0, 0)) ofFirst.push_back(i);
+  ASSERT_GE(ofFirst.size(), 2u);
+  EXPECT_EQ(m->normals[ofFirst[0]], m->normals[ofFirst[1]]);
+  for (std::size_t f = 0; f < 3; ++f)
+    for (int k = 0; k < 3; ++k) EXPECT_LT(m->indices[f * 3 + std::size_t(k)], m->colours.size());
+}
+
+TEST(Materials, TextureAverageOverATriangle) {
+  // Left half black, right half white: a triangle on the right averages white, one across
+  // the middle grey.
+  ImageRGBA8 img{64, 64, std::vector<std::uint8_t>(64 * 64 * 4, 255)};
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) img.pixels[(std::size_t(y) * 64 + x) * 4 + std::size_t(c)] = 0;
+  const TextureAverager avg(img);
+  EXPECT_NEAR(avg.average({0.6f, 0.1f}, {0.9f, 0.1f}, {0.8f, 0.9f}).r, 1.0f, 0.05f);
+  EXPECT_NEAR(avg.average({0.1f, 0.1f}, {0.4f, 0.1f}, {0.2f, 0.9f}).r, 0.0f, 0.05f);
+  EXPECT_NEAR(avg.average({0.0f, 0.0f}, {1.0f, 0.0f}, {0.5f, 1.0f}).r, 0.5f, 0.1f);
+  EXPECT_NEAR(avg.whole().r, 0.5f, 1e-3f);
+  // Non-finite coordinates fall back to the whole map, never NaN.
+  EXPECT_NEAR(avg.average({NAN, 0.0f}, {1.0f, 0.0f}, {0.5f, 1.0f}).r, 0.5f, 1e-3f);
+}
+
+}  // namespace
+}  // namespace npr

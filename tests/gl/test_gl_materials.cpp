@@ -1,0 +1,208 @@
+// GL tier: a model's own materials, vertex colours and texture maps in every path. The GPU's
+// per-pixel lighting with materials agrees with the CPU model; stencil still equals triangle;
+// a texture map's colours reach the reference render; two materials under one light pick
+// different entries in MATCH_COLORS; assimp's textured spider renders in colour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "gl/gl_test_env.h"
+#include "renderer/core/image_io.h"
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/lighting/mesh_materials.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::renderImage;
+using test::sourcePath;
+using test::testCamera;
+using Fixture = test::RendererFixture;
+
+Palette shipped(const std::string& name) {
+  auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
+  EXPECT_TRUE(p) << p.error();
+  return p ? std::move(*p) : Palette{};
+}
+
+// An icosphere whose faces with x < 0 use material "red" and the others "blue", with a
+// glossy red and a dull blue (ambient = diffuse, as exporters write).
+Mesh twoMaterialSphere(const test::TempDir& dir) {
+  const Mesh s = test::icosphere(3);
+  std::ostringstream obj;
+  obj << "mtllib two.mtl\n";
+  for (const glm::vec3& p : s.positions) obj << "v " << p.x << " " << p.y << " " << p.z << "\n";
+  for (std::size_t t = 0; t < s.triangleCount(); ++t) {
+    obj << (s.faceCentroids[t].x < 0.0f ? "usemtl red\n" : "usemtl blue\n");
+    obj << "f " << s.indices[t * 3] + 1 << " " << s.indices[t * 3 + 1] + 1 << " " << s.indices[t * 3 + 2] + 1 << "\n";
+  }
+  dir.write("two.mtl",
+            "newmtl red\nKa 0.8 0.1 0.1\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNs 40\n"
+            "newmtl blue\nKa 0.1 0.2 0.7\nKd 0.1 0.2 0.7\nKs 0 0 0\nillum 1\n");
+  auto m = loadMesh(dir.write("two.obj", obj.str()));
+  EXPECT_TRUE(m) << m.error();
+  return m ? std::move(*m) : Mesh{};
+}
+
+TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
+  test::TempDir dir;
+  const Mesh mesh = twoMaterialSphere(dir);
+  ASSERT_EQ(mesh.materials.size(), 3u);  // the default, red, blue
+  r->setMesh(&mesh);
+  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  const int w = 320, h = 240;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
+  const glm::mat4 toObject = glm::inverse(cam.view);
+  const std::vector<Material> mats = glMaterials(mesh, r->lighting());
+  {
+    RenderSettings s;
+    s.path = RenderPath::Pixel;
+    s.match = MatchMode::Colors;
+    const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
+    const PaletteMatcher& m = *r->matcher();
+    int sampled = 0, exact = 0, red = 0, blue = 0;
+    for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
+      if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
+      const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
+      const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
+      const float x = glm::vec3(toObject * glm::vec4(p, 1.0f)).x;
+      if (std::fabs(x) < 0.05f) continue;  // the seam between the materials
+      const Material& mat = mats[x < 0.0f ? 1 : 2];
+      (x < 0.0f ? red : blue)++;
+      const glm::vec3 lit = shade(prepareLighting<float>(r->lighting().withMaterial(mat)), p, n, pos.pixels[i * 4 + 3] < 0.0f);
+      ++sampled;
+      exact += entries.pixels[i * 4] == m.match(lit);
+    }
+    EXPECT_GT(red, 300);
+    EXPECT_GT(blue, 300);
+    EXPECT_GE(exact, sampled * 95 / 100) << exact << " of " << sampled << " exact";
+  }
+}
+
+TEST_F(Fixture, StencilEqualsTriangleWithMaterials) {
+  test::TempDir dir;
+  const Mesh mesh = twoMaterialSphere(dir);
+  r->setMesh(&mesh);
+  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  const int w = 320, h = 240;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity}) {
+    RenderSettings s;
+    s.match = mode;
+    s.path = RenderPath::Stencil;
+    const ImageRGBA8 stencil = renderImage(*r, cam, s, w, h);
+    s.path = RenderPath::Triangle;
+    const ImageRGBA8 triangle = renderImage(*r, cam, s, w, h);
+    EXPECT_LE(test::countDiffering(stencil, triangle), w * h / 1000) << matchModeName(mode);
+    // And the materials change the picture: off, the sphere is one grey material.
+    s.materials = false;
+    EXPECT_GT(test::countDiffering(triangle, renderImage(*r, cam, s, w, h)), w * h / 20) << matchModeName(mode);
+  }
+}
+
+// A camera-facing square split into two triangles: the left one red, the right one blue.
+TEST_F(Fixture, TwoMaterialsUnderOneLightPickDifferentEntriesInColorsMode) {
+  test::TempDir dir;
+  dir.write("m.mtl", "newmtl red\nKa 0.9 0.2 0.1\nKd 0.9 0.2 0.1\nnewmtl blue\nKa 0.1 0.3 0.9\nKd 0.1 0.3 0.9\n");
+  auto mesh = loadMesh(dir.write("sq.obj",
+                                 "mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                 "usemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3\n"));
+  ASSERT_TRUE(mesh) << mesh.error();
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  const CameraMatrices cam = c.matrices(1.0f);
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel}) {
+    RenderSettings s;
+    s.path = path;
+    s.match = MatchMode::Colors;
+    const ImageRGBA8 e = test::renderEntries(*r, cam, s, 100, 100);
+    auto at = [&](int x, int y) { return e.pixels[(std::size_t(y) * 100 + x) * 4]; };
+    // Upper left is in the red triangle, lower right in the blue one.
+    EXPECT_NE(at(30, 30), at(70, 70)) << renderPathName(path);
+    s.materials = false;
+    const ImageRGBA8 off = test::renderEntries(*r, cam, s, 100, 100);
+    EXPECT_EQ(off.pixels[(30 * 100 + 30) * 4], off.pixels[(70 * 100 + 70) * 4]) << renderPathName(path) << " with materials off";
+  }
+}
+
+// A textured square: a map in four quadrants (red, green / blue, white) over it, light from
+// the eye.
+TEST_F(Fixture, TextureMapColoursReachTheReferenceRender) {
+  test::TempDir dir;
+  ImageRGBA8 map{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, 255)};
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* p = &map.pixels[(std::size_t(y) * 16 + x) * 4];
+      const glm::ivec3 c = y < 8 ? (x < 8 ? glm::ivec3(255, 0, 0) : glm::ivec3(0, 255, 0)) : (x < 8 ? glm::ivec3(0, 0, 255) : glm::ivec3(255));
+      p[0] = std::uint8_t(c.r), p[1] = std::uint8_t(c.g), p[2] = std::uint8_t(c.b);
+    }
+  ASSERT_TRUE(writeImage((dir.path() / "map 1.png").string(), map));
+  dir.write("t.mtl", "newmtl tex\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nmap_Kd -s 1 1 1 .\\map 1.png\n");
+  auto mesh = loadMesh(dir.write("t.obj",
+                                 "mtllib t.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                                 "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl tex\nf 1/1 2/2 3/3 4/4\n"));
+  ASSERT_TRUE(mesh) << mesh.error();
+  ASSERT_EQ(mesh->report.textures_loaded.size(), 1u) << mesh->report.toJson();
+  r->setMesh(&*mesh);
+  const float dir4[4] = {0, 0, 1, 0};
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, dir4));
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  const ImageRGBA8 img = renderImage(*r, c.matrices(1.0f), s, 200, 200);
+  auto px = [&](int x, int y) {  // image rows are top first
+    const std::uint8_t* p = &img.pixels[(std::size_t(y) * 200 + x) * 4];
+    return glm::ivec3(p[0], p[1], p[2]);
+  };
+  // Lit head-on with Kd = 1 and a white light: the texel's own colour, away from the
+  // quadrants' borders (the map is filtered). v counts up: the top rows of the image file
+  // (red, green) are at the top of the square.
+  const int lo = 80, hi = 120;
+  EXPECT_NEAR(px(lo, lo).r, 255, 3);
+  EXPECT_LE(px(lo, lo).g, 3);
+  EXPECT_NEAR(px(hi, lo).g, 255, 3);
+  EXPECT_NEAR(px(lo, hi).b, 255, 3);
+  EXPECT_LE(px(lo, hi).r, 3);
+  EXPECT_GE(px(hi, hi).r, 252);
+  EXPECT_GE(px(hi, hi).b, 252);
+}
+
+TEST_F(Fixture, AssimpSpiderRendersWithItsTextures) {
+  const std::string path = "/usr/share/assimp/models/OBJ/spider.obj";  // Debian's assimp-testmodels (.ci/setup installs it)
+  auto mesh = loadMesh(path);
+  ASSERT_TRUE(mesh) << mesh.error() << " (install assimp-testmodels)";
+  EXPECT_EQ(mesh->report.materials, 4u);
+  EXPECT_EQ(mesh->report.textures_loaded.size(), 4u) << mesh->report.toJson();
+  EXPECT_TRUE(mesh->report.textures_missing.empty());
+  r->setMesh(&*mesh);
+  ASSERT_TRUE(r->setPalette(shipped("crosshatch")));
+  const CameraMatrices cam = testCamera(4.0f / 3.0f);
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  auto colourful = [](const ImageRGBA8& img) {
+    int n = 0;
+    for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
+      const int r = img.pixels[i], g = img.pixels[i + 1], b = img.pixels[i + 2];
+      n += std::max({r, g, b}) - std::min({r, g, b}) > 24;
+    }
+    return n;
+  };
+  const int on = colourful(renderImage(*r, cam, s, 320, 240));
+  s.materials = false;
+  const int off = colourful(renderImage(*r, cam, s, 320, 240));
+  std::printf("spider: %d coloured pixels with its materials, %d without\n", on, off);
+  EXPECT_GT(on, 1500) << "textured spider: coloured pixels";
+  EXPECT_LT(off, 100) << "grey spider with materials off";
+}
+
+}  // namespace
+}  // namespace npr
