@@ -43,21 +43,52 @@ Status PaletteRenderer::IntensityRangeScale(float scale) {
   return okStatus();
 }
 
+namespace {
+bool sameMaterial(const Material& a, const Material& b) {
+  return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular && a.emission == b.emission &&
+         a.shininess == b.shininess;
+}
+}  // namespace
+
 void PaletteRenderer::Begin() {
   pending_.clear();
+  materials_.assign(1, renderer_.lighting().front());
+  triangleMaterials_.clear();
   begun_ = true;
 }
 
 void PaletteRenderer::RenderTriangle(const Triangle& tri) {
-  if (begun_) pending_.push_back(tri);
+  if (!begun_) return;
+  // OpenGL's semantics: a Materialfv between triangles applies to the triangles after it.
+  const Material& now = renderer_.lighting().front();
+  if (!sameMaterial(now, materials_.back()) && materials_.size() < 0xFFFF) materials_.push_back(now);
+  pending_.push_back(tri);
+  triangleMaterials_.push_back(static_cast<std::uint16_t>(materials_.size() - 1));
 }
 
 Status PaletteRenderer::End(const CameraMatrices& camera, const glm::ivec4& viewport) {
   if (!begun_) return Error{"End() without Begin()"};
   begun_ = false;
   mesh_ = meshFromTriangles(pending_);
+  if (materials_.size() > 1) {
+    // Several materials were set while drawing: each triangle keeps the one current when it
+    // was given (the mesh's own materials; its vertices are not shared, so one per vertex).
+    for (const Material& m : materials_) {
+      MeshMaterial mm;
+      mm.name = "Materialfv " + std::to_string(mesh_.materials.size());
+      mm.ambient = glm::vec3(m.ambient);
+      mm.diffuse = glm::vec3(m.diffuse);
+      mm.specular = glm::vec3(m.specular);
+      mm.emission = glm::vec3(m.emission);
+      mm.shininess = m.shininess;
+      mesh_.materials.push_back(mm);
+    }
+    mesh_.faceMaterials = triangleMaterials_;
+  }
   renderer_.setMesh(&mesh_);
-  return renderer_.render(camera, settings_, viewport);
+  RenderSettings s = settings_;
+  s.materials = true;
+  return renderer_.render(camera, s, viewport);
 }
 
 }  // namespace npr

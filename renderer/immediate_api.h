@@ -2,7 +2,8 @@
 // shaped state calls (Lightfv, Materialfv, LightModelfv, Enable/Disable), ColorMatchMode and
 // IntensityRangeScale, and immediate drawing with Begin(), RenderTriangle(tri), End().
 // Triangles are collected between Begin and End and drawn by the same Renderer as the
-// retained mesh path (by default with the original stencil-bucket algorithm).
+// retained mesh path (by default with the original stencil-bucket algorithm). As in OpenGL, a
+// Materialfv between RenderTriangle calls applies to the triangles that follow it.
 #pragma once
 
 #include <array>
@@ -49,6 +50,8 @@ class PaletteRenderer {
   Renderer& renderer_;
   RenderSettings settings_ = [] { RenderSettings s; s.path = RenderPath::Stencil; return s; }();
   std::vector<Triangle> pending_;
+  std::vector<Material> materials_;                // front materials current during Begin..End
+  std::vector<std::uint16_t> triangleMaterials_;   // per pending triangle, into materials_
   Mesh mesh_;
   bool begun_ = false;
 };

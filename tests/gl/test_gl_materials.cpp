@@ -9,6 +9,8 @@
 
 #include "gl/gl_test_env.h"
 #include "renderer/core/image_io.h"
+#include "renderer/gl/offscreen_target.h"
+#include "renderer/immediate_api.h"
 #include "renderer/lighting/lighting_model.h"
 #include "renderer/lighting/mesh_materials.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -202,6 +204,43 @@ TEST_F(Fixture, AssimpSpiderRendersWithItsTextures) {
   std::printf("spider: %d coloured pixels with its materials, %d without\n", on, off);
   EXPECT_GT(on, 1500) << "textured spider: coloured pixels";
   EXPECT_LT(off, 100) << "grey spider with materials off";
+}
+
+// The original interface: a Materialfv between RenderTriangle calls applies to the triangles
+// that follow, as in OpenGL. Two camera-facing triangles, red then blue.
+TEST_F(Fixture, ImmediateMaterialfvAppliesToTheTrianglesThatFollow) {
+  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  const CameraMatrices cam = c.matrices(1.0f);
+  auto target = OffscreenTarget::create(100, 100);
+  ASSERT_TRUE(target);
+  PaletteRenderer immediate(*r);
+  const float head[4] = {0, 0, 1, 0};  // a directional light: equal normals light equally
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(immediate.Lightfv(GL_LIGHT0, GL_POSITION, head));
+  immediate.ColorMatchMode(MatchMode::Colors);
+  immediate.RenderPathMode(RenderPath::Triangle);
+  const float red[4] = {0.9f, 0.2f, 0.1f, 1.0f}, blue[4] = {0.1f, 0.3f, 0.9f, 1.0f};
+  auto draw = [&](bool switchMaterial) {
+    target->bind();
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    EXPECT_TRUE(immediate.Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, red));
+    immediate.Begin();
+    immediate.RenderTriangle({{glm::vec3(-1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)}});
+    if (switchMaterial) {
+      EXPECT_TRUE(immediate.Materialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, blue));
+    }
+    immediate.RenderTriangle({{glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0)}});
+    EXPECT_TRUE(immediate.End(cam, {0, 0, 100, 100}));
+    return target->readRGBA8();
+  };
+  auto px = [](const ImageRGBA8& img, int x, int y) { return glm::ivec3(img.pixels[(std::size_t(y) * 100 + x) * 4], img.pixels[(std::size_t(y) * 100 + x) * 4 + 1], img.pixels[(std::size_t(y) * 100 + x) * 4 + 2]); };
+  const ImageRGBA8 one = draw(false), two = draw(true);
+  EXPECT_EQ(px(one, 30, 30), px(one, 70, 70)) << "one material: one entry";
+  EXPECT_NE(px(two, 30, 30), px(two, 70, 70)) << "the second triangle is drawn with the material set after the first";
+  EXPECT_EQ(px(two, 30, 30), px(one, 30, 30)) << "the first keeps the material current when it was given";
 }
 
 }  // namespace
