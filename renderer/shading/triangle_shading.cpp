@@ -9,6 +9,13 @@
 
 namespace npr {
 
+std::vector<glm::u8vec4> packFaceScale(const std::vector<glm::vec3>& scale) {
+  std::vector<glm::u8vec4> out(scale.size());
+  for (std::size_t i = 0; i < scale.size(); ++i)
+    out[i] = glm::u8vec4(glm::vec4(glm::clamp(scale[i], 0.0f, 1.0f) * 255.0f + 0.5f, 255.0f));
+  return out;
+}
+
 bool isRigid(const glm::mat4& m) {
   const glm::mat3 r(m);
   const glm::mat3 d = glm::transpose(r) * r - glm::mat3(1.0f);
@@ -159,7 +166,7 @@ void shadeSimple(const SimpleLighting& light, const PaletteMatcher::UnitLookup l
 // material's row of `table` (kept in L1 for the few materials a model has), and the ambient
 // and diffuse sum is scaled by the triangle's colour.
 template <int kLights, bool kSpecular, bool kPositional>
-void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restrict material, const glm::vec3* __restrict scale,
+void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restrict material, const glm::u8vec4* __restrict scale,
                        const PaletteMatcher::UnitLookup lookup, const glm::vec3* __restrict centroids,
                        const glm::vec3* __restrict normals, size_t n, std::uint8_t* __restrict entry, std::uint32_t* __restrict cnt) {
   const glm::vec3 view = table[0].viewDirection;
@@ -201,7 +208,7 @@ void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restr
         c += (pow[k] + (t - float(k)) * (pow[k + 1] - pow[k])) * L.specular[l];
       }
     }
-    c += scale ? sc * scale[i] : sc;
+    c += scale ? sc * (glm::vec3(scale[i]) * (1.0f / 255.0f)) : sc;
     using lighting_detail::clamp01;
     const int k = lookup(glm::vec3(clamp01(c.r), clamp01(c.g), clamp01(c.b)));
     entry[i] = static_cast<std::uint8_t>(k);
@@ -209,7 +216,7 @@ void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restr
   }
 }
 
-void shadeMaterials(const std::vector<SimpleLighting>& table, const std::uint16_t* material, const glm::vec3* scale,
+void shadeMaterials(const std::vector<SimpleLighting>& table, const std::uint16_t* material, const glm::u8vec4* scale,
                     const PaletteMatcher::UnitLookup lookup, const glm::vec3* centroids, const glm::vec3* normals, size_t n,
                     std::uint8_t* entry, std::uint32_t* cnt) {
   bool specular = false, positional = false;
@@ -253,7 +260,7 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
     for (const Material& m : fm->materials)
       perMaterial.push_back(prepareLighting<float>(lighting.withMaterial(m), rigid ? glm::inverse(modelView) : glm::mat4(1.0f)));
   const std::uint16_t* faceMaterial = fm ? fm->faceMaterial : nullptr;
-  const glm::vec3* faceScale = fm ? fm->faceScale : nullptr;
+  const glm::u8vec4* faceScale = fm ? fm->faceScale : nullptr;
 
   if (!perMaterial.empty() && rigid && SimpleLighting::applies(perMaterial[0])) {
     std::vector<SimpleLighting> table;
@@ -277,7 +284,7 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
           n = normalMatrix * n;
         }
         const bool back = q.twoSided && glm::dot(n, q.eye - pos) < 0.0f;
-        const int k = matcher.match(shade(q, pos, n, back, faceScale ? faceScale[i] : glm::vec3(1.0f)));
+        const int k = matcher.match(shade(q, pos, n, back, faceScale ? glm::vec3(faceScale[i]) * (1.0f / 255.0f) : glm::vec3(1.0f)));
         entry[i] = static_cast<std::uint8_t>(k);
         ++cnt[k];
       }

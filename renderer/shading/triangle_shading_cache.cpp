@@ -82,7 +82,7 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     opt.buildBuckets = true;
     if (materials) {
       if (!faceScaleValid_) {
-        faceScale_ = faceColourScale(*mesh_);
+        faceScale_ = packFaceScale(faceColourScale(*mesh_));
         faceScaleValid_ = true;
       }
       FaceMaterials fm;

@@ -51,7 +51,7 @@ class TriangleShadingCache {
     bool materials = false;
     bool valid = false;
   } key_;
-  std::vector<glm::vec3> faceScale_;  // faceColourScale, computed once per mesh when materials are drawn
+  std::vector<glm::u8vec4> faceScale_;  // faceColourScale, packed once per mesh when materials are drawn
   bool faceScaleValid_ = false;
   bool bucketsUploaded_ = false;
   // Scissor bounds: vertices projected once per view, bounds once per change of the buckets

@@ -84,7 +84,7 @@ void BM_ShadeTrianglesMaterials(benchmark::State& state) {
   opt.buildBuckets = true;
   FaceMaterials fm;
   std::vector<std::uint16_t> faceMaterial;
-  std::vector<glm::vec3> scale;
+  std::vector<glm::u8vec4> scale;
   for (int i = 0; i < count; ++i) {
     Material m;
     const float t = float(i) / 16.0f;
@@ -101,7 +101,7 @@ void BM_ShadeTrianglesMaterials(benchmark::State& state) {
   }
   if (state.range(1)) {
     scale.resize(mesh.triangleCount());
-    for (std::size_t f = 0; f < scale.size(); ++f) scale[f] = glm::vec3(0.5f + 0.5f * std::fabs(mesh.faceNormals[f].x));
+    for (std::size_t f = 0; f < scale.size(); ++f) scale[f] = glm::u8vec4(glm::vec3(128.0f + 127.0f * std::fabs(mesh.faceNormals[f].x)), 255);
     fm.faceScale = scale.data();
   }
   TriangleShading out;
