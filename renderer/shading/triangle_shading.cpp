@@ -246,7 +246,6 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const int entries = matcher.size();
   out.entry.resize(nt);
   const bool rigid = isRigid(modelView);
-  const PreparedLighting<float> p = prepareLighting<float>(lighting, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
   const int chunks = opt.threads > 0 ? opt.threads : workerCount();
   std::vector<std::vector<std::uint32_t>> counts(static_cast<size_t>(chunks), std::vector<std::uint32_t>(static_cast<size_t>(entries), 0));
@@ -254,13 +253,18 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const glm::vec3* normals = mesh.faceNormals.data();
   std::uint8_t* entry = out.entry.data();
 
-  // One preparation per material when the mesh's own materials are drawn.
+  // One preparation per material when the mesh's own materials are drawn. One material and
+  // no per-face colour is the lighting state's case with another material: today's loop.
   std::vector<PreparedLighting<float>> perMaterial;
-  if (fm && !fm->materials.empty())
-    for (const Material& m : fm->materials)
-      perMaterial.push_back(prepareLighting<float>(lighting.withMaterial(m), rigid ? glm::inverse(modelView) : glm::mat4(1.0f)));
   const std::uint16_t* faceMaterial = fm ? fm->faceMaterial : nullptr;
   const glm::u8vec4* faceScale = fm ? fm->faceScale : nullptr;
+  PreparedLighting<float> p = prepareLighting<float>(lighting, rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
+  if (fm && fm->materials.size() == 1 && !faceScale) {
+    p = prepareLighting<float>(lighting.withMaterial(fm->materials[0]), rigid ? glm::inverse(modelView) : glm::mat4(1.0f));
+  } else if (fm && !fm->materials.empty()) {
+    for (const Material& m : fm->materials)
+      perMaterial.push_back(prepareLighting<float>(lighting.withMaterial(m), rigid ? glm::inverse(modelView) : glm::mat4(1.0f)));
+  }
 
   if (!perMaterial.empty() && rigid && SimpleLighting::applies(perMaterial[0])) {
     std::vector<SimpleLighting> table;

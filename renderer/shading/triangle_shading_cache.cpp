@@ -83,11 +83,19 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     if (materials) {
       if (!faceScaleValid_) {
         faceScale_ = packFaceScale(faceColourScale(*mesh_));
+        const auto& fmat = mesh_->faceMaterials;
+        singleMaterial_ = fmat.empty() ? -1 : fmat[0];
+        for (std::uint16_t x : fmat)
+          if (x != fmat[0]) singleMaterial_ = -1;
         faceScaleValid_ = true;
       }
       FaceMaterials fm;
       fm.materials = glMaterials(*mesh_, lighting);
       fm.faceMaterial = mesh_->faceMaterials.size() == mesh_->triangleCount() ? mesh_->faceMaterials.data() : nullptr;
+      if (fm.faceMaterial && singleMaterial_ >= 0) {  // every face has one material: no per-face lookup
+        fm.materials = {fm.materials[static_cast<std::size_t>(singleMaterial_)]};
+        fm.faceMaterial = nullptr;
+      }
       fm.faceScale = faceScale_.empty() ? nullptr : faceScale_.data();
       shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_, &fm);
     } else {

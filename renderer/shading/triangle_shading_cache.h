@@ -52,6 +52,7 @@ class TriangleShadingCache {
     bool valid = false;
   } key_;
   std::vector<glm::u8vec4> faceScale_;  // faceColourScale, packed once per mesh when materials are drawn
+  int singleMaterial_ = -1;  // the material of every face, when they all have one
   bool faceScaleValid_ = false;
   bool bucketsUploaded_ = false;
   // Scissor bounds: vertices projected once per view, bounds once per change of the buckets

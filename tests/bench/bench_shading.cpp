@@ -85,12 +85,15 @@ void BM_ShadeTrianglesMaterials(benchmark::State& state) {
   FaceMaterials fm;
   std::vector<std::uint16_t> faceMaterial;
   std::vector<glm::u8vec4> scale;
+  // Material 0 is the lighting state's; the others vary in colour and gloss.
   for (int i = 0; i < count; ++i) {
-    Material m;
-    const float t = float(i) / 16.0f;
-    m.ambient = m.diffuse = glm::vec4(0.3f + 0.6f * t, 0.8f - 0.5f * t, 0.5f, 1.0f);
-    m.specular = glm::vec4(glm::vec3(i % 3 == 0 ? 0.0f : 0.4f), 1.0f);
-    m.shininess = 8.0f + 4.0f * float(i);
+    Material m = l.front();
+    if (i > 0) {
+      const float t = float(i) / 16.0f;
+      m.ambient = m.diffuse = glm::vec4(0.3f + 0.6f * t, 0.8f - 0.5f * t, 0.5f, 1.0f);
+      m.specular = glm::vec4(glm::vec3(i % 3 == 0 ? 0.0f : 0.4f), 1.0f);
+      m.shininess = 8.0f + 4.0f * float(i);
+    }
     fm.materials.push_back(m);
   }
   if (count > 1) {
