@@ -3,38 +3,29 @@
 // NUM_LIGHTS, HAS_POSITIONAL, HAS_ATTENUATION, HAS_SPOT, HAS_SPECULAR, LOCAL_VIEWER,
 // TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
 // the prepared products of light and material colours; with MATERIALS (the mesh's own
-// materials) they are the lights' own colours, multiplied here by the material that
-// loadMaterial() read from the material table for the vertex or fragment.
+// materials) they are the lights' own colours, multiplied here by the material the caller
+// passes (material.glsl) for the vertex or fragment.
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
 #endif
 
 #ifdef MATERIALS
-// One row of 4 texels per material: (ambient, map layer or -1), (diffuse, 0),
-// (specular, shininess), (emission, 0). See renderer/mesh/gpu_materials.h.
-uniform samplerBuffer uMaterialTable;
+#include "material.glsl"
 uniform vec3 uModelAmbient;
-struct SurfaceMaterial {
-  vec3 ambient, diffuse, specular, emission;
-  float shininess, map;
-};
-SurfaceMaterial gMaterial;
-void loadMaterial(uint index) {
-  int row = int(index) * 4;
-  vec4 a = texelFetch(uMaterialTable, row), d = texelFetch(uMaterialTable, row + 1);
-  vec4 s = texelFetch(uMaterialTable, row + 2), e = texelFetch(uMaterialTable, row + 3);
-  gMaterial = SurfaceMaterial(a.rgb, d.rgb, s.rgb, e.rgb, s.a, a.a);
-}
 #define LIGHT_SLOTS NUM_LIGHTS
-#define EMISSION(side) gMaterial.emission
-#define AMBIENT_BASE(side) (gMaterial.ambient * uModelAmbient)
-#define LIGHT_AMBIENT(side, i) (gMaterial.ambient * uLightAmbient[i])
-#define LIGHT_DIFFUSE(side, i) (gMaterial.diffuse * uLightDiffuse[i])
-#define LIGHT_SPECULAR(side, i) (gMaterial.specular * uLightSpecular[i])
-#define SHININESS(side) gMaterial.shininess
+#define MATERIAL_PARAMETER SurfaceMaterial mat,
+#define MATERIAL_ARGUMENT mat,
+#define EMISSION(side) mat.emission
+#define AMBIENT_BASE(side) (mat.ambient * uModelAmbient)
+#define LIGHT_AMBIENT(side, i) (mat.ambient * uLightAmbient[i])
+#define LIGHT_DIFFUSE(side, i) (mat.diffuse * uLightDiffuse[i])
+#define LIGHT_SPECULAR(side, i) (mat.specular * uLightSpecular[i])
+#define SHININESS(side) mat.shininess
 #else
 uniform vec3 uBase[2];  // emission + ambient x light-model ambient, [front, back]
+#define MATERIAL_PARAMETER
+#define MATERIAL_ARGUMENT
 #define LIGHT_SLOTS (2 * NUM_LIGHTS)
 #define EMISSION(side) vec3(0.0)
 #define AMBIENT_BASE(side) uBase[side]
@@ -93,7 +84,7 @@ vec3 clamp01(vec3 c) {  // NaN -> 0, like the CPU
 // (emission, specular), `scaled` what it does (ambient and diffuse), so a vertex colour or a
 // texture map can modulate the reflectance after lighting (per vertex: the triangle's map
 // average is applied per fragment). shadeGL is their sum, clamped.
-vec3 shadeParts(vec3 pos, vec3 normal, bool backFacing, out vec3 scaled) {
+vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out vec3 scaled) {
   scaled = vec3(0.0);
 #ifdef LIGHTING_OFF
   return vec3(1.0);
@@ -114,7 +105,7 @@ vec3 shadeParts(vec3 pos, vec3 normal, bool backFacing, out vec3 scaled) {
   float t = (1.0 - ndl) * 0.5;
 #ifdef MATERIALS
   vec3 tone = t * uCool[0] + (1.0 - t) * uWarm[0];
-  scaled = gMaterial.diffuse * (t * uToneWeights.x + (1.0 - t) * uToneWeights.y);
+  scaled = mat.diffuse * (t * uToneWeights.x + (1.0 - t) * uToneWeights.y);
 #else
   vec3 tone = t * uCool[side] + (1.0 - t) * uWarm[side];
 #endif
@@ -174,10 +165,12 @@ vec3 shadeParts(vec3 pos, vec3 normal, bool backFacing, out vec3 scaled) {
 }
 
 // The lit colour with the surface's ambient and diffuse reflectance scaled by `scale`.
-vec3 shadeScaled(vec3 pos, vec3 normal, bool backFacing, vec3 scale) {
+vec3 shadeScaled(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, vec3 scale) {
   vec3 scaled;
-  vec3 c = shadeParts(pos, normal, backFacing, scaled);
+  vec3 c = shadeParts(MATERIAL_ARGUMENT pos, normal, backFacing, scaled);
   return clamp01(c + scaled * scale);
 }
 
+#ifndef MATERIALS
 vec3 shadeGL(vec3 pos, vec3 normal, bool backFacing) { return shadeScaled(pos, normal, backFacing, vec3(1.0)); }
+#endif

@@ -9,14 +9,12 @@
 //  PATH_LIT_TEXTURED  benchmark floor: per-pixel lighting times one screen-space fetch
 //  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
-// the per-vertex paths scale by the triangle's map average, MATERIAL_MAPS when any exists).
+// the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
-#elif defined(PATH_VERTEX) || defined(PATH_GOURAUD)
-vec3 clamp01(vec3 c) { return mix(vec3(0.0), min(c, vec3(1.0)), greaterThan(c, vec3(0.0))); }
 #endif
 #if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL)
 #include "palette.glsl"
@@ -31,34 +29,16 @@ in vec3 vColorBack;
 #ifdef PATH_TRIANGLE
 uniform int uEntry;  // drawn bucket by bucket
 #endif
-#ifdef MATERIALS
+#if defined(MATERIALS) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
+#ifdef VERTEX_COLOURS
 in vec3 vColour;
+#endif
 in vec2 vTexcoord;
 flat in uint vMaterial;
-#if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
-in vec3 vScaledFront;
-in vec3 vScaledBack;
-#endif
 #ifdef MATERIAL_MAPS
 uniform sampler2DArray uMaterialMaps;  // diffuse maps, mipmapped, repeating
-uniform samplerBuffer uFaceTints;      // per triangle: its map's average over it
 #endif
 #endif
-
-// The lit colour of the per-vertex paths.
-vec3 vertexLit() {
-#if (defined(PATH_VERTEX) || defined(PATH_GOURAUD)) && defined(MATERIALS)
-  vec3 tint = vec3(1.0);
-#ifdef MATERIAL_MAPS
-  tint = texelFetch(uFaceTints, gl_PrimitiveID).rgb;
-#endif
-  return clamp01(gl_FrontFacing ? vColorFront + vScaledFront * tint : vColorBack + vScaledBack * tint);
-#elif defined(PATH_VERTEX) || defined(PATH_GOURAUD)
-  return gl_FrontFacing ? vColorFront : vColorBack;
-#else
-  return vec3(0.0);
-#endif
-}
 
 out vec4 fragColor;
 
@@ -80,17 +60,21 @@ void main() {
 #elif defined(PATH_TRIANGLE)
   fragColor = SHOW_ENTRY(uEntry);
 #elif defined(PATH_VERTEX)
-  fragColor = SHOW_ENTRY(matchEntry(vertexLit()));
+  fragColor = SHOW_ENTRY(matchEntry(gl_FrontFacing ? vColorFront : vColorBack));
 #elif defined(PATH_GOURAUD)
-  fragColor = vec4(vertexLit(), 1.0);
+  fragColor = vec4(gl_FrontFacing ? vColorFront : vColorBack, 1.0);
 #else
 #ifdef MATERIALS
-  loadMaterial(vMaterial);
+  SurfaceMaterial mat = fetchMaterial(vMaterial);
+#ifdef VERTEX_COLOURS
   vec3 scale = vColour;
-#ifdef MATERIAL_MAPS
-  if (gMaterial.map >= 0.0) scale *= texture(uMaterialMaps, vec3(vTexcoord, gMaterial.map)).rgb;
+#else
+  vec3 scale = vec3(1.0);
 #endif
-  vec3 lit = shadeScaled(vPosition, vNormal, !gl_FrontFacing, scale);
+#ifdef MATERIAL_MAPS
+  if (mat.map >= 0.0) scale *= texture(uMaterialMaps, vec3(vTexcoord, mat.map)).rgb;
+#endif
+  vec3 lit = shadeScaled(mat, vPosition, vNormal, !gl_FrontFacing, scale);
 #else
   vec3 lit = shadeGL(vPosition, vNormal, !gl_FrontFacing);
 #endif

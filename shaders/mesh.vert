@@ -17,24 +17,24 @@ out vec3 vPosition;  // eye space
 out vec3 vNormal;    // eye space, not normalised
 
 #ifdef MATERIALS
+#include "material.glsl"
 layout(location = 2) in vec3 aColour;
 layout(location = 3) in vec2 aTexcoord;
 layout(location = 4) in uint aMaterial;
+layout(location = 5) in vec3 aMapAverage;  // the diffuse map around this vertex (per-vertex paths)
+#ifndef PER_VERTEX_LIGHTING
+#ifdef VERTEX_COLOURS
 out vec3 vColour;
+#endif
 out vec2 vTexcoord;
 flat out uint vMaterial;
+#endif
 #endif
 
 #ifdef PER_VERTEX_LIGHTING
 #include "lighting.glsl"
 out vec3 vColorFront;
 out vec3 vColorBack;
-#ifdef MATERIALS
-// The ambient and diffuse part, kept apart so the fragment stage can scale it by the
-// triangle's texture average.
-out vec3 vScaledFront;
-out vec3 vScaledBack;
-#endif
 #endif
 
 void main() {
@@ -42,21 +42,20 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
-#ifdef MATERIALS
+#if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)
+#ifdef VERTEX_COLOURS
   vColour = aColour;
+#endif
   vTexcoord = aTexcoord;
   vMaterial = aMaterial;
 #endif
 #if defined(PER_VERTEX_LIGHTING) && defined(MATERIALS)
-  loadMaterial(aMaterial);
-  vColorFront = shadeParts(eye.xyz, vNormal, false, vScaledFront);
-  vScaledFront *= aColour;
+  SurfaceMaterial mat = fetchMaterial(aMaterial);
+  vColorFront = shadeScaled(mat, eye.xyz, vNormal, false, aColour * aMapAverage);
 #ifdef TWO_SIDED
-  vColorBack = shadeParts(eye.xyz, vNormal, true, vScaledBack);
-  vScaledBack *= aColour;
+  vColorBack = shadeScaled(mat, eye.xyz, vNormal, true, aColour * aMapAverage);
 #else
   vColorBack = vColorFront;
-  vScaledBack = vScaledFront;
 #endif
 #elif defined(PER_VERTEX_LIGHTING)
   vColorFront = shadeGL(eye.xyz, vNormal, false);

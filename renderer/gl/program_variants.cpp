@@ -43,6 +43,7 @@ struct SourceOf {
     if (m.palette) for (auto& d : paletteDefines(*m.palette)) s.defines.push_back(d);
     if (m.materials) s.defines.push_back("MATERIALS");
     if (m.materials && m.materialMaps) s.defines.push_back("MATERIAL_MAPS");
+    if (m.materials && m.vertexColours) s.defines.push_back("VERTEX_COLOURS");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
     return s;
@@ -76,8 +77,10 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps) != std::tie(b.shading, b.output, b.materials, b.materialMaps))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps) < std::tie(b.shading, b.output, b.materials, b.materialMaps);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

@@ -49,6 +49,7 @@ struct MeshProgram {
   std::optional<PaletteVariant> palette;     // for the shadings that sample the palette
   bool materials = false;     // the mesh's own materials, colours and maps (GPU-lit shadings)
   bool materialMaps = false;  // ... some of which have a diffuse map
+  bool vertexColours = false; // ... and the mesh has vertex colours
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.

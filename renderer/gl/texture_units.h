@@ -17,7 +17,6 @@ enum class TextureUnit : GLint {
   EdgeDepth,       // image-space edges: the frame's depth
   MaterialTable,   // the mesh's materials (GL_TEXTURE_BUFFER)
   MaterialMaps,    // their diffuse maps (GL_TEXTURE_2D_ARRAY)
-  FaceTints,       // per triangle, its map's average (GL_TEXTURE_BUFFER)
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

@@ -1,8 +1,8 @@
 // A mesh's own appearance on the GPU, for the GPU-lit paths with --materials on: the material
 // table (a buffer texture, one row of 4 RGBA32F texels per material; see loadMaterial in
 // shaders/lighting.glsl), the diffuse maps as one mipmapped texture array (every map resized
-// to a common size), and each triangle's map average (for the per-vertex paths). The mesh's
-// vertex colours, texture coordinates and material indices are vertex attributes (gpu_mesh.h).
+// to a common size). The mesh's vertex colours, texture coordinates, material indices and
+// map averages are vertex attributes (gpu_mesh.h).
 #pragma once
 
 #include <vector>
@@ -19,7 +19,7 @@ namespace npr {
 
 class GpuMaterials {
  public:
-  // Uploads the maps and triangle averages; nothing when the mesh has no appearance.
+  // Uploads the table and the maps; nothing when the mesh has no appearance.
   void upload(const Mesh& mesh);
   void clear();
   bool active() const { return active_; }
@@ -28,13 +28,13 @@ class GpuMaterials {
 
   // Rewrites the table where it changed (the default material follows the lighting state).
   void update(const Mesh& mesh, const LightingState& lighting, FrameStats& stats);
-  // Binds the table, maps and averages and points the program's samplers at them.
+  // Binds the table and the maps and points the program's samplers at them.
   void bind(gl::ShaderProgram& program) const;
 
  private:
   bool active_ = false;
-  gl::Buffer tableBuffer_, tintBuffer_;
-  gl::Texture table_, maps_, tints_;
+  gl::Buffer tableBuffer_;
+  gl::Texture table_, maps_;
   int mapSide_ = 0;
   std::vector<glm::vec4> rows_;
 };

@@ -20,6 +20,7 @@ void GpuMesh::clear() {
   colours_.reset();
   texcoords_.reset();
   materials_.reset();
+  mapAverages_.reset();
   triangleCount_ = 0;
 }
 
@@ -45,7 +46,7 @@ void GpuMesh::upload(const Mesh& mesh) {
 
 void GpuMesh::uploadAppearance(const Mesh& mesh) {
   const std::size_t nv = mesh.positions.size();
-  // Attributes 2-4 of mesh.vert's MATERIALS variant; where the mesh lacks one, a neutral array
+  // Attributes 2-5 of mesh.vert's MATERIALS variant; where the mesh lacks one, a neutral array
   // (white, (0,0), material 0) keeps one vertex layout for every mesh with an appearance.
   const std::vector<glm::vec3> white(mesh.colours.size() == nv ? 0 : nv, glm::vec3(1.0f));
   const std::vector<glm::vec3>& colours = mesh.colours.size() == nv ? mesh.colours : white;
@@ -59,6 +60,23 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
     for (std::size_t f = 0; f < mesh.faceMaterials.size(); ++f)
       for (int k = 0; k < 3; ++k) material[mesh.indices[f * 3 + static_cast<std::size_t>(k)]] = mesh.faceMaterials[f];
   materials_ = staticBuffer(material.data(), nv * sizeof(std::uint16_t));
+  // The per-vertex paths light each vertex with its diffuse map's average over the faces
+  // around it (a per-triangle value would need gl_PrimitiveID, which made llvmpipe about 30%
+  // slower on the large mesh).
+  std::vector<glm::vec3> mapAverage(nv, glm::vec3(1.0f));
+  if (mesh.faceTints.size() == mesh.triangleCount()) {
+    std::vector<glm::vec3> sum(nv, glm::vec3(0.0f));
+    std::vector<float> count(nv, 0.0f);
+    for (std::size_t f = 0; f < mesh.faceTints.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = mesh.indices[f * 3 + static_cast<std::size_t>(k)];
+        sum[v] += mesh.faceTints[f];
+        count[v] += 1.0f;
+      }
+    for (std::size_t v = 0; v < nv; ++v)
+      if (count[v] > 0.0f) mapAverage[v] = sum[v] / count[v];
+  }
+  mapAverages_ = staticBuffer(mapAverage.data(), nv * sizeof(glm::vec3));
   glBindBuffer(GL_ARRAY_BUFFER, colours_.id());
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
@@ -68,6 +86,9 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
   glBindBuffer(GL_ARRAY_BUFFER, materials_.id());
   glEnableVertexAttribArray(4);
   glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, mapAverages_.id());
+  glEnableVertexAttribArray(5);
+  glVertexAttribPointer(5, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
 }
 
 void GpuMesh::drawAll() const {

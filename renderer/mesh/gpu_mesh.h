@@ -1,5 +1,5 @@
 // A mesh on the GPU: positions and normals (attributes 0 and 1 of mesh.vert; with an
-// appearance also colours, texture coordinates and material indices, 2-4), its index
+// appearance also colours, texture coordinates, material indices and map averages, 2-5), its index
 // buffer, and the vertex array that binds them. Draws the whole mesh or a range of triangles
 // of another index buffer over the same vertices (the per-triangle paths' buckets).
 #pragma once
@@ -30,7 +30,7 @@ class GpuMesh {
  private:
   gl::VertexArray vao_;
   void uploadAppearance(const Mesh& mesh);
-  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_;
+  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_;
   std::size_t triangleCount_ = 0;
 };
 

@@ -81,8 +81,8 @@ struct Mesh {
   std::vector<glm::vec2> texcoords;          // per vertex
   std::vector<std::uint32_t> sourceVertex;   // per vertex: the vertex it was split from (normals are shared)
   // Per triangle: its diffuse map averaged over the triangle (white without one), what the
-  // per-triangle and per-vertex paths modulate ambient and diffuse by (finalizeMesh fills it;
-  // empty when no material has a map).
+  // per-triangle paths modulate ambient and diffuse by, and averaged around each vertex the
+  // per-vertex paths (finalizeMesh fills it; empty when no material has a map).
   std::vector<glm::vec3> faceTints;
   LoadReport report;
 

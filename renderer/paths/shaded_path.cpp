@@ -23,6 +23,7 @@ Status ShadedPath::draw(FrameContext& f) {
   const bool materials = f.drawMaterials();
   variant.materials = materials;
   variant.materialMaps = materials && f.materials.hasMaps();
+  variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (usesPalette) variant.palette = f.palette->variant(f.settings.match);
   Result<gl::ShaderProgram*> prog = f.program(variant);

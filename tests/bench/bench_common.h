@@ -13,6 +13,10 @@ constexpr int kTorusSide = 660;  // 2 x 660 x 660 = 871,200 triangles
 const Mesh& largeMesh();
 // The large mesh as an OBJ file (about 33 MB), generated on first use.
 const std::string& largeObjPath();
+// The large mesh with an appearance, loaded through the OBJ loader from files written once into
+// the temp folder: 16 materials by region (4 of them with a 512x512 diffuse map) and spherical
+// texture coordinates.
+const Mesh& largeMaterialMesh();
 // Peak resident memory of this process so far, in MiB.
 double peakRssMiB();
 

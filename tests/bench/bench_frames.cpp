@@ -47,25 +47,28 @@ struct PathRow {
   std::string label;
   RenderPath path;
   bool skipEmpty = true, scissor = true;  // the stencil path's two savings
+  bool materials = false;                 // the mesh's own materials (--materials)
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
-  bool quick = false;
+  bool quick = false, materials = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &w, &h);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--materials")) materials = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...]\n(the reference and lit-textured floors always run)\n");
+                           "[--paths p1,p2,...] [--materials]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "torus with 16 materials, 4 textured, each path with materials off and on)\n");
       return 2;
     }
   }
@@ -94,7 +97,8 @@ int main(int argc, char** argv) {
   struct Scene { const char* name; const Mesh* mesh; };
   std::vector<Scene> scenes;
   if (meshFilter.empty() || meshFilter == "bunny") scenes.push_back({"bunny", &*bunny});
-  if ((meshFilter.empty() && !quick) || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});
+  if (materials) scenes = {{"torus 871K, 16 materials", &bench::largeMaterialMesh()}};
+  else if ((meshFilter.empty() && !quick) || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});
   // stencil-unbounded skips empty buckets but draws full-screen quads; stencil-naive does
   // neither (the original): the rows between them show what each saving is worth.
   // From the path table: the two floors (the paths without a palette or not offered to
@@ -122,8 +126,15 @@ int main(int argc, char** argv) {
   std::vector<PathRow> paths;
   for (const PathRow& p : allPaths)
     if (pathFilter.empty() || !pathInfo(p.path).userSelectable || !pathInfo(p.path).usesPalette ||
-        pathFilter.find("," + p.label + ",") != std::string::npos)
+        pathFilter.find("," + p.label + ",") != std::string::npos) {
       paths.push_back(p);
+      if (materials) {
+        PathRow on = p;
+        on.label += "+materials";
+        on.materials = true;
+        paths.push_back(on);
+      }
+    }
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
@@ -143,6 +154,7 @@ int main(int argc, char** argv) {
         s.match = MatchMode::Intensity;
         s.stencilScissor = paths[p].scissor;
         s.stencilSkipEmpty = paths[p].skipEmpty;
+        s.materials = paths[p].materials;
         const float angle = 0.6f + 0.002f * float(call++);
         const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
         r.lighting().setModelView(matrices.view);
