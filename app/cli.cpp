@@ -38,6 +38,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                "whose average colour or intensity matches best, in screen space."};
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
+  std::vector<std::string> paletteFor;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -56,6 +57,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
   app.add_option("--out", o.outDir, "Benchmark output folder (default benchmark-results)");
   app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
+  app.add_option("--palette-for", paletteFor,
+                 "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
   app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
@@ -87,6 +90,14 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!materials.empty()) {
     if (materials != "on" && materials != "off") return {std::nullopt, fail("--materials must be on or off, got '" + materials + "'")};
     o.materials = materials == "on";
+  }
+  for (const std::string& pf : paletteFor) {
+    const std::size_t eq = pf.rfind('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == pf.size())
+      return {std::nullopt, fail("--palette-for must be MATERIAL=FILE, got '" + pf + "'")};
+    const std::string file = pf.substr(eq + 1);
+    if (!std::filesystem::exists(file)) return {std::nullopt, fail("--palette-for " + pf.substr(0, eq) + ": palette file '" + file + "' does not exist")};
+    o.materialPalettes.emplace_back(pf.substr(0, eq), file);
   }
   if (!rangeScale.empty()) {
     char* end = nullptr;

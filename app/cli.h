@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -33,6 +34,7 @@ struct Options {
   std::string outDir = "benchmark-results";
   bool gouraud = false;
   bool materials = true;
+  std::vector<std::pair<std::string, std::string>> materialPalettes;  // --palette-for MATERIAL=FILE
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
   bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;

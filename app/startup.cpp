@@ -14,6 +14,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   for (const auto& p : o.palettes)
     if (std::find(state.palettes.begin(), state.palettes.end(), p) == state.palettes.end()) state.palettes.push_back(p);
   if (Status s = state.loadPalette(first, renderer); !s) return s;
+  for (const auto& [material, file] : o.materialPalettes)
+    if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
   if (o.path) state.settings.path = *o.path;
   if (o.match) state.settings.match = *o.match;
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;

@@ -55,6 +55,39 @@ Status ViewerState::loadModel(const std::string& path, Renderer& renderer) {
   renderer.setMesh(mesh.get());
   for (const auto& w : mesh->report.warnings) note(w);
   camera.frame(mesh->radius);
+  for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);
+  return okStatus();
+}
+
+void ViewerState::noteMissingMaterial(const std::string& material) {
+  if (!mesh) return;
+  std::string names;
+  for (const MeshMaterial& m : mesh->materials) {
+    if (m.name == material) return;
+    if (!m.fromLightingState || m.name != "(default)") names += (names.empty() ? "" : ", ") + m.name;
+  }
+  note("no material named '" + material + "' in " + mesh->report.file + " for its palette" +
+       (names.empty() ? std::string(" (the model has no materials)") : " (its materials: " + names + ")"));
+}
+
+Status ViewerState::setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer) {
+  if (path.empty()) {
+    renderer.clearMaterialPalette(material);
+    materialPalettes.erase(material);
+    return okStatus();
+  }
+  Result<Palette> p = npr::loadPalette(path);
+  if (!p) {
+    note("palette for material '" + material + "' not loaded: " + p.error());
+    return Error{p.error()};
+  }
+  if (Status s = renderer.setMaterialPalette(material, *p); !s) {
+    note("palette for material '" + material + "' not loaded: " + s.error());
+    return s;
+  }
+  for (const auto& w : p->warnings) note(w);
+  materialPalettes[material] = path;
+  noteMissingMaterial(material);
   return okStatus();
 }
 

@@ -3,6 +3,7 @@
 // Loads are all-or-nothing: a file that fails to load leaves the current one in place.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,7 +39,13 @@ struct ViewerState {
   // Loads and selects a palette; the palette's own defaults (match mode, range scale) apply.
   Status loadPalette(const std::string& path, Renderer& renderer);
   Status selectPalette(int index, Renderer& renderer);
+  // Per-material palettes: draws the model's material `material` with the palette at `path`
+  // (kept when the model changes; a model without that material is told so). An empty path
+  // returns the material to the main palette. A palette that fails to load changes nothing.
+  Status setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer);
+  std::map<std::string, std::string> materialPalettes;  // material name -> palette file
   void note(const std::string& message);
+  void noteMissingMaterial(const std::string& material);
 
   // Sets the light for this frame's view (OpenGL semantics: the position is transformed by
   // the modelview current when it is set). Fails, leaving the light where it was, when the

@@ -1,10 +1,12 @@
 // The renderer facade (see renderer.h): what a frame is, in order. The work is in the passes.
 #include "renderer/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/marker_pass.h"
 #include "renderer/paths/render_pass.h"
@@ -27,10 +29,65 @@ void Renderer::setMesh(const Mesh* mesh) {
   materials_.clear();
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
+  groups_.clear();
+  groupsDirty_ = true;
   if (!mesh_) return;
   gpuMesh_.upload(*mesh_);
   materials_.upload(*mesh_);
   stats_.bufferUploads += 3;
+}
+
+Status Renderer::setMaterialPalette(const std::string& material, const Palette& palette) {
+  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
+  if (!uploaded) return Error{uploaded.error()};
+  materialPalettes_[material] = std::move(*uploaded);
+  groupsDirty_ = true;
+  stats_.bufferUploads += 1;
+  return okStatus();
+}
+
+void Renderer::clearMaterialPalette(const std::string& material) {
+  if (materialPalettes_.erase(material)) groupsDirty_ = true;
+}
+
+std::vector<std::string> Renderer::materialPaletteNames() const {
+  std::vector<std::string> out;
+  for (const auto& [name, palette] : materialPalettes_) out.push_back(name);
+  return out;
+}
+
+void Renderer::rebuildPaletteGroups() {
+  groupsDirty_ = false;
+  groups_.clear();
+  if (!mesh_ || materialPalettes_.empty() || mesh_->faceMaterials.size() != mesh_->triangleCount()) return;
+  // The palette of each material: 0 the main one, k > 0 the k-th distinct material palette.
+  std::vector<const GpuPalette*> palettes{nullptr};
+  std::vector<std::size_t> groupOf(mesh_->materials.size(), 0);
+  for (std::size_t i = 0; i < mesh_->materials.size(); ++i) {
+    auto it = materialPalettes_.find(mesh_->materials[i].name);
+    if (it == materialPalettes_.end()) continue;
+    auto at = std::find(palettes.begin(), palettes.end(), it->second.get());
+    if (at == palettes.end()) at = palettes.insert(palettes.end(), it->second.get());
+    groupOf[i] = static_cast<std::size_t>(at - palettes.begin());
+  }
+  if (palettes.size() == 1) return;  // no material of this mesh has its own palette
+  for (std::size_t g = 0; g < palettes.size(); ++g) {
+    std::vector<char> keep(mesh_->triangleCount(), 0);
+    bool any = false;
+    for (std::size_t f = 0; f < keep.size(); ++f) {
+      keep[f] = groupOf[mesh_->faceMaterials[f]] == g;
+      any = any || keep[f];
+    }
+    if (!any) continue;
+    auto group = std::make_unique<PaletteGroup>();
+    group->palette = palettes[g];
+    group->mesh = meshSubset(*mesh_, keep);
+    group->gpuMesh.upload(group->mesh);
+    group->materials.upload(group->mesh);
+    group->triangles.setMesh(&group->mesh);
+    stats_.bufferUploads += 3;
+    groups_.push_back(std::move(group));
+  }
 }
 
 Status Renderer::setPalette(const Palette& palette) {
@@ -47,6 +104,10 @@ void Renderer::collectGpuTime() {
 
 Status Renderer::prepare(const RenderSettings& s) {
   if (!palette_ && pathInfo(s.path).usesPalette) return Error{"no palette loaded"};
+  if (groupsDirty_) rebuildPaletteGroups();
+  // Cel bands belong to the main palette (they are one fewer than its tones).
+  for (auto& [name, p] : materialPalettes_)
+    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"palette of material '" + name + "': " + st.error()};
   if (palette_) return palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_);
   return okStatus();
 }
@@ -62,9 +123,20 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 
 Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
   if (!mesh_) return okStatus();
-  if (s.materials) materials_.update(*mesh_, lighting_, stats_);
-  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
-  return paths_[pathIndex(s.path)]->draw(frame);
+  if (groups_.empty() || !s.materials) {
+    if (s.materials) materials_.update(*mesh_, lighting_, stats_);
+    FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
+    return paths_[pathIndex(s.path)]->draw(frame);
+  }
+  // One draw of the path per palette, each over its part of the mesh; depth testing across
+  // the parts keeps the nearest surface, whichever part is drawn first.
+  for (auto& g : groups_) {
+    g->materials.update(g->mesh, lighting_, stats_);
+    const GpuPalette* palette = g->palette ? g->palette : palette_.get();
+    FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
+    if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
+  }
+  return okStatus();
 }
 
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {

@@ -9,6 +9,9 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <string>
+#include <vector>
 #include <memory>
 
 #include "renderer/core/camera.h"
@@ -48,6 +51,13 @@ class Renderer {
   void setMesh(const Mesh* mesh);
   // Uploads the palette; on failure the current one stays in place.
   [[nodiscard]] Status setPalette(const Palette& palette);
+  // Per-material palettes: faces of the material named `material` are drawn with `palette`
+  // (every path; matched with its own matcher), the rest with the main one. Kept across
+  // meshes, applied to whichever has a material of that name; on failure nothing changes.
+  [[nodiscard]] Status setMaterialPalette(const std::string& material, const Palette& palette);
+  void clearMaterialPalette(const std::string& material);
+  // The materials that have their own palette and whether the current mesh has them.
+  std::vector<std::string> materialPaletteNames() const;
 
   // The OpenGL-like lighting state (Lightfv, Materialfv, ...).
   LightingState& lighting() { return lighting_; }
@@ -86,6 +96,21 @@ class Renderer {
   void clearViewport(const glm::ivec4& viewport);
   Status drawPath(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
                   gl::MeshOutput output);
+  // Splits the mesh into one part per palette when materials have palettes of their own.
+  void rebuildPaletteGroups();
+
+  // A part of the mesh drawn with one palette (per-material palettes), with its own GPU
+  // copy, appearance and per-triangle cache. Empty when no material has its own palette.
+  struct PaletteGroup {
+    const GpuPalette* palette = nullptr;  // null: the main palette
+    Mesh mesh;
+    GpuMesh gpuMesh;
+    GpuMaterials materials;
+    TriangleShadingCache triangles;
+  };
+  std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
+  std::vector<std::unique_ptr<PaletteGroup>> groups_;
+  bool groupsDirty_ = false;
 
   LightingState lighting_;
   FrameStats stats_;

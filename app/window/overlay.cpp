@@ -58,6 +58,25 @@ void drawOverlay(Viewer& v) {
   }
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);
+  // Per-material palettes: a palette for each of the model's materials.
+  if (s.settings.materials && s.mesh && !s.mesh->materials.empty() && ImGui::CollapsingHeader("Material palettes")) {
+    const std::size_t shown = std::min<std::size_t>(s.mesh->materials.size(), 64);
+    for (std::size_t i = 0; i < shown; ++i) {
+      const MeshMaterial& m = s.mesh->materials[i];
+      ImGui::PushID(static_cast<int>(i));
+      const auto it = s.materialPalettes.find(m.name);
+      const std::string current = it == s.materialPalettes.end() ? "(main palette)" : std::filesystem::path(it->second).stem().string();
+      if (ImGui::BeginCombo(m.name.c_str(), current.c_str())) {
+        if (ImGui::Selectable("(main palette)", it == s.materialPalettes.end())) (void)s.setMaterialPalette(m.name, "", *v.renderer);
+        for (const std::string& p : s.palettes)
+          if (ImGui::Selectable(std::filesystem::path(p).stem().string().c_str(), it != s.materialPalettes.end() && it->second == p))
+            (void)s.setMaterialPalette(m.name, p, *v.renderer);
+        ImGui::EndCombo();
+      }
+      ImGui::PopID();
+    }
+    if (shown < s.mesh->materials.size()) ImGui::Text("... and %zu more materials", s.mesh->materials.size() - shown);
+  }
   if (ImGui::CollapsingHeader("Lines and tone")) {
     LineSettings& ls = s.settings.lines;
     ImGui::Checkbox("silhouettes", &ls.silhouettes);

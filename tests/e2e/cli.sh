@@ -39,5 +39,21 @@ expect 2 "unknown option" -- "$viewer" --frobnicate
 expect 1 "model that fails to load" -- "$viewer" --headless "$tmp/points.obj"
 expect 1 "palette that fails to load" -- "$viewer" --headless --palette "$tmp/bad.palette"
 
+# Materials: --info reports them; --materials and --palette-for are checked; a palette for a
+# material the model does not have is a note naming its materials, not a failure.
+printf 'newmtl red\nKd 1 0 0\nmap_Kd gone.png\nnewmtl blue\nKd 0 0 1\n' > "$tmp/two.mtl"
+printf 'mtllib two.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 3 4\n' > "$tmp/two.obj"
+expect 0 "--info with materials" -- "$viewer" --info "$tmp/two.obj"
+grep -q '"materials":2' "$tmp/out" || { echo "FAIL: --info materials: $(cat "$tmp/out")"; fail=1; }
+grep -q '"textures_missing":\[".*gone.png"\]' "$tmp/out" || { echo "FAIL: --info missing texture: $(cat "$tmp/out")"; fail=1; }
+expect 2 "bad --materials" -- "$viewer" --headless --materials maybe
+expect 2 "--palette-for without =" -- "$viewer" --headless --palette-for red
+expect 2 "--palette-for missing file" -- "$viewer" --headless --palette-for "red=$tmp/nope.palette"
+expect 0 "--palette-for" -- "$viewer" --headless "$tmp/two.obj" --size 64x64 --palette-for "blue=$src/palettes/wood/wood.palette" \
+  --palette-for "green=$src/palettes/wood/wood.palette" --screenshot "$tmp/two.png"
+grep -q "no material named 'green'.*(its materials: red, blue)" "$tmp/err" || { echo "FAIL: unknown material note: $(cat "$tmp/err")"; fail=1; }
+[ -s "$tmp/two.png" ] || { echo "FAIL: no screenshot with --palette-for"; fail=1; }
+expect 0 "--materials off" -- "$viewer" --headless "$tmp/two.obj" --size 64x64 --materials off
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail

@@ -206,6 +206,67 @@ TEST_F(Fixture, AssimpSpiderRendersWithItsTextures) {
   EXPECT_LT(off, 100) << "grey spider with materials off";
 }
 
+// A palette of n solid entries from `colour` (light) to a tenth of it.
+Palette solidRamp(int n, glm::vec3 colour, const std::string& name) {
+  Palette p;
+  p.name = name;
+  for (int i = 0; i < n; ++i) {
+    PaletteEntry e;
+    const glm::vec3 c = colour * (1.0f - 0.9f * float(i) / float(n - 1));
+    e.image = ImageRGBA8{4, 4, std::vector<std::uint8_t>(64, 255)};
+    for (std::size_t k = 0; k < 64; k += 4)
+      for (int ch = 0; ch < 3; ++ch) e.image.pixels[k + std::size_t(ch)] = std::uint8_t(std::lround(c[ch] * 255.0f));
+    e.average = c;
+    e.intensity = c.r + c.g + c.b;
+    p.entries.push_back(std::move(e));
+  }
+  return p;
+}
+
+// Per-material palettes: the sphere's "red" material is drawn with a blue palette, the rest
+// with the main, red one, in every path.
+TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
+  test::TempDir dir;
+  const Mesh mesh = twoMaterialSphere(dir);
+  r->setMesh(&mesh);
+  ASSERT_TRUE(r->setPalette(solidRamp(8, glm::vec3(1.0f, 0.2f, 0.1f), "reds")));
+  ASSERT_TRUE(r->setMaterialPalette("red", solidRamp(8, glm::vec3(0.1f, 0.3f, 1.0f), "blues")));
+  const int w = 200, h = 160;
+  const CameraMatrices cam = testCamera(float(w) / h, 0.0f, 0.0f);  // looking down -z: x < 0 on the left
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+  const glm::mat4 toObject = glm::inverse(cam.view);
+  for (const PathInfo& info : renderPaths()) {
+    if (!info.userSelectable || !info.usesPalette) continue;
+    RenderSettings s;
+    s.path = info.id;
+    s.match = MatchMode::Intensity;
+    const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
+    int blueOnRed = 0, redOnBlue = 0, right = 0, wrong = 0;
+    for (int y = 0; y < h; y += 2)
+      for (int x = 0; x < w; x += 2) {
+        const std::size_t g = (std::size_t(y) * w + x) * 4;
+        if (pos.pixels[g + 3] == 0.0f) continue;
+        const float ox = glm::vec3(toObject * glm::vec4(pos.pixels[g], pos.pixels[g + 1], pos.pixels[g + 2], 1.0f)).x;
+        if (std::fabs(ox) < 0.05f) continue;
+        const std::uint8_t* p = &img.pixels[(std::size_t(y) * w + x) * 4];
+        const bool blue = p[2] > p[0];
+        if (ox < 0.0f) (blue ? right : wrong)++, blueOnRed += blue;
+        else (blue ? wrong : right)++, redOnBlue += !blue;
+      }
+    EXPECT_GT(blueOnRed, 200) << info.name;
+    EXPECT_GT(redOnBlue, 200) << info.name;
+    EXPECT_LE(wrong, (right + wrong) / 100) << info.name << ": " << wrong << " pixels show the other material's palette";
+  }
+  // Without it, the whole sphere is red.
+  r->clearMaterialPalette("red");
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
+  int blue = 0;
+  for (std::size_t i = 0; i < img.pixels.size(); i += 4) blue += img.pixels[i + 2] > img.pixels[i] + 20;
+  EXPECT_EQ(blue, 0);
+}
+
 // The original interface: a Materialfv between RenderTriangle calls applies to the triangles
 // that follow, as in OpenGL. Two camera-facing triangles, red then blue.
 TEST_F(Fixture, ImmediateMaterialfvAppliesToTheTrianglesThatFollow) {
