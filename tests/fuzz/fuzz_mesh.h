@@ -27,6 +27,20 @@ inline void checkMesh(Result<Mesh>& m) {
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) __builtin_trap();
     if (glm::length(p) > 1.0f + 1e-3f) __builtin_trap();
   }
+  // The appearance (OBJ): every array empty or one entry per vertex / triangle, every index in
+  // range, texture coordinates finite.
+  const std::size_t nf = m->triangleCount();
+  if (!m->colours.empty() && m->colours.size() != nv) __builtin_trap();
+  if (!m->texcoords.empty() && m->texcoords.size() != nv) __builtin_trap();
+  if (!m->sourceVertex.empty() && m->sourceVertex.size() != nv) __builtin_trap();
+  if (!m->faceMaterials.empty() && m->faceMaterials.size() != nf) __builtin_trap();
+  if (!m->faceTints.empty() && m->faceTints.size() != nf) __builtin_trap();
+  for (std::uint16_t f : m->faceMaterials)
+    if (f >= m->materials.size()) __builtin_trap();
+  for (const glm::vec2& t : m->texcoords)
+    if (!std::isfinite(t.x) || !std::isfinite(t.y)) __builtin_trap();
+  for (const glm::vec3& t : m->faceTints)
+    if (!(t.r >= 0.0f && t.r <= 1.0f && t.g >= 0.0f && t.g <= 1.0f && t.b >= 0.0f && t.b <= 1.0f)) __builtin_trap();
 }
 
 }  // namespace npr::fuzz
