@@ -39,9 +39,9 @@ void GpuMaterials::upload(const Mesh& mesh) {
   if (!mesh.hasAppearance()) return;
   active_ = true;
   tableBuffer_ = gl::createBuffer();
-  const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1) * 4;
-  gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::vec4), GL_DYNAMIC_DRAW);
-  table_ = bufferTexture(tableBuffer_, GL_RGBA32F, gl::TextureUnit::MaterialTable);
+  const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1);
+  gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::uvec4), GL_DYNAMIC_DRAW);
+  table_ = bufferTexture(tableBuffer_, GL_RGBA32UI, gl::TextureUnit::MaterialTable);
 
   if (mesh.textures.empty() || mesh.texcoords.empty()) return;
   int side = 1;
@@ -83,20 +83,24 @@ void GpuMaterials::upload(const Mesh& mesh) {
 void GpuMaterials::update(const Mesh& mesh, const LightingState& lighting, FrameStats& stats) {
   if (!active_) return;
   const std::vector<Material> mats = glMaterials(mesh, lighting);
-  std::vector<glm::vec4> rows;
-  rows.reserve(mats.size() * 4);
+  auto colour = [](const glm::vec4& c) {
+    const glm::uvec3 q(glm::clamp(glm::vec3(c), 0.0f, 1.0f) * 255.0f + 0.5f);
+    return q.r | (q.g << 8) | (q.b << 16);
+  };
+  std::vector<glm::uvec4> rows;
+  rows.reserve(mats.size());
   for (std::size_t i = 0; i < mats.size(); ++i) {
     const Material& m = mats[i];
     const int map = i < mesh.materials.size() && hasMaps() ? mesh.materials[i].diffuseMap : -1;
-    rows.push_back(glm::vec4(glm::vec3(m.ambient), float(map)));
-    rows.push_back(glm::vec4(glm::vec3(m.diffuse), 0.0f));
-    rows.push_back(glm::vec4(glm::vec3(m.specular), m.shininess));
-    rows.push_back(glm::vec4(glm::vec3(m.emission), 0.0f));
+    // Shininess (0..128) in 1/512ths: 16 bits split over the diffuse and specular words.
+    const std::uint32_t shininess = static_cast<std::uint32_t>(std::clamp(m.shininess, 0.0f, 127.99f) * 512.0f + 0.5f);
+    rows.push_back(glm::uvec4(colour(m.ambient) | (static_cast<std::uint32_t>(map + 1) << 24), colour(m.diffuse) | ((shininess >> 8) << 24),
+                              colour(m.specular) | ((shininess & 255u) << 24), colour(m.emission)));
   }
   if (rows == rows_) return;
   rows_ = std::move(rows);
   glBindBuffer(GL_TEXTURE_BUFFER, tableBuffer_.id());
-  glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(rows_.size() * sizeof(glm::vec4)), rows_.data());
+  glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(rows_.size() * sizeof(glm::uvec4)), rows_.data());
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
   ++stats.bufferUploads;
 }

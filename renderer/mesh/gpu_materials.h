@@ -1,6 +1,6 @@
 // A mesh's own appearance on the GPU, for the GPU-lit paths with --materials on: the material
-// table (a buffer texture, one row of 4 RGBA32F texels per material; see loadMaterial in
-// shaders/lighting.glsl), the diffuse maps as one mipmapped texture array (every map resized
+// table (a buffer texture, one RGBA32UI texel per material, colours in 8 bits a channel; see
+// shaders/material.glsl), the diffuse maps as one mipmapped texture array (every map resized
 // to a common size). The mesh's vertex colours, texture coordinates, material indices and
 // map averages are vertex attributes (gpu_mesh.h).
 #pragma once
@@ -36,7 +36,7 @@ class GpuMaterials {
   gl::Buffer tableBuffer_;
   gl::Texture table_, maps_;
   int mapSide_ = 0;
-  std::vector<glm::vec4> rows_;
+  std::vector<glm::uvec4> rows_;
 };
 
 }  // namespace npr
