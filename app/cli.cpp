@@ -39,6 +39,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
   std::vector<std::string> paletteFor;
+  std::string animate;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -59,6 +60,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
+  app.add_option("--animate", animate,
+                 "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
+  app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
   app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
@@ -90,6 +94,17 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!materials.empty()) {
     if (materials != "on" && materials != "off") return {std::nullopt, fail("--materials must be on or off, got '" + materials + "'")};
     o.materials = materials == "on";
+  }
+  if (!animate.empty()) {
+    Result<CameraAnimation> a = parseCameraAnimation(animate);
+    if (!a) return {std::nullopt, fail(a.error())};
+    o.animation = *a;
+  }
+  if (!o.saveFrames.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.saveFrames, ec);
+    if (ec || !std::filesystem::is_directory(o.saveFrames))
+      return {std::nullopt, fail("--save-frames: cannot create the folder '" + o.saveFrames + "'" + (ec ? " (" + ec.message() + ")" : ""))};
   }
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/camera_animation.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
 #include "renderer/paths/path_table.h"
@@ -35,6 +36,8 @@ struct Options {
   bool gouraud = false;
   bool materials = true;
   std::vector<std::pair<std::string, std::string>> materialPalettes;  // --palette-for MATERIAL=FILE
+  CameraAnimation animation;  // --animate
+  std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
   bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;

@@ -36,7 +36,12 @@ int runHeadless(const Options& o) {
       return reportFailure("render failed: " + s.error());
     finishGpuWork();
     ms.push_back(msSince(t0));
+    if (!o.saveFrames.empty()) {
+      if (Status s = writeImage(frameFileName(o.saveFrames, f), target->readRGBA8()); !s) return reportFailure(s.error());
+    }
+    stepCameraAnimation(state.camera, o.animation, o.size);
   }
+  if (!o.saveFrames.empty()) std::fprintf(stderr, "npr-viewer: %d frame(s) written to %s\n", frames, o.saveFrames.c_str());
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
                state.mesh->report.file.c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),

@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cstdio>
 
+#include "app/camera_animation.h"
 #include "app/startup.h"
+#include "renderer/core/image_io.h"
 #include "app/window/input_callbacks.h"
 #include "app/window/overlay.h"
 #include "app/window/viewer.h"
@@ -62,6 +64,11 @@ int runWindowViewer(const Options& o) {
     } else {
       drawView(v.state.settings, {0, 0, fb.x, fb.y});
     }
+    // The frames written are the scene alone, without the overlay.
+    if (!o.saveFrames.empty()) {
+      const Status st = writeImage(frameFileName(o.saveFrames, frame), readFramebufferRGBA8(0, 0, fb.x, fb.y));
+      if (!st) v.state.note(st.error());
+    }
     imgui.draw();
 
     const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
@@ -70,6 +77,7 @@ int runWindowViewer(const Options& o) {
       takeScreenshot(v, v.screenshotDir / ("npr-screenshot-" + std::to_string(++v.screenshotCount) + ".png"));
     }
     if (lastFrame && !o.screenshot.empty()) takeScreenshot(v, o.screenshot);
+    stepCameraAnimation(v.state.camera, o.animation, fb);
     glfwSwapBuffers(w);
     const auto now = std::chrono::steady_clock::now();
     v.timer.add(std::chrono::duration<double>(now - start).count(), std::chrono::duration<double, std::milli>(now - last).count());

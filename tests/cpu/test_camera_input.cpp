@@ -1,11 +1,13 @@
-// CPU tier: the orbit camera's maths and the key bindings, without a window.
+// CPU tier: the orbit camera's maths, the key bindings and the scripted camera motion (--animate), without a window.
 #include <gtest/gtest.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <cmath>
+#include <filesystem>
 
+#include "app/camera_animation.h"
 #include "app/window/frame_timer.h"
 #include "app/window/input_map.h"
 #include "renderer/core/camera.h"
@@ -115,6 +117,54 @@ TEST(FrameTimer, MeanAndWorstOverTheLastSecond) {
   EXPECT_DOUBLE_EQ(t.worst1PercentMs(), 50.0);
   t.add(20.0, 5.0);  // older samples leave the window
   EXPECT_DOUBLE_EQ(t.meanMs(), 5.0);
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+TEST(CameraAnimation, ParsesEachMotionAndRefusesBadSpecs) {
+  auto a = parseCameraAnimation("orbit:1.5,pan:3,-2,zoom:1.01");
+  ASSERT_TRUE(a) << a.error();
+  EXPECT_EQ(a->orbitDegrees, 1.5f);
+  EXPECT_EQ(a->panPixels, glm::vec2(3.0f, -2.0f));
+  EXPECT_EQ(a->zoom, 1.01f);
+  EXPECT_TRUE(a->active());
+  auto p = parseCameraAnimation("pan:-4,0");
+  ASSERT_TRUE(p) << p.error();
+  EXPECT_EQ(p->panPixels, glm::vec2(-4.0f, 0.0f));
+  for (const char* bad : {"", "orbit", "orbit:x", "orbit:nan", "orbit:100", "pan:3", "pan:1,2,3", "zoom:0", "zoom:3",
+                          "orbit:1,orbit:2", "spin:1"})
+    EXPECT_FALSE(parseCameraAnimation(bad)) << bad;
+}
+
+// The model's centre, projected, moves by exactly the pan's pixels each frame; orbit turns the
+// yaw; zoom magnifies by the factor.
+TEST(CameraAnimation, StepsMoveTheCameraByTheScript) {
+  const glm::ivec2 size(400, 300);
+  auto centreOnScreen = [&](const OrbitCamera& c) {
+    const CameraMatrices m = c.matrices(float(size.x) / float(size.y));
+    const glm::vec4 p = m.projection * m.view * glm::vec4(0, 0, 0, 1);
+    return glm::vec2((p.x / p.w + 1.0f) * 0.5f * float(size.x), (1.0f - p.y / p.w) * 0.5f * float(size.y));  // y down
+  };
+  OrbitCamera cam(30.0f, 20.0f, 3.0f);
+  cam.frame(1.0f);
+  const glm::vec2 before = centreOnScreen(cam);
+  const CameraAnimation pan = *parseCameraAnimation("pan:5,-3");
+  for (int i = 0; i < 4; ++i) stepCameraAnimation(cam, pan, size);
+  const glm::vec2 moved = centreOnScreen(cam) - before;
+  EXPECT_NEAR(moved.x, 20.0f, 0.05f);
+  EXPECT_NEAR(moved.y, -12.0f, 0.05f);
+
+  OrbitCamera orbit(30.0f, 20.0f, 3.0f);
+  stepCameraAnimation(orbit, *parseCameraAnimation("orbit:2"), size);
+  EXPECT_NEAR(orbit.yaw(), 32.0f, 1e-4f);
+  const float d = orbit.distance();
+  stepCameraAnimation(orbit, *parseCameraAnimation("zoom:1.25"), size);
+  EXPECT_NEAR(orbit.distance(), d / 1.25f, 1e-4f);
+  EXPECT_EQ(frameFileName("out", 7), (std::filesystem::path("out") / "frame-0007.png").string());
 }
 
 }  // namespace

@@ -55,5 +55,12 @@ grep -q "no material named 'green'.*(its materials: red, blue)" "$tmp/err" || { 
 [ -s "$tmp/two.png" ] || { echo "FAIL: no screenshot with --palette-for"; fail=1; }
 expect 0 "--materials off" -- "$viewer" --headless "$tmp/two.obj" --size 64x64 --materials off
 
+# Scripted camera motion and frame sequences: one file per frame, and consecutive frames differ.
+expect 0 "--animate --save-frames" -- "$viewer" --headless --size 96x72 --frames 3 --animate orbit:5,zoom:1.05 --save-frames "$tmp/frames"
+[ "$(ls "$tmp/frames" | tr '\n' ' ')" = "frame-0000.png frame-0001.png frame-0002.png " ] || { echo "FAIL: frames written: $(ls "$tmp/frames")"; fail=1; }
+cmp -s "$tmp/frames/frame-0000.png" "$tmp/frames/frame-0001.png" && { echo "FAIL: --animate did not move the camera"; fail=1; }
+expect 2 "bad --animate" -- "$viewer" --headless --animate orbit:fast
+expect 2 "--save-frames into a file" -- "$viewer" --headless --save-frames "$tmp/two.obj"
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail
