@@ -39,7 +39,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
   std::vector<std::string> paletteFor;
-  std::string animate;
+  std::string animate, pattern;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -60,6 +60,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
+  app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat)");
+  app.add_flag("--pattern-no-rotation", o.patternNoRotation, "Anchored patterns move and scale with the object but stay upright");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
@@ -94,6 +96,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!materials.empty()) {
     if (materials != "on" && materials != "off") return {std::nullopt, fail("--materials must be on or off, got '" + materials + "'")};
     o.materials = materials == "on";
+  }
+  if (!pattern.empty()) {
+    o.pattern = parsePatternSpace(pattern);
+    if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen or anchored")};
   }
   if (!animate.empty()) {
     Result<CameraAnimation> a = parseCameraAnimation(animate);

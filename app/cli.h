@@ -12,6 +12,7 @@
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
 #include "renderer/paths/path_table.h"
+#include "renderer/render_settings.h"
 
 namespace npr {
 
@@ -37,6 +38,8 @@ struct Options {
   bool materials = true;
   std::vector<std::pair<std::string, std::string>> materialPalettes;  // --palette-for MATERIAL=FILE
   CameraAnimation animation;  // --animate
+  std::optional<PatternSpace> pattern;  // --pattern
+  bool patternNoRotation = false;       // --pattern-no-rotation
   std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

@@ -21,6 +21,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;
   state.settings.referenceGouraud = o.gouraud;
   state.settings.materials = o.materials;
+  if (o.pattern) state.settings.pattern = *o.pattern;
+  state.settings.patternFollowsRotation = !o.patternNoRotation;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

@@ -2,6 +2,8 @@
 // settings live here; the test and benchmark outputs are their own calls on the Renderer.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -27,6 +29,16 @@ struct LineSettings {
   bool any() const { return objectSpace() || imageSpace; }
 };
 
+// Where the palette's pattern lives: fixed to the screen (the original), or anchored to the
+// object's motion while staying flat (patterns/pattern_tracker.h).
+enum class PatternSpace { Screen, Anchored };
+inline const char* patternSpaceName(PatternSpace p) { return p == PatternSpace::Anchored ? "anchored" : "screen"; }
+inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
+  if (s == "screen") return PatternSpace::Screen;
+  if (s == "anchored") return PatternSpace::Anchored;
+  return std::nullopt;
+}
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -35,7 +47,9 @@ struct RenderSettings {
   // Light each face with the model's own materials, vertex colours and texture maps (when it
   // has any); off: the lighting state's one material, as the original.
   bool materials = true;
-  bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
+  bool referenceGouraud = false;
+  PatternSpace pattern = PatternSpace::Screen;
+  bool patternFollowsRotation = true;  // anchored: turn the pattern with the object (else only move and scale)  // `reference` path: per-vertex instead of per-pixel lighting
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

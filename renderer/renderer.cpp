@@ -29,6 +29,7 @@ void Renderer::setMesh(const Mesh* mesh) {
   materials_.clear();
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
+  patterns_.setMesh(mesh_);
   groups_.clear();
   groupsDirty_ = true;
   if (!mesh_) return;
@@ -112,6 +113,18 @@ Status Renderer::prepare(const RenderSettings& s) {
   return okStatus();
 }
 
+void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  std::optional<PatternFrame> frame;
+  if (s.pattern == PatternSpace::Anchored && mesh_) {
+    const PatternFit& fit = patterns_.update(camera, viewport, s.patternFollowsRotation);
+    stats_.cpuPatternMs = fit.ms;
+    stats_.patternSamples = fit.samplesUsed;
+    frame = patterns_.frame();
+  }
+  if (palette_) palette_->setPatternFrame(frame);
+  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame);
+}
+
 void Renderer::clearViewport(const glm::ivec4& viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
@@ -145,6 +158,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
+  preparePattern(camera, s, viewport);
   timer_.begin();
   clearViewport(viewport);
   Status result = drawBackground(palette_.get(), programs_, emptyVao_, stats_);

@@ -29,6 +29,7 @@
 #include "renderer/palette/palette.h"
 #include "renderer/passes/geometry_pass.h"
 #include "renderer/paths/path_table.h"
+#include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
 
@@ -74,6 +75,11 @@ class Renderer {
                                        const glm::ivec4& viewport);
   // The mesh's interpolated eye-space position or normal (read from a float target).
   [[nodiscard]] Status renderGeometry(const CameraMatrices& camera, GeometryOutput output, const glm::ivec4& viewport);
+
+  // The anchored pattern starts again from the screen's frame at the next frame: call on view
+  // jumps (frame the model, reset the view). A new mesh does it too.
+  void resetPattern() { patterns_.reset(); }
+  const PatternTracker& patternTracker() const { return patterns_; }
 
   // Reads finished GPU timer queries into stats().gpuMs (render() does this first). Call it
   // after the GPU work is finished to attribute a frame's time to that frame.
@@ -124,6 +130,9 @@ class Renderer {
   gl::VertexArray emptyVao_;  // full-screen passes make their vertices in the shader
   std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
   LinePass lines_;
+  PatternTracker patterns_;
+  // Gives every palette this frame's pattern frame (anchored) or none (screen).
+  void preparePattern(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
   ImageEdgesPass imageEdges_;
 };
 

@@ -1,5 +1,8 @@
 // Screen-space palette sampling and matching. A palette texel maps to a pixel and tiles
-// from the window's corner, so patterns stay flat to the camera whatever the depth.
+// from the window's corner, so patterns stay flat to the camera whatever the depth. With
+// PATTERN_ANCHORED the pixel is first mapped through the pattern's frame, which follows the
+// object (renderer/patterns/pattern_tracker.h), and two octaves of the pattern are
+// cross-faded so marks keep their size on screen under zoom.
 // Layers are stored precomposited over the background where that is exact
 // (PALETTE_PRECOMPOSITED), so the common case is one fetch per pixel.
 // Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
@@ -25,15 +28,29 @@ vec3 backgroundColour() { return uBackgroundColour; }
 #endif
 #endif
 
-vec3 paletteColour(int entry) {
-  ivec2 p = ivec2(gl_FragCoord.xy) % LAYER_SIZE(entry);
-  vec4 t = texelFetch(uPalette, ivec3(p, entry), 0);
+vec3 composite(vec4 t) {
 #ifdef PALETTE_PRECOMPOSITED
   return t.rgb;
 #else
   return mix(backgroundColour(), t.rgb, t.a);
 #endif
 }
+
+#ifdef PATTERN_ANCHORED
+#include "pattern.glsl"
+uniform vec3 uEntryMean[PALETTE_SIZE];  // each entry's mean colour: the cross-fade keeps it
+vec3 paletteColour(int entry) {
+  vec2 u = patternCoordinate();
+  vec3 coarse = composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
+  vec3 fine = composite(texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, LAYER_SIZE(entry)), entry), 0));
+  return crossFadeOctaves(coarse, fine, uEntryMean[entry]);
+}
+#else
+vec3 paletteColour(int entry) {
+  ivec2 p = ivec2(gl_FragCoord.xy) % LAYER_SIZE(entry);
+  return composite(texelFetch(uPalette, ivec3(p, entry), 0));
+}
+#endif
 
 #ifdef MATCH_COLORS
 uniform usampler3D uLut3D;  // nearest and second-nearest entry at each grid point

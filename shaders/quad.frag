@@ -22,7 +22,18 @@ void main() {
 uniform sampler2DArray uPalette;
 uniform ivec2 uLayerSize;
 uniform int uLayer;
+#ifdef PATTERN_ANCHORED
+#include "pattern.glsl"
+uniform vec3 uLayerMean;
+void main() {
+  vec2 u = patternCoordinate();
+  vec4 coarse = texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0);
+  vec4 fine = texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, uLayerSize), uLayer), 0);
+  fragColor = vec4(crossFadeOctaves(coarse.rgb, fine.rgb, uLayerMean), mix(coarse.a, fine.a, uPatternOctave));
+}
+#else
 void main() {
   fragColor = texelFetch(uPalette, ivec3(ivec2(gl_FragCoord.xy) % uLayerSize, uLayer), 0);
 }
+#endif
 #endif

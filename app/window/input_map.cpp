@@ -28,6 +28,7 @@ std::optional<KeyAction> actionForKey(int key, int mods) {
     case GLFW_KEY_R: return KeyAction{Action::ResetView};
     case GLFW_KEY_L: return KeyAction{Action::ToggleLightFollow};
     case GLFW_KEY_V: return KeyAction{Action::ToggleVsync};
+    case GLFW_KEY_T: return KeyAction{Action::CyclePattern};
     case GLFW_KEY_A: return KeyAction{Action::MoveLight, 0};
     case GLFW_KEY_D: return KeyAction{Action::MoveLight, 1};
     case GLFW_KEY_S: return KeyAction{Action::MoveLight, 2};
@@ -51,6 +52,7 @@ const std::vector<Binding>& keyBindings() {
       {"+ / -", "IntensityRangeScale up / down"},
       {"P", "cycle render path"},
       {"B", "split view: reference beside the chosen path"},
+      {"T", "pattern space: screen / anchored to the object"},
       {"F / R", "frame the model / reset the view"},
       {"V", "vsync on/off"},
       {"F1 or Tab", "overlay"},

@@ -20,6 +20,8 @@ void drawOverlay(Viewer& v) {
   ImGui::Text("%.2f ms mean, %.2f ms 1%% worst, %.0f fps", v.timer.meanMs(), v.timer.worst1PercentMs(), v.timer.fps());
   const auto& h = v.timer.history();
   if (!h.empty()) ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms", 0.0f, 50.0f, ImVec2(300, 50));
+  if (s.settings.pattern == PatternSpace::Anchored)
+    ImGui::Text("pattern fit: %.3f ms, %d samples", st.cpuPatternMs, st.patternSamples);
   ImGui::Text("CPU: shading %.2f ms, frame %.2f ms   GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
               st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
   ImGui::Text("%zu triangles, %d non-empty buckets", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets);
@@ -55,6 +57,15 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("scissor buckets", &s.settings.stencilScissor);
     ImGui::SameLine();
     ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
+  }
+  int pattern = static_cast<int>(s.settings.pattern);
+  if (ImGui::Combo("pattern (T)", &pattern, "screen\0anchored\0")) {
+    s.settings.pattern = static_cast<PatternSpace>(pattern);
+    v.renderer->resetPattern();
+  }
+  if (s.settings.pattern == PatternSpace::Anchored) {
+    ImGui::SameLine();
+    ImGui::Checkbox("follow rotation", &s.settings.patternFollowsRotation);
   }
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);

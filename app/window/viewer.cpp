@@ -57,8 +57,12 @@ void applyAction(Viewer& v, const KeyAction& a) {
       break;
     }
     case Action::ToggleSplit: s.splitView = !s.splitView; break;
-    case Action::FrameModel: s.camera.frame(s.mesh ? s.mesh->radius : 1.0f); break;
-    case Action::ResetView: s.camera.reset(); break;
+    case Action::FrameModel: s.camera.frame(s.mesh ? s.mesh->radius : 1.0f); r.resetPattern(); break;
+    case Action::CyclePattern:
+      s.settings.pattern = s.settings.pattern == PatternSpace::Screen ? PatternSpace::Anchored : PatternSpace::Screen;
+      r.resetPattern();
+      break;
+    case Action::ResetView: s.camera.reset(); r.resetPattern(); break;
     case Action::ToggleLightFollow: {
       // Keep the light where it is on screen when switching: convert its position.
       const CameraMatrices cam = s.camera.matrices(v.aspect());

@@ -16,6 +16,8 @@ struct FrameStats {
   int drawCalls = 0;
   int lines = 0;               // feature lines drawn
   double cpuLinesMs = 0.0;     // silhouette extraction
+  double cpuPatternMs = 0.0;   // the anchored pattern's similarity fit
+  int patternSamples = 0;      // samples the fit used (visible in both frames)
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

@@ -14,6 +14,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
+  if (p.anchored) d.push_back("PATTERN_ANCHORED");
   d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
   d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));
   return d;
@@ -52,6 +53,7 @@ struct SourceOf {
     ProgramSource s{"fullscreen.vert", "quad.frag", {}};
     s.defines.push_back(q.kind == QuadProgram::Kind::Background ? "QUAD_BACKGROUND" : "QUAD_LAYER");
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
+    if (q.anchored) s.defines.push_back("PATTERN_ANCHORED");
     return s;
   }
   ProgramSource operator()(const LineProgram& l) const {
@@ -86,7 +88,7 @@ bool operator<(const MeshProgram& a, const MeshProgram& b) {
 }
 
 bool operator<(const QuadProgram& a, const QuadProgram& b) {
-  return std::tie(a.kind, a.backgroundImage) < std::tie(b.kind, b.backgroundImage);
+  return std::tie(a.kind, a.backgroundImage, a.anchored) < std::tie(b.kind, b.backgroundImage, b.anchored);
 }
 
 bool operator<(const LineProgram& a, const LineProgram& b) {

@@ -23,7 +23,8 @@ struct PaletteVariant {
   bool precomposited = false;    // layers stored over the background: one fetch per pixel
   bool backgroundImage = false;  // only meaningful when not precomposited
   MatchMode match = MatchMode::Intensity;
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match); }
+  bool anchored = false;         // the pattern follows the object (pattern.glsl)
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, anchored); }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
@@ -56,6 +57,7 @@ struct MeshProgram {
 struct QuadProgram {
   enum class Kind : std::uint8_t { Background, Layer } kind = Kind::Background;
   bool backgroundImage = false;
+  bool anchored = false;  // layer quads: the pattern follows the object
 };
 
 // lines.vert + lines.frag: feature lines as screen-space quads.

@@ -1,6 +1,8 @@
 // Palette upload, lookup tables and binding (see gpu_palette.h).
 #include "renderer/palette/gpu_palette.h"
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -123,7 +125,23 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.precomposited = precomposited_;
   v.backgroundImage = backgroundImage_;
   v.match = mode;
+  v.anchored = anchored();
   return v;
+}
+
+void GpuPalette::bindPattern(gl::ShaderProgram& prog, int layer) const {
+  if (!pattern_) return;
+  // The frame's scale split into octaves: the coarse layer's marks are 2^octave pixels wide.
+  const float l = std::log2(pattern_->scale);
+  const float octave = l - std::floor(l);
+  const float markSize = std::exp2(octave);
+  const float c = std::cos(pattern_->rotation), s = std::sin(pattern_->rotation);
+  // u = R(-rotation) (x - origin) / markSize, column-major.
+  prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
+  prog.set("uPatternOrigin", pattern_->translation);
+  prog.set("uPatternOctave", octave);
+  if (layer >= 0) prog.set("uLayerMean", averages_[static_cast<std::size_t>(layer)]);
+  else prog.setArray("uEntryMean", averages_.data(), size());
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
@@ -146,6 +164,7 @@ void GpuPalette::bind(gl::ShaderProgram& prog) const {
   if (sizesDiffer_) prog.setArray("uLayerSize", layerSizes_.data(), size());
   else prog.set("uLayerSize0", layerSizes_[0]);
   bindBackground(prog);
+  bindPattern(prog);
   if (matcher_ && matcher_->mode() == MatchMode::Colors) {
     gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, lut3D_.id());
     prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));

@@ -17,6 +17,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_matcher.h"
+#include "renderer/patterns/pattern_tracker.h"
 
 namespace npr {
 
@@ -38,7 +39,14 @@ class GpuPalette {
   // Unique across palettes and rebuilds: what per-triangle results computed with it are keyed by.
   unsigned matcherId() const { return matcherId_; }
 
+  // The anchored pattern's frame for the frames drawn next; nullopt: screen space.
+  void setPatternFrame(const std::optional<PatternFrame>& frame) { pattern_ = frame; }
+  bool anchored() const { return pattern_.has_value(); }
+
   gl::PaletteVariant variant(MatchMode mode) const;
+  // The anchored pattern's uniforms (pattern.glsl), when anchored; `layer` >= 0 also sets the
+  // layer quad's mean colour.
+  void bindPattern(gl::ShaderProgram& program, int layer = -1) const;
   // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms.
   void bind(gl::ShaderProgram& program) const;
   // Only the layer array (the stencil path's layer quad).
@@ -66,6 +74,7 @@ class GpuPalette {
   } matcherKey_;
   unsigned matcherId_ = 0;
   gl::Texture lutIndex_, lutBlend_, lut3D_;
+  std::optional<PatternFrame> pattern_;
 };
 
 }  // namespace npr

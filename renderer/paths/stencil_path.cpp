@@ -17,7 +17,7 @@ Status StencilPath::draw(FrameContext& f) {
   if (!mask) return Error{mask.error()};
   Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
   if (!bgQuad) return Error{bgQuad.error()};
-  Result<gl::ShaderProgram*> layerQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false});
+  Result<gl::ShaderProgram*> layerQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->anchored()});
   if (!layerQuad) return Error{layerQuad.error()};
 
   (*mask)->use();
@@ -58,6 +58,7 @@ Status StencilPath::draw(FrameContext& f) {
     (*layerQuad)->use();
     (*layerQuad)->set("uLayer", k);
     (*layerQuad)->set("uLayerSize", f.palette->layerSize(k));
+    f.palette->bindPattern(**layerQuad, k);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     f.stats.drawCalls += 2;
   }

@@ -1,0 +1,153 @@
+// GL tier: pattern spaces. A camera-facing square panned by whole pixels: with `anchored` its
+// pattern moves with it, pixel for pixel; with `screen` the pattern stays where it was on the
+// screen. Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
+// similarity fit recovers known motions; a view jump restarts the frame.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "gl/gl_test_env.h"
+#include "renderer/patterns/pattern_tracker.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::renderImage;
+using test::sourcePath;
+using Fixture = test::RendererFixture;
+
+Mesh square() {
+  Mesh m;
+  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  finalizeMesh(m);
+  return m;
+}
+
+// Fraction of pixels covered in both images (not background) where b at (x + dx, y + dy)
+// equals a at (x, y).
+double agreement(const ImageRGBA8& a, const ImageRGBA8& b, const ImageRGBA32F& coverA, int dx, int dy, int* compared) {
+  int same = 0, n = 0;
+  for (int y = 10; y < a.height - 10; ++y)
+    for (int x = 10; x < a.width - 10; ++x) {
+      const int bx = x + dx, by = y + dy;
+      if (bx < 0 || by < 0 || bx >= b.width || by >= b.height) continue;
+      const std::size_t ia = (std::size_t(y) * a.width + x) * 4, ib = (std::size_t(by) * b.width + bx) * 4;
+      if (coverA.pixels[ia + 3] < 0.5f) continue;
+      ++n;
+      same += a.pixels[ia] == b.pixels[ib] && a.pixels[ia + 1] == b.pixels[ib + 1] && a.pixels[ia + 2] == b.pixels[ib + 2];
+    }
+  *compared = n;
+  return n ? double(same) / n : 0.0;
+}
+
+TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
+  const Mesh sq = square();
+  r->setMesh(&sq);
+  auto pal = loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"));
+  ASSERT_TRUE(pal) << pal.error();
+  ASSERT_TRUE(r->setPalette(*pal));
+  const float head[4] = {0, 0, 1, 0};
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, head));
+  const int w = 240, h = 200, dx = 7, dy = 4;
+  for (PatternSpace space : {PatternSpace::Anchored, PatternSpace::Screen}) {
+    OrbitCamera cam(0.0f, 0.0f, 3.0f);
+    cam.frame(1.4f);  // the square's corners fit
+    RenderSettings s;
+    s.path = RenderPath::Pixel;
+    s.pattern = space;
+    r->resetPattern();
+    const ImageRGBA8 first = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
+    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(float(w) / h), GeometryOutput::EyeNormal, w, h);
+    // Two frames of panning, each by (dx, dy) pixels (y down).
+    ImageRGBA8 last;
+    for (int f = 0; f < 2; ++f) {
+      cam.pan(glm::vec2(2.0f * dx / w, -2.0f * dy / h), float(w) / h);
+      last = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
+    }
+    int n = 0;
+    const double moved = agreement(first, last, cover, 2 * dx, 2 * dy, &n);
+    int m = 0;
+    const double stayed = agreement(first, last, cover, 0, 0, &m);
+    ASSERT_GT(n, 5000);
+    if (space == PatternSpace::Anchored) {
+      EXPECT_GT(moved, 0.97) << "anchored: the pattern moved with the square (" << n << " pixels)";
+      EXPECT_LT(stayed, 0.8) << "anchored: the pattern did not stay on the screen";
+      EXPECT_GE(r->stats().patternSamples, 100);
+    } else {
+      EXPECT_GT(stayed, 0.97) << "screen: the pattern stayed where it was on the screen";
+      EXPECT_LT(moved, 0.8);
+    }
+  }
+}
+
+TEST(PatternFit, RecoversAKnownSimilarity) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> u(-200.0f, 200.0f);
+  std::vector<glm::vec2> from, to;
+  std::vector<float> w;
+  const float theta = 0.3f, scale = 1.25f;
+  const glm::vec2 t(12.5f, -7.0f);
+  for (int i = 0; i < 100; ++i) {
+    const glm::vec2 p(u(rng), u(rng));
+    from.push_back(p);
+    to.push_back(scale * glm::vec2(std::cos(theta) * p.x - std::sin(theta) * p.y, std::sin(theta) * p.x + std::cos(theta) * p.y) + t);
+    w.push_back(1.0f + float(i % 3));
+  }
+  const PatternFrame f = fitSimilarity(from, to, w, true);
+  EXPECT_NEAR(f.rotation, theta, 1e-4f);
+  EXPECT_NEAR(f.scale, scale, 1e-4f);
+  EXPECT_NEAR(f.translation.x, t.x, 1e-2f);
+  EXPECT_NEAR(f.translation.y, t.y, 1e-2f);
+  // Back and forth: reciprocal scales, so the pattern does not drift in size.
+  const PatternFrame back = fitSimilarity(to, from, w, true);
+  EXPECT_NEAR(back.scale * f.scale, 1.0f, 1e-5f);
+  // Rotation following off: upright.
+  EXPECT_EQ(fitSimilarity(from, to, w, false).rotation, 0.0f);
+}
+
+TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
+  const Mesh sphere = test::icosphere(3);
+  r->setMesh(&sphere);
+  auto pal = loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"));
+  ASSERT_TRUE(pal);
+  for (int entries : {1, 256}) {
+    Palette p;
+    p.name = "n" + std::to_string(entries);
+    for (int i = 0; i < entries; ++i) {
+      PaletteEntry e = pal->entries[std::size_t(i) % pal->entries.size()];
+      e.intensity = 3.0f * (1.0f - float(i) / float(std::max(1, entries - 1)));
+      e.average = glm::vec3(e.intensity / 3.0f);
+      p.entries.push_back(std::move(e));
+    }
+    ASSERT_TRUE(r->setPalette(p));
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(1.0f);
+    for (const PathInfo& info : renderPaths()) {
+      RenderSettings s;
+      s.path = info.id;
+      s.pattern = PatternSpace::Anchored;
+      for (int f = 0; f < 3; ++f) {
+        cam.orbit(2.0f, 0.0f);
+        cam.zoom(0.8f, glm::vec2(0.0f), 1.0f);  // through an octave change
+        const ImageRGBA8 img = renderImage(*r, cam.matrices(1.0f), s, 96, 96);
+        ASSERT_EQ(img.pixels.size(), 96u * 96u * 4u) << info.name;
+      }
+    }
+  }
+  // The zooms above scaled the frame; a reset restarts it from the screen's.
+  r->resetPattern();
+  RenderSettings s;
+  s.pattern = PatternSpace::Anchored;
+  OrbitCamera cam(30.0f, 20.0f, 3.0f);
+  cam.frame(1.0f);
+  (void)renderImage(*r, cam.matrices(1.0f), s, 96, 96);
+  EXPECT_EQ(r->patternTracker().frame().scale, 1.0f);
+  EXPECT_TRUE(r->patternTracker().lastFit().reset);
+}
+
+}  // namespace
+}  // namespace npr
