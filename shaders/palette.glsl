@@ -38,12 +38,11 @@ vec3 composite(vec4 t) {
 
 #ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
-uniform vec3 uEntryMean[PALETTE_SIZE];  // each entry's mean colour: the cross-fade keeps it
 vec3 paletteColour(int entry) {
   vec2 u = patternCoordinate();
   vec3 coarse = composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
   vec3 fine = composite(texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, LAYER_SIZE(entry)), entry), 0));
-  return crossFadeOctaves(coarse, fine, uEntryMean[entry]);
+  return mix(coarse, fine, fineWeight(u));
 }
 #else
 vec3 paletteColour(int entry) {

@@ -24,12 +24,11 @@ uniform ivec2 uLayerSize;
 uniform int uLayer;
 #ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
-uniform vec3 uLayerMean;
 void main() {
   vec2 u = patternCoordinate();
   vec4 coarse = texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0);
   vec4 fine = texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, uLayerSize), uLayer), 0);
-  fragColor = vec4(crossFadeOctaves(coarse.rgb, fine.rgb, uLayerMean), mix(coarse.a, fine.a, uPatternOctave));
+  fragColor = mix(coarse, fine, fineWeight(u));
 }
 #else
 void main() {

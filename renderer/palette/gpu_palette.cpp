@@ -129,7 +129,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   return v;
 }
 
-void GpuPalette::bindPattern(gl::ShaderProgram& prog, int layer) const {
+void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   if (!pattern_) return;
   // The frame's scale split into octaves: the coarse layer's marks are 2^octave pixels wide.
   const float l = std::log2(pattern_->scale);
@@ -140,8 +140,6 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog, int layer) const {
   prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
   prog.set("uPatternOrigin", pattern_->translation);
   prog.set("uPatternOctave", octave);
-  if (layer >= 0) prog.set("uLayerMean", averages_[static_cast<std::size_t>(layer)]);
-  else prog.setArray("uEntryMean", averages_.data(), size());
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {

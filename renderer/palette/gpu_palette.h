@@ -44,9 +44,8 @@ class GpuPalette {
   bool anchored() const { return pattern_.has_value(); }
 
   gl::PaletteVariant variant(MatchMode mode) const;
-  // The anchored pattern's uniforms (pattern.glsl), when anchored; `layer` >= 0 also sets the
-  // layer quad's mean colour.
-  void bindPattern(gl::ShaderProgram& program, int layer = -1) const;
+  // The anchored pattern's uniforms (pattern.glsl), when anchored.
+  void bindPattern(gl::ShaderProgram& program) const;
   // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms.
   void bind(gl::ShaderProgram& program) const;
   // Only the layer array (the stencil path's layer quad).

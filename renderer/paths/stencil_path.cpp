@@ -26,6 +26,7 @@ Status StencilPath::draw(FrameContext& f) {
   f.palette->bindBackground(**bgQuad);
   (*layerQuad)->use();
   f.palette->bindLayers(**layerQuad);
+  f.palette->bindPattern(**layerQuad);
 
   const glm::ivec4& vp = f.viewport;
   for (int k = 0; k < f.palette->size(); ++k) {
@@ -58,7 +59,6 @@ Status StencilPath::draw(FrameContext& f) {
     (*layerQuad)->use();
     (*layerQuad)->set("uLayer", k);
     (*layerQuad)->set("uLayerSize", f.palette->layerSize(k));
-    f.palette->bindPattern(**layerQuad, k);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     f.stats.drawCalls += 2;
   }

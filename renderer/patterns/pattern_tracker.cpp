@@ -84,9 +84,10 @@ const PatternFit& PatternTracker::update(const CameraMatrices& camera, const glm
     if (!(c.w > 1e-6f)) continue;
     const glm::vec3 ndc = glm::vec3(c) / c.w;
     if (std::fabs(ndc.x) > 1.0f || std::fabs(ndc.y) > 1.0f || std::fabs(ndc.z) > 1.0f) continue;
-    // Facing the camera (front or back: a thin shell shows both); occlusion is not tested.
+    // Front-facing (the far side of a closed model is hidden and moves with more parallax);
+    // occlusion by other parts is not tested.
     current[i] = glm::vec2(viewport.x, viewport.y) + (glm::vec2(ndc) * 0.5f + 0.5f) * glm::vec2(viewport.z, viewport.w);
-    visible[i] = std::fabs(glm::dot(s.normal, glm::normalize(eye - s.position))) > 0.05f;
+    visible[i] = glm::dot(s.normal, glm::normalize(eye - s.position)) > 0.05f;
   }
   std::vector<glm::vec2> from, to;
   std::vector<float> weights;
@@ -95,10 +96,11 @@ const PatternFit& PatternTracker::update(const CameraMatrices& camera, const glm
       if (!visible[i] || !previousVisible_[i]) continue;
       from.push_back(previous_[i]);
       to.push_back(current[i]);
-      // Larger on screen, more weight: the sample's area, foreshortened, over its depth squared.
+      // Weighted by the pixels it stands for: its area, foreshortened (n.v), over distance squared.
       const glm::vec3 toEye = eye - samples_[i].position;
       const float d2 = glm::dot(toEye, toEye);
-      weights.push_back(samples_[i].area * std::fabs(glm::dot(samples_[i].normal, toEye)) / std::max(d2 * std::sqrt(d2), 1e-12f));
+      const float nv = glm::dot(samples_[i].normal, toEye) / std::sqrt(std::max(d2, 1e-24f));
+      weights.push_back(samples_[i].area * nv / std::max(d2, 1e-12f));
     }
   }
   fit_.samplesUsed = static_cast<int>(from.size());

@@ -7,6 +7,8 @@
 #   tests/fuzz/run.sh 600 obj ply     # ten minutes each, two harnesses
 # New inputs that reached new code stay in build-fuzz/corpus/NAME: merge them into the
 # committed corpus with `build-fuzz/tests/fuzz/fuzz_NAME -merge=1 tests/fuzz/corpus/NAME build-fuzz/corpus/NAME`.
+# FUZZ_TIMEOUT (seconds, default 10) is per input and counts wall time: raise it when the
+# machine is busy with other work, or a starved harness reports a false timeout.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 seconds="${1:-30}"; shift || true
@@ -28,7 +30,7 @@ run_one() {
   # rss_limit: no input may grow the process past 2 GiB; timeout: none may take 10 s.
   ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1 \
     LSAN_OPTIONS=suppressions=tests/fuzz/lsan.supp:fast_unwind_on_malloc=$unwind \
-    "$build/tests/fuzz/fuzz_$name" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    "$build/tests/fuzz/fuzz_$name" "${dict[@]}" -max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" >"$build/fuzz_$name.log" 2>&1
   local status=$?
   local execs cov
