@@ -39,10 +39,8 @@ vec3 composite(vec4 t) {
 #ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
 vec3 paletteColour(int entry) {
-  vec2 u = patternCoordinate();
-  vec3 coarse = composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
-  vec3 fine = composite(texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, LAYER_SIZE(entry)), entry), 0));
-  return mix(coarse, fine, fineWeight(u));
+  vec2 u = dissolvedCoordinate(patternCoordinate());
+  return composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
 }
 #else
 vec3 paletteColour(int entry) {

@@ -25,10 +25,8 @@ uniform int uLayer;
 #ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
 void main() {
-  vec2 u = patternCoordinate();
-  vec4 coarse = texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0);
-  vec4 fine = texelFetch(uPalette, ivec3(wrapTexel(2.0 * u, uLayerSize), uLayer), 0);
-  fragColor = mix(coarse, fine, fineWeight(u));
+  vec2 u = dissolvedCoordinate(patternCoordinate());
+  fragColor = texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0);
 }
 #else
 void main() {

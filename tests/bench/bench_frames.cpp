@@ -48,13 +48,14 @@ struct PathRow {
   RenderPath path;
   bool skipEmpty = true, scissor = true;  // the stencil path's two savings
   bool materials = false;                 // the mesh's own materials (--materials)
+  bool anchored = false;                  // the anchored pattern space (--patterns)
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
-  bool quick = false, materials = false;
+  bool quick = false, materials = false, patterns = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -62,13 +63,15 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--materials")) materials = true;
+    else if (!std::strcmp(argv[i], "--patterns")) patterns = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials]\n(the reference and lit-textured floors always run; --materials draws the "
-                           "torus with 16 materials, 4 textured, each path with materials off and on)\n");
+                           "[--paths p1,p2,...] [--materials] [--patterns]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
+                           "the anchored pattern space; the camera orbits 1 degree per frame)\n");
       return 2;
     }
   }
@@ -134,6 +137,12 @@ int main(int argc, char** argv) {
         on.materials = true;
         paths.push_back(on);
       }
+      if (patterns && pathInfo(p.path).usesPalette) {
+        PathRow on = p;
+        on.label += "+anchored";
+        on.anchored = true;
+        paths.push_back(on);
+      }
     }
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
@@ -146,7 +155,7 @@ int main(int argc, char** argv) {
       if (!r.setPalette(paletteOf(*crosshatch, n))) return 1;
       // The light moves before every frame, so each per-triangle path redoes its CPU work (as
       // while a user drags the light) rather than reusing what the path before it computed.
-      const CameraMatrices matrices = cam.matrices(float(w) / float(h));
+      CameraMatrices matrices = cam.matrices(float(w) / float(h));
       int call = 0, failed = 0;
       const std::vector<FrameTiming> t = timeInterleaved(r, *target, paths.size(), frames, 2, [&](size_t p, int) {
         RenderSettings s;
@@ -155,6 +164,12 @@ int main(int argc, char** argv) {
         s.stencilScissor = paths[p].scissor;
         s.stencilSkipEmpty = paths[p].skipEmpty;
         s.materials = paths[p].materials;
+        s.pattern = paths[p].anchored ? PatternSpace::Anchored : PatternSpace::Screen;
+        if (patterns) {  // a moving camera, so the anchored rows fit real motion
+          OrbitCamera moving = cam;
+          moving.orbit(0.05f * float(call), 0.0f);
+          matrices = moving.matrices(float(w) / float(h));
+        }
         const float angle = 0.6f + 0.002f * float(call++);
         const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
         r.lighting().setModelView(matrices.view);
