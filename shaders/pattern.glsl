@@ -16,9 +16,11 @@ vec2 patternCoordinate() {
   return vec2(uPatternMatrix.x * d.x + uPatternMatrix.z * d.y, uPatternMatrix.y * d.x + uPatternMatrix.w * d.y);
 }
 
+// Tiling in float (llvmpipe divides integers one lane at a time); min() guards the rounding
+// at the tile's far edge.
 ivec2 wrapTexel(vec2 u, ivec2 size) {
-  ivec2 p = ivec2(floor(u)) % size;
-  return p + size * ivec2(lessThan(p, ivec2(0)));
+  vec2 s = vec2(size);
+  return min(ivec2(u - s * floor(u / s)), size - 1);
 }
 
 // The two octaves are dissolved, not averaged: each pixel shows one or the other, the fine

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "support/pattern_motion.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/lighting/lighting_state.h"
@@ -34,16 +35,6 @@ struct Script {
 };
 
 float luminance(const std::uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f; }
-
-glm::vec2 applyFrame(const PatternFrame& f, const glm::vec2& u) {
-  const float c = std::cos(f.rotation), s = std::sin(f.rotation);
-  return f.scale * glm::vec2(c * u.x - s * u.y, s * u.x + c * u.y) + f.translation;
-}
-glm::vec2 inverseFrame(const PatternFrame& f, const glm::vec2& x) {
-  const glm::vec2 d = (x - f.translation) / f.scale;
-  const float c = std::cos(-f.rotation), s = std::sin(-f.rotation);
-  return glm::vec2(c * d.x - s * d.y, s * d.x + c * d.y);
-}
 
 struct Run {
   double slide = 0.0;   // mean over frames of the mean over covered pixels
@@ -111,24 +102,8 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     const PatternFrame frameNext = space == PatternSpace::Anchored ? r.patternTracker().frame() : PatternFrame{};
     // That render advanced the tracker: undo by replaying from a reset is not possible, so the
     // loop below renders `next` again as frame f + 1 (a zero-motion fit, frame unchanged).
-    const glm::mat4 toObject = glm::inverse(m.view);
-    const glm::mat4 mvpNext = next.projection * next.view;
-    double slide = 0.0;
-    int n = 0;
-    for (int y = 0; y < h; y += 2)
-      for (int x = 0; x < w; x += 2) {
-        const std::size_t i = std::size_t(y) * w + x;  // rows top first
-        if (geo.pixels[i * 4 + 3] == 0.0f) continue;
-        const glm::vec3 eyePos(geo.pixels[i * 4], geo.pixels[i * 4 + 1], geo.pixels[i * 4 + 2]);
-        const glm::vec4 c = mvpNext * (toObject * glm::vec4(eyePos, 1.0f));
-        if (!(c.w > 0.0f)) continue;
-        const glm::vec2 px(x + 0.5f, float(h - y) - 0.5f);  // window coordinates, y up
-        const glm::vec2 surfaceNext = (glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(w, h);
-        const glm::vec2 patternNext = space == PatternSpace::Anchored ? applyFrame(frameNext, inverseFrame(frameNow, px)) : px;
-        slide += glm::length(surfaceNext - patternNext);
-        ++n;
-      }
-    out.slide += n ? slide / n : 0.0;
+    out.slide += test::patternSlide(geo, m, next, space == PatternSpace::Anchored ? &frameNow : nullptr,
+                                    space == PatternSpace::Anchored ? &frameNext : nullptr);
   }
   out.slide /= frames;
   if (!fitMs.empty()) {
