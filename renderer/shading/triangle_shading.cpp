@@ -79,6 +79,49 @@ struct SimpleLighting {
   }
 };
 
+// One light at one triangle, for the specialised loops below: n.l times `diffuse` into
+// `scaled`, the highlight times `specular` into `unscaled` (the same variable when nothing
+// scales the material). Inlined into each loop, so what the caller keeps in registers stays
+// there.
+template <bool kSpecular, bool kPositional>
+inline void addLight(const glm::vec3& nrm, const glm::vec3& centroid, const glm::vec3& position, const glm::vec3& directionalHalf,
+                     bool point, const glm::vec3& view, const glm::vec3& diffuse, const glm::vec3& specular, const float* pow,
+                     glm::vec3& scaled, glm::vec3& unscaled) {
+  glm::vec3 vp = position, h = directionalHalf;
+  float ndl;
+  if (kPositional && point) {
+    const glm::vec3 d = position - centroid;
+    const float dist2 = glm::dot(d, d);
+    if (dist2 > 0.0f && dist2 <= std::numeric_limits<float>::max()) {
+      // Facing away needs no square root: the sign of n.d is the sign of n.vp.
+      const float nd = glm::dot(nrm, d);
+      if (nd <= 0.0f) return;
+      // One division per normalisation (glm's vector / scalar divides each component).
+      const float inv = 1.0f / std::sqrt(dist2);
+      vp = d * inv;
+      ndl = nd * inv;
+    } else {
+      // A light at the point has no direction: lit head-on, as the general model does.
+      vp = nrm;
+      ndl = glm::dot(nrm, nrm);
+    }
+  } else {
+    ndl = glm::dot(nrm, vp);
+  }
+  if (ndl <= 0.0f) return;
+  scaled += ndl * diffuse;
+  if (kSpecular) {
+    if (kPositional && point) {
+      h = vp + view;
+      const float len2 = glm::dot(h, h);
+      h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
+    }
+    const float t = lighting_detail::clamp01(glm::dot(nrm, h)) * float(SimpleLighting::kPowSteps);  // NaN: 0
+    const int k = static_cast<int>(t);
+    unscaled += (pow[k] + (t - float(k)) * (pow[k + 1] - pow[k])) * specular;
+  }
+}
+
 // The inner loop, specialised so that everything it reads stays in registers: a loop over
 // lights with run-time count and flags kept the lights in memory and the loop counter on the
 // stack (the byte stores could alias them), at about twice the cost per triangle.
@@ -100,42 +143,8 @@ void shadeSimpleLoop(const SimpleLighting& light, const PaletteMatcher::UnitLook
   for (size_t i = 0; i < n; ++i) {
     const glm::vec3 nrm = normals[i];
     glm::vec3 c = base;
-    for (int l = 0; l < count; ++l) {
-      glm::vec3 vp = pos[l], h = half[l];
-      float ndl;
-      if (kPositional && point[l]) {
-        const glm::vec3 d = pos[l] - centroids[i];
-        const float dist2 = glm::dot(d, d);
-        if (dist2 > 0.0f && dist2 <= std::numeric_limits<float>::max()) {
-          // Facing away needs no square root: the sign of n.d is the sign of n.vp.
-          const float nd = glm::dot(nrm, d);
-          if (nd <= 0.0f) continue;
-          // One division per normalisation (glm's vector / scalar divides each component).
-          const float inv = 1.0f / std::sqrt(dist2);
-          vp = d * inv;
-          ndl = nd * inv;
-        } else {
-          // A light at the point has no direction: lit head-on, as the general model does.
-          vp = nrm;
-          ndl = glm::dot(nrm, nrm);
-        }
-      } else {
-        ndl = glm::dot(nrm, vp);
-      }
-      if (ndl <= 0.0f) continue;
-      c += ndl * dif[l];
-      if (kSpecular) {
-        if (kPositional && point[l]) {
-          h = vp + view;
-          const float len2 = glm::dot(h, h);
-          h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
-        }
-        const float t = lighting_detail::clamp01(glm::dot(nrm, h)) * float(SimpleLighting::kPowSteps);  // NaN: 0
-        const int k = static_cast<int>(t);
-        const float s = pow[k] + (t - float(k)) * (pow[k + 1] - pow[k]);
-        c += s * spe[l];
-      }
-    }
+    for (int l = 0; l < count; ++l)
+      addLight<kSpecular, kPositional>(nrm, centroids[i], pos[l], half[l], point[l], view, dif[l], spe[l], pow, c, c);
     // NaN-safe clamp: with huge colours a sum can be inf - inf or inf x 0, and a NaN query
     // would index the lookup table out of bounds. NaN becomes 0, as in the general model.
     using lighting_detail::clamp01;
@@ -175,39 +184,9 @@ void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restr
     const int count = kLights > 0 ? kLights : L.count;
     const glm::vec3 nrm = normals[i];
     glm::vec3 sc = L.ambientBase, c = L.emission;
-    for (int l = 0; l < count; ++l) {
-      glm::vec3 vp = L.position[l], h = L.half[l];
-      float ndl;
-      if (kPositional && L.positional[l]) {
-        const glm::vec3 d = L.position[l] - centroids[i];
-        const float dist2 = glm::dot(d, d);
-        if (dist2 > 0.0f && dist2 <= std::numeric_limits<float>::max()) {
-          const float nd = glm::dot(nrm, d);
-          if (nd <= 0.0f) continue;
-          const float inv = 1.0f / std::sqrt(dist2);
-          vp = d * inv;
-          ndl = nd * inv;
-        } else {
-          vp = nrm;
-          ndl = glm::dot(nrm, nrm);
-        }
-      } else {
-        ndl = glm::dot(nrm, vp);
-      }
-      if (ndl <= 0.0f) continue;
-      sc += ndl * L.diffuse[l];
-      if (kSpecular) {
-        if (kPositional && L.positional[l]) {
-          h = vp + view;
-          const float len2 = glm::dot(h, h);
-          h *= len2 > 0.0f && len2 <= std::numeric_limits<float>::max() ? 1.0f / std::sqrt(len2) : 0.0f;
-        }
-        const float t = lighting_detail::clamp01(glm::dot(nrm, h)) * float(SimpleLighting::kPowSteps);
-        const int k = static_cast<int>(t);
-        const float* pow = L.powTable.data();
-        c += (pow[k] + (t - float(k)) * (pow[k + 1] - pow[k])) * L.specular[l];
-      }
-    }
+    for (int l = 0; l < count; ++l)
+      addLight<kSpecular, kPositional>(nrm, centroids[i], L.position[l], L.half[l], L.positional[l], view, L.diffuse[l], L.specular[l],
+                                       L.powTable.data(), sc, c);
     c += scale ? sc * (glm::vec3(scale[i]) * (1.0f / 255.0f)) : sc;
     using lighting_detail::clamp01;
     const int k = lookup(glm::vec3(clamp01(c.r), clamp01(c.g), clamp01(c.b)));

@@ -76,6 +76,12 @@ CameraMatrices testCamera(float aspect, float yaw, float pitch) {
 
 std::string sourcePath(const std::string& relative) { return std::string(NPR_SOURCE_DIR) + "/" + relative; }
 
+Palette shippedPalette(const std::string& name) {
+  auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
+  EXPECT_TRUE(p) << p.error();
+  return p ? std::move(*p) : Palette{};
+}
+
 }  // namespace npr::test
 
 #if defined(__SANITIZE_ADDRESS__)

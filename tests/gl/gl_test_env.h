@@ -37,5 +37,7 @@ struct RendererFixture : ::testing::Test {
 CameraMatrices testCamera(float aspect, float yaw = 30.0f, float pitch = 20.0f);
 
 std::string sourcePath(const std::string& relative);
+// A palette shipped in palettes/NAME/NAME.palette (a failed load fails the test).
+Palette shippedPalette(const std::string& name);
 
 }  // namespace npr::test

@@ -24,12 +24,6 @@ using test::sourcePath;
 using test::testCamera;
 using Fixture = test::RendererFixture;
 
-Palette shipped(const std::string& name) {
-  auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
-  EXPECT_TRUE(p) << p.error();
-  return p ? std::move(*p) : Palette{};
-}
-
 // An icosphere whose faces with x < 0 use material "red" and the others "blue", with a
 // glossy red and a dull blue (ambient = diffuse, as exporters write).
 Mesh twoMaterialSphere(const test::TempDir& dir) {
@@ -54,7 +48,7 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
   const Mesh mesh = twoMaterialSphere(dir);
   ASSERT_EQ(mesh.materials.size(), 3u);  // the default, red, blue
   r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
   const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
@@ -90,7 +84,7 @@ TEST_F(Fixture, StencilEqualsTriangleWithMaterials) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
   r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
   for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity}) {
@@ -116,7 +110,7 @@ TEST_F(Fixture, TwoMaterialsUnderOneLightPickDifferentEntriesInColorsMode) {
                                  "usemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3\n"));
   ASSERT_TRUE(mesh) << mesh.error();
   r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);
@@ -186,7 +180,7 @@ TEST_F(Fixture, AssimpSpiderRendersWithItsTextures) {
   EXPECT_EQ(mesh->report.textures_loaded.size(), 4u) << mesh->report.toJson();
   EXPECT_TRUE(mesh->report.textures_missing.empty());
   r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shipped("crosshatch")));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
   const CameraMatrices cam = testCamera(4.0f / 3.0f);
   RenderSettings s;
   s.path = RenderPath::Reference;
@@ -270,7 +264,7 @@ TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
 // The original interface: a Materialfv between RenderTriangle calls applies to the triangles
 // that follow, as in OpenGL. Two camera-facing triangles, red then blue.
 TEST_F(Fixture, ImmediateMaterialfvAppliesToTheTrianglesThatFollow) {
-  ASSERT_TRUE(r->setPalette(shipped("gooch")));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);

@@ -47,9 +47,7 @@ double agreement(const ImageRGBA8& a, const ImageRGBA8& b, const ImageRGBA32F& c
 TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
   const Mesh sq = square();
   r->setMesh(&sq);
-  auto pal = loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"));
-  ASSERT_TRUE(pal) << pal.error();
-  ASSERT_TRUE(r->setPalette(*pal));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
   const float head[4] = {0, 0, 1, 0};
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, head));
@@ -90,9 +88,7 @@ TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
 TEST_F(Fixture, AnchoredPatternSlidesAThirdOfTheScreensUnderOrbit) {
   const Mesh sphere = test::icosphere(4);
   r->setMesh(&sphere);
-  auto pal = loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"));
-  ASSERT_TRUE(pal);
-  ASSERT_TRUE(r->setPalette(*pal));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   double screenSlide = 0.0;
   for (PatternSpace space : {PatternSpace::Screen, PatternSpace::Anchored}) {
@@ -157,8 +153,8 @@ TEST(PatternFit, RecoversAKnownSimilarity) {
 TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
   const Mesh sphere = test::icosphere(3);
   r->setMesh(&sphere);
-  auto pal = loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"));
-  ASSERT_TRUE(pal);
+  const Palette crosshatch = test::shippedPalette("crosshatch");
+  const Palette* pal = &crosshatch;
   for (int entries : {1, 256}) {
     Palette p;
     p.name = "n" + std::to_string(entries);

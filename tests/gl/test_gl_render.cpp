@@ -26,14 +26,9 @@ namespace npr {
 namespace {
 
 using test::renderImage;
+using test::shippedPalette;
 using test::sourcePath;
 using test::testCamera;
-
-Palette shippedPalette(const std::string& name) {
-  auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
-  EXPECT_TRUE(p) << p.error();
-  return p ? std::move(*p) : Palette{};
-}
 
 // A palette of `n` solid grey entries from white to black (on a solid background).
 Palette greyRamp(int n) {
