@@ -10,6 +10,13 @@ gl::Buffer staticBuffer(const void* data, std::size_t bytes) {
   return b;
 }
 
+// Float attribute `location` from `buffer` (tightly packed), in the bound vertex array.
+void floatAttribute(GLuint location, const gl::Buffer& buffer, int components) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+  glEnableVertexAttribArray(location);
+  glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, components * static_cast<GLsizei>(sizeof(float)), nullptr);
+}
+
 }  // namespace
 
 void GpuMesh::clear() {
@@ -33,12 +40,8 @@ void GpuMesh::upload(const Mesh& mesh) {
   indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   vao_ = gl::createVertexArray();
   glBindVertexArray(vao_.id());
-  glBindBuffer(GL_ARRAY_BUFFER, positions_.id());
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, normals_.id());
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  floatAttribute(0, positions_, 3);
+  floatAttribute(1, normals_, 3);
   if (mesh.hasAppearance()) uploadAppearance(mesh);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBindVertexArray(0);
@@ -77,18 +80,12 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
       if (count[v] > 0.0f) mapAverage[v] = sum[v] / count[v];
   }
   mapAverages_ = staticBuffer(mapAverage.data(), nv * sizeof(glm::vec3));
-  glBindBuffer(GL_ARRAY_BUFFER, colours_.id());
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, texcoords_.id());
-  glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+  floatAttribute(2, colours_, 3);
+  floatAttribute(3, texcoords_, 2);
   glBindBuffer(GL_ARRAY_BUFFER, materials_.id());
   glEnableVertexAttribArray(4);
   glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
-  glBindBuffer(GL_ARRAY_BUFFER, mapAverages_.id());
-  glEnableVertexAttribArray(5);
-  glVertexAttribPointer(5, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+  floatAttribute(5, mapAverages_, 3);
 }
 
 void GpuMesh::drawAll() const {
