@@ -24,7 +24,7 @@ printf 'missing.png\n' > missing.palette
 printf '/dev/zero\n' > device.palette
 good_palettes=("$src"/palettes/*/*.palette)
 broken=(nofaces.obj broken.ply broken.off fifo.obj missing.palette device.palette)
-keys=(1 2 3 4 5 6 bracketleft bracketright m plus minus p b f r l w a s d q e)
+keys=(1 2 3 4 5 6 bracketleft bracketright m plus minus p b t f r l w a s d q e)
 # The overlay must be hidden whenever a check shoots: F1 (which always toggles) is pressed in
 # pairs, and H (help, which also shows the overlay) twice and then F1. Tab is left out: while
 # an overlay widget has the keyboard, Tab moves between widgets instead, as in every ImGui tool.
