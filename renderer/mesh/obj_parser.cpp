@@ -21,8 +21,10 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxMaterials = 65535;
-constexpr std::size_t kMaxTextures = 64;  // distinct texture maps, each at most kMaxTextureSide
-constexpr int kMaxTextureSide = 2048;
+// Distinct texture maps, each reduced while it is read to at most kMaxTextureSide a side (the
+// GPU array holds them at up to 1024 anyway): 64 x 4 MB at most, whatever the files declare.
+constexpr std::size_t kMaxTextures = 64;
+constexpr int kMaxTextureSide = 1024;
 
 Status checkText(const std::string& path, const std::string& data) {
   if (data.size() >= 2 && ((unsigned char)data[0] == 0xFF && (unsigned char)data[1] == 0xFE))

@@ -92,6 +92,19 @@ TEST(Materials, NamesWithSpacesAndBackslashes) {
   EXPECT_NEAR(m->faceTints[0].r, 200.0f / 255.0f, 1e-3f);
 }
 
+// Maps are reduced while they are read (what a hostile .mtl naming many huge images can cost
+// is bounded: 64 maps of at most 1024 a side).
+TEST(Materials, LargeMapsAreReducedWhileRead) {
+  TempDir d;
+  ASSERT_TRUE(writeImage((d.path() / "wide.png").string(), ImageRGBA8{1500, 6, std::vector<std::uint8_t>(1500 * 6 * 4, 128)}));
+  d.write("m.mtl", "newmtl a\nmap_Kd wide.png\n");
+  auto m = loadMesh(d.write("x.obj", std::string("mtllib m.mtl\n") + kQuad + "vt 0 0\nusemtl a\nf 1/1 2/1 3/1\n"));
+  ASSERT_TRUE(m) << m.error();
+  ASSERT_EQ(m->textures.size(), 1u);
+  EXPECT_LE(m->textures[0].image.width, 1024);
+  EXPECT_GE(m->textures[0].image.width, 512);
+}
+
 TEST(Materials, MissingAndBrokenFilesAreWarningsNamingFileAndLine) {
   TempDir d;
   d.write("broken.png", "not a png at all");
