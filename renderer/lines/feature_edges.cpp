@@ -4,37 +4,22 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "renderer/core/parallel.h"
+#include "renderer/mesh/weld.h"
 
 namespace npr {
 namespace {
-
-struct PositionKey {
-  std::uint32_t x, y, z;
-  bool operator==(const PositionKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-struct PositionHash {
-  size_t operator()(const PositionKey& k) const {
-    return (size_t(k.x) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.y) * 0xC2B2AE3D27D4EB4Full) ^ (size_t(k.z) * 0x165667B19E3779F9ull);
-  }
-};
-std::uint32_t bits(float f) {
-  if (f == 0.0f) f = 0.0f;  // -0 and +0 weld
-  std::uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return u;
-}
 
 struct FaceKey {
   std::uint32_t a, b, c;  // sorted
   bool operator==(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
 };
 struct FaceHash {
-  size_t operator()(const FaceKey& k) const { return PositionHash()(PositionKey{k.a, k.b, k.c}); }
+  size_t operator()(const FaceKey& k) const {
+    return (size_t(k.a) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.b) * 0xC2B2AE3D27D4EB4Full) ^ (size_t(k.c) * 0x165667B19E3779F9ull);
+  }
 };
 
 std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
@@ -44,16 +29,9 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
 }  // namespace
 
 FeatureEdges::FeatureEdges(const Mesh& m) {
-  // Weld vertices at identical positions.
-  std::unordered_map<PositionKey, std::uint32_t, PositionHash> ids;
-  ids.reserve(m.positions.size());
-  std::vector<std::uint32_t> remap(m.positions.size());
-  for (size_t i = 0; i < m.positions.size(); ++i) {
-    const glm::vec3& p = m.positions[i];
-    auto [it, inserted] = ids.emplace(PositionKey{bits(p.x), bits(p.y), bits(p.z)}, std::uint32_t(positions_.size()));
-    if (inserted) positions_.push_back(p);
-    remap[i] = it->second;
-  }
+  WeldedPositions weld = weldPositions(m.positions);
+  positions_ = std::move(weld.positions);
+  const std::vector<std::uint32_t>& remap = weld.remap;
   // Halfedge adjacency on the welded faces; doubled and degenerate faces dropped.
   TriMesh welded;
   welded.reserve(positions_.size(), m.triangleCount() * 3 / 2, m.triangleCount());

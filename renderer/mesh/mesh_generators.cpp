@@ -72,7 +72,57 @@ Mesh torus(int nu, int nv) {
   return m;
 }
 
+Mesh cylinder(int nu, int nv) {
+  Mesh m;
+  std::vector<glm::vec3> verts;
+  for (int i = 0; i <= nu; ++i)  // i = nu repeats i = 0's positions: the seam
+    for (int j = 0; j <= nv; ++j) {
+      const double u = 2 * M_PI * (i % nu) / nu;
+      verts.push_back(glm::vec3(float(0.5 * std::cos(u)), float(-0.75 + 1.5 * j / nv), float(-0.5 * std::sin(u))));
+    }
+  auto at = [&](int i, int j) { return i * (nv + 1) + j; };
+  std::vector<std::array<int, 3>> tris;
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      tris.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      tris.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  buildTriMesh(std::move(verts), std::move(tris), m);
+  m.report.file = "generated:cylinder";
+  finalizeMesh(m);
+  return m;
+}
+
+Mesh ellipsoid(int nu, int nv, const glm::vec3& radii) {
+  Mesh m;
+  std::vector<glm::vec3> verts{glm::vec3(0, radii.y, 0)};
+  for (int j = 1; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double u = 2 * M_PI * i / nu, v = M_PI * j / nv;
+      verts.push_back(glm::vec3(float(radii.x * std::sin(v) * std::cos(u)), float(radii.y * std::cos(v)),
+                                float(-radii.z * std::sin(v) * std::sin(u))));
+    }
+  verts.push_back(glm::vec3(0, -radii.y, 0));
+  const int south = int(verts.size()) - 1;
+  auto at = [&](int i, int j) { return 1 + (j - 1) * nu + (i % nu); };  // j in [1, nv)
+  std::vector<std::array<int, 3>> tris;
+  for (int i = 0; i < nu; ++i) {
+    tris.push_back({0, at(i, 1), at(i + 1, 1)});
+    for (int j = 1; j + 1 < nv; ++j) {
+      tris.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      tris.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+    tris.push_back({at(i, nv - 1), south, at(i + 1, nv - 1)});
+  }
+  buildTriMesh(std::move(verts), std::move(tris), m);
+  m.report.file = "generated:ellipsoid";
+  finalizeMesh(m);
+  return m;
+}
+
 std::optional<Mesh> generatedMesh(const std::string& name) {
+  if (name == "generated:cylinder") return cylinder(96, 48);
+  if (name == "generated:ellipsoid") return ellipsoid(128, 64, glm::vec3(1.0f, 0.7f, 0.45f));
   if (name == "generated:torus-871k") return torus(660, 660);
   if (name == "generated:torus-500k") return torus(500, 500);
   const std::string ico = "generated:icosphere-";

@@ -20,6 +20,7 @@
 
 #include "renderer/core/image.h"
 #include "renderer/core/result.h"
+#include "renderer/palette/palette_orientation.h"
 
 namespace npr {
 
@@ -34,6 +35,7 @@ struct PaletteEntry {
   ImageRGBA8 image;
   glm::vec3 average{0.0f};  // encoded colour of the texture composited over the background
   float intensity = 0.0f;   // sum of the average's channels, in [0, 3]
+  TextureOrientation orientation;  // its strokes' dominant direction (over the background colour)
 };
 
 struct Palette {

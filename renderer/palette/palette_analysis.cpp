@@ -86,7 +86,9 @@ std::string paletteReportJson(const Palette& p) {
     const auto& e = p.entries[i];
     o << (i ? "," : "") << "{\"path\":" << str(e.path) << ",\"width\":" << e.image.width << ",\"height\":" << e.image.height
       << ",\"average\":[" << num(e.average.r) << "," << num(e.average.g) << "," << num(e.average.b)
-      << "],\"intensity\":" << num(e.intensity) << "}";
+      << "],\"intensity\":" << num(e.intensity) << ",\"orientation_degrees\":" << num(e.orientation.degrees)
+      << ",\"orientation_strength\":" << num(e.orientation.strength) << ",\"oriented\":" << (e.orientation.oriented() ? "true" : "false")
+      << "}";
   }
   o << "],\"background\":[" << num(p.backgroundColour.r) << "," << num(p.backgroundColour.g) << "," << num(p.backgroundColour.b)
     << "],\"intensity_range\":[" << num(a.minIntensity) << "," << num(a.maxIntensity) << "],\"largest_gap\":" << num(a.largestGap)

@@ -168,6 +168,7 @@ Result<Palette> loadPalette(const std::string& path) {
     e.image = std::move(*img);
     e.average = compositeAverage(e.image, p.backgroundColour, p.backgroundImage ? &*p.backgroundImage : nullptr);
     e.intensity = e.average.r + e.average.g + e.average.b;
+    e.orientation = textureOrientation(e.image, p.backgroundColour);
     p.entries.push_back(std::move(e));
   }
   return p;

@@ -1,0 +1,255 @@
+// CPU tier: hatching orientation. Principal directions and the smoothed, combed direction field
+// against analytic principal directions on generated surfaces (cylinder, torus, ellipsoid);
+// the field on degenerate input; palette entries' stroke orientation on synthetic textures.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/mesh/mesh_builder.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "renderer/orientation/direction_field.h"
+#include "renderer/orientation/principal_curvature.h"
+#include "renderer/palette/palette_orientation.h"
+
+namespace npr {
+namespace {
+
+// Analytic principal directions at a point: e1 (largest |k|), e2, and |k1|, |k2|.
+struct Principal {
+  glm::vec3 e1, e2;
+  float k1, k2;
+};
+
+double degreesBetweenLines(const glm::vec3& a, const glm::vec3& b) {
+  const double c = std::min(1.0, std::fabs(double(glm::dot(glm::normalize(a), glm::normalize(b)))));
+  return std::acos(c) * 180.0 / M_PI;
+}
+
+// Angular error of a cross-field direction against principal directions (mod 90 degrees).
+double crossError(const glm::vec3& d, const Principal& p) {
+  return std::min(degreesBetweenLines(d, p.e1), degreesBetweenLines(d, p.e2));
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 1e9;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+template <class Analytic>
+double medianFieldError(const Mesh& m, Analytic analytic, std::size_t* counted = nullptr) {
+  const DirectionField f = computeDirectionField(m);
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    const Principal p = analytic(m.positions[i]);
+    if (!(p.k1 > 2.0f * p.k2)) continue;  // only where the surface is clearly curved one way
+    errors.push_back(f.directions[i] == glm::vec3(0.0f) ? 90.0 : crossError(f.directions[i], p));
+  }
+  if (counted) *counted = errors.size();
+  return median(errors);
+}
+
+Principal cylinderAt(const glm::vec3& p) {
+  const glm::vec3 around = glm::normalize(glm::vec3(p.z, 0.0f, -p.x));
+  return {around, glm::vec3(0, 1, 0), 2.0f, 0.0f};
+}
+
+// generated torus: axis y, centre circle radius R, tube radius r (mesh_generators.cpp)
+Principal torusAt(const glm::vec3& p) {
+  const float R = 1.0f / 1.35f, r = 0.35f / 1.35f;
+  const glm::vec3 radial = glm::normalize(glm::vec3(p.x, 0.0f, p.z));
+  const glm::vec3 toroidal = glm::vec3(-radial.z, 0.0f, radial.x);
+  const glm::vec3 o = p - R * radial;
+  const glm::vec3 poloidal = glm::normalize(glm::cross(toroidal, o));
+  const float cosv = glm::dot(glm::normalize(o), radial);
+  return {poloidal, toroidal, 1.0f / r, std::fabs(cosv / (R + r * cosv))};
+}
+
+// Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1: the shape operator is the Hessian of the implicit
+// function restricted to the tangent plane, over the gradient's length.
+Principal ellipsoidAt(const glm::vec3& p, const glm::vec3& radii) {
+  const glm::dvec3 r2 = glm::dvec3(radii) * glm::dvec3(radii);
+  const glm::dvec3 g = 2.0 * glm::dvec3(p) / r2;
+  const glm::dvec3 h = 2.0 / r2;  // diagonal Hessian
+  const glm::dvec3 n = glm::normalize(g);
+  glm::vec3 t1f, t2f;
+  tangentBasis(glm::vec3(n), t1f, t2f);
+  const glm::dvec3 t1(t1f), t2(t2f);
+  const double L = glm::length(g);
+  const double A = glm::dot(t1, h * t1) / L, B = glm::dot(t1, h * t2) / L, C = glm::dot(t2, h * t2) / L;
+  const double mean = 0.5 * (A + C), half = std::sqrt(0.25 * (A - C) * (A - C) + B * B);
+  const double angle = 0.5 * std::atan2(2.0 * B, A - C);  // both eigenvalues are positive here
+  const glm::dvec3 e1 = std::cos(angle) * t1 + std::sin(angle) * t2;
+  return {glm::vec3(e1), glm::vec3(glm::cross(n, e1)), float(mean + half), float(mean - half)};
+}
+
+TEST(PrincipalCurvature, CylinderCurvesOneWayAroundItsAxis) {
+  const Mesh m = cylinder(96, 48);
+  const PrincipalCurvatures pc = estimatePrincipalCurvatures(m);
+  EXPECT_EQ(pc.weld.positions.size(), 96u * 49u);  // the seam's copies welded
+  std::vector<double> k1, k2, err;
+  for (std::size_t v = 0; v < pc.weld.positions.size(); ++v) {
+    const glm::vec3 p = pc.weld.positions[v];
+    if (std::fabs(p.y) > 0.7f) continue;  // the boundary rows have half a neighbourhood
+    k1.push_back(std::fabs(pc.kMax[v]));
+    k2.push_back(std::fabs(pc.kMin[v]));
+    err.push_back(degreesBetweenLines(pc.maxDirection[v], cylinderAt(p).e1));
+  }
+  EXPECT_NEAR(median(k1), 2.0, 0.05);  // radius 0.5
+  EXPECT_LT(median(k2), 0.05);
+  EXPECT_LT(median(err), 1.0);
+}
+
+TEST(DirectionField, FollowsPrincipalDirectionsOnACylinder) {
+  std::size_t n = 0;
+  const double e = medianFieldError(cylinder(96, 48), cylinderAt, &n);
+  EXPECT_GT(n, 4000u);
+  EXPECT_LE(e, 3.0);
+}
+
+TEST(DirectionField, FollowsPrincipalDirectionsOnATorus) {
+  std::size_t n = 0;
+  const double e = medianFieldError(torus(160, 80), torusAt, &n);
+  EXPECT_GT(n, 10000u);  // all but the inner rim
+  EXPECT_LE(e, 3.0);
+}
+
+TEST(DirectionField, FollowsPrincipalDirectionsOnAnEllipsoid) {
+  const glm::vec3 radii(1.0f, 0.7f, 0.45f);
+  std::size_t n = 0;
+  const double e = medianFieldError(ellipsoid(160, 80, radii), [&](const glm::vec3& p) { return ellipsoidAt(p, radii); }, &n);
+  EXPECT_GT(n, 1000u);
+  EXPECT_LE(e, 3.0);
+}
+
+TEST(DirectionField, CombedSoNeighboursAgreeOnACylinder) {
+  // Combing picks one of the four directions per vertex so that neighbours agree: along every
+  // edge of the cylinder the two directions are nearly parallel (not opposite, not crossed).
+  const Mesh m = cylinder(96, 48);
+  const DirectionField f = computeDirectionField(m);
+  std::size_t bad = 0;
+  for (std::size_t t = 0; t < m.triangleCount(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 a = f.directions[m.indices[t * 3 + k]], b = f.directions[m.indices[t * 3 + (k + 1) % 3]];
+      if (glm::dot(a, b) < 0.9f) ++bad;
+    }
+  EXPECT_EQ(bad, 0u);
+  // ... and the strokes wrap around the form: the largest-curvature direction
+  std::size_t around = 0;
+  for (std::size_t i = 0; i < m.positions.size(); ++i)
+    if (degreesBetweenLines(f.directions[i], cylinderAt(m.positions[i]).e1) < 10.0) ++around;
+  EXPECT_GT(around, m.positions.size() * 95 / 100);
+}
+
+bool finiteUnitOrZero(const glm::vec3& d) {
+  if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z)) return false;
+  const float l = glm::length(d);
+  return l == 0.0f || std::fabs(l - 1.0f) < 1e-3f;
+}
+
+TEST(DirectionField, DegenerateInputGivesFiniteDirections) {
+  // A plane (no curvature anywhere), zero-area and repeated-corner triangles, an isolated
+  // vertex, duplicated vertices, a non-manifold fan of three faces on one edge, a lone triangle.
+  std::vector<glm::vec3> v;
+  std::vector<std::array<int, 3>> t;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) v.push_back(glm::vec3(i * 0.2f, j * 0.2f, 0.0f));
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      t.push_back({j * 6 + i, j * 6 + i + 1, (j + 1) * 6 + i + 1});
+      t.push_back({j * 6 + i, (j + 1) * 6 + i + 1, (j + 1) * 6 + i});
+    }
+  const int base = int(v.size());
+  v.insert(v.end(), {{2, 0, 0}, {3, 0, 0}, {4, 0, 0}});  // collinear: zero area
+  t.push_back({base, base + 1, base + 2});
+  v.push_back({9, 9, 9});  // isolated
+  const int dup = int(v.size());
+  v.insert(v.end(), {{0, 0, 0}, {0.2f, 0, 0}, {0.2f, 0.2f, 0}});  // a doubled face on duplicated vertices
+  t.push_back({dup, dup + 1, dup + 2});
+  const int fan = int(v.size());
+  v.insert(v.end(), {{5, 0, 0}, {5, 1, 0}, {6, 0, 0}, {5, 0, 1}, {4, 0, 0.5f}});
+  t.push_back({fan, fan + 1, fan + 2});
+  t.push_back({fan, fan + 1, fan + 3});
+  t.push_back({fan, fan + 1, fan + 4});
+  Mesh m;
+  buildTriMesh(v, t, m);
+  finalizeMesh(m);
+  const DirectionField f = computeDirectionField(m);
+  ASSERT_EQ(f.directions.size(), m.positions.size());
+  for (std::size_t i = 0; i < f.directions.size(); ++i) {
+    EXPECT_TRUE(finiteUnitOrZero(f.directions[i])) << "vertex " << i;
+    EXPECT_TRUE(std::isfinite(f.confidence[i]));
+  }
+  // The flat grid gets a calm field: every direction along one of the guide's quarter turns.
+  for (int i = 0; i < 36; ++i) {
+    const glm::vec3 d = f.directions[size_t(i)];
+    ASSERT_NE(d, glm::vec3(0.0f));
+    EXPECT_LT(std::min(degreesBetweenLines(d, {1, 0, 0}), degreesBetweenLines(d, {0, 1, 0})), 1.0) << "vertex " << i;
+  }
+
+  Mesh empty;
+  EXPECT_TRUE(computeDirectionField(empty).directions.empty());
+}
+
+// A tiling texture of parallel lines whose strokes run at `degrees` (screen convention: y up),
+// anti-aliased, period in texels; `second` adds a weaker family at degrees + 90.
+ImageRGBA8 lineTexture(float degrees, float period = 8.0f, float second = 0.0f) {
+  const int size = 128;
+  ImageRGBA8 img{size, size, std::vector<std::uint8_t>(size_t(size) * size * 4, 255)};
+  const double a = (degrees + 90.0) * M_PI / 180.0;  // the direction across the strokes
+  const double nx = std::cos(a), ny = std::sin(a);
+  for (int row = 0; row < size; ++row)
+    for (int x = 0; x < size; ++x) {
+      const double y = size - 1 - row;
+      const double across = x * nx + y * ny, along = -x * ny + y * nx;
+      double ink = 0.5 + 0.5 * std::cos(2 * M_PI * across / period);
+      ink = std::max(ink, second * (0.5 + 0.5 * std::cos(2 * M_PI * along / period)));
+      const auto g = std::uint8_t(std::lround(255.0 * (1.0 - ink)));
+      for (int c = 0; c < 3; ++c) img.pixels[(size_t(row) * size + x) * 4 + c] = g;
+    }
+  return img;
+}
+
+double angleDifference(double a, double b) {
+  const double d = std::fmod(std::fabs(a - b), 180.0);
+  return std::min(d, 180.0 - d);
+}
+
+TEST(PaletteOrientation, LineTexturesAtKnownAnglesWithinTwoDegrees) {
+  for (float deg : {0.0f, 10.0f, 30.0f, 45.0f, 60.0f, 90.0f, 112.5f, 135.0f, 170.0f}) {
+    const TextureOrientation o = textureOrientation(lineTexture(deg), glm::vec3(1.0f));
+    EXPECT_LE(angleDifference(o.degrees, deg), 2.0) << deg << " degrees: measured " << o.degrees;
+    EXPECT_TRUE(o.oriented()) << deg << " degrees: strength " << o.strength;
+  }
+}
+
+TEST(PaletteOrientation, CrosshatchTurnsByItsMainFamily) {
+  // (3 degrees: where the families cross, max() bends the gradient a little)
+  const TextureOrientation o = textureOrientation(lineTexture(30.0f, 8.0f, 0.6f), glm::vec3(1.0f));
+  EXPECT_LE(angleDifference(o.degrees, 30.0), 3.0) << o.degrees;
+  EXPECT_TRUE(o.oriented()) << o.strength;
+}
+
+TEST(PaletteOrientation, StippleAndBlankAreLeftUnrotated) {
+  const int size = 128;
+  ImageRGBA8 noise{size, size, std::vector<std::uint8_t>(size_t(size) * size * 4, 255)};
+  std::uint32_t h = 12345;
+  for (std::size_t i = 0; i < noise.pixels.size(); i += 4) {
+    h = h * 1664525u + 1013904223u;
+    const auto g = std::uint8_t((h >> 24) < 40 ? 0 : 255);  // random dots
+    noise.pixels[i] = noise.pixels[i + 1] = noise.pixels[i + 2] = g;
+  }
+  const TextureOrientation dots = textureOrientation(noise, glm::vec3(1.0f));
+  EXPECT_FALSE(dots.oriented()) << dots.strength;
+  ImageRGBA8 blank{size, size, std::vector<std::uint8_t>(size_t(size) * size * 4, 255)};
+  EXPECT_EQ(textureOrientation(blank, glm::vec3(1.0f)).strength, 0.0f);
+  // Transparent strokes over the background colour: none of the texel colours matter.
+  ImageRGBA8 clear = lineTexture(45.0f);
+  for (std::size_t i = 3; i < clear.pixels.size(); i += 4) clear.pixels[i] = 0;
+  EXPECT_FALSE(textureOrientation(clear, glm::vec3(1.0f)).oriented());
+  EXPECT_EQ(textureOrientation(ImageRGBA8{}, glm::vec3(1.0f)).strength, 0.0f);
+}
+
+}  // namespace
+}  // namespace npr
