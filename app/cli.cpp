@@ -39,7 +39,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
   std::vector<std::string> paletteFor;
-  std::string animate, pattern;
+  std::string animate, pattern, orient;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -62,6 +62,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
   app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat)");
   app.add_flag("--pattern-no-rotation", o.patternNoRotation, "Anchored patterns move and scale with the object but stay upright");
+  app.add_option("--orient", orient,
+                 "Hatching direction: none (the texture's own, default) | curvature (along the surface's form) | light "
+                 "(along the light's gradient) | DEGREES (a fixed screen angle)");
+  app.add_option("--orient-bins", o.orientBins, "Steps the turn is quantised to over 180 degrees (2..64, default 8)");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
@@ -101,6 +105,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.pattern = parsePatternSpace(pattern);
     if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen or anchored")};
   }
+  if (!orient.empty()) {
+    o.orient = parseOrient(orient);
+    if (!o.orient) return {std::nullopt, fail("unknown --orient '" + orient + "': use none, curvature, light or an angle in degrees")};
+  }
+  if (o.orientBins && (*o.orientBins < OrientSettings::kMinBins || *o.orientBins > OrientSettings::kMaxBins))
+    return {std::nullopt, fail("--orient-bins must be " + std::to_string(OrientSettings::kMinBins) + ".." +
+                                   std::to_string(OrientSettings::kMaxBins) + ", got " + std::to_string(*o.orientBins))};
   if (!animate.empty()) {
     Result<CameraAnimation> a = parseCameraAnimation(animate);
     if (!a) return {std::nullopt, fail(a.error())};

@@ -40,6 +40,8 @@ struct Options {
   CameraAnimation animation;  // --animate
   std::optional<PatternSpace> pattern;  // --pattern
   bool patternNoRotation = false;       // --pattern-no-rotation
+  std::optional<OrientSettings> orient; // --orient
+  std::optional<int> orientBins;        // --orient-bins
   std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

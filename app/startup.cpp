@@ -23,6 +23,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.settings.materials = o.materials;
   if (o.pattern) state.settings.pattern = *o.pattern;
   state.settings.patternFollowsRotation = !o.patternNoRotation;
+  if (o.orient) state.settings.orient = *o.orient;
+  if (o.orientBins) state.settings.orient.bins = *o.orientBins;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

@@ -141,6 +141,20 @@ std::vector<float> hatchField() {
   return f;
 }
 
+// One family of horizontal strokes, wobbling a little and thickening with the tone: the
+// palette whose direction hatching orientation (--orient) turns along the form.
+std::vector<float> lineField() {
+  std::vector<float> f(size_t(kSize) * kSize);
+  const int spacing = 6;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const int line = y / spacing;
+      const float wobble = 0.8f * (valueNoise(float(x), float(line * 8), 16, 77u) - 0.5f);
+      f[size_t(y) * kSize + x] = std::fabs(float(y % spacing) + 0.5f - spacing * 0.5f + wobble) / (spacing * 0.5f);
+    }
+  return f;
+}
+
 // Stipple: dots on a jittered grid, each appearing at its own random tone and growing.
 std::vector<float> stippleField() {
   std::vector<float> f(size_t(kSize) * kSize, 10.0f);
@@ -267,6 +281,8 @@ int main(int argc, char** argv) {
   w.palette("crosshatch",
             "name Crosshatch\nmatch intensity\n# 10 nested levels from bare paper to solid ink, evenly spaced in intensity.\n",
             toneLevels(hatchField(), 10, bg, ink), &bg);
+  w.palette("hatch", "name Hatch (one direction)\nmatch intensity\n# 8 levels of horizontal strokes: try --orient curvature.\n",
+            toneLevels(lineField(), 8, bg, ink), &bg);
   w.palette("stipple", "name Stipple\nmatch intensity\n# 16 nested levels of ink dots.\n", toneLevels(stippleField(), 16, bg, ink), &bg);
 
   std::vector<ImageRGBA8> cel;

@@ -39,6 +39,25 @@ inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
   return std::nullopt;
 }
 
+// Where hatching strokes point (`--orient`): the texture's own angle (the original), along the
+// surface's curvature (orientation/direction_field.h), across the light's gradient on the
+// surface, or a fixed screen angle. Each palette entry with a dominant direction
+// (palette/palette_orientation.h) is turned per pixel so that direction runs along this one;
+// the turn is quantised to `bins` steps over 180 degrees and the two nearest are blended, so
+// strokes stay straight within a step.
+enum class OrientSource { None, Curvature, Light, Fixed };
+struct OrientSettings {
+  OrientSource source = OrientSource::None;
+  float degrees = 0.0f;  // Fixed: counter-clockwise from the screen's x axis
+  int bins = 8;          // 2..64
+  static constexpr int kMinBins = 2, kMaxBins = 64;
+  bool operator==(const OrientSettings& o) const { return source == o.source && degrees == o.degrees && bins == o.bins; }
+};
+// "none", "curvature", "light" or "fixed:DEGREES"/"DEGREES"; the parse accepts what the name
+// gives back, and a number alone is a fixed angle.
+std::string orientName(const OrientSettings& o);
+std::optional<OrientSettings> parseOrient(const std::string& s);
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -47,9 +66,10 @@ struct RenderSettings {
   // Light each face with the model's own materials, vertex colours and texture maps (when it
   // has any); off: the lighting state's one material, as the original.
   bool materials = true;
-  bool referenceGouraud = false;
+  bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
   PatternSpace pattern = PatternSpace::Screen;
-  bool patternFollowsRotation = true;  // anchored: turn the pattern with the object (else only move and scale)  // `reference` path: per-vertex instead of per-pixel lighting
+  bool patternFollowsRotation = true;  // anchored: turn the pattern with the object (else only move and scale)
+  OrientSettings orient;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

@@ -32,6 +32,7 @@ void Renderer::setMesh(const Mesh* mesh) {
   patterns_.setMesh(mesh_);
   groups_.clear();
   groupsDirty_ = true;
+  field_.reset();
   if (!mesh_) return;
   gpuMesh_.upload(*mesh_);
   materials_.upload(*mesh_);
@@ -86,6 +87,7 @@ void Renderer::rebuildPaletteGroups() {
     group->gpuMesh.upload(group->mesh);
     group->materials.upload(group->mesh);
     group->triangles.setMesh(&group->mesh);
+    if (field_) group->gpuMesh.uploadDirections(field_->directions);  // a subset keeps every vertex
     stats_.bufferUploads += 3;
     groups_.push_back(std::move(group));
   }
@@ -125,6 +127,31 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame);
 }
 
+void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {
+  glm::vec4 light(0, 0, 1, 0);
+  for (int i = 0; i < kMaxLights; ++i)
+    if (lighting_.light(i).enabled) {
+      light = lighting_.light(i).position;
+      break;
+    }
+  const glm::vec2 size(viewport.z, viewport.w);
+  bool turned = false;
+  if (palette_) {
+    palette_->setOrientation(s.orient, light, size);
+    turned = palette_->oriented();
+  }
+  for (auto& [name, p] : materialPalettes_) {
+    p->setOrientation(s.orient, light, size);
+    turned = turned || p->oriented();
+  }
+  if (!turned || s.orient.source != OrientSource::Curvature || !mesh_ || field_) return;
+  field_ = computeDirectionField(*mesh_);
+  stats_.cpuFieldMs = field_->ms;
+  gpuMesh_.uploadDirections(field_->directions);
+  for (auto& g : groups_) g->gpuMesh.uploadDirections(field_->directions);
+  stats_.bufferUploads += 1;
+}
+
 void Renderer::clearViewport(const glm::ivec4& viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
@@ -159,6 +186,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
   preparePattern(camera, s, viewport);
+  prepareOrientation(s, viewport);
   timer_.begin();
   clearViewport(viewport);
   Status result = drawBackground(palette_.get(), programs_, emptyVao_, stats_);

@@ -25,6 +25,7 @@
 #include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
+#include "renderer/orientation/direction_field.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/palette.h"
 #include "renderer/passes/geometry_pass.h"
@@ -80,6 +81,9 @@ class Renderer {
   // jumps (frame the model, reset the view). A new mesh does it too.
   void resetPattern() { patterns_.reset(); }
   const PatternTracker& patternTracker() const { return patterns_; }
+  // The current mesh's hatching direction field: computed the first time a frame orients
+  // strokes along the curvature, kept until the mesh changes (null until then).
+  const DirectionField* directionField() const { return field_ ? &*field_ : nullptr; }
 
   // Reads finished GPU timer queries into stats().gpuMs (render() does this first). Call it
   // after the GPU work is finished to attribute a frame's time to that frame.
@@ -133,6 +137,10 @@ class Renderer {
   PatternTracker patterns_;
   // Gives every palette this frame's pattern frame (anchored) or none (screen).
   void preparePattern(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+  // Gives every palette this frame's hatching orientation; computes the direction field when
+  // a palette turns along the curvature and the mesh has none yet.
+  void prepareOrientation(const RenderSettings& settings, const glm::ivec4& viewport);
+  std::optional<DirectionField> field_;
   ImageEdgesPass imageEdges_;
 };
 

@@ -8,6 +8,8 @@
 //  PATH_GOURAUD    reference: the lit colour, per vertex
 //  PATH_LIT_TEXTURED  benchmark floor: per-pixel lighting times one screen-space fetch
 //  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
+//  PATH_STROKE_ANGLE  the pixel's hatching angle on screen (radians, valid) for the stencil path
+// ORIENT_FIELD, ORIENT_LIGHT or ORIENT_FIXED: where the hatching angle comes from (orientation.glsl).
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
@@ -16,12 +18,24 @@
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
 #endif
-#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL)
+#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL) && \
+    !defined(PATH_STROKE_ANGLE)
 #include "palette.glsl"
+#endif
+
+#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT) || defined(ORIENT_FIXED)
+#define STROKE_SOURCE
+#include "orientation.glsl"
+#endif
+#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
+uniform mat4 uProjection;
 #endif
 
 in vec3 vPosition;
 in vec3 vNormal;
+#ifdef ORIENT_FIELD
+in vec3 vDirection;
+#endif
 #if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
 in vec3 vColorFront;
 in vec3 vColorBack;
@@ -51,7 +65,17 @@ out vec4 fragColor;
 #endif
 
 void main() {
-#if defined(PATH_MASK)
+#if defined(ORIENT_FIELD)
+  strokeValid = screenAngle(uProjection, vPosition, vDirection, strokeAngle);
+#elif defined(ORIENT_LIGHT)
+  strokeValid = screenAngle(uProjection, vPosition, lightAcrossSurface(vPosition, vNormal), strokeAngle);
+#elif defined(ORIENT_FIXED)
+  strokeAngle = uOrientFixed;
+  strokeValid = true;
+#endif
+#if defined(PATH_STROKE_ANGLE)
+  fragColor = vec4(strokeAngle, strokeValid ? 1.0 : 0.0, 0.0, 1.0);
+#elif defined(PATH_MASK)
   fragColor = vec4(0.0);
 #elif defined(PATH_EYE_POSITION)
   fragColor = vec4(vPosition, gl_FrontFacing ? 1.0 : -1.0);

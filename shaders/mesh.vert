@@ -2,7 +2,8 @@
 // every variant and declared invariant, so the stencil path's passes produce equal depths.
 // PER_VERTEX_LIGHTING (the `vertex` path and Gouraud reference) lights here. MATERIALS adds
 // the mesh's own appearance: a colour (white where the mesh has none), texture coordinates
-// and a material index per vertex (vertices are split where these differ).
+// and a material index per vertex (vertices are split where these differ). ORIENT_FIELD passes
+// the hatching direction field on (orientation.glsl).
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -31,6 +32,11 @@ flat out uint vMaterial;
 #endif
 #endif
 
+#ifdef ORIENT_FIELD
+layout(location = 6) in vec3 aDirection;  // the hatching direction field (zero: none)
+out vec3 vDirection;  // eye space: a tangent turns with the modelview, not the normal matrix
+#endif
+
 #ifdef PER_VERTEX_LIGHTING
 #include "lighting.glsl"
 out vec3 vColorFront;
@@ -42,6 +48,9 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
+#ifdef ORIENT_FIELD
+  vDirection = mat3(uModelView) * aDirection;
+#endif
 #if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)
 #ifdef VERTEX_COLOURS
   vColour = aColour;

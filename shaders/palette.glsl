@@ -5,8 +5,10 @@
 // cross-faded so marks keep their size on screen under zoom.
 // Layers are stored precomposited over the background where that is exact
 // (PALETTE_PRECOMPOSITED), so the common case is one fetch per pixel.
+// With ORIENTED each entry's lookup is turned so its strokes follow the pixel's stroke angle
+// (orientation.glsl; the pass sets the angle before matching).
 // Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
-// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE.
+// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, ORIENTED and ORIENT_BINS.
 
 uniform sampler2DArray uPalette;
 #ifdef LAYER_SIZES_DIFFER
@@ -38,9 +40,31 @@ vec3 composite(vec4 t) {
 
 #ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
-vec3 paletteColour(int entry) {
-  vec2 u = dissolvedCoordinate(patternCoordinate());
+vec2 paletteCoordinate() { return dissolvedCoordinate(patternCoordinate()); }
+#else
+vec2 paletteCoordinate() { return gl_FragCoord.xy; }
+#endif
+
+#ifdef ORIENTED
+#include "orientation.glsl"
+#ifndef PATTERN_ANCHORED
+#include "pattern.glsl"
+#endif
+uniform float uEntryAngle[PALETTE_SIZE];  // each entry's stroke direction (radians; < -10: none)
+uniform float uFrameTurn;                 // the anchored pattern's rotation on screen
+vec3 paletteTexel(vec2 u, int entry) {
   return composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
+}
+vec3 paletteColour(int entry) {
+  vec2 u = paletteCoordinate();
+  int b0, b1;
+  float w;
+  if (!orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w)) return paletteTexel(u, entry);
+  return mix(paletteTexel(turnedCoordinate(u, b0), entry), paletteTexel(turnedCoordinate(u, b1), entry), w);
+}
+#elif defined(PATTERN_ANCHORED)
+vec3 paletteColour(int entry) {
+  return composite(texelFetch(uPalette, ivec3(wrapTexel(paletteCoordinate(), LAYER_SIZE(entry)), entry), 0));
 }
 #else
 vec3 paletteColour(int entry) {

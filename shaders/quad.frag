@@ -19,18 +19,44 @@ void main() {
 #endif
 
 #ifdef QUAD_LAYER
+// ORIENTED: the layer turned per pixel (orientation.glsl), the stroke angle read from the
+// buffer the stencil path drew (ORIENT_BUFFER) or fixed.
 uniform sampler2DArray uPalette;
 uniform ivec2 uLayerSize;
 uniform int uLayer;
-#ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
+#ifdef PATTERN_ANCHORED
+vec2 layerCoordinate() { return dissolvedCoordinate(patternCoordinate()); }
+#else
+vec2 layerCoordinate() { return gl_FragCoord.xy; }
+#endif
+vec4 layerTexel(vec2 u) { return texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0); }
+#ifdef ORIENTED
+#include "orientation.glsl"
+uniform float uLayerAngle;  // the layer's stroke direction (radians; < -10: none)
+uniform float uFrameTurn;
+#ifdef ORIENT_BUFFER
+uniform sampler2D uStrokeAngles;  // (angle, valid) per pixel of the viewport
+uniform ivec2 uViewportOrigin;
+#else
+uniform float uOrientFixed;
+#endif
 void main() {
-  vec2 u = dissolvedCoordinate(patternCoordinate());
-  fragColor = texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0);
+#ifdef ORIENT_BUFFER
+  vec2 a = texelFetch(uStrokeAngles, ivec2(gl_FragCoord.xy) - uViewportOrigin, 0).rg;
+  strokeAngle = a.x;
+  strokeValid = a.y > 0.5;
+#else
+  strokeAngle = uOrientFixed;
+  strokeValid = true;
+#endif
+  vec2 u = layerCoordinate();
+  int b0, b1;
+  float w;
+  if (!orientSteps(uLayerAngle, uFrameTurn, b0, b1, w)) fragColor = layerTexel(u);
+  else fragColor = mix(layerTexel(turnedCoordinate(u, b0)), layerTexel(turnedCoordinate(u, b1)), w);
 }
 #else
-void main() {
-  fragColor = texelFetch(uPalette, ivec3(ivec2(gl_FragCoord.xy) % uLayerSize, uLayer), 0);
-}
+void main() { fragColor = layerTexel(layerCoordinate()); }
 #endif
 #endif

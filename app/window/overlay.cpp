@@ -67,6 +67,30 @@ void drawOverlay(Viewer& v) {
     ImGui::SameLine();
     ImGui::Checkbox("follow rotation", &s.settings.patternFollowsRotation);
   }
+  // Hatching orientation, and what the palette offers it: entries with a dominant direction.
+  OrientSettings& orient = s.settings.orient;
+  int source = static_cast<int>(orient.source);
+  if (ImGui::Combo("orient strokes", &source, "none (texture's own)\0curvature\0light\0fixed angle\0"))
+    orient.source = static_cast<OrientSource>(source);
+  if (orient.source == OrientSource::Fixed) ImGui::SliderFloat("stroke angle", &orient.degrees, 0.0f, 180.0f, "%.0f deg");
+  if (orient.source != OrientSource::None) ImGui::SliderInt("angle steps", &orient.bins, OrientSettings::kMinBins, 32);
+  orient.degrees = std::isfinite(orient.degrees) ? std::clamp(orient.degrees, 0.0f, 180.0f) : 0.0f;
+  orient.bins = std::clamp(orient.bins, OrientSettings::kMinBins, OrientSettings::kMaxBins);
+  if (s.palette) {
+    int oriented = 0;
+    for (const PaletteEntry& e : s.palette->entries) oriented += e.orientation.oriented() ? 1 : 0;
+    ImGui::Text("%d of %zu entries have a stroke direction", oriented, s.palette->entries.size());
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      for (std::size_t i = 0; i < s.palette->entries.size(); ++i) {
+        const TextureOrientation& o = s.palette->entries[i].orientation;
+        ImGui::Text("%2zu: %5.1f deg, strength %.2f%s", i, o.degrees, o.strength, o.oriented() ? "" : " (left unrotated)");
+      }
+      ImGui::EndTooltip();
+    }
+  }
+  if (const DirectionField* field = v.renderer->directionField())
+    ImGui::Text("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);
   // Per-material palettes: a palette for each of the model's materials.

@@ -18,6 +18,7 @@ struct FrameStats {
   double cpuLinesMs = 0.0;     // silhouette extraction
   double cpuPatternMs = 0.0;   // the anchored pattern's similarity fit
   int patternSamples = 0;      // samples the fit used (visible in both frames)
+  double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

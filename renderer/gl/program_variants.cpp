@@ -15,6 +15,10 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
   if (p.anchored) d.push_back("PATTERN_ANCHORED");
+  if (p.orientBins > 0) {
+    d.push_back("ORIENTED");
+    d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
+  }
   d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
   d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));
   return d;
@@ -32,6 +36,7 @@ std::vector<std::string> shadingDefines(MeshShading s) {
     case MeshShading::LitTextured: return {"PATH_LIT_TEXTURED"};
     case MeshShading::EyePosition: return {"PATH_EYE_POSITION"};
     case MeshShading::EyeNormal: return {"PATH_EYE_NORMAL"};
+    case MeshShading::StrokeAngle: return {"PATH_STROKE_ANGLE"};
   }
   return {};
 }
@@ -47,6 +52,9 @@ struct SourceOf {
     if (m.materials && m.vertexColours) s.defines.push_back("VERTEX_COLOURS");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
+    if (m.stroke == StrokeSource::Field) s.defines.push_back("ORIENT_FIELD");
+    if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
+    if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");
     return s;
   }
   ProgramSource operator()(const QuadProgram& q) const {
@@ -54,6 +62,11 @@ struct SourceOf {
     s.defines.push_back(q.kind == QuadProgram::Kind::Background ? "QUAD_BACKGROUND" : "QUAD_LAYER");
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
     if (q.anchored) s.defines.push_back("PATTERN_ANCHORED");
+    if (q.orientBins > 0) {
+      s.defines.push_back("ORIENTED");
+      s.defines.push_back("ORIENT_BINS " + std::to_string(q.orientBins));
+      if (q.orientBuffer) s.defines.push_back("ORIENT_BUFFER");
+    }
     return s;
   }
   ProgramSource operator()(const LineProgram& l) const {
@@ -79,16 +92,17 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }
 
 bool operator<(const QuadProgram& a, const QuadProgram& b) {
-  return std::tie(a.kind, a.backgroundImage, a.anchored) < std::tie(b.kind, b.backgroundImage, b.anchored);
+  return std::tie(a.kind, a.backgroundImage, a.anchored, a.orientBins, a.orientBuffer) <
+         std::tie(b.kind, b.backgroundImage, b.anchored, b.orientBins, b.orientBuffer);
 }
 
 bool operator<(const LineProgram& a, const LineProgram& b) {

@@ -24,7 +24,8 @@ struct PaletteVariant {
   bool backgroundImage = false;  // only meaningful when not precomposited
   MatchMode match = MatchMode::Intensity;
   bool anchored = false;         // the pattern follows the object (pattern.glsl)
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, anchored); }
+  int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, anchored, orientBins); }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
@@ -39,7 +40,10 @@ enum class MeshShading : std::uint8_t {
   LitTextured,  // benchmark floor: lighting times one fetch
   EyePosition,  // interpolated eye-space position (alpha -1 on back faces)
   EyeNormal,    // interpolated eye-space normal
+  StrokeAngle,  // the hatching angle on screen and whether there is one (the stencil path's buffer)
 };
+// Where a mesh pass takes each pixel's hatching angle from (orientation.glsl).
+enum class StrokeSource : std::uint8_t { None, Field, Light, Fixed };
 // What a palette pass writes: its texels, or (tests, the benchmark) the selection behind them.
 enum class MeshOutput : std::uint8_t { Colour, Entry, Blend };
 
@@ -51,6 +55,7 @@ struct MeshProgram {
   bool materials = false;     // the mesh's own materials, colours and maps (GPU-lit shadings)
   bool materialMaps = false;  // ... some of which have a diffuse map
   bool vertexColours = false; // ... and the mesh has vertex colours
+  StrokeSource stroke = StrokeSource::None;
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -58,6 +63,8 @@ struct QuadProgram {
   enum class Kind : std::uint8_t { Background, Layer } kind = Kind::Background;
   bool backgroundImage = false;
   bool anchored = false;  // layer quads: the pattern follows the object
+  int orientBins = 0;     // layer quads: turned along the stroke angle (orientation.glsl)
+  bool orientBuffer = false;  // ... read per pixel from the stroke-angle buffer (else fixed)
 };
 
 // lines.vert + lines.frag: feature lines as screen-space quads.

@@ -37,6 +37,7 @@ class ShaderProgram {
   void set(const char* name, const glm::mat4& v);
   void setArray(const char* name, const glm::vec4* v, int count);
   void setArray(const char* name, const glm::vec3* v, int count);
+  void setArray(const char* name, const glm::vec2* v, int count);
   void setArray(const char* name, const float* v, int count);
   void setArray(const char* name, const glm::ivec2* v, int count);
 

@@ -17,6 +17,7 @@ enum class TextureUnit : GLint {
   EdgeDepth,       // image-space edges: the frame's depth
   MaterialTable,   // the mesh's materials (GL_TEXTURE_BUFFER)
   MaterialMaps,    // their diffuse maps (GL_TEXTURE_2D_ARRAY)
+  StrokeAngles,    // the stencil path's per-pixel hatching angles
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

@@ -28,13 +28,16 @@ void GpuMesh::clear() {
   texcoords_.reset();
   materials_.reset();
   mapAverages_.reset();
+  directions_.reset();
   triangleCount_ = 0;
+  vertexCount_ = 0;
 }
 
 void GpuMesh::upload(const Mesh& mesh) {
   clear();
   if (mesh.indices.empty()) return;
   triangleCount_ = mesh.triangleCount();
+  vertexCount_ = mesh.positions.size();
   positions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   normals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
   indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
@@ -44,6 +47,14 @@ void GpuMesh::upload(const Mesh& mesh) {
   floatAttribute(1, normals_, 3);
   if (mesh.hasAppearance()) uploadAppearance(mesh);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  glBindVertexArray(0);
+}
+
+void GpuMesh::uploadDirections(const std::vector<glm::vec3>& directions) {
+  if (!vao_.id() || directions.size() != vertexCount_) return;
+  directions_ = staticBuffer(directions.data(), directions.size() * sizeof(glm::vec3));
+  glBindVertexArray(vao_.id());
+  floatAttribute(6, directions_, 3);
   glBindVertexArray(0);
 }
 

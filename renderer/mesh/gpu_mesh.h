@@ -1,5 +1,6 @@
 // A mesh on the GPU: positions and normals (attributes 0 and 1 of mesh.vert; with an
-// appearance also colours, texture coordinates, material indices and map averages, 2-5), its index
+// appearance also colours, texture coordinates, material indices and map averages, 2-5; the hatching
+// direction field, 6), its index
 // buffer, and the vertex array that binds them. Draws the whole mesh or a range of triangles
 // of another index buffer over the same vertices (the per-triangle paths' buckets).
 #pragma once
@@ -19,6 +20,10 @@ class GpuMesh {
   // Uploads `mesh` (replacing what was there); an empty mesh leaves nothing to draw.
   void upload(const Mesh& mesh);
   void clear();
+  // The hatching direction field, one vector per vertex (attribute 6; orientation/
+  // direction_field.h). Without it the attribute reads zero: no direction.
+  void uploadDirections(const std::vector<glm::vec3>& directions);
+  bool hasDirections() const { return directions_.id() != 0; }
 
   // Binds the vertex array with the mesh's own indices and draws every triangle.
   void drawAll() const;
@@ -30,7 +35,8 @@ class GpuMesh {
  private:
   gl::VertexArray vao_;
   void uploadAppearance(const Mesh& mesh);
-  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_;
+  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_;
+  std::size_t vertexCount_ = 0;
   std::size_t triangleCount_ = 0;
 };
 

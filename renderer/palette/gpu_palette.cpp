@@ -45,6 +45,8 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
     w = std::max(w, e.image.width);
     h = std::max(h, e.image.height);
     gp->layerSizes_.push_back({e.image.width, e.image.height});
+    gp->entryAngles_.push_back(e.orientation.oriented() ? float(e.orientation.degrees * M_PI / 180.0) : -100.0f);
+    gp->anyOriented_ |= e.orientation.oriented();
     gp->sizesDiffer_ |= gp->layerSizes_.back() != gp->layerSizes_.front();
   }
   if (w > maxSize || h > maxSize)
@@ -126,7 +128,49 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.backgroundImage = backgroundImage_;
   v.match = mode;
   v.anchored = anchored();
+  v.orientBins = orientBins();
   return v;
+}
+
+void GpuPalette::setOrientation(const OrientSettings& orient, const glm::vec4& lightEye, const glm::vec2& viewportSize) {
+  orient_ = orient;
+  orient_.bins = std::clamp(orient.bins, OrientSettings::kMinBins, OrientSettings::kMaxBins);
+  orientLight_ = lightEye;
+  viewportSize_ = viewportSize;
+}
+
+gl::StrokeSource GpuPalette::strokeSource() const {
+  if (!oriented()) return gl::StrokeSource::None;
+  switch (orient_.source) {
+    case OrientSource::Curvature: return gl::StrokeSource::Field;
+    case OrientSource::Light: return gl::StrokeSource::Light;
+    case OrientSource::Fixed: return gl::StrokeSource::Fixed;
+    case OrientSource::None: break;
+  }
+  return gl::StrokeSource::None;
+}
+
+void GpuPalette::bindStrokeSource(gl::ShaderProgram& prog) const {
+  switch (strokeSource()) {
+    case gl::StrokeSource::Fixed: prog.set("uOrientFixed", float(orient_.degrees * M_PI / 180.0)); break;
+    case gl::StrokeSource::Light:
+      prog.set("uOrientLight", orientLight_);
+      prog.set("uViewportSize", viewportSize_);
+      break;
+    case gl::StrokeSource::Field: prog.set("uViewportSize", viewportSize_); break;
+    case gl::StrokeSource::None: break;
+  }
+}
+
+void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
+  if (!oriented()) return;
+  std::vector<glm::vec2> steps(static_cast<size_t>(orient_.bins));
+  for (int b = 0; b < orient_.bins; ++b) {
+    const double a = M_PI * b / orient_.bins;
+    steps[static_cast<size_t>(b)] = glm::vec2(float(std::cos(a)), float(std::sin(a)));
+  }
+  prog.setArray("uBinRotation", steps.data(), orient_.bins);
+  prog.set("uFrameTurn", pattern_ ? pattern_->rotation : 0.0f);
 }
 
 void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
@@ -157,12 +201,17 @@ void GpuPalette::bindBackground(gl::ShaderProgram& prog) const {
   }
 }
 
-void GpuPalette::bind(gl::ShaderProgram& prog) const {
+void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
   bindLayers(prog);
   if (sizesDiffer_) prog.setArray("uLayerSize", layerSizes_.data(), size());
   else prog.set("uLayerSize0", layerSizes_[0]);
   bindBackground(prog);
   bindPattern(prog);
+  if (turned && oriented()) {
+    prog.setArray("uEntryAngle", entryAngles_.data(), size());
+    bindOrientation(prog);
+    bindStrokeSource(prog);
+  }
   if (matcher_ && matcher_->mode() == MatchMode::Colors) {
     gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, lut3D_.id());
     prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));

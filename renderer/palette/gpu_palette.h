@@ -18,6 +18,7 @@
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/patterns/pattern_tracker.h"
+#include "renderer/render_settings.h"
 
 namespace npr {
 
@@ -43,11 +44,28 @@ class GpuPalette {
   void setPatternFrame(const std::optional<PatternFrame>& frame) { pattern_ = frame; }
   bool anchored() const { return pattern_.has_value(); }
 
+  // Hatching orientation for the frames drawn next: where the stroke angle comes from, the
+  // first enabled light (eye space) for OrientSource::Light, and the viewport's size.
+  void setOrientation(const OrientSettings& orient, const glm::vec4& lightEye, const glm::vec2& viewportSize);
+  // Whether lookups are turned: an orientation is set and some entry has a dominant direction
+  // (a stipple palette costs nothing under --orient).
+  bool oriented() const { return orient_.source != OrientSource::None && anyOriented_; }
+  // Where mesh passes take the stroke angle from (None when not oriented).
+  gl::StrokeSource strokeSource() const;
+  int orientBins() const { return oriented() ? orient_.bins : 0; }
+  // Entry k's stroke direction in radians (below -10: none, left unturned).
+  float entryAngle(int entry) const { return entryAngles_[static_cast<size_t>(entry)]; }
+
   gl::PaletteVariant variant(MatchMode mode) const;
+  // The stroke source's uniforms (orientation.glsl): fixed angle, light, viewport size.
+  void bindStrokeSource(gl::ShaderProgram& program) const;
+  // The turned lookups' uniforms (steps, the frame's turn), for palette.glsl and layer quads.
+  void bindOrientation(gl::ShaderProgram& program) const;
   // The anchored pattern's uniforms (pattern.glsl), when anchored.
   void bindPattern(gl::ShaderProgram& program) const;
-  // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms.
-  void bind(gl::ShaderProgram& program) const;
+  // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms;
+  // with `turned`, for a program compiled with this palette's orientation (orientBins()).
+  void bind(gl::ShaderProgram& program, bool turned) const;
   // Only the layer array (the stencil path's layer quad).
   void bindLayers(gl::ShaderProgram& program) const;
   // What quad.frag's background needs (an image or a colour).
@@ -74,6 +92,11 @@ class GpuPalette {
   unsigned matcherId_ = 0;
   gl::Texture lutIndex_, lutBlend_, lut3D_;
   std::optional<PatternFrame> pattern_;
+  std::vector<float> entryAngles_;
+  bool anyOriented_ = false;
+  OrientSettings orient_;
+  glm::vec4 orientLight_{0, 0, 1, 0};
+  glm::vec2 viewportSize_{1.0f};
 };
 
 }  // namespace npr

@@ -35,6 +35,17 @@ struct FrameContext {
   // Palette paths write their texels, or the selection behind them (tests, the benchmark).
   gl::MeshOutput output = gl::MeshOutput::Colour;
 
+  // The palette's program variant for this output; selections are the same turned or not, so
+  // they ignore the orientation.
+  gl::PaletteVariant paletteVariant() const {
+    gl::PaletteVariant v = palette->variant(settings.match);
+    if (output != gl::MeshOutput::Colour) v.orientBins = 0;
+    return v;
+  }
+  // Where a mesh pass with the palette takes each pixel's stroke angle from.
+  gl::StrokeSource strokeSource() const { return output == gl::MeshOutput::Colour ? palette->strokeSource() : gl::StrokeSource::None; }
+  void bindPalette(gl::ShaderProgram& program) const { palette->bind(program, output == gl::MeshOutput::Colour); }
+
   // Whether this frame lights with the mesh's own materials.
   bool drawMaterials() const { return settings.materials && materials.active(); }
 

@@ -25,7 +25,10 @@ Status ShadedPath::draw(FrameContext& f) {
   variant.materialMaps = materials && f.materials.hasMaps();
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
-  if (usesPalette) variant.palette = f.palette->variant(f.settings.match);
+  if (usesPalette) {
+    variant.palette = f.paletteVariant();
+    variant.stroke = f.strokeSource();
+  }
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
   gl::ShaderProgram& p = **prog;
@@ -38,7 +41,7 @@ Status ShadedPath::draw(FrameContext& f) {
   } else {
     uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
   }
-  if (usesPalette) f.palette->bind(p);
+  if (usesPalette) f.bindPalette(p);
   f.gpuMesh.drawAll();
   ++f.stats.drawCalls;
   return okStatus();

@@ -17,8 +17,13 @@ Status StencilPath::draw(FrameContext& f) {
   if (!mask) return Error{mask.error()};
   Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
   if (!bgQuad) return Error{bgQuad.error()};
-  Result<gl::ShaderProgram*> layerQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->anchored()});
+  const gl::StrokeSource stroke = f.strokeSource();
+  const bool angleBuffer = stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light;
+  Result<gl::ShaderProgram*> layerQuad =
+      f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->anchored(), f.palette->orientBins(), angleBuffer});
   if (!layerQuad) return Error{layerQuad.error()};
+  if (angleBuffer)
+    if (Status st = strokeAngles_.draw(f); !st) return st;
 
   (*mask)->use();
   setMeshTransform(**mask, f.camera);
@@ -27,6 +32,11 @@ Status StencilPath::draw(FrameContext& f) {
   (*layerQuad)->use();
   f.palette->bindLayers(**layerQuad);
   f.palette->bindPattern(**layerQuad);
+  if (stroke != gl::StrokeSource::None) {
+    f.palette->bindOrientation(**layerQuad);
+    if (angleBuffer) strokeAngles_.bind(**layerQuad, f.viewport);
+    else f.palette->bindStrokeSource(**layerQuad);
+  }
 
   const glm::ivec4& vp = f.viewport;
   for (int k = 0; k < f.palette->size(); ++k) {
@@ -59,6 +69,7 @@ Status StencilPath::draw(FrameContext& f) {
     (*layerQuad)->use();
     (*layerQuad)->set("uLayer", k);
     (*layerQuad)->set("uLayerSize", f.palette->layerSize(k));
+    if (stroke != gl::StrokeSource::None) (*layerQuad)->set("uLayerAngle", f.palette->entryAngle(k));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     f.stats.drawCalls += 2;
   }

@@ -3,7 +3,9 @@
 // (1) its triangles mark the pixels where they are visible in the stencil (colour writes
 // off, depth on), (2) a background quad and (3) the palette layer, alpha-blended, are drawn
 // where marked, clearing the mark. Two savings over the original, each a setting: quads
-// scissored to the bucket's screen rectangle, and empty buckets skipped.
+// scissored to the bucket's screen rectangle, and empty buckets skipped. With hatching
+// orientation the layer quads turn their lookups per pixel, by angles drawn first into a
+// buffer (passes/stroke_angle_pass.h) unless the angle is fixed.
 //
 // Selection outputs (tests, the benchmark) come from the triangle path: the stencil path has
 // no per-pixel program that could write an entry, and its entries are the triangle path's by
@@ -11,6 +13,7 @@
 #pragma once
 
 #include "renderer/paths/render_pass.h"
+#include "renderer/passes/stroke_angle_pass.h"
 #include "renderer/paths/triangle_path.h"
 
 namespace npr {
@@ -21,6 +24,7 @@ class StencilPath : public RenderPass {
 
  private:
   TrianglePath selection_;
+  StrokeAnglePass strokeAngles_;
 };
 
 }  // namespace npr

@@ -10,14 +10,15 @@ Status TrianglePath::draw(FrameContext& f) {
   gl::MeshProgram variant;
   variant.shading = gl::MeshShading::Triangle;  // lit on the CPU: no lighting in the shader
   variant.output = f.output;
-  variant.palette = f.palette->variant(f.settings.match);
+  variant.palette = f.paletteVariant();
+  variant.stroke = f.strokeSource();
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
   gl::ShaderProgram& p = **prog;
   gl::apply(gl::pass::kMesh);
   p.use();
   setMeshTransform(p, f.camera);
-  f.palette->bind(p);
+  f.bindPalette(p);
   f.gpuMesh.bindIndices(f.triangles.bucketIndices());
   for (int k = 0; k < f.palette->size(); ++k) {
     const std::uint32_t count = f.triangles.bucketCount(k);

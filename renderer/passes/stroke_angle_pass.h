@@ -1,0 +1,31 @@
+// The stencil path's stroke-angle buffer: its layer quads cover the screen and know nothing of
+// the surface under a pixel, so with hatching orientation on (curvature or light) the mesh is
+// drawn once more into a texture of the viewport's size holding each pixel's stroke angle on
+// screen and whether it has one (the angle the shaded paths compute in place). One extra
+// geometry pass, with its own depth buffer, drawn only when a frame needs it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/result.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+
+class StrokeAnglePass {
+ public:
+  // Draws the angles of `f`'s mesh (its palette says where they come from) and leaves the
+  // bound framebuffer and viewport as they were.
+  [[nodiscard]] Status draw(FrameContext& f);
+  // Binds the angles for a layer quad compiled with ORIENT_BUFFER.
+  void bind(gl::ShaderProgram& program, const glm::ivec4& viewport) const;
+
+ private:
+  void resize(const glm::ivec2& size, FrameStats& stats);
+  gl::Framebuffer fbo_;
+  gl::Texture angles_, depth_;
+  glm::ivec2 size_{0};
+};
+
+}  // namespace npr

@@ -1,0 +1,41 @@
+// Names of the settings on the command line and in the overlay (see render_settings.h).
+#include "renderer/render_settings.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace npr {
+
+std::string orientName(const OrientSettings& o) {
+  switch (o.source) {
+    case OrientSource::None: return "none";
+    case OrientSource::Curvature: return "curvature";
+    case OrientSource::Light: return "light";
+    case OrientSource::Fixed: {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", double(o.degrees));
+      return buf;
+    }
+  }
+  return "none";
+}
+
+std::optional<OrientSettings> parseOrient(const std::string& s) {
+  OrientSettings o;
+  if (s == "none") return o;
+  if (s == "curvature") o.source = OrientSource::Curvature;
+  else if (s == "light") o.source = OrientSource::Light;
+  else {
+    const std::string number = s.rfind("fixed:", 0) == 0 ? s.substr(6) : s;
+    if (number.empty()) return std::nullopt;
+    char* end = nullptr;
+    const double d = std::strtod(number.c_str(), &end);
+    if (end != number.c_str() + number.size() || !std::isfinite(d) || std::fabs(d) > 1e6) return std::nullopt;
+    o.source = OrientSource::Fixed;
+    o.degrees = float(std::fmod(std::fmod(d, 180.0) + 180.0, 180.0));
+  }
+  return o;
+}
+
+}  // namespace npr
