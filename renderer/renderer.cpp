@@ -9,6 +9,7 @@
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/marker_pass.h"
+#include "renderer/passes/stroke_angle_pass.h"
 #include "renderer/paths/render_pass.h"
 
 namespace npr {
@@ -206,6 +207,20 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   if (Status st = prepare(s); !st) return st;
   clearViewport(viewport);
   const Status result = drawPath(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend);
+  gl::restoreDefaults();
+  return result;
+}
+
+Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  stats_.startFrame();
+  if (viewport.z < 1 || viewport.w < 1 || !mesh_) return okStatus();
+  if (Status st = prepare(s); !st) return st;
+  if (!palette_) return Error{"no palette loaded"};
+  preparePattern(camera, s, viewport);
+  prepareOrientation(s, viewport);
+  clearViewport(viewport);
+  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_};
+  const Status result = palette_->oriented() ? drawStrokeAngles(frame) : okStatus();
   gl::restoreDefaults();
   return result;
 }

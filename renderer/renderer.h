@@ -74,6 +74,10 @@ class Renderer {
   // which is the same choice by construction).
   [[nodiscard]] Status renderSelection(const CameraMatrices& camera, const RenderSettings& settings, SelectionOutput output,
                                        const glm::ivec4& viewport);
+  // Each pixel's hatching stroke angle on screen for `settings.orient` (radians in red, 1 in
+  // green where there is one; read from a float target). All invalid when the palette has no
+  // entry with a stroke direction.
+  [[nodiscard]] Status renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
   // The mesh's interpolated eye-space position or normal (read from a float target).
   [[nodiscard]] Status renderGeometry(const CameraMatrices& camera, GeometryOutput output, const glm::ivec4& viewport);
 

@@ -25,12 +25,22 @@ void StrokeAnglePass::resize(const glm::ivec2& size, FrameStats& stats) {
   ++stats.bufferUploads;
 }
 
-Status StrokeAnglePass::draw(FrameContext& f) {
+Status drawStrokeAngles(FrameContext& f) {
   gl::MeshProgram variant;
   variant.shading = gl::MeshShading::StrokeAngle;
   variant.stroke = f.strokeSource();
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
+  gl::apply(gl::pass::kMesh);
+  (*prog)->use();
+  setMeshTransform(**prog, f.camera);
+  f.palette->bindStrokeSource(**prog);
+  f.gpuMesh.drawAll();
+  ++f.stats.drawCalls;
+  return okStatus();
+}
+
+Status StrokeAnglePass::draw(FrameContext& f) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const glm::ivec4& vp = f.viewport;
@@ -41,15 +51,10 @@ Status StrokeAnglePass::draw(FrameContext& f) {
   glClearColor(0, 0, 0, 0);
   gl::apply(gl::pass::kClearTarget);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  gl::apply(gl::pass::kMesh);
-  (*prog)->use();
-  setMeshTransform(**prog, f.camera);
-  f.palette->bindStrokeSource(**prog);
-  f.gpuMesh.drawAll();
-  ++f.stats.drawCalls;
+  const Status st = drawStrokeAngles(f);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(vp.x, vp.y, vp.z, vp.w);
-  return okStatus();
+  return st;
 }
 
 void StrokeAnglePass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {

@@ -13,6 +13,10 @@
 
 namespace npr {
 
+// Draws each pixel's (stroke angle in radians, 1 where it has one) of `f`'s mesh into the
+// bound framebuffer (a float target): the buffer's contents, and a test output.
+[[nodiscard]] Status drawStrokeAngles(FrameContext& f);
+
 class StrokeAnglePass {
  public:
   // Draws the angles of `f`'s mesh (its palette says where they come from) and leaves the

@@ -51,6 +51,10 @@ ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutp
   return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.renderGeometry(cam, output, vp); });
 }
 
+ImageRGBA32F renderStrokeAngles(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
+  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.renderStrokeAngles(cam, s, vp); });
+}
+
 int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {
   int n = 0;
   for (size_t i = 0; i < a.pixels.size(); i += 4)

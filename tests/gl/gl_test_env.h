@@ -23,6 +23,8 @@ ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSetti
 // target cleared to zero: entries from an 8-bit target, geometry as floats.
 ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
 ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h);
+// Renderer::renderStrokeAngles into a float target: (angle, valid) per pixel.
+ImageRGBA32F renderStrokeAngles(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
 // Pixels whose colour differs (alpha ignored).
 int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b);
 

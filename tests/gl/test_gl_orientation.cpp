@@ -1,0 +1,182 @@
+// GL tier: hatching orientation. A cylinder lying across the view, drawn with the one-direction
+// hatch palette (horizontal strokes) and --orient curvature, shows strokes around it (vertical
+// on screen), along the wanted angles, in every path; a fixed angle and the light's gradient
+// turn strokes where they say; palettes with no stroke direction cost nothing; the selection
+// is the same turned or not; the direction field is computed once per mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gl/gl_test_env.h"
+#include "renderer/core/image_io.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "support/stroke_alignment.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using Fixture = test::RendererFixture;
+constexpr int kSize = 256;
+
+// The generated cylinder turned to lie along x, so the curvature's direction (around it) is
+// vertical on screen while the palette's strokes are horizontal.
+Mesh lyingCylinder() {
+  Mesh m = cylinder(96, 48);
+  for (glm::vec3& p : m.positions) p = glm::vec3(-p.y, p.x, p.z);
+  finalizeMesh(m);
+  return m;
+}
+
+// Every valid pixel of `wanted` given the angle `radians` instead.
+ImageRGBA32F constantAngle(ImageRGBA32F wanted, float radians) {
+  for (std::size_t i = 0; i < wanted.pixels.size(); i += 4) wanted.pixels[i] = radians;
+  return wanted;
+}
+
+struct Orientation : Fixture {
+  Mesh mesh = lyingCylinder();
+  void SetUp() override {
+    Fixture::SetUp();
+    ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+    r->setMesh(&mesh);
+  }
+  CameraMatrices camera() const { return test::testCamera(1.0f, 0.0f, 10.0f); }
+};
+
+TEST_F(Orientation, CylinderStrokesFollowTheCurvatureInEveryPath) {
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth, RenderPath::Triangle, RenderPath::Stencil}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.orient.source = OrientSource::Curvature;
+    const ImageRGBA8 img = test::renderImage(*r, camera(), s, kSize, kSize);
+    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), s, kSize, kSize);
+    const test::Alignment along = test::strokeAlignment(img, wanted);
+    const test::Alignment texture = test::strokeAlignment(img, constantAngle(wanted, 0.0f));
+    EXPECT_GT(along.pixels, 8000u);
+    EXPECT_LE(along.medianDegrees, 10.0);
+    EXPECT_GE(texture.medianDegrees, 60.0);  // not the palette's own horizontal strokes
+    if (HasFailure()) (void)writeImage(test::outputPath(std::string("orient-cylinder-") + pathInfo(path).name + ".png"), img);
+  }
+  // Unturned, the same frame shows the texture's horizontal strokes.
+  RenderSettings none;
+  const ImageRGBA8 img = test::renderImage(*r, camera(), none, kSize, kSize);
+  RenderSettings curvature;
+  curvature.orient.source = OrientSource::Curvature;
+  const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), curvature, kSize, kSize);
+  EXPECT_LE(test::strokeAlignment(img, constantAngle(wanted, 0.0f)).medianDegrees, 10.0);
+  EXPECT_GE(test::strokeAlignment(img, wanted).medianDegrees, 60.0);
+}
+
+TEST_F(Orientation, FixedAngleTurnsStrokesInEveryPath) {
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil, RenderPath::Triangle}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.orient = *parseOrient("60");
+    const ImageRGBA8 img = test::renderImage(*r, camera(), s, kSize, kSize);
+    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), s, kSize, kSize);
+    EXPECT_LE(test::strokeAlignment(img, constantAngle(wanted, float(M_PI / 3.0))).medianDegrees, 10.0);
+  }
+}
+
+TEST_F(Orientation, LightStrokesRunAlongTheLightsGradient) {
+  const Mesh sphere = icosphere(4);
+  r->setMesh(&sphere);
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.orient.source = OrientSource::Light;
+    const ImageRGBA8 img = test::renderImage(*r, test::testCamera(1.0f), s, kSize, kSize);
+    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, test::testCamera(1.0f), s, kSize, kSize);
+    const test::Alignment a = test::strokeAlignment(img, wanted);
+    EXPECT_GT(a.pixels, 5000u);
+    EXPECT_LE(a.medianDegrees, 10.0);
+  }
+  r->setMesh(&mesh);
+}
+
+TEST_F(Orientation, AnchoredPatternsStayAlongTheField) {
+  // The anchored pattern turns with the object; the orientation takes that turn out.
+  RenderSettings s;
+  s.orient.source = OrientSource::Curvature;
+  s.pattern = PatternSpace::Anchored;
+  OrbitCamera cam(0.0f, 70.0f, 3.0f);  // from above: orbiting turns the image
+  cam.frame(1.0f);
+  for (int f = 0; f < 12; ++f) {
+    (void)test::renderImage(*r, cam.matrices(1.0f), s, kSize, kSize);
+    cam.orbit(4.0f, 0.0f);
+  }
+  ASSERT_GT(std::fabs(r->patternTracker().frame().rotation), 0.3f);
+  const ImageRGBA8 img = test::renderImage(*r, cam.matrices(1.0f), s, kSize, kSize);
+  const ImageRGBA32F wanted = test::renderStrokeAngles(*r, cam.matrices(1.0f), s, kSize, kSize);
+  EXPECT_LE(test::strokeAlignment(img, wanted).medianDegrees, 10.0);
+}
+
+TEST_F(Orientation, PalettesWithoutStrokeDirectionsAreNotTurned) {
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("stipple")));
+  RenderSettings none, curvature;
+  curvature.orient.source = OrientSource::Curvature;
+  const ImageRGBA8 a = test::renderImage(*r, camera(), none, kSize, kSize);
+  const ImageRGBA8 b = test::renderImage(*r, camera(), curvature, kSize, kSize);
+  EXPECT_EQ(test::countDiffering(a, b), 0);
+  EXPECT_EQ(r->directionField(), nullptr);  // nothing asked for it
+}
+
+TEST_F(Orientation, SelectionIsTheSameTurnedOrNot) {
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle}) {
+    RenderSettings none, curvature;
+    none.path = curvature.path = path;
+    curvature.orient.source = OrientSource::Curvature;
+    (void)test::renderImage(*r, camera(), curvature, kSize, kSize);  // leaves the palette oriented
+    EXPECT_EQ(test::countDiffering(test::renderEntries(*r, camera(), none, kSize, kSize),
+                                   test::renderEntries(*r, camera(), curvature, kSize, kSize)),
+              0)
+        << pathInfo(path).name;
+  }
+}
+
+TEST_F(Orientation, DirectionFieldIsComputedOncePerMesh) {
+  RenderSettings s;
+  s.orient.source = OrientSource::Curvature;
+  (void)test::renderImage(*r, camera(), s, 64, 64);
+  ASSERT_NE(r->directionField(), nullptr);
+  EXPECT_GT(r->stats().cpuFieldMs, 0.0);
+  EXPECT_EQ(r->directionField()->directions.size(), mesh.positions.size());
+  (void)test::renderImage(*r, camera(), s, 64, 64);
+  EXPECT_EQ(r->stats().cpuFieldMs, 0.0);
+  const Mesh other = icosphere(2);
+  r->setMesh(&other);
+  EXPECT_EQ(r->directionField(), nullptr);
+  (void)test::renderImage(*r, camera(), s, 64, 64);
+  ASSERT_NE(r->directionField(), nullptr);
+  EXPECT_EQ(r->directionField()->directions.size(), other.positions.size());
+  r->setMesh(&mesh);
+}
+
+TEST_F(Orientation, StepsAreStableUnderASmallOrbit) {
+  // One degree of orbit moves each surface point's stroke angle a little: its step changes by at
+  // most one (no flips between the principal directions).
+  RenderSettings s;
+  s.orient.source = OrientSource::Curvature;
+  OrbitCamera cam(0.0f, 10.0f, 3.0f);
+  cam.frame(1.0f);
+  const CameraMatrices a = cam.matrices(1.0f);
+  cam.orbit(1.0f, 0.0f);
+  const CameraMatrices b = cam.matrices(1.0f);
+  const ImageRGBA32F anglesA = test::renderStrokeAngles(*r, a, s, kSize, kSize), anglesB = test::renderStrokeAngles(*r, b, s, kSize, kSize);
+  const ImageRGBA32F eyeA = test::renderGeometry(*r, a, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F eyeB = test::renderGeometry(*r, b, GeometryOutput::EyePosition, kSize, kSize);
+  std::size_t compared = 0;
+  EXPECT_LT(test::stepJumpFraction(anglesA, eyeA, a, anglesB, eyeB, b, s.orient.bins, 0.0f, &compared), 0.005);
+  EXPECT_GT(compared, 8000u);
+  // The measure sees a flip: the same frames with the second turned by a quarter turn.
+  ImageRGBA32F flipped = anglesB;
+  for (std::size_t i = 0; i < flipped.pixels.size(); i += 4) flipped.pixels[i] += float(M_PI / 2.0);
+  EXPECT_GT(test::stepJumpFraction(anglesA, eyeA, a, flipped, eyeB, b, s.orient.bins), 0.95);
+}
+
+}  // namespace
+}  // namespace npr
