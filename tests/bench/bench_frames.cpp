@@ -5,7 +5,7 @@
 // palette path can do). The light moves every frame, so per-triangle paths pay their CPU
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
-//      [--entries N] [--paths triangle,pixel,...]
+//      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--orient]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -49,13 +49,14 @@ struct PathRow {
   bool skipEmpty = true, scissor = true;  // the stencil path's two savings
   bool materials = false;                 // the mesh's own materials (--materials)
   bool anchored = false;                  // the anchored pattern space (--patterns)
+  bool oriented = false;                  // strokes along the curvature (--orient)
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
-  bool quick = false, materials = false, patterns = false;
+  bool quick = false, materials = false, patterns = false, orient = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -64,14 +65,16 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--materials")) materials = true;
     else if (!std::strcmp(argv[i], "--patterns")) patterns = true;
+    else if (!std::strcmp(argv[i], "--orient")) orient = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--orient]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
-                           "the anchored pattern space; the camera orbits 1 degree per frame)\n");
+                           "the anchored pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
+                           "path with strokes along the curvature)\n");
       return 2;
     }
   }
@@ -94,7 +97,9 @@ int main(int argc, char** argv) {
   if (!target || !renderer) return 1;
   Renderer& r = **renderer;
   applyDefaultMaterial(r.lighting());
-  auto crosshatch = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
+  // --orient: the one-direction hatch palette (every entry but blank and solid has a stroke
+  // direction), so the +orient rows turn every lookup.
+  auto crosshatch = loadPalette(std::string(NPR_SOURCE_DIR) + (orient ? "/palettes/hatch/hatch.palette" : "/palettes/crosshatch/crosshatch.palette"));
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
   if (!crosshatch || !bunny) return 1;
   struct Scene { const char* name; const Mesh* mesh; };
@@ -143,6 +148,12 @@ int main(int argc, char** argv) {
         on.anchored = true;
         paths.push_back(on);
       }
+      if (orient && pathInfo(p.path).usesPalette) {
+        PathRow on = p;
+        on.label += "+orient";
+        on.oriented = true;
+        paths.push_back(on);
+      }
     }
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
@@ -165,6 +176,7 @@ int main(int argc, char** argv) {
         s.stencilSkipEmpty = paths[p].skipEmpty;
         s.materials = paths[p].materials;
         s.pattern = paths[p].anchored ? PatternSpace::Anchored : PatternSpace::Screen;
+        if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
           OrbitCamera moving = cam;
           moving.orbit(0.05f * float(call), 0.0f);

@@ -62,5 +62,20 @@ cmp -s "$tmp/frames/frame-0000.png" "$tmp/frames/frame-0001.png" && { echo "FAIL
 expect 2 "bad --animate" -- "$viewer" --headless --animate orbit:fast
 expect 2 "--save-frames into a file" -- "$viewer" --headless --save-frames "$tmp/two.obj"
 
+# Hatching orientation: each source renders and turns the strokes (the image differs from
+# none); the palette report has each entry's direction; bad values are refused.
+expect 0 "--palette-info orientation" -- "$viewer" --palette-info "$src/palettes/hatch/hatch.palette"
+grep -q '"orientation_degrees":' "$tmp/out" && grep -q '"oriented":true' "$tmp/out" || { echo "FAIL: --palette-info has no orientation: $(cat "$tmp/out")"; fail=1; }
+for o in none curvature light 30; do
+  expect 0 "--orient $o" -- "$viewer" --headless --size 96x96 --palette "$src/palettes/hatch/hatch.palette" --orient $o --orient-bins 6 --screenshot "$tmp/orient-$o.png"
+done
+for o in curvature light 30; do
+  cmp -s "$tmp/orient-none.png" "$tmp/orient-$o.png" && { echo "FAIL: --orient $o draws the same as none"; fail=1; }
+done
+expect 2 "bad --orient" -- "$viewer" --headless --orient sideways
+expect 2 "--orient nan" -- "$viewer" --headless --orient nan
+expect 2 "--orient-bins 1" -- "$viewer" --headless --orient curvature --orient-bins 1
+expect 2 "--orient-bins 65" -- "$viewer" --headless --orient curvature --orient-bins 65
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail
