@@ -42,6 +42,28 @@ Principal ellipsoidPrincipal(const glm::vec3& p, const glm::vec3& radii) {
   return {glm::vec3(e1), glm::vec3(glm::cross(n, e1)), float(mean + half), float(mean - half)};
 }
 
+glm::mat3 obliqueRotation() {
+  const float a = 0.7f, b = 0.5f;  // radians about x, then z
+  const glm::mat3 rx(1, 0, 0, 0, std::cos(a), std::sin(a), 0, -std::sin(a), std::cos(a));
+  const glm::mat3 rz(std::cos(b), std::sin(b), 0, -std::sin(b), std::cos(b), 0, 0, 0, 1);
+  return rz * rx;
+}
+
+Mesh rotatedMesh(Mesh m, const glm::mat3& r) {
+  for (glm::vec3& p : m.positions) p = r * p;
+  finalizeMesh(m);
+  return m;
+}
+
+std::function<Principal(const glm::vec3&)> rotatedPrincipal(std::function<Principal(const glm::vec3&)> analytic, const glm::mat3& r) {
+  return [analytic = std::move(analytic), r](const glm::vec3& p) {
+    Principal q = analytic(glm::transpose(r) * p);
+    q.e1 = r * q.e1;
+    q.e2 = r * q.e2;
+    return q;
+  };
+}
+
 double degreesBetweenLines(const glm::vec3& a, const glm::vec3& b) {
   const double c = std::min(1.0, std::fabs(double(glm::dot(glm::normalize(a), glm::normalize(b)))));
   return std::acos(c) * 180.0 / M_PI;

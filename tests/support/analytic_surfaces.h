@@ -21,6 +21,12 @@ Principal cylinderPrincipal(const glm::vec3& p);  // generated cylinder (axis y,
 Principal torusPrincipal(const glm::vec3& p);     // generated torus (axis y, fitted to the unit sphere)
 Principal ellipsoidPrincipal(const glm::vec3& p, const glm::vec3& radii);
 
+// The generated surfaces are aligned with the model's up axis, which the direction field also
+// starts from where curvature does not decide; tests turn them off that axis first.
+glm::mat3 obliqueRotation();
+Mesh rotatedMesh(Mesh mesh, const glm::mat3& rotation);
+std::function<Principal(const glm::vec3&)> rotatedPrincipal(std::function<Principal(const glm::vec3&)> analytic, const glm::mat3& rotation);
+
 // Angle between two lines, degrees in [0, 90].
 double degreesBetweenLines(const glm::vec3& a, const glm::vec3& b);
 
