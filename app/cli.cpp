@@ -66,6 +66,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "Hatching direction: none (the texture's own, default) | curvature (along the surface's form) | light "
                  "(along the light's gradient) | DEGREES (a fixed screen angle)");
   app.add_option("--orient-bins", o.orientBins, "Steps the turn is quantised to over 180 degrees (2..64, default 8)");
+  app.add_flag("--ground", o.ground, "A ground plane under the model, drawn with the same palette and path");
+  app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");

@@ -42,6 +42,8 @@ struct Options {
   bool patternNoRotation = false;       // --pattern-no-rotation
   std::optional<OrientSettings> orient; // --orient
   std::optional<int> orientBins;        // --orient-bins
+  bool ground = false;                  // --ground
+  bool shadows = false;                 // --shadows
   std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

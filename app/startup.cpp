@@ -25,6 +25,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.settings.patternFollowsRotation = !o.patternNoRotation;
   if (o.orient) state.settings.orient = *o.orient;
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
+  state.settings.ground = o.ground;
+  state.settings.shadows = o.shadows;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

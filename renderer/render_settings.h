@@ -70,6 +70,10 @@ struct RenderSettings {
   PatternSpace pattern = PatternSpace::Screen;
   bool patternFollowsRotation = true;  // anchored: turn the pattern with the object (else only move and scale)
   OrientSettings orient;
+  // A ground plane under the model, drawn with the same palette and path (mesh/ground_plane.h).
+  bool ground = false;
+  // Cast shadows from every enabled light in the GPU-lit paths (shadows/shadow_maps.h).
+  bool shadows = false;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

@@ -6,6 +6,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/mesh/ground_plane.h"
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/marker_pass.h"
@@ -34,7 +35,14 @@ void Renderer::setMesh(const Mesh* mesh) {
   groups_.clear();
   groupsDirty_ = true;
   field_.reset();
+  ++sceneVersion_;
+  groundGpu_.clear();
+  groundTriangles_.setMesh(nullptr);
+  ground_ = Mesh{};
   if (!mesh_) return;
+  ground_ = groundPlane(*mesh_);
+  groundGpu_.upload(ground_);
+  groundTriangles_.setMesh(&ground_);
   gpuMesh_.upload(*mesh_);
   materials_.upload(*mesh_);
   stats_.bufferUploads += 3;
@@ -153,6 +161,19 @@ void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& vie
   stats_.bufferUploads += 1;
 }
 
+Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettings& s) {
+  shadowsReady_ = false;
+  if (!s.shadows || !mesh_) return okStatus();
+  ShadowScene scene;
+  scene.casters = {&gpuMesh_};
+  scene.casterRadius = mesh_->radius;
+  scene.sceneRadius = s.ground ? ground_.radius : mesh_->radius;
+  scene.version = sceneVersion_ * 2 + (s.ground ? 1 : 0);
+  if (Status st = shadows_.update(lighting_, camera.view, scene, programs_, stats_); !st) return st;
+  shadowsReady_ = shadows_.layers() > 0;
+  return okStatus();
+}
+
 void Renderer::clearViewport(const glm::ivec4& viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
@@ -167,7 +188,9 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
   if (groups_.empty() || !s.materials) {
     if (s.materials) materials_.update(*mesh_, lighting_, stats_);
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
-    return paths_[pathIndex(s.path)]->draw(frame);
+    frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+    if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
+    return drawGround(camera, s, viewport, output);
   }
   // One draw of the path per palette, each over its part of the mesh; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
@@ -175,9 +198,20 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     g->materials.update(g->mesh, lighting_, stats_);
     const GpuPalette* palette = g->palette ? g->palette : palette_.get();
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
+    frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
   }
-  return okStatus();
+  return drawGround(camera, s, viewport, output);
+}
+
+Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
+  if (!s.ground || !mesh_ || !palette_) return okStatus();
+  // The ground has no materials of its own: lit with the lighting state's material.
+  RenderSettings plain = s;
+  plain.materials = false;
+  FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
+  frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+  return paths_[pathIndex(s.path)]->draw(frame);
 }
 
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
@@ -188,9 +222,10 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   collectGpuTime();
   preparePattern(camera, s, viewport);
   prepareOrientation(s, viewport);
+  Status shadowStatus = prepareShadows(camera, s);
   timer_.begin();
   clearViewport(viewport);
-  Status result = drawBackground(palette_.get(), programs_, emptyVao_, stats_);
+  Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
   if (result) result = drawPath(camera, s, viewport, gl::MeshOutput::Colour);
   if (result && mesh_) result = imageEdges_.draw(gpuMesh_, camera, s.lines, viewport, programs_, emptyVao_, stats_);
   if (result && mesh_) result = lines_.draw(camera, s.lines, viewport, programs_, stats_);
@@ -205,6 +240,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   stats_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   if (Status st = prepare(s); !st) return st;
+  if (Status st = prepareShadows(camera, s); !st) return st;
   clearViewport(viewport);
   const Status result = drawPath(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend);
   gl::restoreDefaults();

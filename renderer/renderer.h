@@ -33,6 +33,7 @@
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
 
@@ -110,6 +111,8 @@ class Renderer {
   void clearViewport(const glm::ivec4& viewport);
   Status drawPath(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
                   gl::MeshOutput output);
+  // The ground plane with the path's own pass, after the model (--ground).
+  Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
   // Splits the mesh into one part per palette when materials have palettes of their own.
   void rebuildPaletteGroups();
 
@@ -145,6 +148,16 @@ class Renderer {
   // a palette turns along the curvature and the mesh has none yet.
   void prepareOrientation(const RenderSettings& settings, const glm::ivec4& viewport);
   std::optional<DirectionField> field_;
+  // Brings the shadow maps up to date when `settings.shadows` is on.
+  Status prepareShadows(const CameraMatrices& camera, const RenderSettings& settings);
+  ShadowMaps shadows_;
+  bool shadowsReady_ = false;  // this frame draws with shadows_
+  unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache
+  // The ground plane under the current mesh (--ground), drawn like one more part of it.
+  Mesh ground_;
+  GpuMesh groundGpu_;
+  GpuMaterials groundMaterials_;  // never uploaded: the ground has no appearance
+  TriangleShadingCache groundTriangles_;
   ImageEdgesPass imageEdges_;
 };
 

@@ -4,7 +4,8 @@
 // TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
 // the prepared products of light and material colours; with MATERIALS (the mesh's own
 // materials) they are the lights' own colours, multiplied here by the material the caller
-// passes (material.glsl) for the vertex or fragment.
+// passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
+// light up in its shadow map: a blocked light keeps its ambient term only, as OpenGL's would.
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
@@ -51,6 +52,10 @@ uniform float uSpotCosCutoff[NUM_LIGHTS];  // -2 for a light with no spot (cutof
 #ifdef HAS_ATTENUATION
 uniform vec3 uAttenuation[NUM_LIGHTS];  // constant, linear, quadratic
 #endif
+#endif
+
+#if defined(SHADOWS) && NUM_LIGHTS > 0
+#include "shadows.glsl"
 #endif
 
 #if defined(TONE_GOOCH) || defined(TONE_SPLASHBACK)
@@ -148,13 +153,18 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
 #endif
     if (spot == 0.0) continue;
     float ndl = max(dot(n, vp), 0.0);
+    float visible = 1.0;
+#ifdef SHADOWS
+    if (ndl > 0.0) visible = shadowVisibility(i, pos, n, ndl);
+    ndl *= visible;
+#endif
     vec3 term = LIGHT_AMBIENT(side, i) + ndl * LIGHT_DIFFUSE(side, i);
     vec3 contrib = (att * spot) * term;
     scaled += mix(contrib, vec3(0.0), isnan(contrib));
 #ifdef HAS_SPECULAR
     if (ndl > 0.0) {
       vec3 h = safeNormalize(vp + toEye);
-      vec3 spec = (att * spot) * powGL(max(dot(n, h), 0.0), SHININESS(side)) * LIGHT_SPECULAR(side, i);
+      vec3 spec = (visible * att * spot) * powGL(max(dot(n, h), 0.0), SHININESS(side)) * LIGHT_SPECULAR(side, i);
       c += mix(spec, vec3(0.0), isnan(spec));
     }
 #endif

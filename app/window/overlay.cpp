@@ -91,6 +91,11 @@ void drawOverlay(Viewer& v) {
   }
   if (const DirectionField* field = v.renderer->directionField())
     ImGui::Text("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
+  ImGui::Checkbox("ground plane", &s.settings.ground);
+  ImGui::SameLine();
+  ImGui::Checkbox("shadows", &s.settings.shadows);
+  if (s.settings.shadows && (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil))
+    ImGui::TextDisabled("(per-triangle paths light on the CPU: no shadows yet)");
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);
   // Per-material palettes: a palette for each of the model's materials.

@@ -19,6 +19,7 @@ struct FrameStats {
   double cpuPatternMs = 0.0;   // the anchored pattern's similarity fit
   int patternSamples = 0;      // samples the fit used (visible in both frames)
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
+  int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

@@ -25,6 +25,12 @@ void apply(const PassState& s) {
   }
   s.scissor ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
   s.programPointSize ? glEnable(GL_PROGRAM_POINT_SIZE) : glDisable(GL_PROGRAM_POINT_SIZE);
+  if (s.offsetFactor != 0.0f || s.offsetUnits != 0.0f) {
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(s.offsetFactor, s.offsetUnits);
+  } else {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
 }
 
 void restoreDefaults() {

@@ -17,6 +17,9 @@ struct PassState {
   GLenum stencilPass = GL_KEEP;  // op when stencil and depth pass
   bool scissor = false;
   bool programPointSize = false;
+  // Depth pushed away by factor x the polygon's depth slope + units x the depth resolution
+  // (shadow maps: slope-scaled bias against acne).
+  float offsetFactor = 0.0f, offsetUnits = 0.0f;
 };
 
 namespace pass {
@@ -61,6 +64,15 @@ inline constexpr PassState kLines = [] {
 }();
 // Screen-space overlays over the frame (image-space edges): blended, no depth.
 inline constexpr PassState kScreenOverlay = [] { PassState s; s.blend = true; return s; }();
+// Shadow maps: depth only, slope-scaled bias (with the lookup's normal offset, shadows/).
+inline constexpr PassState kShadowDepth = [] {
+  PassState s;
+  s.depthTest = s.depthWrite = true;
+  s.colorWrite = false;
+  s.offsetFactor = 2.0f;
+  s.offsetUnits = 4.0f;
+  return s;
+}();
 // The light marker: a point sprite sized by the shader, over everything.
 inline constexpr PassState kMarker = [] { PassState s; s.programPointSize = true; return s; }();
 }  // namespace pass

@@ -55,6 +55,10 @@ struct SourceOf {
     if (m.stroke == StrokeSource::Field) s.defines.push_back("ORIENT_FIELD");
     if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");
+    if (m.shadowLayers > 0) {
+      s.defines.push_back("SHADOWS");
+      s.defines.push_back("SHADOW_LAYERS " + std::to_string(m.shadowLayers));
+    }
     return s;
   }
   ProgramSource operator()(const QuadProgram& q) const {
@@ -77,6 +81,7 @@ struct SourceOf {
   }
   ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
+  ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
 };
 
 auto lightingKey(const std::optional<LightingFeatures>& f) {
@@ -92,10 +97,10 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

@@ -56,6 +56,7 @@ struct MeshProgram {
   bool materialMaps = false;  // ... some of which have a diffuse map
   bool vertexColours = false; // ... and the mesh has vertex colours
   StrokeSource stroke = StrokeSource::None;
+  int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -79,7 +80,10 @@ struct EdgeProgram {};
 // marker.vert + marker.frag: the light marker.
 struct MarkerProgram {};
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram>;
+// shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
+struct ShadowDepthProgram {};
+
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram>;
 
 struct ProgramSource {
   std::string vertexFile, fragmentFile;
@@ -93,5 +97,6 @@ bool operator<(const QuadProgram& a, const QuadProgram& b);
 bool operator<(const LineProgram& a, const LineProgram& b);
 inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
+inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
 
 }  // namespace npr::gl

@@ -16,6 +16,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
 
@@ -34,6 +35,8 @@ struct FrameContext {
   const gl::VertexArray& emptyVao;   // for full-screen triangles (vertices made in the shader)
   // Palette paths write their texels, or the selection behind them (tests, the benchmark).
   gl::MeshOutput output = gl::MeshOutput::Colour;
+  // This frame's shadow maps, when shadows are on and some light has one.
+  const ShadowMaps* shadows = nullptr;
 
   // The palette's program variant for this output; selections are the same turned or not, so
   // they ignore the orientation.

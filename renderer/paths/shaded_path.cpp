@@ -25,6 +25,7 @@ Status ShadedPath::draw(FrameContext& f) {
   variant.materialMaps = materials && f.materials.hasMaps();
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
+  if (f.shadows) variant.shadowLayers = f.shadows->layers();
   if (usesPalette) {
     variant.palette = f.paletteVariant();
     variant.stroke = f.strokeSource();
@@ -42,6 +43,7 @@ Status ShadedPath::draw(FrameContext& f) {
     uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
   }
   if (usesPalette) f.bindPalette(p);
+  if (f.shadows) f.shadows->bind(p, f.camera.view);
   f.gpuMesh.drawAll();
   ++f.stats.drawCalls;
   return okStatus();

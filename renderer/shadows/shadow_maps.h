@@ -1,0 +1,62 @@
+// Shadow maps for every enabled light (`--shadows`): one depth layer per directional light
+// (orthographic, fitted to the casters' bounding sphere), per spot light (perspective over its
+// cone) and six per point light (one per axis direction), all in one depth-compare texture
+// array that shaders/shadows.glsl reads. Maps live in model space, so they are redrawn only
+// when a light moves relative to the model or the scene changes, not when the camera moves
+// (a light that follows the camera moves every time the camera does).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/frame_stats.h"
+#include "renderer/core/result.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/gpu_mesh.h"
+
+namespace npr {
+
+struct ShadowScene {
+  std::vector<const GpuMesh*> casters;
+  glm::vec3 centre{0.0f};
+  float casterRadius = 1.0f;  // a sphere about `centre` holding every caster
+  float sceneRadius = 1.0f;   // ... and every receiver (the ground plane)
+  unsigned version = 0;       // changes whenever the casters do
+};
+
+class ShadowMaps {
+ public:
+  static constexpr int kSize = 2048;       // directional and spot maps
+  static constexpr int kPointSize = 1024;  // when some light is a point light (six layers each)
+
+  // Redraws the maps that changed for the lights of `lighting` (eye space of `view`).
+  [[nodiscard]] Status update(const LightingState& lighting, const glm::mat4& view, const ShadowScene& scene,
+                              gl::ProgramCache& programs, FrameStats& stats);
+  void clear();
+  // Layers in use (0: no enabled light has a map): what programs are compiled for.
+  int layers() const { return layerCount_; }
+  // shadows.glsl's uniforms and the depth array, for a frame seen through `view`.
+  void bind(gl::ShaderProgram& program, const glm::mat4& view) const;
+
+ private:
+  struct LightMap {
+    int firstLayer = -1;
+    bool point = false, perspective = false;
+    float texelSize = 0.0f;        // model units per texel (at distance 1 when perspective)
+    glm::vec3 positionModel{0.0f};
+    std::array<glm::mat4, 6> viewProjection{};  // model -> light clip, per layer
+    glm::vec4 key{0.0f};           // position (or direction) in model space
+    glm::vec4 spotKey{0.0f};       // spot direction and cutoff
+  };
+  std::vector<LightMap> maps_;     // per enabled light, in order (the shader's light index)
+  gl::Texture depth_;              // GL_TEXTURE_2D_ARRAY, depth compare
+  gl::Framebuffer fbo_;
+  int size_ = 0, layerCount_ = 0, allocatedLayers_ = 0;
+  unsigned sceneVersion_ = ~0u;
+};
+
+}  // namespace npr
