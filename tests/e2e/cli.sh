@@ -77,5 +77,12 @@ expect 2 "--orient nan" -- "$viewer" --headless --orient nan
 expect 2 "--orient-bins 1" -- "$viewer" --headless --orient curvature --orient-bins 1
 expect 2 "--orient-bins 65" -- "$viewer" --headless --orient curvature --orient-bins 65
 
+# Ground plane and shadows: each changes the frame (the ground appears; the shadow darkens it).
+expect 0 "plain" -- "$viewer" --headless --size 96x96 --light 1,3,1 --screenshot "$tmp/plain.png"
+expect 0 "--ground" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --screenshot "$tmp/ground.png"
+expect 0 "--ground --shadows" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --shadows --screenshot "$tmp/shadows.png"
+cmp -s "$tmp/plain.png" "$tmp/ground.png" && { echo "FAIL: --ground draws nothing"; fail=1; }
+cmp -s "$tmp/ground.png" "$tmp/shadows.png" && { echo "FAIL: --shadows changes nothing"; fail=1; }
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail

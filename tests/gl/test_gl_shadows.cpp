@@ -1,0 +1,152 @@
+// GL tier: the ground plane and cast shadows. A unit cube standing on the ground plane, lit
+// from one side: the ground where the cube's shadow falls gets a darker palette entry than the
+// lit ground, in every GPU-lit path and for directional, spot and point lights; without
+// shadows the two are the same. A flat plate lit at grazing angles shows no acne at any zoom.
+// Maps are redrawn only when a light moves relative to the model.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gl/gl_test_env.h"
+#include "renderer/immediate_api.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using Fixture = test::RendererFixture;
+constexpr int kSize = 256;
+
+Mesh unitCube() {
+  const glm::vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                        {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  std::vector<Triangle> tris;
+  for (const auto& t : f) tris.push_back({{c[t[0]] * 0.5f, c[t[1]] * 0.5f, c[t[2]] * 0.5f}});
+  return meshFromTriangles(tris);
+}
+
+// Window pixel (x, y from the top) of a model-space point.
+glm::ivec2 pixelOf(const CameraMatrices& cam, const glm::vec3& p, int w, int h) {
+  const glm::vec4 c = cam.projection * cam.view * glm::vec4(p, 1.0f);
+  const glm::vec2 win = (glm::vec2(c) / c.w * 0.5f + 0.5f) * glm::vec2(w, h);
+  return {int(win.x), h - 1 - int(win.y)};
+}
+
+int entryAt(const ImageRGBA8& entries, glm::ivec2 p) {
+  EXPECT_TRUE(p.x >= 0 && p.y >= 0 && p.x < entries.width && p.y < entries.height) << p.x << ", " << p.y;
+  if (p.x < 0 || p.y < 0 || p.x >= entries.width || p.y >= entries.height) return -1;
+  return entries.pixels[(size_t(p.y) * entries.width + size_t(p.x)) * 4];
+}
+
+CameraMatrices sceneCamera() {
+  OrbitCamera c(0.0f, 35.0f, 3.0f);
+  c.frame(2.2f);  // the cube and the ground around it
+  return c.matrices(1.0f);
+}
+
+struct Shadows : Fixture {
+  Mesh cube = unitCube();
+  CameraMatrices cam = sceneCamera();
+  void SetUp() override {
+    Fixture::SetUp();
+    ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+    r->setMesh(&cube);
+  }
+  // Light 0 at `position` (model space, w = 0: a direction), set through the camera's view as
+  // the viewer does.
+  void light(const glm::vec4& position, float spotCutoff = 180.0f, const glm::vec3& spotDirection = {0, -1, 0}) {
+    r->lighting().setModelView(cam.view);
+    const float pos[4] = {position.x, position.y, position.z, position.w};
+    ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
+    const float dir[3] = {spotDirection.x, spotDirection.y, spotDirection.z};
+    ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_SPOT_DIRECTION, dir));
+    ASSERT_TRUE(r->lighting().Lightf(GL_LIGHT0, GL_SPOT_CUTOFF, spotCutoff));
+  }
+  // The entries at a ground point in the cube's shadow (x = -1) and a lit one (x = +1.3).
+  std::pair<int, int> shadowedAndLit(const RenderSettings& s) {
+    const ImageRGBA8 e = test::renderEntries(*r, cam, s, kSize, kSize);
+    const float y = -0.5f;
+    return {entryAt(e, pixelOf(cam, {-1.0f, y, 0.0f}, kSize, kSize)), entryAt(e, pixelOf(cam, {1.3f, y, 0.0f}, kSize, kSize))};
+  }
+};
+
+TEST_F(Shadows, CubeShadowOnTheGroundIsDarkerInEveryGpuLitPath) {
+  light({1.0f, 1.0f, 0.0f, 0.0f});  // from +x, 45 degrees up: the shadow reaches x = -1.5
+  // (entries: the smooth path's selection is a blend, read as floats elsewhere)
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.ground = true;
+    const auto [offShadow, offLit] = shadowedAndLit(s);
+    EXPECT_EQ(offShadow, offLit);  // without shadows the flat ground has one tone
+    s.shadows = true;
+    const auto [shadow, lit] = shadowedAndLit(s);
+    EXPECT_EQ(lit, offLit);
+    EXPECT_GE(shadow, lit + 1) << "the crosshatch palette's entries darken with the index";
+  }
+}
+
+TEST_F(Shadows, SpotAndPointLightsCastShadowsToo) {
+  RenderSettings s;
+  s.ground = true;
+  s.shadows = true;
+  light({2.0f, 2.0f, 0.0f, 1.0f}, 60.0f, glm::normalize(glm::vec3(-1.0f, -1.0f, 0.0f)));  // spot
+  auto [shadow, lit] = shadowedAndLit(s);
+  EXPECT_GE(shadow, lit + 1) << "spot";
+  light({2.0f, 2.0f, 0.0f, 1.0f});  // point
+  std::tie(shadow, lit) = shadowedAndLit(s);
+  EXPECT_GE(shadow, lit + 1) << "point";
+}
+
+TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
+  // A large flat plate (the model) over the ground, lit at a few degrees above its plane, seen
+  // from near and far: with shadows it must show what it shows without (nothing shadows it).
+  std::vector<Triangle> plate(2);
+  plate[0].v = {glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 1)};
+  plate[1].v = {glm::vec3(-1, 0, -1), glm::vec3(1, 0, 1), glm::vec3(1, 0, -1)};
+  const Mesh m = meshFromTriangles(plate);
+  r->setMesh(&m);
+  for (float elevation : {3.0f, 10.0f, 30.0f})
+    for (float distance : {1.5f, 3.0f, 8.0f}) {
+      OrbitCamera c(20.0f, 40.0f, distance);
+      cam = c.matrices(1.0f);
+      const float e = glm::radians(elevation);
+      light({std::cos(e), std::sin(e), 0.3f, 0.0f});
+      RenderSettings s;
+      s.ground = true;
+      const ImageRGBA8 plain = test::renderEntries(*r, cam, s, kSize, kSize);
+      s.shadows = true;
+      const ImageRGBA8 shadowed = test::renderEntries(*r, cam, s, kSize, kSize);
+      const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+      int covered = 0, differ = 0;
+      for (std::size_t i = 0; i < cover.pixels.size() / 4; ++i) {
+        if (cover.pixels[i * 4 + 3] == 0.0f) continue;  // the plate only
+        ++covered;
+        differ += plain.pixels[i * 4] != shadowed.pixels[i * 4];
+      }
+      EXPECT_GT(covered, 500) << elevation << " deg, distance " << distance;
+      EXPECT_EQ(differ, 0) << elevation << " deg, distance " << distance << ": acne on " << differ << " of " << covered;
+    }
+  r->setMesh(&cube);
+}
+
+TEST_F(Shadows, MapsAreRedrawnOnlyWhenTheLightMovesRelativeToTheModel) {
+  light({1.0f, 1.0f, 0.0f, 0.0f});
+  RenderSettings s;
+  s.shadows = true;
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  EXPECT_EQ(r->stats().shadowMapRenders, 1);
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  EXPECT_EQ(r->stats().shadowMapRenders, 0);
+  light({1.0f, 2.0f, 0.0f, 0.0f});
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  EXPECT_EQ(r->stats().shadowMapRenders, 1);
+  s.ground = true;  // the scene changed
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  EXPECT_EQ(r->stats().shadowMapRenders, 1);
+}
+
+}  // namespace
+}  // namespace npr
