@@ -171,6 +171,7 @@ Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettin
   scene.version = sceneVersion_ * 2 + (s.ground ? 1 : 0);
   if (Status st = shadows_.update(lighting_, camera.view, scene, programs_, stats_); !st) return st;
   shadowsReady_ = shadows_.layers() > 0;
+  stats_.shadowLayers = shadows_.layers();
   return okStatus();
 }
 

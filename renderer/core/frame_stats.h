@@ -20,6 +20,7 @@ struct FrameStats {
   int patternSamples = 0;      // samples the fit used (visible in both frames)
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
+  int shadowLayers = 0;        // shadow map layers in use (one per light, six for a point light among the casters)
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

@@ -46,8 +46,16 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
       } else {
         m.positionModel = glm::vec3(toModel * glm::vec4(glm::vec3(l.position) / l.position.w, 1.0f));
         m.key = glm::vec4(m.positionModel, 1.0f);
-        m.point = l.spotCutoff >= 90.0f;
-        if (!m.point) m.spotKey = glm::vec4(glm::normalize(toModel3 * l.spotDirection), l.spotCutoff);
+        if (l.spotCutoff < 90.0f) {
+          m.spotKey = glm::vec4(glm::normalize(toModel3 * l.spotDirection), l.spotCutoff);
+        } else {
+          // A point light outside every caster needs one map, looking at the casters: what it
+          // does not see has nothing between it and the light. Inside, six.
+          const glm::vec3 toCentre = scene.centre - m.positionModel;
+          const float d = glm::length(toCentre), cr = std::max(scene.casterRadius, 1e-6f) * 1.02f;
+          if (d > 1.05f * cr) m.spotKey = glm::vec4(toCentre / d, glm::degrees(std::asin(cr / d)));
+          else m.point = true;
+        }
       }
       if (!std::isfinite(m.key.x) || !std::isfinite(m.key.y) || !std::isfinite(m.key.z)) {
         maps.push_back(m);  // an unusable light (zero direction): unshadowed

@@ -1,6 +1,7 @@
 // Shadow maps for every enabled light (`--shadows`): one depth layer per directional light
 // (orthographic, fitted to the casters' bounding sphere), per spot light (perspective over its
-// cone) and six per point light (one per axis direction), all in one depth-compare texture
+// cone) and per point light outside the casters (perspective over the cone that holds them),
+// six for a point light among them (one per axis direction), all in one depth-compare texture
 // array that shaders/shadows.glsl reads. Maps live in model space, so they are redrawn only
 // when a light moves relative to the model or the scene changes, not when the camera moves
 // (a light that follows the camera moves every time the camera does).

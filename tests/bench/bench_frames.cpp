@@ -5,7 +5,8 @@
 // palette path can do). The light moves every frame, so per-triangle paths pay their CPU
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
-//      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--orient]
+//      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--orient] [--shadows]
+//      [--static-light]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -50,13 +51,15 @@ struct PathRow {
   bool materials = false;                 // the mesh's own materials (--materials)
   bool anchored = false;                  // the anchored pattern space (--patterns)
   bool oriented = false;                  // strokes along the curvature (--orient)
+  bool shadows = false;                   // ground plane and shadows (--shadows)
+  bool ground = false;                    // the ground plane alone (--shadows' yardstick)
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
-  bool quick = false, materials = false, patterns = false, orient = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -66,15 +69,18 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--materials")) materials = true;
     else if (!std::strcmp(argv[i], "--patterns")) patterns = true;
     else if (!std::strcmp(argv[i], "--orient")) orient = true;
+    else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
+    else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--orient]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--orient] [--shadows] [--static-light]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
-                           "path with strokes along the curvature)\n");
+                           "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
+                           "--static-light keeps the light still, so shadow maps are drawn once)\n");
       return 2;
     }
   }
@@ -148,6 +154,15 @@ int main(int argc, char** argv) {
         on.anchored = true;
         paths.push_back(on);
       }
+      if (shadows && p.path != RenderPath::Triangle && p.path != RenderPath::Stencil) {
+        PathRow on = p;
+        on.label += "+ground";
+        on.ground = true;
+        paths.push_back(on);
+        on.label += "+shadows";
+        on.shadows = true;
+        paths.push_back(on);
+      }
       if (orient && pathInfo(p.path).usesPalette) {
         PathRow on = p;
         on.label += "+orient";
@@ -177,12 +192,14 @@ int main(int argc, char** argv) {
         s.materials = paths[p].materials;
         s.pattern = paths[p].anchored ? PatternSpace::Anchored : PatternSpace::Screen;
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
+        s.ground = paths[p].ground;
+        s.shadows = paths[p].shadows;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
           OrbitCamera moving = cam;
           moving.orbit(0.05f * float(call), 0.0f);
           matrices = moving.matrices(float(w) / float(h));
         }
-        const float angle = 0.6f + 0.002f * float(call++);
+        const float angle = 0.6f + (staticLight ? 0.0f : 0.002f * float(call++));
         const float pos[4] = {2.0f * std::cos(angle), 2.5f, 3.0f * std::sin(angle) + 1.0f, 1.0f};
         r.lighting().setModelView(matrices.view);
         if (!r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos)) ++failed;

@@ -95,9 +95,14 @@ TEST_F(Shadows, SpotAndPointLightsCastShadowsToo) {
   light({2.0f, 2.0f, 0.0f, 1.0f}, 60.0f, glm::normalize(glm::vec3(-1.0f, -1.0f, 0.0f)));  // spot
   auto [shadow, lit] = shadowedAndLit(s);
   EXPECT_GE(shadow, lit + 1) << "spot";
-  light({2.0f, 2.0f, 0.0f, 1.0f});  // point
+  light({2.0f, 2.0f, 0.0f, 1.0f});  // point, outside the casters: one map toward them
   std::tie(shadow, lit) = shadowedAndLit(s);
   EXPECT_GE(shadow, lit + 1) << "point";
+  EXPECT_EQ(r->stats().shadowLayers, 1);
+  light({0.55f, 0.55f, 0.3f, 1.0f});  // point among the casters (inside their bounding sphere): six maps
+  std::tie(shadow, lit) = shadowedAndLit(s);
+  EXPECT_GE(shadow, lit + 1) << "point among the casters";
+  EXPECT_EQ(r->stats().shadowLayers, 6);
 }
 
 TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
