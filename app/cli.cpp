@@ -68,6 +68,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--orient-bins", o.orientBins, "Steps the turn is quantised to over 180 degrees (2..64, default 8)");
   app.add_flag("--ground", o.ground, "A ground plane under the model, drawn with the same palette and path");
   app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
+  app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
+  app.add_option("--occlusion-strength", o.occlusionStrength, "How much the occlusion darkens, 0..1 (default 1)");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
@@ -114,6 +116,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (o.orientBins && (*o.orientBins < OrientSettings::kMinBins || *o.orientBins > OrientSettings::kMaxBins))
     return {std::nullopt, fail("--orient-bins must be " + std::to_string(OrientSettings::kMinBins) + ".." +
                                    std::to_string(OrientSettings::kMaxBins) + ", got " + std::to_string(*o.orientBins))};
+  if (o.occlusionStrength && !(*o.occlusionStrength >= 0.0f && *o.occlusionStrength <= 1.0f))
+    return {std::nullopt, fail("--occlusion-strength must be in 0..1, got " + std::to_string(*o.occlusionStrength))};
   if (!animate.empty()) {
     Result<CameraAnimation> a = parseCameraAnimation(animate);
     if (!a) return {std::nullopt, fail(a.error())};

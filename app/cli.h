@@ -44,6 +44,8 @@ struct Options {
   std::optional<int> orientBins;        // --orient-bins
   bool ground = false;                  // --ground
   bool shadows = false;                 // --shadows
+  bool occlusion = false;               // --occlusion
+  std::optional<float> occlusionStrength;  // --occlusion-strength
   std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

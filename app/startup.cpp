@@ -27,6 +27,8 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
   state.settings.ground = o.ground;
   state.settings.shadows = o.shadows;
+  state.settings.occlusion = o.occlusion;
+  if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

@@ -74,6 +74,10 @@ struct RenderSettings {
   bool ground = false;
   // Cast shadows from every enabled light in the GPU-lit paths (shadows/shadow_maps.h).
   bool shadows = false;
+  // Ambient occlusion baked per vertex (shadows/occlusion_bake.h) scales ambient and diffuse in
+  // the GPU-lit paths: by mix(1, occlusion, strength).
+  bool occlusion = false;
+  float occlusionStrength = 1.0f;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

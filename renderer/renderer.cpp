@@ -35,6 +35,7 @@ void Renderer::setMesh(const Mesh* mesh) {
   groups_.clear();
   groupsDirty_ = true;
   field_.reset();
+  occlusion_.reset();
   ++sceneVersion_;
   groundGpu_.clear();
   groundTriangles_.setMesh(nullptr);
@@ -97,6 +98,7 @@ void Renderer::rebuildPaletteGroups() {
     group->materials.upload(group->mesh);
     group->triangles.setMesh(&group->mesh);
     if (field_) group->gpuMesh.uploadDirections(field_->directions);  // a subset keeps every vertex
+    if (occlusion_ && occlusion_->done()) group->gpuMesh.uploadOcclusion(occlusion_->values());
     stats_.bufferUploads += 3;
     groups_.push_back(std::move(group));
   }
@@ -175,6 +177,22 @@ Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettin
   return okStatus();
 }
 
+Status Renderer::prepareOcclusion(const RenderSettings& s) {
+  if (!s.occlusion || !mesh_) return okStatus();
+  if (!occlusion_) {
+    Result<std::unique_ptr<OcclusionBake>> bake = OcclusionBake::start(*mesh_, gpuMesh_);
+    if (!bake) return Error{bake.error()};
+    occlusion_ = std::move(*bake);
+  }
+  if (occlusion_->done()) return okStatus();
+  if (Status st = occlusion_->step(occlusionBudgetMs_, programs_, stats_); !st) return st;
+  if (!occlusion_->done()) return okStatus();
+  gpuMesh_.uploadOcclusion(occlusion_->values());
+  for (auto& g : groups_) g->gpuMesh.uploadOcclusion(occlusion_->values());  // subsets keep every vertex
+  stats_.bufferUploads += 1;
+  return okStatus();
+}
+
 void Renderer::clearViewport(const glm::ivec4& viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
@@ -224,6 +242,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   preparePattern(camera, s, viewport);
   prepareOrientation(s, viewport);
   Status shadowStatus = prepareShadows(camera, s);
+  if (shadowStatus) shadowStatus = prepareOcclusion(s);
   timer_.begin();
   clearViewport(viewport);
   Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
@@ -242,6 +261,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   if (Status st = prepare(s); !st) return st;
   if (Status st = prepareShadows(camera, s); !st) return st;
+  if (Status st = prepareOcclusion(s); !st) return st;
   clearViewport(viewport);
   const Status result = drawPath(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend);
   gl::restoreDefaults();

@@ -33,6 +33,7 @@
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/occlusion_bake.h"
 #include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
@@ -86,6 +87,11 @@ class Renderer {
   // jumps (frame the model, reset the view). A new mesh does it too.
   void resetPattern() { patterns_.reset(); }
   const PatternTracker& patternTracker() const { return patterns_; }
+  // The ambient occlusion bake of the current mesh: started the first time a frame asks for
+  // occlusion, run for at most `occlusionBudgetMs` per frame (0: to the end in one frame, as
+  // headless runs and tests want), uploaded when done. Null before it starts.
+  const OcclusionBake* occlusionBake() const { return occlusion_.get(); }
+  void setOcclusionBudget(double ms) { occlusionBudgetMs_ = ms; }
   // The current mesh's hatching direction field: computed the first time a frame orients
   // strokes along the curvature, kept until the mesh changes (null until then).
   const DirectionField* directionField() const { return field_ ? &*field_ : nullptr; }
@@ -151,6 +157,10 @@ class Renderer {
   // Brings the shadow maps up to date when `settings.shadows` is on.
   Status prepareShadows(const CameraMatrices& camera, const RenderSettings& settings);
   ShadowMaps shadows_;
+  // Continues the occlusion bake when `settings.occlusion` is on.
+  Status prepareOcclusion(const RenderSettings& settings);
+  std::unique_ptr<OcclusionBake> occlusion_;
+  double occlusionBudgetMs_ = 0.0;
   bool shadowsReady_ = false;  // this frame draws with shadows_
   unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache
   // The ground plane under the current mesh (--ground), drawn like one more part of it.

@@ -36,6 +36,12 @@ in vec3 vNormal;
 #ifdef ORIENT_FIELD
 in vec3 vDirection;
 #endif
+#if defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
+in float vOcclusion;
+#define OCCLUSION_FACTOR vOcclusion
+#else
+#define OCCLUSION_FACTOR 1.0
+#endif
 #if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
 in vec3 vColorFront;
 in vec3 vColorBack;
@@ -98,9 +104,9 @@ void main() {
 #ifdef MATERIAL_MAPS
   if (mat.map >= 0.0) scale *= texture(uMaterialMaps, vec3(vTexcoord, mat.map)).rgb;
 #endif
-  vec3 lit = shadeScaled(mat, vPosition, vNormal, !gl_FrontFacing, scale);
+  vec3 lit = shadeScaled(mat, vPosition, vNormal, !gl_FrontFacing, scale * OCCLUSION_FACTOR);
 #else
-  vec3 lit = shadeGL(vPosition, vNormal, !gl_FrontFacing);
+  vec3 lit = shadeScaled(vPosition, vNormal, !gl_FrontFacing, vec3(OCCLUSION_FACTOR));
 #endif
 #if defined(PATH_PIXEL)
   fragColor = SHOW_ENTRY(matchEntry(lit));

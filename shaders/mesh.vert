@@ -3,7 +3,7 @@
 // PER_VERTEX_LIGHTING (the `vertex` path and Gouraud reference) lights here. MATERIALS adds
 // the mesh's own appearance: a colour (white where the mesh has none), texture coordinates
 // and a material index per vertex (vertices are split where these differ). ORIENT_FIELD passes
-// the hatching direction field on (orientation.glsl).
+// the hatching direction field on (orientation.glsl); OCCLUSION the baked ambient occlusion.
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -37,6 +37,12 @@ layout(location = 6) in vec3 aDirection;  // the hatching direction field (zero:
 out vec3 vDirection;  // eye space: a tangent turns with the modelview, not the normal matrix
 #endif
 
+#ifdef OCCLUSION
+layout(location = 7) in float aOcclusion;  // baked: 1 open, 0 enclosed
+uniform float uOcclusionStrength;
+out float vOcclusion;  // what ambient and diffuse are scaled by
+#endif
+
 #ifdef PER_VERTEX_LIGHTING
 #include "lighting.glsl"
 out vec3 vColorFront;
@@ -58,18 +64,24 @@ void main() {
   vTexcoord = aTexcoord;
   vMaterial = aMaterial;
 #endif
+#ifdef OCCLUSION
+  vOcclusion = mix(1.0, clamp(aOcclusion, 0.0, 1.0), uOcclusionStrength);
+  float occlusion = vOcclusion;
+#else
+  float occlusion = 1.0;
+#endif
 #if defined(PER_VERTEX_LIGHTING) && defined(MATERIALS)
   SurfaceMaterial mat = fetchMaterial(aMaterial);
-  vColorFront = shadeScaled(mat, eye.xyz, vNormal, false, aColour * aMapAverage);
+  vColorFront = shadeScaled(mat, eye.xyz, vNormal, false, aColour * aMapAverage * occlusion);
 #ifdef TWO_SIDED
-  vColorBack = shadeScaled(mat, eye.xyz, vNormal, true, aColour * aMapAverage);
+  vColorBack = shadeScaled(mat, eye.xyz, vNormal, true, aColour * aMapAverage * occlusion);
 #else
   vColorBack = vColorFront;
 #endif
 #elif defined(PER_VERTEX_LIGHTING)
-  vColorFront = shadeGL(eye.xyz, vNormal, false);
+  vColorFront = shadeScaled(eye.xyz, vNormal, false, vec3(occlusion));
 #ifdef TWO_SIDED
-  vColorBack = shadeGL(eye.xyz, vNormal, true);
+  vColorBack = shadeScaled(eye.xyz, vNormal, true, vec3(occlusion));
 #else
   vColorBack = vColorFront;
 #endif

@@ -94,8 +94,18 @@ void drawOverlay(Viewer& v) {
   ImGui::Checkbox("ground plane", &s.settings.ground);
   ImGui::SameLine();
   ImGui::Checkbox("shadows", &s.settings.shadows);
-  if (s.settings.shadows && (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil))
-    ImGui::TextDisabled("(per-triangle paths light on the CPU: no shadows yet)");
+  ImGui::SameLine();
+  ImGui::Checkbox("occlusion", &s.settings.occlusion);
+  if (s.settings.occlusion) {
+    ImGui::SliderFloat("occlusion strength", &s.settings.occlusionStrength, 0.0f, 1.0f);
+    s.settings.occlusionStrength = std::isfinite(s.settings.occlusionStrength) ? std::clamp(s.settings.occlusionStrength, 0.0f, 1.0f) : 1.0f;
+    if (const OcclusionBake* bake = v.renderer->occlusionBake()) {
+      if (!bake->done()) ImGui::ProgressBar(float(bake->directionsDone()) / float(bake->directions()), ImVec2(200, 0), "baking occlusion");
+      else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
+    }
+  }
+  if ((s.settings.shadows || s.settings.occlusion) && (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil))
+    ImGui::TextDisabled("(per-triangle paths light on the CPU: no shadows or occlusion yet)");
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);
   // Per-material palettes: a palette for each of the model's materials.

@@ -29,6 +29,9 @@ int runWindowViewer(const Options& o) {
   Result<std::unique_ptr<Renderer>> renderer = Renderer::create();
   if (!renderer) return reportFailure(renderer.error());
   v.renderer = std::move(*renderer);
+  // The occlusion bake runs a few directions per frame in the window, so it stays responsive
+  // and the overlay shows progress (headless runs bake to the end at once).
+  v.renderer->setOcclusionBudget(30.0);
   if (Status s = startScene(o, v.state, *v.renderer); !s) return reportFailure(s.error());
   if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
   if (v.screenshotDir.empty()) v.screenshotDir = ".";

@@ -9,7 +9,10 @@ void apply(const PassState& s) {
   glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE);
   const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
   glColorMask(c, c, c, c);
-  if (s.blend) {
+  if (s.blend && s.additive) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+  } else if (s.blend) {
     glEnable(GL_BLEND);
     glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   } else {

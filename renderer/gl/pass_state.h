@@ -12,6 +12,7 @@ struct PassState {
   bool colorWrite = true;
   // Colour blends source-over; destination alpha is kept (opaque), so read-backs stay opaque.
   bool blend = false;
+  bool additive = false;  // with blend: one + one instead of source-over
   bool stencilTest = false;
   GLenum stencilFunc = GL_ALWAYS;
   GLenum stencilPass = GL_KEEP;  // op when stencil and depth pass
@@ -73,6 +74,8 @@ inline constexpr PassState kShadowDepth = [] {
   s.offsetUnits = 4.0f;
   return s;
 }();
+// Accumulation into a float target (the occlusion bake): additive, no depth.
+inline constexpr PassState kAccumulate = [] { PassState s; s.blend = true; s.additive = true; return s; }();
 // The light marker: a point sprite sized by the shader, over everything.
 inline constexpr PassState kMarker = [] { PassState s; s.programPointSize = true; return s; }();
 }  // namespace pass

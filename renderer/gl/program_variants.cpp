@@ -55,6 +55,7 @@ struct SourceOf {
     if (m.stroke == StrokeSource::Field) s.defines.push_back("ORIENT_FIELD");
     if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");
+    if (m.occlusion) s.defines.push_back("OCCLUSION");
     if (m.shadowLayers > 0) {
       s.defines.push_back("SHADOWS");
       s.defines.push_back("SHADOW_LAYERS " + std::to_string(m.shadowLayers));
@@ -82,6 +83,7 @@ struct SourceOf {
   ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
+  ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }
 };
 
 auto lightingKey(const std::optional<LightingFeatures>& f) {
@@ -97,10 +99,10 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

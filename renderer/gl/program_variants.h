@@ -57,6 +57,7 @@ struct MeshProgram {
   bool vertexColours = false; // ... and the mesh has vertex colours
   StrokeSource stroke = StrokeSource::None;
   int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
+  bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -83,7 +84,10 @@ struct MarkerProgram {};
 // shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
 struct ShadowDepthProgram {};
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram>;
+// occlusion_bake.vert + occlusion_bake.frag: one direction of the ambient occlusion bake.
+struct OcclusionBakeProgram {};
+
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram>;
 
 struct ProgramSource {
   std::string vertexFile, fragmentFile;
@@ -98,5 +102,6 @@ bool operator<(const LineProgram& a, const LineProgram& b);
 inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
+inline bool operator<(const OcclusionBakeProgram&, const OcclusionBakeProgram&) { return false; }
 
 }  // namespace npr::gl

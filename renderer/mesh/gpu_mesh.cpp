@@ -29,6 +29,7 @@ void GpuMesh::clear() {
   materials_.reset();
   mapAverages_.reset();
   directions_.reset();
+  occlusion_.reset();
   triangleCount_ = 0;
   vertexCount_ = 0;
 }
@@ -56,6 +57,19 @@ void GpuMesh::uploadDirections(const std::vector<glm::vec3>& directions) {
   glBindVertexArray(vao_.id());
   floatAttribute(6, directions_, 3);
   glBindVertexArray(0);
+}
+
+void GpuMesh::uploadOcclusion(const std::vector<float>& occlusion) {
+  if (!vao_.id() || occlusion.size() != vertexCount_) return;
+  occlusion_ = staticBuffer(occlusion.data(), occlusion.size() * sizeof(float));
+  glBindVertexArray(vao_.id());
+  floatAttribute(7, occlusion_, 1);
+  glBindVertexArray(0);
+}
+
+void GpuMesh::drawPoints() const {
+  glBindVertexArray(vao_.id());
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(vertexCount_));
 }
 
 void GpuMesh::uploadAppearance(const Mesh& mesh) {

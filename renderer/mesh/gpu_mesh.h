@@ -1,6 +1,6 @@
 // A mesh on the GPU: positions and normals (attributes 0 and 1 of mesh.vert; with an
 // appearance also colours, texture coordinates, material indices and map averages, 2-5; the hatching
-// direction field, 6), its index
+// direction field, 6; baked ambient occlusion, 7), its index
 // buffer, and the vertex array that binds them. Draws the whole mesh or a range of triangles
 // of another index buffer over the same vertices (the per-triangle paths' buckets).
 #pragma once
@@ -24,6 +24,11 @@ class GpuMesh {
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);
   bool hasDirections() const { return directions_.id() != 0; }
+  // Baked ambient occlusion, one value per vertex (attribute 7; shadows/occlusion_bake.h).
+  void uploadOcclusion(const std::vector<float>& occlusion);
+  bool hasOcclusion() const { return occlusion_.id() != 0; }
+  // Every vertex as a point (the occlusion bake addresses vertices by gl_VertexID).
+  void drawPoints() const;
 
   // Binds the vertex array with the mesh's own indices and draws every triangle.
   void drawAll() const;
@@ -35,7 +40,7 @@ class GpuMesh {
  private:
   gl::VertexArray vao_;
   void uploadAppearance(const Mesh& mesh);
-  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_;
+  gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_, occlusion_;
   std::size_t vertexCount_ = 0;
   std::size_t triangleCount_ = 0;
 };

@@ -1,6 +1,8 @@
 // Single-pass GPU-lit paths (see shaded_path.h).
 #include "renderer/paths/shaded_path.h"
 
+#include <algorithm>
+
 #include "renderer/gl/pass_state.h"
 #include "renderer/lighting/lighting_uniforms.h"
 #include "renderer/lighting/mesh_materials.h"
@@ -26,6 +28,7 @@ Status ShadedPath::draw(FrameContext& f) {
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (f.shadows) variant.shadowLayers = f.shadows->layers();
+  variant.occlusion = kind_ != Kind::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (usesPalette) {
     variant.palette = f.paletteVariant();
     variant.stroke = f.strokeSource();
@@ -44,6 +47,7 @@ Status ShadedPath::draw(FrameContext& f) {
   }
   if (usesPalette) f.bindPalette(p);
   if (f.shadows) f.shadows->bind(p, f.camera.view);
+  if (variant.occlusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   f.gpuMesh.drawAll();
   ++f.stats.drawCalls;
   return okStatus();

@@ -83,6 +83,10 @@ expect 0 "--ground" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground 
 expect 0 "--ground --shadows" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --shadows --screenshot "$tmp/shadows.png"
 cmp -s "$tmp/plain.png" "$tmp/ground.png" && { echo "FAIL: --ground draws nothing"; fail=1; }
 cmp -s "$tmp/ground.png" "$tmp/shadows.png" && { echo "FAIL: --shadows changes nothing"; fail=1; }
+expect 0 "--occlusion" -- "$viewer" --headless --size 96x96 --light 1,3,1 --occlusion --occlusion-strength 0.8 --screenshot "$tmp/occlusion.png"
+cmp -s "$tmp/plain.png" "$tmp/occlusion.png" && { echo "FAIL: --occlusion changes nothing"; fail=1; }
+expect 2 "--occlusion-strength 2" -- "$viewer" --headless --occlusion --occlusion-strength 2
+expect 2 "--occlusion-strength nan" -- "$viewer" --headless --occlusion --occlusion-strength nan
 
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail

@@ -2,13 +2,15 @@
 // from one side: the ground where the cube's shadow falls gets a darker palette entry than the
 // lit ground, in every GPU-lit path and for directional, spot and point lights; without
 // shadows the two are the same. A flat plate lit at grazing angles shows no acne at any zoom.
-// Maps are redrawn only when a light moves relative to the model.
+// Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
+// lower in a concave corner than on convex ones, and darkens the frame there.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "gl/gl_test_env.h"
 #include "renderer/immediate_api.h"
+#include "renderer/mesh/mesh_builder.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -151,6 +153,82 @@ TEST_F(Shadows, MapsAreRedrawnOnlyWhenTheLightMovesRelativeToTheModel) {
   s.ground = true;  // the scene changed
   (void)test::renderImage(*r, cam, s, 64, 64);
   EXPECT_EQ(r->stats().shadowMapRenders, 1);
+}
+
+// A floor and a wall meeting at a right angle (a concave corner along x at y = 0, z = 0), as
+// grids so there are vertices near and far from the corner.
+Mesh innerCorner() {
+  std::vector<glm::vec3> v;
+  std::vector<std::array<int, 3>> t;
+  const int n = 8;
+  auto grid = [&](auto at) {
+    const int base = int(v.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) v.push_back(at(float(i) / n, float(j) / n));
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = base + j * (n + 1) + i;
+        t.push_back({a, a + n + 1, a + n + 2});
+        t.push_back({a, a + n + 2, a + 1});
+      }
+  };
+  grid([](float u, float w) { return glm::vec3(u * 2.0f - 1.0f, 0.0f, w); });  // floor, facing +y
+  grid([](float u, float w) { return glm::vec3(u * 2.0f - 1.0f, w, 0.0f); });  // wall, facing +z
+  Mesh m;
+  buildTriMesh(v, t, m);
+  finalizeMesh(m);
+  return m;
+}
+
+TEST_F(Shadows, OcclusionIsLowerInAConcaveCornerThanOnAConvexOne) {
+  const Mesh corner = innerCorner();
+  r->setMesh(&corner);
+  RenderSettings s;
+  s.occlusion = true;
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  ASSERT_NE(r->occlusionBake(), nullptr);
+  ASSERT_TRUE(r->occlusionBake()->done());
+  const std::vector<float>& ao = r->occlusionBake()->values();
+  ASSERT_EQ(ao.size(), corner.positions.size());
+  float inCorner = 1.0f, open = 0.0f;
+  for (std::size_t i = 0; i < ao.size(); ++i) {
+    const glm::vec3 p = corner.positions[i];
+    if (std::fabs(p.x) > 0.5f) continue;  // away from the sheets' side edges
+    if (p.y < 0.01f && p.z > 0.1f && p.z < 0.2f) inCorner = std::min(inCorner, ao[i]);  // floor next to the wall
+    if (p.y < 0.01f && p.z > 0.99f) open = std::max(open, ao[i]);                        // floor's far edge
+  }
+  EXPECT_LT(inCorner, 0.75f);
+  EXPECT_GT(open, inCorner + 0.1f);
+  // A cube's corners and faces are convex: open to their whole hemisphere.
+  r->setMesh(&cube);
+  (void)test::renderImage(*r, cam, s, 64, 64);
+  ASSERT_TRUE(r->occlusionBake() && r->occlusionBake()->done());
+  for (float a : r->occlusionBake()->values()) EXPECT_GT(a, 0.95f);
+  // And the frame gets darker where it is occluded: the corner's ambient and diffuse scale.
+  r->setMesh(&corner);
+  RenderSettings off;
+  const ImageRGBA8 plain = test::renderImage(*r, cam, off, 64, 64), dark = test::renderImage(*r, cam, s, 64, 64);
+  double sumPlain = 0.0, sumDark = 0.0;
+  for (std::size_t i = 0; i < plain.pixels.size(); i += 4) {
+    sumPlain += plain.pixels[i + 1];
+    sumDark += dark.pixels[i + 1];
+  }
+  EXPECT_LT(sumDark, sumPlain);
+  r->setMesh(&cube);
+}
+
+TEST_F(Shadows, OcclusionBakesInStepsWithABudget) {
+  r->setOcclusionBudget(1e-6);  // one direction per frame
+  RenderSettings s;
+  s.occlusion = true;
+  (void)test::renderImage(*r, cam, s, 32, 32);
+  ASSERT_NE(r->occlusionBake(), nullptr);
+  EXPECT_EQ(r->occlusionBake()->directionsDone(), 1);
+  EXPECT_TRUE(r->occlusionBake()->values().empty());
+  for (int f = 1; f < r->occlusionBake()->directions(); ++f) (void)test::renderImage(*r, cam, s, 32, 32);
+  EXPECT_TRUE(r->occlusionBake()->done());
+  EXPECT_EQ(r->occlusionBake()->values().size(), cube.positions.size());
+  r->setOcclusionBudget(0.0);
 }
 
 }  // namespace
