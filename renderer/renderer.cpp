@@ -177,6 +177,10 @@ Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettin
   return okStatus();
 }
 
+const std::vector<float>* Renderer::occlusionValues(const RenderSettings& s) const {
+  return s.occlusion && occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr;
+}
+
 Status Renderer::prepareOcclusion(const RenderSettings& s) {
   if (!s.occlusion || !mesh_) return okStatus();
   if (!occlusion_) {
@@ -208,6 +212,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     if (s.materials) materials_.update(*mesh_, lighting_, stats_);
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+    frame.occlusion = occlusionValues(s);
     if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
@@ -218,6 +223,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     const GpuPalette* palette = g->palette ? g->palette : palette_.get();
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+    frame.occlusion = occlusionValues(s);
     if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
   }
   return drawGround(camera, s, viewport, output);

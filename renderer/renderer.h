@@ -160,6 +160,7 @@ class Renderer {
   // Continues the occlusion bake when `settings.occlusion` is on.
   Status prepareOcclusion(const RenderSettings& settings);
   std::unique_ptr<OcclusionBake> occlusion_;
+  const std::vector<float>* occlusionValues(const RenderSettings& settings) const;  // null until baked
   double occlusionBudgetMs_ = 0.0;
   bool shadowsReady_ = false;  // this frame draws with shadows_
   unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache

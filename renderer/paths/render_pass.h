@@ -37,6 +37,8 @@ struct FrameContext {
   gl::MeshOutput output = gl::MeshOutput::Colour;
   // This frame's shadow maps, when shadows are on and some light has one.
   const ShadowMaps* shadows = nullptr;
+  // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
+  const std::vector<float>* occlusion = nullptr;
 
   // The palette's program variant for this output; selections are the same turned or not, so
   // they ignore the orientation.

@@ -6,7 +6,8 @@
 namespace npr {
 
 Status TrianglePath::draw(FrameContext& f) {
-  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials);
+  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials, f.occlusion,
+                    f.settings.occlusionStrength);
   gl::MeshProgram variant;
   variant.shading = gl::MeshShading::Triangle;  // lit on the CPU: no lighting in the shader
   variant.output = f.output;

@@ -52,6 +52,8 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   faceScale_.clear();
   faceScaleValid_ = false;
+  occludedScale_.clear();
+  occludedWith_ = nullptr;
   ++meshId_;
   key_.valid = false;
   bucketsUploaded_ = false;
@@ -60,9 +62,12 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
 }
 
 void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher,
-                                  unsigned matcherId, FrameStats& stats, bool materials) {
+                                  unsigned matcherId, FrameStats& stats, bool materials, const std::vector<float>* occlusion,
+                                  float occlusionStrength) {
   const bool rigid = isRigid(modelView);
   materials = materials && mesh_->hasAppearance();
+  const float* occ = occlusion && occlusion->size() == mesh_->positions.size() ? occlusion->data() : nullptr;
+  if (!occ) occlusionStrength = 0.0f;
   const glm::mat4 toSpace = rigid ? glm::inverse(modelView) : glm::mat4(1.0f);
   PreparedLighting<float> prepared = prepareLighting<float>(lighting, toSpace);
   // With the mesh's materials, the lights' own colours matter even where the state's
@@ -72,7 +77,8 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
   white.shininess = lighting.front().shininess;
   PreparedLighting<float> probe = materials ? prepareLighting<float>(lighting.withMaterial(white), toSpace) : prepared;
   const bool same = key_.valid && rigid && key_.mesh == meshId_ && key_.matcher == matcherId && key_.materials == materials &&
-                    sameLighting(key_.lighting, prepared) && sameLighting(key_.probe, probe);
+                    key_.occlusion == occ && key_.occlusionStrength == occlusionStrength && sameLighting(key_.lighting, prepared) &&
+                    sameLighting(key_.probe, probe);
   if (!same) {
     const auto t0 = std::chrono::steady_clock::now();
     TriangleShadingOptions opt;
@@ -80,8 +86,8 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
     // process the 871K-triangle mesh about 30% slower than the reference render.
     opt.buildBuckets = true;
-    if (materials) {
-      if (!faceScaleValid_) {
+    if (materials || occ) {
+      if (materials && !faceScaleValid_) {
         faceScale_ = packFaceScale(faceColourScale(*mesh_));
         const auto& fmat = mesh_->faceMaterials;
         singleMaterial_ = fmat.empty() ? -1 : fmat[0];
@@ -90,20 +96,41 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
         faceScaleValid_ = true;
       }
       FaceMaterials fm;
-      fm.materials = glMaterials(*mesh_, lighting);
-      fm.faceMaterial = mesh_->faceMaterials.size() == mesh_->triangleCount() ? mesh_->faceMaterials.data() : nullptr;
-      if (fm.faceMaterial && singleMaterial_ >= 0) {  // every face has one material: no per-face lookup
-        fm.materials = {fm.materials[static_cast<std::size_t>(singleMaterial_)]};
-        fm.faceMaterial = nullptr;
+      if (materials) {
+        fm.materials = glMaterials(*mesh_, lighting);
+        fm.faceMaterial = mesh_->faceMaterials.size() == mesh_->triangleCount() ? mesh_->faceMaterials.data() : nullptr;
+        if (fm.faceMaterial && singleMaterial_ >= 0) {  // every face has one material: no per-face lookup
+          fm.materials = {fm.materials[static_cast<std::size_t>(singleMaterial_)]};
+          fm.faceMaterial = nullptr;
+        }
+        fm.faceScale = faceScale_.empty() ? nullptr : faceScale_.data();
+      } else {
+        fm.materials = {lighting.front()};
       }
-      fm.faceScale = faceScale_.empty() ? nullptr : faceScale_.data();
+      if (occ) {
+        if (occludedWith_ != occ || occludedStrength_ != occlusionStrength || occludedMaterials_ != materials) {
+          const std::size_t nf = mesh_->triangleCount();
+          occludedScale_.resize(nf);
+          for (std::size_t f = 0; f < nf; ++f) {
+            const std::uint32_t* v = &mesh_->indices[f * 3];
+            const float mean = (occ[v[0]] + occ[v[1]] + occ[v[2]]) / 3.0f;
+            const float k = 1.0f + (mean - 1.0f) * occlusionStrength;
+            const glm::vec4 base = fm.faceScale ? glm::vec4(fm.faceScale[f]) : glm::vec4(255.0f);
+            occludedScale_[f] = glm::u8vec4(glm::clamp(glm::round(base * glm::vec4(k, k, k, 1.0f)), 0.0f, 255.0f));
+          }
+          occludedWith_ = occ;
+          occludedStrength_ = occlusionStrength;
+          occludedMaterials_ = materials;
+        }
+        fm.faceScale = occludedScale_.data();
+      }
       shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_, &fm);
     } else {
       shadeTriangles(*mesh_, lighting, modelView, matcher, opt, shading_);
     }
     stats.cpuShadingMs += msSince(t0);
     ++stats.lightingRecomputes;
-    key_ = {meshId_, matcherId, prepared, probe, materials, /*valid=*/rigid};  // eye-space results are not reusable
+    key_ = {meshId_, matcherId, prepared, probe, materials, occ, occlusionStrength, /*valid=*/rigid};  // eye-space results are not reusable
     bucketsUploaded_ = false;
     boundsValid_ = false;
   }

@@ -26,8 +26,10 @@ class TriangleShadingCache {
   void setMesh(const Mesh* mesh);
   // Entries and buckets for this frame, and the bucketed index buffer.
   // `materials`: light each face with the mesh's own material (when it has any).
+  // `occlusion`: baked ambient occlusion per vertex (shadows/occlusion_bake.h), scaling each
+  // face's ambient and diffuse by mix(1, its vertices' mean, strength); null: none.
   void update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
-              FrameStats& stats, bool materials = false);
+              FrameStats& stats, bool materials = false, const std::vector<float>* occlusion = nullptr, float occlusionStrength = 1.0f);
   // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
   // viewport of `size` pixels.
   void updateBounds(const glm::mat4& modelViewProjection, const glm::ivec2& size, FrameStats& stats);
@@ -49,8 +51,15 @@ class TriangleShadingCache {
     unsigned mesh = 0, matcher = 0;
     PreparedLighting<float> lighting, probe;
     bool materials = false;
+    const float* occlusion = nullptr;
+    float occlusionStrength = 0.0f;
     bool valid = false;
   } key_;
+  // The face scale with occlusion folded in, rebuilt when its inputs change.
+  std::vector<glm::u8vec4> occludedScale_;
+  const float* occludedWith_ = nullptr;
+  float occludedStrength_ = -1.0f;
+  bool occludedMaterials_ = false;
   std::vector<glm::u8vec4> faceScale_;  // faceColourScale, packed once per mesh when materials are drawn
   int singleMaterial_ = -1;  // the material of every face, when they all have one
   bool faceScaleValid_ = false;
