@@ -4,43 +4,19 @@
 #include <algorithm>
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/gl/texture.h"
 #include "renderer/gl/texture_units.h"
 #include "renderer/passes/geometry_pass.h"
 
 namespace npr {
-
-void ImageEdgesPass::resize(const glm::ivec2& size, FrameStats& stats) {
-  normals_ = gl::createTexture();
-  glBindTexture(GL_TEXTURE_2D, normals_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
-  gl::setNearestSingleLevel(GL_TEXTURE_2D);
-  depth_ = gl::createTexture();
-  glBindTexture(GL_TEXTURE_2D, depth_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size.x, size.y, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-  gl::setNearestSingleLevel(GL_TEXTURE_2D);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  fbo_ = gl::createFramebuffer();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, normals_.id(), 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
-  size_ = size;
-  ++stats.bufferUploads;
-}
 
 Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
   if (!ls.imageSpace) return okStatus();
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  const glm::ivec2 size(viewport.z, viewport.w);
-  if (size != size_) resize(size, stats);
+  if (target_.resize({viewport.z, viewport.w}, GL_RGBA16F, GL_RGBA)) ++stats.bufferUploads;
   // The geometry pass: normals and depth of what this frame shows.
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glViewport(0, 0, size.x, size.y);
-  glClearColor(0, 0, 0, 0);
-  gl::apply(gl::pass::kClearTarget);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  target_.bindAndClear();
   Status status = drawGeometry(mesh, camera, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> sobel = programs.get(gl::EdgeProgram{}, stats.shaderBuilds);
   if (status && !sobel) status = Error{sobel.error()};
@@ -51,8 +27,8 @@ Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, c
   gl::apply(gl::pass::kScreenOverlay);
   gl::ShaderProgram& p = **sobel;
   p.use();
-  gl::bindTexture(gl::TextureUnit::EdgeNormals, GL_TEXTURE_2D, normals_.id());
-  gl::bindTexture(gl::TextureUnit::EdgeDepth, GL_TEXTURE_2D, depth_.id());
+  gl::bindTexture(gl::TextureUnit::EdgeNormals, GL_TEXTURE_2D, target_.colour());
+  gl::bindTexture(gl::TextureUnit::EdgeDepth, GL_TEXTURE_2D, target_.depth());
   p.set("uNormals", gl::unitIndex(gl::TextureUnit::EdgeNormals));
   p.set("uDepth", gl::unitIndex(gl::TextureUnit::EdgeDepth));
   p.set("uOrigin", glm::ivec2(viewport.x, viewport.y));

@@ -10,6 +10,7 @@
 #include "renderer/core/result.h"
 #include "renderer/gl/gl_handle.h"
 #include "renderer/gl/program_cache.h"
+#include "renderer/gl/texture_target.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/render_settings.h"
 
@@ -22,10 +23,7 @@ class ImageEdgesPass {
                             FrameStats& stats);
 
  private:
-  void resize(const glm::ivec2& size, FrameStats& stats);
-  gl::Framebuffer fbo_;
-  gl::Texture normals_, depth_;
-  glm::ivec2 size_{0};
+  gl::TextureTarget target_;  // eye-space normals and depth
 };
 
 }  // namespace npr

@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/core/result.h"
-#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/texture_target.h"
 #include "renderer/paths/render_pass.h"
 
 namespace npr {
@@ -26,10 +26,7 @@ class StrokeAnglePass {
   void bind(gl::ShaderProgram& program, const glm::ivec4& viewport) const;
 
  private:
-  void resize(const glm::ivec2& size, FrameStats& stats);
-  gl::Framebuffer fbo_;
-  gl::Texture angles_, depth_;
-  glm::ivec2 size_{0};
+  gl::TextureTarget target_;  // (angle, valid) and depth
 };
 
 }  // namespace npr

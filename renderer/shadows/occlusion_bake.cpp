@@ -9,6 +9,8 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture.h"
+#include "renderer/gl/texture_target.h"
 #include "renderer/gl/texture_units.h"
 
 namespace npr {
@@ -52,19 +54,11 @@ Result<std::unique_ptr<OcclusionBake>> OcclusionBake::start(const Mesh& mesh, co
   b->depth_ = gl::createTexture();
   glBindTexture(GL_TEXTURE_2D, b->depth_.id());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, kDepthSize, kDepthSize, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+  gl::setDepthCompare(GL_TEXTURE_2D);
   b->accumulation_ = gl::createTexture();
   glBindTexture(GL_TEXTURE_2D, b->accumulation_.id());
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, b->targetSize_.x, b->targetSize_.y, 0, GL_RGBA, GL_FLOAT, nullptr);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+  gl::setNearestSingleLevel(GL_TEXTURE_2D);
   glBindTexture(GL_TEXTURE_2D, 0);
 
   GLint previous = 0;

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_target.h"
 #include "renderer/gl/texture_units.h"
 
 namespace npr {
@@ -105,13 +106,7 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
     glActiveTexture(GL_TEXTURE0 + gl::unitIndex(gl::TextureUnit::ShadowMaps));
     glBindTexture(GL_TEXTURE_2D_ARRAY, depth_.id());
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, 0);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    gl::setDepthCompare(GL_TEXTURE_2D_ARRAY);
     glActiveTexture(GL_TEXTURE0);
     allocatedLayers_ = layers;
     ++stats.bufferUploads;

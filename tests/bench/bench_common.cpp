@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 
 #include "renderer/core/image_io.h"
@@ -88,6 +89,24 @@ double peakRssMiB() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_maxrss) / 1024.0;
+}
+
+std::optional<ImageBenchArgs> parseImageBenchArgs(int argc, char** argv, const char* program) {
+  ImageBenchArgs a;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) a.frames = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &a.width, &a.height);
+    else if (!std::strcmp(argv[i], "--quick")) a.quick = true;
+    else {
+      std::fprintf(stderr, "usage: %s [--size WxH] [--frames N] [--quick]\n", program);
+      return std::nullopt;
+    }
+  }
+  if (a.frames < 1 || a.width < 16 || a.height < 16) {
+    std::fprintf(stderr, "%s: --frames must be positive and --size at least 16x16\n", program);
+    return std::nullopt;
+  }
+  return a;
 }
 
 }  // namespace npr::bench

@@ -2,6 +2,7 @@
 // written once into the system temp folder.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "renderer/mesh/mesh.h"
@@ -17,6 +18,13 @@ const std::string& largeObjPath();
 // the temp folder: 16 materials by region (4 of them with a 512x512 diffuse map) and spherical
 // texture coordinates.
 const Mesh& largeMaterialMesh();
+// The image benchmarks' shared options: --size WxH, --frames N, --quick. Prints the usage
+// line naming `program` and returns nothing on anything else.
+struct ImageBenchArgs {
+  int width = 640, height = 480, frames = 24;
+  bool quick = false;
+};
+std::optional<ImageBenchArgs> parseImageBenchArgs(int argc, char** argv, const char* program);
 // Peak resident memory of this process so far, in MiB.
 double peakRssMiB();
 

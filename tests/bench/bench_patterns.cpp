@@ -116,18 +116,10 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
 }  // namespace
 
 int main(int argc, char** argv) {
-  int w = 640, h = 480, frames = 24;
-  bool quick = false;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &w, &h);
-    else if (!std::strcmp(argv[i], "--quick")) quick = true;
-    else {
-      std::fprintf(stderr, "usage: bench_patterns [--frames N] [--size WxH] [--quick]\n");
-      return 2;
-    }
-  }
-  if (frames < 1 || w < 16 || h < 16) return 2;
+  const std::optional<bench::ImageBenchArgs> args = bench::parseImageBenchArgs(argc, argv, "bench_patterns");
+  if (!args) return 2;
+  const int w = args->width, h = args->height, frames = args->frames;
+  const bool quick = args->quick;
   auto ctx = HeadlessContext::create(false);
   if (!ctx) return 1;
   auto target = OffscreenTarget::create(w, h);
