@@ -27,14 +27,11 @@
 #define STROKE_SOURCE
 #include "orientation.glsl"
 #endif
-#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
-uniform mat4 uProjection;
-#endif
 
 in vec3 vPosition;
 in vec3 vNormal;
-#ifdef ORIENT_FIELD
-in vec3 vDirection;
+#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
+in vec2 vStrokeDirection;
 #endif
 #if defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
 in float vOcclusion;
@@ -71,10 +68,8 @@ out vec4 fragColor;
 #endif
 
 void main() {
-#if defined(ORIENT_FIELD)
-  strokeValid = screenAngle(uProjection, vPosition, vDirection, strokeAngle);
-#elif defined(ORIENT_LIGHT)
-  strokeValid = screenAngle(uProjection, vPosition, lightAcrossSurface(vPosition, vNormal), strokeAngle);
+#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
+  setStrokeFromDirection(vStrokeDirection);
 #elif defined(ORIENT_FIXED)
   strokeAngle = uOrientFixed;
   strokeValid = true;

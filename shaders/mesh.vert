@@ -34,7 +34,10 @@ flat out uint vMaterial;
 
 #ifdef ORIENT_FIELD
 layout(location = 6) in vec3 aDirection;  // the hatching direction field (zero: none)
-out vec3 vDirection;  // eye space: a tangent turns with the modelview, not the normal matrix
+#endif
+#if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
+#include "orientation.glsl"
+out vec2 vStrokeDirection;  // unit, on screen; zero: none
 #endif
 
 #ifdef OCCLUSION
@@ -54,8 +57,11 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
-#ifdef ORIENT_FIELD
-  vDirection = mat3(uModelView) * aDirection;
+#if defined(ORIENT_FIELD)
+  // a tangent turns with the modelview, not the normal matrix
+  vStrokeDirection = screenDirection(uProjection, eye.xyz, mat3(uModelView) * aDirection);
+#elif defined(ORIENT_LIGHT)
+  vStrokeDirection = screenDirection(uProjection, eye.xyz, lightAcrossSurface(eye.xyz, vNormal));
 #endif
 #if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)
 #ifdef VERTEX_COLOURS
