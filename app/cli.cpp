@@ -39,7 +39,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
   std::vector<std::string> paletteFor;
-  std::string animate, pattern, orient;
+  std::string animate, pattern, orient, triangleLighting;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -70,6 +70,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
   app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
   app.add_option("--occlusion-strength", o.occlusionStrength, "How much the occlusion darkens, 0..1 (default 1)");
+  app.add_option("--triangle-lighting", triangleLighting,
+                 "Per-triangle paths light on the cpu | gpu (read back) | auto (gpu with --shadows, default)");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
@@ -116,6 +118,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (o.orientBins && (*o.orientBins < OrientSettings::kMinBins || *o.orientBins > OrientSettings::kMaxBins))
     return {std::nullopt, fail("--orient-bins must be " + std::to_string(OrientSettings::kMinBins) + ".." +
                                    std::to_string(OrientSettings::kMaxBins) + ", got " + std::to_string(*o.orientBins))};
+  if (!triangleLighting.empty()) {
+    if (triangleLighting == "cpu") o.triangleLighting = TriangleLighting::Cpu;
+    else if (triangleLighting == "gpu") o.triangleLighting = TriangleLighting::Gpu;
+    else if (triangleLighting == "auto") o.triangleLighting = TriangleLighting::Auto;
+    else return {std::nullopt, fail("unknown --triangle-lighting '" + triangleLighting + "': use cpu, gpu or auto")};
+  }
   if (o.occlusionStrength && !(*o.occlusionStrength >= 0.0f && *o.occlusionStrength <= 1.0f))
     return {std::nullopt, fail("--occlusion-strength must be in 0..1, got " + std::to_string(*o.occlusionStrength))};
   if (!animate.empty()) {

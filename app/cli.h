@@ -46,6 +46,7 @@ struct Options {
   bool shadows = false;                 // --shadows
   bool occlusion = false;               // --occlusion
   std::optional<float> occlusionStrength;  // --occlusion-strength
+  TriangleLighting triangleLighting = TriangleLighting::Auto;  // --triangle-lighting
   std::string saveFrames;     // --save-frames DIR
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

@@ -29,6 +29,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.settings.shadows = o.shadows;
   state.settings.occlusion = o.occlusion;
   if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
+  state.settings.triangleLighting = o.triangleLighting;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;

@@ -58,6 +58,11 @@ struct OrientSettings {
 std::string orientName(const OrientSettings& o);
 std::optional<OrientSettings> parseOrient(const std::string& s);
 
+// Where the per-triangle paths (stencil, triangle) light their triangles: on the CPU (the
+// original), on the GPU with the entries read back (shading/gpu_triangle_lighting.h), or
+// `auto`: the GPU when shadows are on (the CPU lighting has no shadow maps), else the CPU.
+enum class TriangleLighting { Auto, Cpu, Gpu };
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -78,6 +83,7 @@ struct RenderSettings {
   // the GPU-lit paths: by mix(1, occlusion, strength).
   bool occlusion = false;
   float occlusionStrength = 1.0f;
+  TriangleLighting triangleLighting = TriangleLighting::Auto;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

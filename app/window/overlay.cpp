@@ -104,8 +104,11 @@ void drawOverlay(Viewer& v) {
       else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
     }
   }
-  if ((s.settings.shadows || s.settings.occlusion) && (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil))
-    ImGui::TextDisabled("(per-triangle paths light on the CPU: no shadows or occlusion yet)");
+  if (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil) {
+    int where = static_cast<int>(s.settings.triangleLighting);
+    if (ImGui::Combo("triangle lighting", &where, "auto (GPU with shadows)\0CPU\0GPU (read back)\0"))
+      s.settings.triangleLighting = static_cast<TriangleLighting>(where);
+  }
   ImGui::Checkbox("Gouraud reference", &s.settings.referenceGouraud);
   ImGui::Checkbox("Model materials", &s.settings.materials);
   // Per-material palettes: a palette for each of the model's materials.

@@ -84,6 +84,16 @@ struct SourceOf {
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }
+  ProgramSource operator()(const TriangleLightProgram& t) const {
+    ProgramSource s{"triangle_light.vert", "triangle_light.frag", t.lighting.glslDefines()};
+    for (auto& d : paletteDefines(t.palette)) s.defines.push_back(d);
+    if (t.occlusion) s.defines.push_back("OCCLUSION");
+    if (t.shadowLayers > 0) {
+      s.defines.push_back("SHADOWS");
+      s.defines.push_back("SHADOW_LAYERS " + std::to_string(t.shadowLayers));
+    }
+    return s;
+  }
 };
 
 auto lightingKey(const std::optional<LightingFeatures>& f) {
@@ -105,6 +115,13 @@ bool operator<(const MeshProgram& a, const MeshProgram& b) {
            std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
+}
+
+bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b) {
+  const auto l = lightingKey(a.lighting), r = lightingKey(b.lighting);
+  if (l != r) return l < r;
+  if (a.palette < b.palette || b.palette < a.palette) return a.palette < b.palette;
+  return std::tie(a.shadowLayers, a.occlusion) < std::tie(b.shadowLayers, b.occlusion);
 }
 
 bool operator<(const QuadProgram& a, const QuadProgram& b) {

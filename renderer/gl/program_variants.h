@@ -87,7 +87,16 @@ struct ShadowDepthProgram {};
 // occlusion_bake.vert + occlusion_bake.frag: one direction of the ambient occlusion bake.
 struct OcclusionBakeProgram {};
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram>;
+// triangle_light.vert + triangle_light.frag: per-triangle lighting and matching on the GPU.
+struct TriangleLightProgram {
+  LightingFeatures lighting;
+  PaletteVariant palette;
+  int shadowLayers = 0;
+  bool occlusion = false;
+};
+
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
+                                    TriangleLightProgram>;
 
 struct ProgramSource {
   std::string vertexFile, fragmentFile;
@@ -103,5 +112,6 @@ inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
 inline bool operator<(const OcclusionBakeProgram&, const OcclusionBakeProgram&) { return false; }
+bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b);
 
 }  // namespace npr::gl

@@ -8,8 +8,7 @@ namespace npr {
 Status StencilPath::draw(FrameContext& f) {
   if (f.output != gl::MeshOutput::Colour) return selection_.draw(f);
   const RenderSettings& s = f.settings;
-  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials, f.occlusion,
-                    f.settings.occlusionStrength);
+  if (Status st = updateTriangleShading(f); !st) return st;
   if (s.stencilScissor) f.triangles.updateBounds(f.camera.projection * f.camera.view, {f.viewport.z, f.viewport.w}, f.stats);
 
   gl::MeshProgram maskVariant;

@@ -5,9 +5,23 @@
 
 namespace npr {
 
-Status TrianglePath::draw(FrameContext& f) {
+Status updateTriangleShading(FrameContext& f) {
+  const TriangleLighting where = f.settings.triangleLighting;
+  const bool gpu = where == TriangleLighting::Gpu || (where == TriangleLighting::Auto && f.shadows);
+  if (gpu && !f.drawMaterials()) {
+    std::vector<std::uint8_t> entries;
+    const GpuTriangleLightingInputs in{f.lighting, f.camera, *f.palette, f.settings.match, f.shadows, f.occlusion, f.settings.occlusionStrength};
+    if (Status st = f.triangles.gpu().shade(in, f.programs, f.stats, entries); !st) return st;
+    f.triangles.setEntries(std::move(entries), f.palette->size(), f.stats);
+    return okStatus();
+  }
   f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials, f.occlusion,
-                    f.settings.occlusionStrength);
+                     f.settings.occlusionStrength);
+  return okStatus();
+}
+
+Status TrianglePath::draw(FrameContext& f) {
+  if (Status st = updateTriangleShading(f); !st) return st;
   gl::MeshProgram variant;
   variant.shading = gl::MeshShading::Triangle;  // lit on the CPU: no lighting in the shader
   variant.output = f.output;

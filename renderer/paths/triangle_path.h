@@ -9,6 +9,11 @@
 
 namespace npr {
 
+// Both per-triangle paths' entries and buckets for this frame: lit on the CPU, or (settings'
+// triangleLighting; by default when shadows are on) lit and matched on the GPU and read back
+// (shading/gpu_triangle_lighting.h). The mesh's own materials stay on the CPU.
+[[nodiscard]] Status updateTriangleShading(FrameContext& frame);
+
 class TrianglePath : public RenderPass {
  public:
   Status draw(FrameContext& frame) override;

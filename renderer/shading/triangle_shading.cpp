@@ -218,6 +218,49 @@ void shadeMaterials(const std::vector<SimpleLighting>& table, const std::uint16_
 
 }  // namespace
 
+// Bucket offsets from per-chunk counts of out.entry (chunk c covering parallelChunks' c-th
+// range of triangles) and, with `build`, the triangles' indices grouped by bucket.
+static void scatterBuckets(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>& counts, int entries, int chunks, bool build,
+                    TriangleShading& out) {
+  const size_t nt = mesh.triangleCount();
+  const std::uint8_t* entry = out.entry.data();
+  out.nonEmptyBuckets = 0;
+  out.bucketStart.assign(static_cast<size_t>(entries) + 1, 0);
+  for (int k = 0; k < entries; ++k) {
+    std::uint32_t total = 0;
+    for (const auto& cnt : counts) total += cnt[static_cast<size_t>(k)];
+    out.bucketStart[static_cast<size_t>(k) + 1] = out.bucketStart[static_cast<size_t>(k)] + total;
+    out.nonEmptyBuckets += total > 0;
+  }
+  if (!build) return;
+
+  // Each chunk writes its triangles of bucket k after those of the chunks before it, so the
+  // scatter runs in parallel without atomics and the order within a bucket is the mesh order.
+  std::vector<std::vector<std::uint32_t>> cursor(counts.size(), std::vector<std::uint32_t>(static_cast<size_t>(entries)));
+  for (int k = 0; k < entries; ++k) {
+    std::uint32_t at = out.bucketStart[static_cast<size_t>(k)];
+    for (size_t c = 0; c < counts.size(); ++c) {
+      cursor[c][static_cast<size_t>(k)] = at;
+      at += counts[c][static_cast<size_t>(k)];
+    }
+  }
+  out.bucketIndices.resize(nt * 3);
+  const std::uint32_t* idx = mesh.indices.data();
+  std::uint32_t* dst = out.bucketIndices.data();
+
+  parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
+    std::uint32_t cur[kMaxPaletteEntries];  // thread-local cursors, as for the counts
+    std::copy(cursor[static_cast<size_t>(c)].begin(), cursor[static_cast<size_t>(c)].end(), cur);
+    for (size_t i = b; i < e; ++i) {
+      const int k = entry[i];
+      const std::uint32_t at = cur[k]++;
+      dst[at * 3 + 0] = idx[i * 3 + 0];
+      dst[at * 3 + 1] = idx[i * 3 + 1];
+      dst[at * 3 + 2] = idx[i * 3 + 2];
+    }
+  });
+}
+
 void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView,
                     const PaletteMatcher& matcher, const TriangleShadingOptions& opt, TriangleShading& out,
                     const FaceMaterials* fm) {
@@ -299,41 +342,20 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
     std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
   });
 
-  out.nonEmptyBuckets = 0;
-  out.bucketStart.assign(static_cast<size_t>(entries) + 1, 0);
-  for (int k = 0; k < entries; ++k) {
-    std::uint32_t total = 0;
-    for (const auto& cnt : counts) total += cnt[static_cast<size_t>(k)];
-    out.bucketStart[static_cast<size_t>(k) + 1] = out.bucketStart[static_cast<size_t>(k)] + total;
-    out.nonEmptyBuckets += total > 0;
-  }
-  if (!opt.buildBuckets) return;
+  scatterBuckets(mesh, counts, entries, chunks, opt.buildBuckets, out);
+}
 
-  // Each chunk writes its triangles of bucket k after those of the chunks before it, so the
-  // scatter runs in parallel without atomics and the order within a bucket is the mesh order.
-  std::vector<std::vector<std::uint32_t>> cursor(counts.size(), std::vector<std::uint32_t>(static_cast<size_t>(entries)));
-  for (int k = 0; k < entries; ++k) {
-    std::uint32_t at = out.bucketStart[static_cast<size_t>(k)];
-    for (size_t c = 0; c < counts.size(); ++c) {
-      cursor[c][static_cast<size_t>(k)] = at;
-      at += counts[c][static_cast<size_t>(k)];
-    }
-  }
-  out.bucketIndices.resize(nt * 3);
-  const std::uint32_t* idx = mesh.indices.data();
-  std::uint32_t* dst = out.bucketIndices.data();
-
+void bucketTriangles(const Mesh& mesh, int entries, int threads, TriangleShading& out) {
+  const size_t nt = mesh.triangleCount();
+  const int chunks = threads > 0 ? threads : workerCount();
+  std::vector<std::vector<std::uint32_t>> counts(static_cast<size_t>(chunks), std::vector<std::uint32_t>(static_cast<size_t>(entries), 0));
+  const std::uint8_t* entry = out.entry.data();
   parallelChunks(nt, chunks, [&](size_t b, size_t e, int c) {
-    std::uint32_t cur[kMaxPaletteEntries];  // thread-local cursors, as for the counts
-    std::copy(cursor[static_cast<size_t>(c)].begin(), cursor[static_cast<size_t>(c)].end(), cur);
-    for (size_t i = b; i < e; ++i) {
-      const int k = entry[i];
-      const std::uint32_t at = cur[k]++;
-      dst[at * 3 + 0] = idx[i * 3 + 0];
-      dst[at * 3 + 1] = idx[i * 3 + 1];
-      dst[at * 3 + 2] = idx[i * 3 + 2];
-    }
+    std::uint32_t cnt[kMaxPaletteEntries] = {};
+    for (size_t i = b; i < e; ++i) ++cnt[std::min<int>(entry[i], entries - 1)];
+    std::copy(cnt, cnt + entries, counts[static_cast<size_t>(c)].begin());
   });
+  scatterBuckets(mesh, counts, entries, chunks, true, out);
 }
 
 void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,

@@ -50,6 +50,10 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
                     const PaletteMatcher& matcher, const TriangleShadingOptions& options, TriangleShading& out,
                     const FaceMaterials* materials = nullptr);
 
+// Buckets (offsets and grouped indices) from entries already in out.entry, one per triangle
+// and below `entries`: for entries chosen elsewhere (the GPU per-triangle lighting pass).
+void bucketTriangles(const Mesh& mesh, int entries, int threads, TriangleShading& out);
+
 // Every vertex in window pixels (NaN where it lies behind the eye). Depends only on the view,
 // so callers keep it while only the lighting changes.
 void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,

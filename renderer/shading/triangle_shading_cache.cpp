@@ -54,6 +54,7 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
   faceScaleValid_ = false;
   occludedScale_.clear();
   occludedWith_ = nullptr;
+  gpu_.setMesh(mesh);
   ++meshId_;
   key_.valid = false;
   bucketsUploaded_ = false;
@@ -140,6 +141,20 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     bucketsUploaded_ = true;
     ++stats.bufferUploads;
   }
+  stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
+}
+
+void TriangleShadingCache::setEntries(std::vector<std::uint8_t>&& entries, int paletteSize, FrameStats& stats) {
+  const auto t0 = std::chrono::steady_clock::now();
+  shading_.entry = std::move(entries);
+  shading_.entry.resize(mesh_->triangleCount(), 0);
+  bucketTriangles(*mesh_, paletteSize, 0, shading_);
+  stats.cpuShadingMs += msSince(t0);
+  key_.valid = false;
+  gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t), GL_STREAM_DRAW);
+  bucketsUploaded_ = true;
+  boundsValid_ = false;
+  ++stats.bufferUploads;
   stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
 }
 

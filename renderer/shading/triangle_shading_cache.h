@@ -16,6 +16,7 @@
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/palette_matcher.h"
+#include "renderer/shading/gpu_triangle_lighting.h"
 #include "renderer/shading/triangle_shading.h"
 
 namespace npr {
@@ -30,6 +31,10 @@ class TriangleShadingCache {
   // face's ambient and diffuse by mix(1, its vertices' mean, strength); null: none.
   void update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
               FrameStats& stats, bool materials = false, const std::vector<float>* occlusion = nullptr, float occlusionStrength = 1.0f);
+  // Entries lit and matched on the GPU instead (gpu()): buckets built from them and uploaded;
+  // the next CPU update recomputes whatever its key says.
+  void setEntries(std::vector<std::uint8_t>&& entries, int paletteSize, FrameStats& stats);
+  GpuTriangleLighting& gpu() { return gpu_; }
   // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
   // viewport of `size` pixels.
   void updateBounds(const glm::mat4& modelViewProjection, const glm::ivec2& size, FrameStats& stats);
@@ -64,6 +69,7 @@ class TriangleShadingCache {
   int singleMaterial_ = -1;  // the material of every face, when they all have one
   bool faceScaleValid_ = false;
   bool bucketsUploaded_ = false;
+  GpuTriangleLighting gpu_;
   // Scissor bounds: vertices projected once per view, bounds once per change of the buckets
   // or the view.
   std::vector<glm::vec2> screenVertices_;

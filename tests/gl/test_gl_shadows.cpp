@@ -1,7 +1,8 @@
 // GL tier: the ground plane and cast shadows. A unit cube standing on the ground plane, lit
 // from one side: the ground where the cube's shadow falls gets a darker palette entry than the
 // lit ground, in every GPU-lit path and for directional, spot and point lights; without
-// shadows the two are the same. A flat plate lit at grazing angles shows no acne at any zoom.
+// shadows the two are the same; the per-triangle paths get them from the GPU per-triangle
+// lighting, whose entries agree with the CPU's. A flat plate lit at grazing angles shows no acne at any zoom.
 // Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
 // lower in a concave corner than on convex ones, and darkens the frame there.
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include "gl/gl_test_env.h"
 #include "renderer/immediate_api.h"
 #include "renderer/mesh/mesh_builder.h"
+#include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -73,10 +75,11 @@ struct Shadows : Fixture {
   }
 };
 
-TEST_F(Shadows, CubeShadowOnTheGroundIsDarkerInEveryGpuLitPath) {
+TEST_F(Shadows, CubeShadowOnTheGroundIsDarkerInEveryPath) {
   light({1.0f, 1.0f, 0.0f, 0.0f});  // from +x, 45 degrees up: the shadow reaches x = -1.5
-  // (entries: the smooth path's selection is a blend, read as floats elsewhere)
-  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex}) {
+  // (entries: the smooth path's selection is a blend, read as floats elsewhere; the
+  // per-triangle paths light on the GPU with shadows, shading/gpu_triangle_lighting.h)
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
     RenderSettings s;
     s.path = path;
@@ -136,6 +139,36 @@ TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
       EXPECT_GT(covered, 500) << elevation << " deg, distance " << distance;
       EXPECT_EQ(differ, 0) << elevation << " deg, distance " << distance << ": acne on " << differ << " of " << covered;
     }
+  r->setMesh(&cube);
+}
+
+TEST_F(Shadows, GpuAndCpuPerTriangleEntriesAgree) {
+  // Without shadows the two lightings compute the same equation in float: entries differ only
+  // where a triangle's tone sits on a boundary between two entries.
+  auto bunny = loadMesh(test::sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(bunny) << bunny.error();
+  r->setMesh(&*bunny);
+  const CameraMatrices view = test::testCamera(1.0f);
+  for (bool twoSided : {false, true}) {
+    ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, twoSided ? 1 : 0));
+    RenderSettings cpu, gpu;
+    cpu.path = gpu.path = RenderPath::Triangle;
+    cpu.triangleLighting = TriangleLighting::Cpu;
+    gpu.triangleLighting = TriangleLighting::Gpu;
+    (void)test::renderImage(*r, view, cpu, 64, 64);
+    const std::vector<std::uint8_t> onCpu = r->triangleShading().entry;
+    (void)test::renderImage(*r, view, gpu, 64, 64);
+    const std::vector<std::uint8_t> onGpu = r->triangleShading().entry;
+    ASSERT_EQ(onCpu.size(), bunny->triangleCount());
+    ASSERT_EQ(onGpu.size(), onCpu.size());
+    std::size_t differ = 0, far = 0;
+    for (std::size_t t = 0; t < onCpu.size(); ++t) {
+      differ += onCpu[t] != onGpu[t];
+      far += std::abs(int(onCpu[t]) - int(onGpu[t])) > 1;
+    }
+    EXPECT_LE(double(differ), 0.005 * double(onCpu.size())) << (twoSided ? "two-sided" : "one-sided");
+    EXPECT_EQ(far, 0u);  // never more than the neighbouring entry
+  }
   r->setMesh(&cube);
 }
 
