@@ -6,7 +6,7 @@
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--orient] [--shadows]
-//      [--static-light] [--occlusion]
+//      [--static-light] [--occlusion] [--gpu-triangles]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -54,13 +54,14 @@ struct PathRow {
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
+  bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
 };
 
 }  // namespace
 
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -73,17 +74,18 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
+    else if (!std::strcmp(argv[i], "--gpu-triangles")) gpuTriangles = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--orient] [--shadows] [--static-light] [--occlusion]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
-                           "ambient occlusion, baked before timing)\n");
+                           "ambient occlusion, baked before timing; --gpu-triangles adds the per-triangle paths lit on the GPU)\n");
       return 2;
     }
   }
@@ -172,6 +174,12 @@ int main(int argc, char** argv) {
         on.occlusion = true;
         paths.push_back(on);
       }
+      if (gpuTriangles && (p.path == RenderPath::Triangle || p.path == RenderPath::Stencil)) {
+        PathRow on = p;
+        on.label += "+gpu-lit";
+        on.gpuTriangles = true;
+        paths.push_back(on);
+      }
       if (orient && pathInfo(p.path).usesPalette) {
         PathRow on = p;
         on.label += "+orient";
@@ -204,6 +212,7 @@ int main(int argc, char** argv) {
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
+        s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
           OrbitCamera moving = cam;
           moving.orbit(0.05f * float(call), 0.0f);

@@ -1,10 +1,13 @@
 // What the light terms cost outside the frame: the ambient occlusion bake per mesh (64
 // directions, 1024^2 depth maps) and one redraw of the shadow maps per light kind, for the
-// bunny and the 871K-triangle torus (median of 3). Frame-time ratios with shadows and
-// occlusion on are bench_frames --shadows / --occlusion.
+// bunny and the 871K-triangle torus (median of 3); and the GPU per-triangle lighting's entries
+// against the CPU's (share of triangles that differ, light from four directions). Frame-time
+// ratios are bench_frames --shadows / --occlusion / --gpu-triangles.
 // Run: build/tests/bench/bench_shadows [--quick]
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -56,7 +59,8 @@ int main(int argc, char** argv) {
   OrbitCamera cam(30.0f, 20.0f, 3.0f);
   cam.frame(1.0f);
   const CameraMatrices m = cam.matrices(1.0f);
-  std::printf("GL: %s\n\n| mesh | triangles | occlusion bake ms | shadow maps ms: directional | spot | point outside | point among the casters |\n|---|---|---|---|---|---|---|\n",
+  std::printf("GL: %s\n\n| mesh | triangles | occlusion bake ms | shadow maps ms: directional | spot | point outside | point among the casters "
+              "| GPU/CPU per-triangle entries differ | by more than one |\n|---|---|---|---|---|---|---|---|---|\n",
               (*ctx)->description().c_str());
   for (const Scene& sc : scenes) {
     std::vector<double> bake;
@@ -98,8 +102,30 @@ int main(int argc, char** argv) {
       }
       kindMs.push_back(medianOf(ms));
     }
-    std::printf("| %s | %zu | %.0f | %.1f | %.1f | %.1f | %.1f |\n", sc.name, sc.mesh->triangleCount(), medianOf(bake), kindMs[0], kindMs[1],
-                kindMs[2], kindMs[3]);
+    // GPU against CPU per-triangle entries, no shadows, four light directions.
+    std::size_t differ = 0, far = 0, total = 0;
+    for (int k = 0; k < 4; ++k) {
+      r.lighting().setModelView(m.view);
+      const float pos[4] = {std::cos(1.3f * k), 1.0f, std::sin(1.3f * k), 0.0f};
+      const float cutoff = 180.0f;
+      if (!r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos) || !r.lighting().Lightf(GL_LIGHT0, GL_SPOT_CUTOFF, cutoff)) return 1;
+      RenderSettings cpu, gpu;
+      cpu.path = gpu.path = RenderPath::Triangle;
+      cpu.triangleLighting = TriangleLighting::Cpu;
+      gpu.triangleLighting = TriangleLighting::Gpu;
+      target->bind();
+      if (!r.render(m, cpu, {0, 0, 64, 64})) return 1;
+      const std::vector<std::uint8_t> a = r.triangleShading().entry;
+      if (!r.render(m, gpu, {0, 0, 64, 64})) return 1;
+      const std::vector<std::uint8_t>& b = r.triangleShading().entry;
+      for (std::size_t t = 0; t < a.size() && t < b.size(); ++t) {
+        differ += a[t] != b[t];
+        far += std::abs(int(a[t]) - int(b[t])) > 1;
+      }
+      total += a.size();
+    }
+    std::printf("| %s | %zu | %.0f | %.1f | %.1f | %.1f | %.1f | %.3f%% | %zu |\n", sc.name, sc.mesh->triangleCount(), medianOf(bake), kindMs[0],
+                kindMs[1], kindMs[2], kindMs[3], 100.0 * double(differ) / double(std::max<std::size_t>(total, 1)), far);
     std::fflush(stdout);
   }
   return 0;

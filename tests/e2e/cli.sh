@@ -85,6 +85,9 @@ cmp -s "$tmp/plain.png" "$tmp/ground.png" && { echo "FAIL: --ground draws nothin
 cmp -s "$tmp/ground.png" "$tmp/shadows.png" && { echo "FAIL: --shadows changes nothing"; fail=1; }
 expect 0 "--occlusion" -- "$viewer" --headless --size 96x96 --light 1,3,1 --occlusion --occlusion-strength 0.8 --screenshot "$tmp/occlusion.png"
 cmp -s "$tmp/plain.png" "$tmp/occlusion.png" && { echo "FAIL: --occlusion changes nothing"; fail=1; }
+expect 0 "--triangle-lighting gpu" -- "$viewer" --headless --size 96x96 --light 1,3,1 --path triangle --triangle-lighting gpu --screenshot "$tmp/tri-gpu.png"
+expect 0 "--triangle-lighting cpu" -- "$viewer" --headless --size 96x96 --light 1,3,1 --path triangle --triangle-lighting cpu --screenshot "$tmp/tri-cpu.png"
+expect 2 "bad --triangle-lighting" -- "$viewer" --headless --triangle-lighting quantum
 expect 2 "--occlusion-strength 2" -- "$viewer" --headless --occlusion --occlusion-strength 2
 expect 2 "--occlusion-strength nan" -- "$viewer" --headless --occlusion --occlusion-strength nan
 

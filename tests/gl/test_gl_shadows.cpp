@@ -1,9 +1,9 @@
 // GL tier: the ground plane and cast shadows. A unit cube standing on the ground plane, lit
 // from one side: the ground where the cube's shadow falls gets a darker palette entry than the
-// lit ground, in every GPU-lit path and for directional, spot and point lights; without
-// shadows the two are the same; the per-triangle paths get them from the GPU per-triangle
-// lighting, whose entries agree with the CPU's. A flat plate lit at grazing angles shows no acne at any zoom.
-// Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
+// lit ground, in every path and for directional, spot and point lights; without shadows the
+// two are the same (the per-triangle paths get shadows from the GPU per-triangle lighting,
+// whose entries agree with the CPU's). A flat plate lit at grazing angles shows no acne at any
+// zoom. Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
 // lower in a concave corner than on convex ones, and darkens the frame there.
 #include <gtest/gtest.h>
 
