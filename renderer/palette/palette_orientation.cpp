@@ -1,6 +1,7 @@
 // Gradient-orientation histogram of a palette texture (see palette_orientation.h).
 #include "renderer/palette/palette_orientation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -8,12 +9,14 @@ namespace npr {
 
 TextureOrientation textureOrientation(const ImageRGBA8& img, const glm::vec3& bg) {
   TextureOrientation out;
-  const int w = img.width, h = img.height;
-  if (w < 3 || h < 3 || img.pixels.size() < size_t(w) * size_t(h) * 4) return out;
+  if (img.width < 3 || img.height < 3 || img.pixels.size() < size_t(img.width) * size_t(img.height) * 4) return out;
+  // A corner of at most 512 x 512 texels decides (strokes are a texture-wide property; large
+  // entries would cost a palette load seconds): tiled only when the image is that small.
+  const int w = std::min(img.width, 512), h = std::min(img.height, 512);
   std::vector<float> lum(size_t(w) * size_t(h));
   const float bgLum = 0.2126f * bg.r + 0.7152f * bg.g + 0.0722f * bg.b;
   for (size_t i = 0; i < lum.size(); ++i) {
-    const std::uint8_t* p = &img.pixels[i * 4];
+    const std::uint8_t* p = &img.pixels[((i / size_t(w)) * size_t(img.width) + i % size_t(w)) * 4];
     const float a = p[3] / 255.0f;
     const float l = (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f;
     lum[i] = a * l + (1.0f - a) * bgLum;
