@@ -13,6 +13,7 @@
 #include "renderer/immediate_api.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "support/shadow_reference.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -139,6 +140,42 @@ TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
       EXPECT_GT(covered, 500) << elevation << " deg, distance " << distance;
       EXPECT_EQ(differ, 0) << elevation << " deg, distance " << distance << ": acne on " << differ << " of " << covered;
     }
+  r->setMesh(&cube);
+}
+
+TEST_F(Shadows, AgreeWithARayCastReference) {
+  // A cube floating above a plate, both in the model, a directional light from the side: the
+  // pixels the reference path draws darker with shadows are those a ray toward the light from
+  // their surface point cannot leave (away from a 2-pixel band along the shadows' edges).
+  std::vector<Triangle> scene;
+  const Mesh c = unitCube();
+  for (std::size_t t = 0; t < c.triangleCount(); ++t) {
+    Triangle tri;
+    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = c.positions[c.indices[t * 3 + size_t(k)]] * 0.6f + glm::vec3(0.0f, 0.2f, 0.0f);
+    scene.push_back(tri);
+  }
+  Triangle a, b;
+  a.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(-1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, 1.5f)};
+  b.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, -1.5f)};
+  scene.push_back(a);
+  scene.push_back(b);
+  const Mesh m = meshFromTriangles(scene);
+  r->setMesh(&m);
+  for (const glm::vec3 dir : {glm::vec3(1.0f, 1.5f, 0.4f), glm::vec3(-0.6f, 1.0f, -0.8f), glm::vec3(0.2f, 1.0f, 0.1f)}) {
+    const glm::vec3 toLight = glm::normalize(dir);
+    light(glm::vec4(toLight, 0.0f));
+    RenderSettings s;
+    s.path = RenderPath::Reference;
+    const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
+    s.shadows = true;
+    const ImageRGBA8 shadowed = test::renderImage(*r, cam, s, kSize, kSize);
+    const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+    const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+    const test::ShadowAgreement a = test::compareShadows(m, toLight, cam, pos, nrm, plain, shadowed);
+    EXPECT_GT(a.compared, 8000u);
+    EXPECT_GT(a.shadowed, 200u) << "the scene must have shadows to compare";
+    EXPECT_GE(a.agreement, 0.99) << "light " << dir.x << ", " << dir.y << ", " << dir.z << ": " << a.shadowed << " shadowed of " << a.compared;
+  }
   r->setMesh(&cube);
 }
 
