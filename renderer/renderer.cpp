@@ -41,9 +41,6 @@ void Renderer::setMesh(const Mesh* mesh) {
   groundTriangles_.setMesh(nullptr);
   ground_ = Mesh{};
   if (!mesh_) return;
-  ground_ = groundPlane(*mesh_);
-  groundGpu_.upload(ground_);
-  groundTriangles_.setMesh(&ground_);
   gpuMesh_.upload(*mesh_);
   materials_.upload(*mesh_);
   stats_.bufferUploads += 3;
@@ -163,9 +160,18 @@ void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& vie
   stats_.bufferUploads += 1;
 }
 
+void Renderer::prepareGround() {
+  if (!mesh_ || !ground_.indices.empty()) return;
+  ground_ = groundPlane(*mesh_);
+  groundGpu_.upload(ground_);
+  groundTriangles_.setMesh(&ground_);
+  stats_.bufferUploads += 1;
+}
+
 Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettings& s) {
   shadowsReady_ = false;
   if (!s.shadows || !mesh_) return okStatus();
+  if (s.ground) prepareGround();
   ShadowScene scene;
   scene.casters = {&gpuMesh_};
   scene.casterRadius = mesh_->radius;
@@ -231,6 +237,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
 
 Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
   if (!s.ground || !mesh_ || !palette_) return okStatus();
+  prepareGround();
   // The ground has no materials of its own: lit with the lighting state's material.
   RenderSettings plain = s;
   plain.materials = false;

@@ -164,7 +164,9 @@ class Renderer {
   double occlusionBudgetMs_ = 0.0;
   bool shadowsReady_ = false;  // this frame draws with shadows_
   unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache
-  // The ground plane under the current mesh (--ground), drawn like one more part of it.
+  // The ground plane under the current mesh (--ground), drawn like one more part of it; built
+  // and uploaded the first time a frame asks for it.
+  void prepareGround();
   Mesh ground_;
   GpuMesh groundGpu_;
   GpuMaterials groundMaterials_;  // never uploaded: the ground has no appearance
