@@ -62,6 +62,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
   app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat)");
   app.add_flag("--pattern-no-rotation", o.patternNoRotation, "Anchored patterns move and scale with the object but stay upright");
+  app.add_option("--pattern-scale", o.patternScale,
+                 "Size of a palette texel in screen pixels, 0.125..16 (default: the window's content scale, 1 headless)");
   app.add_option("--orient", orient,
                  "Hatching direction: none (the texture's own, default) | curvature (along the surface's form) | light "
                  "(along the light's gradient) | DEGREES (a fixed screen angle)");
@@ -111,6 +113,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.pattern = parsePatternSpace(pattern);
     if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen or anchored")};
   }
+  if (o.patternScale && !(*o.patternScale >= RenderSettings::kMinPatternScale && *o.patternScale <= RenderSettings::kMaxPatternScale))
+    return {std::nullopt, fail("--pattern-scale must be in 0.125..16 (texel size in pixels), got " + std::to_string(*o.patternScale))};
   if (!orient.empty()) {
     o.orient = parseOrient(orient);
     if (!o.orient) return {std::nullopt, fail("unknown --orient '" + orient + "': use none, curvature, light or an angle in degrees")};

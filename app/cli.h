@@ -40,6 +40,7 @@ struct Options {
   CameraAnimation animation;  // --animate
   std::optional<PatternSpace> pattern;  // --pattern
   bool patternNoRotation = false;       // --pattern-no-rotation
+  std::optional<float> patternScale;    // --pattern-scale (default: the window's content scale)
   std::optional<OrientSettings> orient; // --orient
   std::optional<int> orientBins;        // --orient-bins
   bool ground = false;                  // --ground

@@ -23,6 +23,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.settings.materials = o.materials;
   if (o.pattern) state.settings.pattern = *o.pattern;
   state.settings.patternFollowsRotation = !o.patternNoRotation;
+  if (o.patternScale) state.settings.patternScale = *o.patternScale;
   if (o.orient) state.settings.orient = *o.orient;
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
   state.settings.ground = o.ground;

@@ -74,6 +74,11 @@ struct RenderSettings {
   bool referenceGouraud = false;  // `reference` path: per-vertex instead of per-pixel lighting
   PatternSpace pattern = PatternSpace::Screen;
   bool patternFollowsRotation = true;  // anchored: turn the pattern with the object (else only move and scale)
+  // The size of a palette texel in screen pixels (--pattern-scale): 1 draws palettes texel for
+  // pixel (the original); a high-DPI window defaults to its content scale so hatching keeps its
+  // physical size. Below 1 the palette's mip levels keep its tone (palette_mipmaps.h).
+  float patternScale = 1.0f;
+  static constexpr float kMinPatternScale = 0.125f, kMaxPatternScale = 16.0f;
   OrientSettings orient;
   // A ground plane under the model, drawn with the same palette and path (mesh/ground_plane.h).
   bool ground = false;

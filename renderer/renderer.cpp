@@ -131,8 +131,9 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     stats_.patternSamples = fit.samplesUsed;
     frame = patterns_.frame();
   }
-  if (palette_) palette_->setPatternFrame(frame);
-  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame);
+  const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
+  if (palette_) palette_->setPatternFrame(frame, scale);
+  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame, scale);
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {

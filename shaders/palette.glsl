@@ -2,13 +2,14 @@
 // from the window's corner, so patterns stay flat to the camera whatever the depth. With
 // PATTERN_ANCHORED the pixel is first mapped through the pattern's frame, which follows the
 // object (renderer/patterns/pattern_tracker.h), and two octaves of the pattern are
-// cross-faded so marks keep their size on screen under zoom.
+// cross-faded so marks keep their size on screen under zoom; with PATTERN_SCALED through a
+// fixed scale (--pattern-scale). Mapped patterns read the palette's mip levels (pattern.glsl).
 // Layers are stored precomposited over the background where that is exact
 // (PALETTE_PRECOMPOSITED), so the common case is one fetch per pixel.
 // With ORIENTED each entry's lookup is turned so its strokes follow the pixel's stroke angle
 // (orientation.glsl; the pass sets the angle before matching).
 // Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
-// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, ORIENTED and ORIENT_BINS.
+// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED and ORIENT_BINS.
 
 uniform sampler2DArray uPalette;
 #ifdef LAYER_SIZES_DIFFER
@@ -23,7 +24,8 @@ uniform ivec2 uLayerSize0;
 #ifdef BACKGROUND_IMAGE
 uniform sampler2D uBackground;
 uniform ivec2 uBackgroundSize;
-vec3 backgroundColour() { return texelFetch(uBackground, ivec2(gl_FragCoord.xy) % uBackgroundSize, 0).rgb; }
+uniform float uBackgroundScale;  // texels per pixel: 1 / pattern scale
+vec3 backgroundColour() { return texelFetch(uBackground, ivec2(gl_FragCoord.xy * uBackgroundScale) % uBackgroundSize, 0).rgb; }
 #else
 uniform vec3 uBackgroundColour;
 vec3 backgroundColour() { return uBackgroundColour; }
@@ -38,34 +40,28 @@ vec3 composite(vec4 t) {
 #endif
 }
 
-#ifdef PATTERN_ANCHORED
 #include "pattern.glsl"
-vec2 paletteCoordinate() { return dissolvedCoordinate(patternCoordinate()); }
+#ifdef PATTERN_MAPPED
+vec3 paletteCoordinate() { return mappedCoordinate(); }
+vec4 layerTexel(vec3 c, int entry) { return mappedTexel(uPalette, c, entry, LAYER_SIZE(entry)); }
 #else
-vec2 paletteCoordinate() { return gl_FragCoord.xy; }
+vec3 paletteCoordinate() { return vec3(gl_FragCoord.xy, 0.0); }
+vec4 layerTexel(vec3 c, int entry) { return texelFetch(uPalette, ivec3(wrapTexel(c.xy, LAYER_SIZE(entry)), entry), 0); }
 #endif
 
 #ifdef ORIENTED
 #include "orientation.glsl"
-#ifndef PATTERN_ANCHORED
-#include "pattern.glsl"
-#endif
 uniform float uEntryAngle[PALETTE_SIZE];  // each entry's stroke direction (radians; < -10: none)
 uniform float uFrameTurn;                 // the anchored pattern's rotation on screen
-vec3 paletteTexel(vec2 u, int entry) {
-  return composite(texelFetch(uPalette, ivec3(wrapTexel(u, LAYER_SIZE(entry)), entry), 0));
-}
 vec3 paletteColour(int entry) {
-  vec2 u = paletteCoordinate();
+  vec3 c = paletteCoordinate();
   int b0, b1;
   float w;
-  if (!orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w)) return paletteTexel(u, entry);
-  return mix(paletteTexel(turnedCoordinate(u, b0), entry), paletteTexel(turnedCoordinate(u, b1), entry), w);
+  if (!orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w)) return composite(layerTexel(c, entry));
+  return composite(mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z), entry), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z), entry), w));
 }
-#elif defined(PATTERN_ANCHORED)
-vec3 paletteColour(int entry) {
-  return composite(texelFetch(uPalette, ivec3(wrapTexel(paletteCoordinate(), LAYER_SIZE(entry)), entry), 0));
-}
+#elif defined(PATTERN_MAPPED)
+vec3 paletteColour(int entry) { return composite(layerTexel(paletteCoordinate(), entry)); }
 #else
 vec3 paletteColour(int entry) {
   ivec2 p = ivec2(gl_FragCoord.xy) % LAYER_SIZE(entry);

@@ -1,15 +1,23 @@
-// The anchored pattern's frame in the shaders (palette.glsl and the stencil path's layer
-// quad): pattern coordinates of this pixel, tiling, and the cross-fade of two octaves.
-// uPatternMatrix maps window pixels (relative to uPatternOrigin) to pattern texels of the
-// coarser octave, whose marks are 2^uPatternOctave pixels wide (in [1, 2)); the finer octave
-// is twice as dense. As the object comes closer the coarse octave fades out and the fine one
-// grows into its place: at octave 1 the fine layer is exactly the next coarse one.
+// Where a pixel reads the palette when the pattern is mapped (palette.glsl and the stencil
+// path's layer quad): PATTERN_ANCHORED, the anchored pattern's frame that follows the object,
+// with two octaves cross-faded so marks keep their size on screen under zoom; PATTERN_SCALED,
+// a fixed pattern scale (texels of S pixels). uPatternMatrix maps window pixels (relative to
+// uPatternOrigin) to pattern texels of the coarser octave, whose marks are S 2^uPatternOctave
+// pixels wide; the finer octave is twice as dense and read one mip level down, so a palette
+// with its own levels (a tonal art map) keeps its strokes' width and its tone. Both octaves'
+// levels come from the CPU (uPatternLod): a similarity has one scale over the whole frame, so
+// no per-pixel derivative is needed.
 #ifndef PATTERN_GLSL
 #define PATTERN_GLSL
+
+#if defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED)
+#define PATTERN_MAPPED
+#endif
 
 uniform vec4 uPatternMatrix;  // column-major 2x2: (m00, m10, m01, m11)
 uniform vec2 uPatternOrigin;
 uniform float uPatternOctave;  // fract(log2 scale)
+uniform vec2 uPatternLod;      // the mip level of the coarse and the fine octave
 
 vec2 patternCoordinate() {
   vec2 d = gl_FragCoord.xy - uPatternOrigin;
@@ -37,10 +45,28 @@ uint patternHash(ivec2 p) {
   return h ^ (h >> 15);
 }
 
-// The pattern coordinate of this pixel in the octave it shows (u: the coarse coordinate).
-vec2 dissolvedCoordinate(vec2 u) {
+// This pixel's palette coordinate: (texel at level 0 of the octave it shows, mip level).
+vec3 mappedCoordinate() {
+  vec2 u = patternCoordinate();
+#ifdef PATTERN_ANCHORED
   float threshold = (float(patternHash(ivec2(floor(2.0 * u))) & 0xffffu) + 0.5) / 65536.0;
-  return uPatternOctave > threshold ? 2.0 * u : u;
+  return uPatternOctave > threshold ? vec3(2.0 * u, uPatternLod.y) : vec3(u, uPatternLod.x);
+#else
+  return vec3(u, uPatternLod.x);
+#endif
+}
+
+// A layer's colour at a mapped coordinate. Where every layer tiles at the array's size the
+// sampler wraps (REPEAT) and filters bilinearly within the level, so a turned or scaled
+// pattern has no stair-steps; layers of different sizes tile at their own size, read at the
+// nearest texel.
+vec4 mappedTexel(sampler2DArray s, vec3 c, int layer, ivec2 size) {
+#ifdef LAYER_SIZES_DIFFER
+  int l = int(c.z);
+  return texelFetch(s, ivec3(wrapTexel(c.xy / float(1 << l), max(size >> l, ivec2(1))), layer), l);
+#else
+  return textureLod(s, vec3(c.xy / vec2(size), float(layer)), c.z);
+#endif
 }
 
 #endif

@@ -6,12 +6,13 @@ out vec4 fragColor;
 #ifdef BACKGROUND_IMAGE
 uniform sampler2D uBackground;
 uniform ivec2 uBackgroundSize;
+uniform float uBackgroundScale;  // texels per pixel: 1 / pattern scale
 #else
 uniform vec3 uBackgroundColour;
 #endif
 void main() {
 #ifdef BACKGROUND_IMAGE
-  fragColor = vec4(texelFetch(uBackground, ivec2(gl_FragCoord.xy) % uBackgroundSize, 0).rgb, 1.0);
+  fragColor = vec4(texelFetch(uBackground, ivec2(gl_FragCoord.xy * uBackgroundScale) % uBackgroundSize, 0).rgb, 1.0);
 #else
   fragColor = vec4(uBackgroundColour, 1.0);
 #endif
@@ -19,18 +20,21 @@ void main() {
 #endif
 
 #ifdef QUAD_LAYER
+// PATTERN_ANCHORED / PATTERN_SCALED: the layer read through the pattern's mapping
+// (pattern.glsl; LAYER_SIZES_DIFFER: this palette's layers tile at different sizes).
 // ORIENTED: the layer turned per pixel (orientation.glsl), the stroke angle read from the
 // buffer the stencil path drew (ORIENT_BUFFER) or fixed.
 uniform sampler2DArray uPalette;
 uniform ivec2 uLayerSize;
 uniform int uLayer;
 #include "pattern.glsl"
-#ifdef PATTERN_ANCHORED
-vec2 layerCoordinate() { return dissolvedCoordinate(patternCoordinate()); }
+#ifdef PATTERN_MAPPED
+vec3 layerCoordinate() { return mappedCoordinate(); }
+vec4 layerTexel(vec3 c) { return mappedTexel(uPalette, c, uLayer, uLayerSize); }
 #else
-vec2 layerCoordinate() { return gl_FragCoord.xy; }
+vec3 layerCoordinate() { return vec3(gl_FragCoord.xy, 0.0); }
+vec4 layerTexel(vec3 c) { return texelFetch(uPalette, ivec3(wrapTexel(c.xy, uLayerSize), uLayer), 0); }
 #endif
-vec4 layerTexel(vec2 u) { return texelFetch(uPalette, ivec3(wrapTexel(u, uLayerSize), uLayer), 0); }
 #ifdef ORIENTED
 #include "orientation.glsl"
 uniform float uLayerAngle;  // the layer's stroke direction (radians; < -10: none)
@@ -50,11 +54,11 @@ void main() {
   strokeAngle = uOrientFixed;
   strokeValid = true;
 #endif
-  vec2 u = layerCoordinate();
+  vec3 c = layerCoordinate();
   int b0, b1;
   float w;
-  if (!orientSteps(uLayerAngle, uFrameTurn, b0, b1, w)) fragColor = layerTexel(u);
-  else fragColor = mix(layerTexel(turnedCoordinate(u, b0)), layerTexel(turnedCoordinate(u, b1)), w);
+  if (!orientSteps(uLayerAngle, uFrameTurn, b0, b1, w)) fragColor = layerTexel(c);
+  else fragColor = mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z)), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z)), w);
 }
 #else
 void main() { fragColor = layerTexel(layerCoordinate()); }

@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace npr {
@@ -40,6 +41,12 @@ glm::ivec2 GlfwWindow::framebufferSize() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   return {w, h};
+}
+
+float GlfwWindow::contentScale() const {
+  float x = 1.0f, y = 1.0f;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return std::isfinite(x) && x > 0.0f ? x : 1.0f;
 }
 
 glm::ivec2 GlfwWindow::windowSize() const {

@@ -25,6 +25,8 @@ class GlfwWindow {
   GLFWwindow* handle() const { return window_; }
   glm::ivec2 framebufferSize() const;
   glm::ivec2 windowSize() const;
+  // The monitor's content scale (1 on a standard screen, 2 on most high-DPI ones).
+  float contentScale() const;
 
  private:
   GlfwWindow() = default;

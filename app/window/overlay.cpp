@@ -67,6 +67,8 @@ void drawOverlay(Viewer& v) {
     ImGui::SameLine();
     ImGui::Checkbox("follow rotation", &s.settings.patternFollowsRotation);
   }
+  ImGui::SliderFloat("pattern scale", &s.settings.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale,
+                     "%.2f px/texel", ImGuiSliderFlags_Logarithmic);
   // Hatching orientation, and what the palette offers it: entries with a dominant direction.
   OrientSettings& orient = s.settings.orient;
   int source = static_cast<int>(orient.source);

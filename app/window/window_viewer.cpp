@@ -6,6 +6,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -33,6 +34,9 @@ int runWindowViewer(const Options& o) {
   // and the overlay shows progress (headless runs bake to the end at once).
   v.renderer->setOcclusionBudget(30.0);
   if (Status s = startScene(o, v.state, *v.renderer); !s) return reportFailure(s.error());
+  // Hatching keeps its physical size on a high-DPI screen unless the user chose a scale.
+  if (!o.patternScale)
+    v.state.settings.patternScale = std::clamp(v.window->contentScale(), RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
   if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
   if (v.screenshotDir.empty()) v.screenshotDir = ".";
   installInputCallbacks(v);

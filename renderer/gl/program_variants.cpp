@@ -7,6 +7,8 @@
 namespace npr::gl {
 namespace {
 
+const char* patternDefine(PatternMapping m) { return m == PatternMapping::Anchored ? "PATTERN_ANCHORED" : "PATTERN_SCALED"; }
+
 std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   std::vector<std::string> d;
   d.push_back("PALETTE_SIZE " + std::to_string(p.size));
@@ -14,7 +16,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
-  if (p.anchored) d.push_back("PATTERN_ANCHORED");
+  if (p.pattern != PatternMapping::Screen) d.push_back(patternDefine(p.pattern));
   if (p.orientBins > 0) {
     d.push_back("ORIENTED");
     d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
@@ -66,7 +68,8 @@ struct SourceOf {
     ProgramSource s{"fullscreen.vert", "quad.frag", {}};
     s.defines.push_back(q.kind == QuadProgram::Kind::Background ? "QUAD_BACKGROUND" : "QUAD_LAYER");
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
-    if (q.anchored) s.defines.push_back("PATTERN_ANCHORED");
+    if (q.pattern != PatternMapping::Screen) s.defines.push_back(patternDefine(q.pattern));
+    if (q.layerSizesDiffer) s.defines.push_back("LAYER_SIZES_DIFFER");
     if (q.orientBins > 0) {
       s.defines.push_back("ORIENTED");
       s.defines.push_back("ORIENT_BINS " + std::to_string(q.orientBins));
@@ -125,8 +128,8 @@ bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b) {
 }
 
 bool operator<(const QuadProgram& a, const QuadProgram& b) {
-  return std::tie(a.kind, a.backgroundImage, a.anchored, a.orientBins, a.orientBuffer) <
-         std::tie(b.kind, b.backgroundImage, b.anchored, b.orientBins, b.orientBuffer);
+  return std::tie(a.kind, a.backgroundImage, a.pattern, a.layerSizesDiffer, a.orientBins, a.orientBuffer) <
+         std::tie(b.kind, b.backgroundImage, b.pattern, b.layerSizesDiffer, b.orientBins, b.orientBuffer);
 }
 
 bool operator<(const LineProgram& a, const LineProgram& b) {

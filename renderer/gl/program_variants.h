@@ -16,6 +16,10 @@
 
 namespace npr::gl {
 
+// How pixels reach palette texels (pattern.glsl): one texel per pixel from the window's corner,
+// through a fixed scale (--pattern-scale), or through the anchored pattern's frame.
+enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored };
+
 // What palette.glsl is compiled for: the palette's layout and the match mode.
 struct PaletteVariant {
   int size = 0;
@@ -23,9 +27,9 @@ struct PaletteVariant {
   bool precomposited = false;    // layers stored over the background: one fetch per pixel
   bool backgroundImage = false;  // only meaningful when not precomposited
   MatchMode match = MatchMode::Intensity;
-  bool anchored = false;         // the pattern follows the object (pattern.glsl)
+  PatternMapping pattern = PatternMapping::Screen;
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, anchored, orientBins); }
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, orientBins); }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
@@ -64,7 +68,8 @@ struct MeshProgram {
 struct QuadProgram {
   enum class Kind : std::uint8_t { Background, Layer } kind = Kind::Background;
   bool backgroundImage = false;
-  bool anchored = false;  // layer quads: the pattern follows the object
+  PatternMapping pattern = PatternMapping::Screen;  // layer quads: how pixels reach the layer
+  bool layerSizesDiffer = false;  // layer quads: the palette's layers tile at different sizes
   int orientBins = 0;     // layer quads: turned along the stroke angle (orientation.glsl)
   bool orientBuffer = false;  // ... read per pixel from the stroke-angle buffer (else fixed)
 };

@@ -10,6 +10,7 @@
 #include "renderer/gl/texture.h"
 #include "renderer/gl/texture_units.h"
 #include "renderer/palette/palette_analysis.h"
+#include "renderer/palette/palette_mipmaps.h"
 
 namespace npr {
 namespace {
@@ -58,17 +59,31 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   gp->backgroundColour_ = p.backgroundColour;
   gp->averages_ = p.averages();
   std::vector<std::uint8_t> flipped;
+  gp->mipLevels_ = mipLevelCount(w, h);
+  const int levels = gp->mipLevels_;
+  const std::vector<ImageRGBA8> bgChain = gp->precomposited_ && bg ? mipChain(*bg, levels) : std::vector<ImageRGBA8>{};
   gp->layers_ = gl::createTexture();
   glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Palette));
   glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers_.id());
-  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, w, h, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  for (int k = 0; k < levels; ++k)
+    glTexImage3D(GL_TEXTURE_2D_ARRAY, k, GL_RGBA8, mipSide(w, k), mipSide(h, k), n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (int i = 0; i < n; ++i) {
-    const ImageRGBA8& src = p.entries[static_cast<size_t>(i)].image;
-    const ImageRGBA8 img = gp->precomposited_ ? compositeOver(src, p.backgroundColour, bg) : src;
-    glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, flipped));
+    const std::vector<ImageRGBA8> chain =
+        entryMipChain(p.entries[static_cast<size_t>(i)], levels, gp->precomposited_, p.backgroundColour, bgChain);
+    for (int k = 0; k < levels; ++k) {
+      const ImageRGBA8& img = chain[static_cast<size_t>(k)];
+      glTexSubImage3D(GL_TEXTURE_2D_ARRAY, k, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, flipped));
+    }
   }
-  gl::setNearestSingleLevel(GL_TEXTURE_2D_ARRAY);
+  // texelFetch ignores the sampler; mapped patterns of same-size layers sample bilinearly in
+  // the level the CPU picks (pattern.glsl), wrapping.
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
   if (bg) {
     gp->backgroundImage_ = true;
     gp->backgroundSize_ = {bg->width, bg->height};
@@ -127,7 +142,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.precomposited = precomposited_;
   v.backgroundImage = backgroundImage_;
   v.match = mode;
-  v.anchored = anchored();
+  v.pattern = patternMapping();
   v.orientBins = orientBins();
   return v;
 }
@@ -173,17 +188,35 @@ void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
   prog.set("uFrameTurn", pattern_ ? pattern_->rotation : 0.0f);
 }
 
+gl::PatternMapping GpuPalette::patternMapping() const {
+  if (pattern_) return gl::PatternMapping::Anchored;
+  return patternScale_ != 1.0f ? gl::PatternMapping::Scaled : gl::PatternMapping::Screen;
+}
+
+int GpuPalette::lodFor(float texelsPerPixel) const {
+  if (!(texelsPerPixel > std::sqrt(2.0f))) return 0;
+  return std::min(mipLevels_ - 1, int(std::lround(std::log2(texelsPerPixel))));
+}
+
 void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
-  if (!pattern_) return;
-  // The frame's scale split into octaves: the coarse layer's marks are 2^octave pixels wide.
-  const float l = std::log2(pattern_->scale);
-  const float octave = l - std::floor(l);
-  const float markSize = std::exp2(octave);
-  const float c = std::cos(pattern_->rotation), s = std::sin(pattern_->rotation);
-  // u = R(-rotation) (x - origin) / markSize, column-major.
-  prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
-  prog.set("uPatternOrigin", pattern_->translation);
-  prog.set("uPatternOctave", octave);
+  if (pattern_) {
+    // The frame's scale split into octaves: the coarse layer's marks are S 2^octave pixels wide.
+    const float l = std::log2(pattern_->scale);
+    const float octave = l - std::floor(l);
+    const float markSize = patternScale_ * std::exp2(octave);
+    const float c = std::cos(pattern_->rotation), s = std::sin(pattern_->rotation);
+    // u = R(-rotation) (x - origin) / markSize, column-major.
+    prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
+    prog.set("uPatternOrigin", pattern_->translation);
+    prog.set("uPatternOctave", octave);
+    prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
+  } else if (patternScale_ != 1.0f) {
+    prog.set("uPatternMatrix", glm::vec4(1, 0, 0, 1) / patternScale_);
+    prog.set("uPatternOrigin", glm::vec2(0.0f));
+    prog.set("uPatternOctave", 0.0f);
+    const float lod = float(lodFor(1.0f / patternScale_));
+    prog.set("uPatternLod", glm::vec2(lod));
+  }
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
@@ -196,6 +229,7 @@ void GpuPalette::bindBackground(gl::ShaderProgram& prog) const {
     gl::bindTexture(TextureUnit::Background, GL_TEXTURE_2D, background_.id());
     prog.set("uBackground", gl::unitIndex(TextureUnit::Background));
     prog.set("uBackgroundSize", backgroundSize_);
+    prog.set("uBackgroundScale", 1.0f / patternScale_);
   } else {
     prog.set("uBackgroundColour", backgroundColour_);
   }

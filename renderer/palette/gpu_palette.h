@@ -40,9 +40,20 @@ class GpuPalette {
   // Unique across palettes and rebuilds: what per-triangle results computed with it are keyed by.
   unsigned matcherId() const { return matcherId_; }
 
-  // The anchored pattern's frame for the frames drawn next; nullopt: screen space.
-  void setPatternFrame(const std::optional<PatternFrame>& frame) { pattern_ = frame; }
+  // The pattern for the frames drawn next: the anchored pattern's frame (nullopt: screen
+  // space) and the pattern scale (texel size in pixels, > 0).
+  void setPatternFrame(const std::optional<PatternFrame>& frame, float patternScale = 1.0f) {
+    pattern_ = frame;
+    patternScale_ = patternScale;
+  }
   bool anchored() const { return pattern_.has_value(); }
+  gl::PatternMapping patternMapping() const;
+  bool layerSizesDiffer() const { return sizesDiffer_; }
+  // Mip levels of the layer array (level 0 included).
+  int mipLevels() const { return mipLevels_; }
+  // The mip level a pattern drawn at `texelsPerPixel` reads: the nearest level (GL's
+  // NEAREST_MIPMAP rule), clamped to the levels there are.
+  int lodFor(float texelsPerPixel) const;
 
   // Hatching orientation for the frames drawn next: where the stroke angle comes from, the
   // first enabled light (eye space) for OrientSource::Light, and the viewport's size.
@@ -92,6 +103,8 @@ class GpuPalette {
   unsigned matcherId_ = 0;
   gl::Texture lutIndex_, lutBlend_, lut3D_;
   std::optional<PatternFrame> pattern_;
+  float patternScale_ = 1.0f;
+  int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;
   OrientSettings orient_;

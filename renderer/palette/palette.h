@@ -9,6 +9,7 @@
 //   match colors|intensity|order             (default applied when the palette is chosen)
 //   range-scale S
 //   name TEXT
+//   mip PATH                                 (the next mip level of the entry above: half its size)
 #pragma once
 
 #include <cstdint>
@@ -36,6 +37,7 @@ struct PaletteEntry {
   glm::vec3 average{0.0f};  // encoded colour of the texture composited over the background
   float intensity = 0.0f;   // sum of the average's channels, in [0, 3]
   TextureOrientation orientation;  // its strokes' dominant direction (over the background colour)
+  std::vector<ImageRGBA8> mips;    // levels 1, 2, ... the palette file gave (`mip PATH` lines); the rest are reduced
 };
 
 struct Palette {

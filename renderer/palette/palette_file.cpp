@@ -10,6 +10,7 @@
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
 #include "renderer/palette/palette_analysis.h"
+#include "renderer/palette/palette_mipmaps.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -83,7 +84,11 @@ Result<Palette> loadPalette(const std::string& path) {
   p.name = fs::path(path).stem().string();
   std::string bgSpec;
   int bgLine = 0;
-  struct Pending { std::string path; int line; };
+  struct Pending {
+    std::string path;
+    int line;
+    std::vector<Pending> mips;
+  };
   std::vector<Pending> images;
   std::string raw;
   int lineNo = 0;
@@ -113,8 +118,12 @@ Result<Palette> loadPalette(const std::string& path) {
       p.defaultRangeScale = s;
     } else if (key == "name") {
       p.name = arg;
+    } else if (key == "mip") {
+      if (images.empty()) return Error{where + ": 'mip' must follow the entry whose next mip level it is"};
+      if (arg.empty()) return Error{where + ": 'mip' needs an image path"};
+      images.back().mips.push_back({arg, lineNo, {}});
     } else {
-      images.push_back({line, lineNo});
+      images.push_back({line, lineNo, {}});
     }
   }
   if (images.empty()) return Error{path + ": the palette lists no images (one image path per line)"};
@@ -169,6 +178,28 @@ Result<Palette> loadPalette(const std::string& path) {
     e.average = compositeAverage(e.image, p.backgroundColour, p.backgroundImage ? &*p.backgroundImage : nullptr);
     e.intensity = e.average.r + e.average.g + e.average.b;
     e.orientation = textureOrientation(e.image, p.backgroundColour);
+    // Given levels must halve the level above exactly (GL's rule); an entry reduced to fit the
+    // budget drops them (they are reduced from it instead).
+    const bool reduced = e.image.width != sizes[&im - images.data()].width || e.image.height != sizes[&im - images.data()].height;
+    if (reduced && !im.mips.empty()) p.warnings.push_back(im.path + ": its mip levels are reduced from the smaller image instead");
+    for (const Pending& m : reduced ? std::vector<Pending>{} : im.mips) {
+      const ImageRGBA8& above = e.mips.empty() ? e.image : e.mips.back();
+      const int level = static_cast<int>(e.mips.size()) + 1;
+      if (std::min(mipSide(e.image.width, level), mipSide(e.image.height, level)) < kMinMipSide)
+        return Error{path + " line " + std::to_string(m.line) + ": mip level " + std::to_string(level) + " of " + im.path +
+                     " is smaller than " + std::to_string(kMinMipSide) + " texels a side; palettes keep no levels that small"};
+      const std::string mipWhere = path + " line " + std::to_string(m.line);
+      // The declared size is checked before anything is decoded.
+      Result<ImageSize> ms = readImageSize((dir / m.path).string());
+      if (!ms) return Error{mipWhere + ": " + ms.error()};
+      if (ms->width != mipSide(above.width, 1) || ms->height != mipSide(above.height, 1))
+        return Error{mipWhere + ": mip level " + std::to_string(level) + " " + m.path + " is " + std::to_string(ms->width) + "x" +
+                     std::to_string(ms->height) + "; it must be half the level above, " + std::to_string(mipSide(above.width, 1)) +
+                     "x" + std::to_string(mipSide(above.height, 1))};
+      Result<ImageRGBA8> mi = loadImage((dir / m.path).string());
+      if (!mi) return Error{mipWhere + ": " + mi.error()};
+      e.mips.push_back(std::move(*mi));
+    }
     p.entries.push_back(std::move(e));
   }
   return p;
