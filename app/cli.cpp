@@ -56,7 +56,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--info", o.info, "Print the model's load report as one line of JSON and exit");
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
-  app.add_option("--out", o.outDir, "Benchmark output folder (default benchmark-results)");
+  CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: the benchmark's (default benchmark-results) or --make-palette's");
+  std::string ladder;
+  app.add_option("--make-palette", o.makePalette,
+                 "Make a palette from IMAGE (with --ladder) or from a stroke image (with --tam), write it to --out DIR and print its report");
+  app.add_option("--ladder", ladder, "--make-palette step applied progressively: blur|offset|solarize|posterize|threshold|darken|desaturate");
+  app.add_flag("--tam", o.tam, "--make-palette: draw a tonal art map with IMAGE as the stroke");
+  app.add_option("--levels", o.levels, "--make-palette: palette entries, 2..256 (default 10)");
+  app.add_option("--palette-sheet", o.paletteSheet,
+                 "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
   app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
@@ -93,6 +101,19 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     return {std::nullopt, 0};
   } catch (const CLI::ParseError& e) {
     return {std::nullopt, fail(e.what())};
+  }
+  if (!ladder.empty()) {
+    o.ladder = parseLadder(ladder);
+    if (!o.ladder) return {std::nullopt, fail("unknown --ladder '" + ladder + "': use blur, offset, solarize, posterize, threshold, darken or desaturate")};
+  }
+  if (!o.makePalette.empty()) {
+    if (o.tam == o.ladder.has_value()) return {std::nullopt, fail("--make-palette needs either --ladder STEP or --tam")};
+    if (out->count() == 0) return {std::nullopt, fail("--make-palette needs --out DIR, the palette folder to write")};
+    if (o.levels < kMinMakerLevels || o.levels > kMaxPaletteEntries)
+      return {std::nullopt, fail("--levels must be " + std::to_string(kMinMakerLevels) + ".." + std::to_string(kMaxPaletteEntries) + ", got " +
+                                     std::to_string(o.levels))};
+  } else if (o.ladder || o.tam) {
+    return {std::nullopt, fail("--ladder and --tam go with --make-palette IMAGE")};
   }
   if (!path.empty()) {
     o.path = parseRenderPath(path);

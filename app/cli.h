@@ -11,6 +11,7 @@
 #include "app/camera_animation.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
+#include "renderer/palette/palette_maker.h"
 #include "renderer/paths/path_table.h"
 #include "renderer/render_settings.h"
 
@@ -31,6 +32,12 @@ struct Options {
   std::string screenshot;
   bool info = false;
   std::string paletteInfo;
+  // --make-palette IMAGE (--ladder STEP | --tam) --levels N --out DIR
+  std::string makePalette;
+  std::optional<Ladder> ladder;
+  bool tam = false;
+  int levels = 10;
+  std::string paletteSheet;  // --palette-sheet DIR
   bool benchmark = false;
   bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";

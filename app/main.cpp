@@ -1,11 +1,12 @@
 // npr-viewer: parses the command line and hands over to the window, --headless, --info,
-// --palette-info, --list-paths or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
+// --palette-info, --make-palette, --palette-sheet, --list-paths or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
 // 2 bad arguments.
 #include <cstdio>
 
 #include "app/benchmark/benchmark_run.h"
 #include "app/cli.h"
 #include "app/headless/headless_run.h"
+#include "app/palette_tools.h"
 #include "app/window/window_viewer.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette.h"
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
     std::printf("%s\n", npr::paletteReportJson(*p).c_str());
     return 0;
   }
+  if (!o.makePalette.empty()) return npr::runPaletteMaker(o);
+  if (!o.paletteSheet.empty()) return npr::runPaletteSheets(o);
   if (o.benchmark) return npr::runBenchmark(o);
   if (o.headless) return npr::runHeadless(o);
   return npr::runWindowViewer(o);

@@ -3,10 +3,9 @@
 // files. Each palette is a folder with its .palette file and PNG images, echoing the
 // original renderer's set: crosshatch, stipple, cel, Gooch, an order set and wood.
 //
-// Tone sets are built from one threshold field per style: texel (x, y) is inked at level k
-// when field(x, y) < s_k, so every level keeps all the ink of the lighter ones (levels nest
-// and tone changes do not flicker). Each s_k is found by bisection so that the level's
-// measured average intensity (over the paper, as the renderer analyses it) is evenly spaced.
+// The ink palettes (crosshatch, hatch, stipple, pencil) are drawn: tonal art maps built stroke
+// by stroke until each level reaches its evenly spaced tone, nested across tones and mip levels
+// (renderer/palette/tonal_art_map.h); each entry lists its own mip levels.
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -21,9 +20,11 @@
 #include "renderer/core/colour.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_analysis.h"
+#include "renderer/palette/tonal_art_map.h"
 
 namespace fs = std::filesystem;
 using npr::ImageRGBA8;
+using npr::Result;
 
 namespace {
 
@@ -83,97 +84,25 @@ ImageRGBA8 paper() {
   return img;
 }
 
-// Inks (opaque `ink`) every texel whose field value is below s.
-ImageRGBA8 inkLevel(const std::vector<float>& field, float s, glm::vec3 ink) {
-  ImageRGBA8 img = blank();
-  for (int i = 0; i < kSize * kSize; ++i)
-    if (field[size_t(i)] < s) setPixel(img, i % kSize, i / kSize, ink, 1.0f);
-  return img;
-}
-
-// Levels from blank to solid with evenly spaced average intensity over `bg`.
-std::vector<ImageRGBA8> toneLevels(const std::vector<float>& field, int levels, const ImageRGBA8& bg, glm::vec3 ink) {
-  const glm::vec3 bgMean = [&] {
-    glm::dvec3 s(0);
-    for (size_t i = 0; i < bg.pixels.size(); i += 4) s += glm::dvec3(npr::srgbToLinear(bg.pixels[i] / 255.0f), npr::srgbToLinear(bg.pixels[i + 1] / 255.0f), npr::srgbToLinear(bg.pixels[i + 2] / 255.0f));
-    return npr::linearToSrgb(glm::vec3(s / double(bg.pixels.size() / 4)));
-  }();
-  auto intensity = [&](float s) {
-    const glm::vec3 a = npr::compositeAverage(inkLevel(field, s, ink), bgMean, &bg);
-    return a.r + a.g + a.b;
-  };
-  const float top = intensity(-1.0f), bottom = intensity(2.0f);
-  std::vector<ImageRGBA8> out;
-  for (int k = 0; k < levels; ++k) {
-    const float target = top + (bottom - top) * float(k) / float(levels - 1);
-    float lo = -1.0f, hi = 2.0f;  // intensity decreases as s grows
-    for (int it = 0; it < 40; ++it) {
-      const float mid = 0.5f * (lo + hi);
-      (intensity(mid) > target ? lo : hi) = mid;
-    }
-    out.push_back(inkLevel(field, k == 0 ? -1.0f : (k == levels - 1 ? 2.0f : hi), ink));
+// A tonal art map's levels and their mip levels (renderer/palette/tonal_art_map.h).
+struct Drawn {
+  std::vector<ImageRGBA8> images;
+  std::vector<std::vector<ImageRGBA8>> mips;
+};
+Drawn drawn(const npr::TamSpec& spec, const ImageRGBA8& paper, const char* name) {
+  Result<npr::TonalArtMap> tam = npr::buildTonalArtMap(spec, paper);
+  Drawn d;
+  if (!tam) {
+    std::fprintf(stderr, "%s: %s\n", name, tam.error().c_str());
+    return d;
   }
-  return out;
-}
-
-// Hatching: four families of wobbly parallel strokes appear one after another as the tone
-// darkens (45 deg, then -45, 0 and 90 deg), each stroke thickening with the tone.
-std::vector<float> hatchField() {
-  std::vector<float> f(size_t(kSize) * kSize);
-  const int spacing = 8;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      float best = 10.0f;
-      for (int fam = 0; fam < 4; ++fam) {
-        // Coordinate across the strokes; every family is periodic over the 256-texel tile.
-        const int u = fam == 0 ? x + y : fam == 1 ? x - y + kSize : fam == 2 ? y : x;
-        const int line = u / spacing;
-        const float along = float(fam == 0 ? x - y + kSize : fam == 1 ? x + y : fam == 2 ? x : y);
-        const float wobble = 1.2f * (valueNoise(along, float(line * 8), 8, std::uint32_t(31 + fam)) - 0.5f);
-        float d = std::fabs(float(u % spacing) + 0.5f - spacing * 0.5f + wobble) / (spacing * 0.5f);  // 0 on the stroke
-        if (fam < 2) d /= std::sqrt(2.0f) * 0.75f;
-        // Family j starts at s = 0.15 j and thickens slowly, so the next direction joins in
-        // long before one family alone could fill the tile: tones build up as crosshatching.
-        best = std::min(best, 0.15f * float(fam) + 0.6f * d);
-      }
-      f[size_t(y) * kSize + x] = best;
-    }
-  return f;
-}
-
-// One family of horizontal strokes, wobbling a little and thickening with the tone: the
-// palette whose direction hatching orientation (--orient) turns along the form.
-std::vector<float> lineField() {
-  std::vector<float> f(size_t(kSize) * kSize);
-  const int spacing = 6;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const int line = y / spacing;
-      const float wobble = 0.8f * (valueNoise(float(x), float(line * 8), 16, 77u) - 0.5f);
-      f[size_t(y) * kSize + x] = std::fabs(float(y % spacing) + 0.5f - spacing * 0.5f + wobble) / (spacing * 0.5f);
-    }
-  return f;
-}
-
-// Stipple: dots on a jittered grid, each appearing at its own random tone and growing.
-std::vector<float> stippleField() {
-  std::vector<float> f(size_t(kSize) * kSize, 10.0f);
-  const int cell = 8;
-  const int cells = kSize / cell;
-  for (int cy = 0; cy < cells; ++cy)
-    for (int cx = 0; cx < cells; ++cx) {
-      const float px = (float(cx) + 0.2f + 0.6f * rand01(std::uint32_t(cx), std::uint32_t(cy), 11)) * cell;
-      const float py = (float(cy) + 0.2f + 0.6f * rand01(std::uint32_t(cx), std::uint32_t(cy), 12)) * cell;
-      const float start = 0.6f * rand01(std::uint32_t(cx), std::uint32_t(cy), 13);
-      for (int dy = -2 * cell; dy <= 2 * cell; ++dy)
-        for (int dx = -2 * cell; dx <= 2 * cell; ++dx) {
-          const int x = (int(px) + dx + kSize) % kSize, y = (int(py) + dy + kSize) % kSize;
-          const float d = std::hypot(float(int(px) + dx) + 0.5f - px, float(int(py) + dy) + 0.5f - py) / cell;
-          float& v = f[size_t(y) * kSize + x];
-          v = std::min(v, start + 0.45f * d);
-        }
-    }
-  return f;
+  for (const std::string& n : tam->notes) std::fprintf(stderr, "%s: %s\n", name, n.c_str());
+  for (const npr::TamLevel& l : tam->levels) {
+    d.images.push_back(l.mips[0]);
+    d.mips.emplace_back(l.mips.begin() + 1, l.mips.end());
+  }
+  std::printf("%s: %d marks in the darkest level\n", name, tam->levels.back().marks);
+  return d;
 }
 
 ImageRGBA8 solid(glm::vec3 c, int size = 64) {
@@ -246,7 +175,12 @@ struct Writer {
   fs::path root;
   bool ok = true;
   void palette(const std::string& name, const std::string& header, const std::vector<ImageRGBA8>& images,
-               const ImageRGBA8* background = nullptr, const std::string& prefix = "level") {
+               const ImageRGBA8* background = nullptr, const std::string& prefix = "level",
+               const std::vector<std::vector<ImageRGBA8>>& mips = {}) {
+    if (images.empty()) {
+      ok = false;
+      return;
+    }
     const fs::path dir = root / name;
     fs::create_directories(dir);
     std::ofstream pf(dir / (name + ".palette"));
@@ -266,6 +200,12 @@ struct Writer {
       }();
       ok = ok && write(dir / file, images[i], opaque ? 3 : 4);
       pf << file << "\n";
+      for (size_t m = 0; i < mips.size() && m < mips[i].size(); ++m) {
+        char mipFile[80];
+        std::snprintf(mipFile, sizeof mipFile, "%s%02zu-mip%zu.png", prefix.c_str(), i, m + 1);
+        ok = ok && write(dir / mipFile, mips[i][m], 4);
+        pf << "mip " << mipFile << "\n";
+      }
     }
     std::printf("wrote %s (%zu entries)\n", (dir / (name + ".palette")).string().c_str(), images.size());
   }
@@ -278,12 +218,53 @@ int main(int argc, char** argv) {
   const ImageRGBA8 bg = paper();
   const glm::vec3 ink(0.06f, 0.05f, 0.08f);
 
+  // Drawn palettes: tonal art maps, strokes added one by one until each level reaches its
+  // tone, with their own mip levels (256, 128 and 64 texels; coarser ones are reduced).
+  npr::TamSpec cross;
+  cross.tones = 10;
+  cross.darkest = 0.85f;
+  cross.seed = 11;
+  cross.families = {npr::StrokeFamily{45.0f, 4.0f, 0.32f, 0.35f, 1.7f, 0.35f, 0.04f, 0.9f, 0.15f, 0.0f},
+                    npr::StrokeFamily{135.0f, 4.0f, 0.32f, 0.35f, 1.7f, 0.35f, 0.04f, 0.9f, 0.15f, 0.28f},
+                    npr::StrokeFamily{5.0f, 4.0f, 0.3f, 0.35f, 1.5f, 0.35f, 0.04f, 0.9f, 0.15f, 0.55f}};
+  cross.ink = ink;
+  const Drawn crossMaps = drawn(cross, bg, "crosshatch");
   w.palette("crosshatch",
-            "name Crosshatch\nmatch intensity\n# 10 nested levels from bare paper to solid ink, evenly spaced in intensity.\n",
-            toneLevels(hatchField(), 10, bg, ink), &bg);
-  w.palette("hatch", "name Hatch (one direction)\nmatch intensity\n# 8 levels of horizontal strokes: try --orient curvature.\n",
-            toneLevels(lineField(), 8, bg, ink), &bg);
-  w.palette("stipple", "name Stipple\nmatch intensity\n# 16 nested levels of ink dots.\n", toneLevels(stippleField(), 16, bg, ink), &bg);
+            "name Crosshatch\nmatch intensity\n# 10 levels of drawn strokes (a tonal art map), nested, evenly spaced in intensity, with their own mip levels.\n",
+            crossMaps.images, &bg, "level", crossMaps.mips);
+
+  npr::TamSpec hatch;
+  hatch.tones = 8;
+  hatch.darkest = 0.8f;
+  hatch.seed = 12;
+  hatch.families = {npr::StrokeFamily{0.0f, 3.0f, 0.4f, 0.3f, 1.6f, 0.35f, 0.03f, 0.9f, 0.15f, 0.0f}};
+  hatch.ink = ink;
+  const Drawn hatchMaps = drawn(hatch, bg, "hatch");
+  w.palette("hatch", "name Hatch (one direction)\nmatch intensity\n# 8 levels of horizontal drawn strokes: try --orient curvature.\n",
+            hatchMaps.images, &bg, "level", hatchMaps.mips);
+
+  npr::TamSpec stipple;
+  stipple.tones = 16;
+  stipple.darkest = 0.7f;
+  stipple.dots = true;
+  stipple.dotRadius = 1.3f;
+  stipple.seed = 13;
+  stipple.ink = ink;
+  const Drawn stippleMaps = drawn(stipple, bg, "stipple");
+  w.palette("stipple", "name Stipple\nmatch intensity\n# 16 nested levels of ink dots of one size in blue-noise order.\n", stippleMaps.images,
+            &bg, "level", stippleMaps.mips);
+
+  // Pencil: soft graphite strokes, long and light, a second direction in the darker levels.
+  npr::TamSpec pencil;
+  pencil.tones = 10;
+  pencil.darkest = 0.75f;
+  pencil.seed = 14;
+  pencil.families = {npr::StrokeFamily{62.0f, 6.0f, 0.45f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.0f},
+                     npr::StrokeFamily{152.0f, 6.0f, 0.4f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.45f}};
+  pencil.ink = glm::vec3(0.22f, 0.22f, 0.25f);
+  const Drawn pencilMaps = drawn(pencil, bg, "pencil");
+  w.palette("pencil", "name Pencil\nmatch intensity\n# 10 levels of soft graphite strokes (a tonal art map).\n", pencilMaps.images, &bg,
+            "level", pencilMaps.mips);
 
   std::vector<ImageRGBA8> cel;
   for (glm::vec3 c : {glm::vec3(0.16f, 0.18f, 0.30f), glm::vec3(0.38f, 0.42f, 0.62f), glm::vec3(0.66f, 0.71f, 0.88f), glm::vec3(0.95f, 0.96f, 1.0f)})

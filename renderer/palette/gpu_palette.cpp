@@ -55,7 +55,7 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   const ImageRGBA8* bg = p.backgroundImage ? &*p.backgroundImage : nullptr;
   // Precompositing each layer over the background is exact when the background is a solid
   // colour or an image the size of every layer (both tile from the same screen corner).
-  gp->precomposited_ = !bg || (!gp->sizesDiffer_ && bg->width == w && bg->height == h);
+  gp->precomposited_ = layersPrecomposited(p);
   gp->backgroundColour_ = p.backgroundColour;
   gp->averages_ = p.averages();
   std::vector<std::uint8_t> flipped;

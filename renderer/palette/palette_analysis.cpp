@@ -1,6 +1,8 @@
 // Palette analysis (see palette_analysis.h).
 #include "renderer/palette/palette_analysis.h"
 
+#include "renderer/palette/palette_mipmaps.h"
+
 #include <algorithm>
 #include <sstream>
 
@@ -58,6 +60,11 @@ PaletteAnalysis analysePalette(const Palette& p) {
     dec = dec && v[i] < v[i - 1];
   }
   a.monotonic = v.size() < 2 || inc || dec;
+  const float range = a.maxIntensity - a.minIntensity;
+  if (v.size() > 2 && range > 0.0f) {
+    const float step = (v.back() - v.front()) / float(v.size() - 1);
+    for (size_t i = 1; i < v.size(); ++i) a.spacingError = std::max(a.spacingError, std::fabs(v[i] - v[i - 1] - step) / range);
+  }
   return a;
 }
 
@@ -87,12 +94,18 @@ std::string paletteReportJson(const Palette& p) {
     o << (i ? "," : "") << "{\"path\":" << str(e.path) << ",\"width\":" << e.image.width << ",\"height\":" << e.image.height
       << ",\"average\":[" << num(e.average.r) << "," << num(e.average.g) << "," << num(e.average.b)
       << "],\"intensity\":" << num(e.intensity) << ",\"orientation_degrees\":" << num(e.orientation.degrees)
-      << ",\"orientation_strength\":" << num(e.orientation.strength) << ",\"oriented\":" << (e.orientation.oriented() ? "true" : "false")
-      << "}";
+      << ",\"orientation_strength\":" << num(e.orientation.strength) << ",\"oriented\":" << (e.orientation.oriented() ? "true" : "false");
+    // The tone at every mip level the renderer samples, and how far it drifts from level 0's
+    // (as a fraction of white): what a scaled or zoomed pattern shows.
+    const std::vector<float> tones = entryMipTones(p, i);
+    float drift = 0;
+    for (float t : tones) drift = std::max(drift, std::fabs(t - tones[0]) / 3.0f);
+    o << ",\"mip_levels\":" << tones.size() << ",\"mip_levels_given\":" << e.mips.size() << ",\"mip_tone_drift\":" << num(drift) << "}";
   }
   o << "],\"background\":[" << num(p.backgroundColour.r) << "," << num(p.backgroundColour.g) << "," << num(p.backgroundColour.b)
     << "],\"intensity_range\":[" << num(a.minIntensity) << "," << num(a.maxIntensity) << "],\"largest_gap\":" << num(a.largestGap)
-    << ",\"monotonic\":" << (a.monotonic ? "true" : "false");
+    << ",\"monotonic\":" << (a.monotonic ? "true" : "false") << ",\"spacing_error\":" << num(a.spacingError)
+    << ",\"evenly_spaced\":" << (a.spacingError <= PaletteAnalysis::kEvenSpacing ? "true" : "false");
   if (p.defaultMatch) o << ",\"match\":\"" << matchModeName(*p.defaultMatch) << "\"";
   o << ",\"warnings\":[";
   std::vector<std::string> w = p.warnings;

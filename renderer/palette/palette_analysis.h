@@ -25,6 +25,10 @@ glm::vec3 linearMean(const ImageRGBA8& img);
 struct PaletteAnalysis {
   float minIntensity = 0, maxIntensity = 0, largestGap = 0;
   bool monotonic = true;  // intensities strictly decrease or increase along the order
+  // How far the steps between consecutive entries' intensities are from even, as a fraction
+  // of the range (0: evenly spaced; drawn palettes keep it within kEvenSpacing).
+  float spacingError = 0;
+  static constexpr float kEvenSpacing = 0.01f;
   std::vector<std::string> suitabilityWarnings(MatchMode mode) const;
 };
 PaletteAnalysis analysePalette(const Palette& p);

@@ -91,4 +91,32 @@ std::vector<ImageRGBA8> entryMipChain(const PaletteEntry& e, int levels, bool pr
   return chain;
 }
 
+bool layersPrecomposited(const Palette& p) {
+  if (!p.backgroundImage) return true;
+  for (const PaletteEntry& e : p.entries)
+    if (e.image.width != p.backgroundImage->width || e.image.height != p.backgroundImage->height) return false;
+  return true;
+}
+
+int paletteMipLevels(const Palette& p) {
+  int w = 1, h = 1;
+  for (const PaletteEntry& e : p.entries) {
+    w = std::max(w, e.image.width);
+    h = std::max(h, e.image.height);
+  }
+  return mipLevelCount(w, h);
+}
+
+std::vector<float> entryMipTones(const Palette& p, size_t entry) {
+  const bool pre = layersPrecomposited(p);
+  const int levels = paletteMipLevels(p);
+  const std::vector<ImageRGBA8> bg = pre && p.backgroundImage ? mipChain(*p.backgroundImage, levels) : std::vector<ImageRGBA8>{};
+  std::vector<float> tones;
+  for (const ImageRGBA8& img : entryMipChain(p.entries[entry], levels, pre, p.backgroundColour, bg)) {
+    const glm::vec3 a = pre ? linearToSrgb(linearMean(img)) : compositeAverage(img, p.backgroundColour, nullptr);
+    tones.push_back(a.r + a.g + a.b);
+  }
+  return tones;
+}
+
 }  // namespace npr

@@ -34,4 +34,14 @@ std::vector<ImageRGBA8> entryMipChain(const PaletteEntry& entry, int levels, boo
 // The background image's chain (reduced only).
 std::vector<ImageRGBA8> mipChain(const ImageRGBA8& img, int levels);
 
+// Whether the texture array stores the palette's layers composited over its background: exact
+// when the background is a colour, or an image the size of every layer (both tile from the
+// same screen corner).
+bool layersPrecomposited(const Palette& p);
+// The levels a palette's texture array has (its largest layer's).
+int paletteMipLevels(const Palette& p);
+// Entry i's tone (intensity, 0..3, as the palette analysis measures it) at each mip level the
+// renderer will sample.
+std::vector<float> entryMipTones(const Palette& p, size_t entry);
+
 }  // namespace npr
