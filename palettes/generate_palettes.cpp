@@ -224,9 +224,9 @@ int main(int argc, char** argv) {
   cross.tones = 10;
   cross.darkest = 0.85f;
   cross.seed = 11;
-  cross.families = {npr::StrokeFamily{45.0f, 4.0f, 0.32f, 0.35f, 1.7f, 0.35f, 0.04f, 0.9f, 0.15f, 0.0f},
-                    npr::StrokeFamily{135.0f, 4.0f, 0.32f, 0.35f, 1.7f, 0.35f, 0.04f, 0.9f, 0.15f, 0.28f},
-                    npr::StrokeFamily{5.0f, 4.0f, 0.3f, 0.35f, 1.5f, 0.35f, 0.04f, 0.9f, 0.15f, 0.55f}};
+  cross.families = {npr::StrokeFamily{45.0f, 4.0f, 0.2f, 0.35f, 1.6f, 0.35f, 0.04f, 0.9f, 0.15f, 0.0f},
+                    npr::StrokeFamily{135.0f, 4.0f, 0.2f, 0.35f, 1.6f, 0.35f, 0.04f, 0.9f, 0.15f, 0.28f},
+                    npr::StrokeFamily{5.0f, 4.0f, 0.18f, 0.35f, 1.4f, 0.35f, 0.04f, 0.9f, 0.15f, 0.55f}};
   cross.ink = ink;
   const Drawn crossMaps = drawn(cross, bg, "crosshatch");
   w.palette("crosshatch",
@@ -237,7 +237,7 @@ int main(int argc, char** argv) {
   hatch.tones = 8;
   hatch.darkest = 0.8f;
   hatch.seed = 12;
-  hatch.families = {npr::StrokeFamily{0.0f, 3.0f, 0.4f, 0.3f, 1.6f, 0.35f, 0.03f, 0.9f, 0.15f, 0.0f}};
+  hatch.families = {npr::StrokeFamily{0.0f, 3.0f, 0.26f, 0.3f, 1.6f, 0.35f, 0.03f, 0.9f, 0.15f, 0.0f}};
   hatch.ink = ink;
   const Drawn hatchMaps = drawn(hatch, bg, "hatch");
   w.palette("hatch", "name Hatch (one direction)\nmatch intensity\n# 8 levels of horizontal drawn strokes: try --orient curvature.\n",
@@ -259,8 +259,8 @@ int main(int argc, char** argv) {
   pencil.tones = 10;
   pencil.darkest = 0.75f;
   pencil.seed = 14;
-  pencil.families = {npr::StrokeFamily{62.0f, 6.0f, 0.45f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.0f},
-                     npr::StrokeFamily{152.0f, 6.0f, 0.4f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.45f}};
+  pencil.families = {npr::StrokeFamily{62.0f, 6.0f, 0.3f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.0f},
+                     npr::StrokeFamily{152.0f, 6.0f, 0.28f, 0.4f, 1.3f, 0.4f, 0.06f, 0.45f, 0.3f, 0.45f}};
   pencil.ink = glm::vec3(0.22f, 0.22f, 0.25f);
   const Drawn pencilMaps = drawn(pencil, bg, "pencil");
   w.palette("pencil", "name Pencil\nmatch intensity\n# 10 levels of soft graphite strokes (a tonal art map).\n", pencilMaps.images, &bg,

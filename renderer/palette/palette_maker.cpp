@@ -105,7 +105,7 @@ Result<std::vector<ImageRGBA8>> ladderImages(const ImageRGBA8& src, Ladder ladde
     case Ladder::Blur: {
       OIIO::ImageBuf cur = base;
       steps.push_back(src);
-      const float width = std::max(1.5f, float(std::min(src.width, src.height)) / 48.0f);
+      const float width = std::max(3.0f, float(std::min(src.width, src.height)) / 32.0f);
       for (int k = 1; k < n; ++k) {
         Result<OIIO::ImageBuf> b = wrappedBlur(cur, width);
         if (!b) return Error{b.error()};

@@ -80,6 +80,24 @@ CameraMatrices testCamera(float aspect, float yaw, float pitch) {
 
 std::string sourcePath(const std::string& relative) { return std::string(NPR_SOURCE_DIR) + "/" + relative; }
 
+Palette greyRamp(int n) {
+  Palette p;
+  p.name = "ramp" + std::to_string(n);
+  for (int i = 0; i < n; ++i) {
+    PaletteEntry e;
+    const float g = n == 1 ? 0.5f : 1.0f - float(i) / float(n - 1);
+    e.image = ImageRGBA8{4, 4, std::vector<std::uint8_t>(64)};
+    for (size_t k = 0; k < 64; k += 4) {
+      e.image.pixels[k] = e.image.pixels[k + 1] = e.image.pixels[k + 2] = std::uint8_t(std::lround(g * 255));
+      e.image.pixels[k + 3] = 255;
+    }
+    e.average = glm::vec3(g);
+    e.intensity = 3 * g;
+    p.entries.push_back(std::move(e));
+  }
+  return p;
+}
+
 Palette shippedPalette(const std::string& name) {
   auto p = loadPalette(sourcePath("palettes/" + name + "/" + name + ".palette"));
   EXPECT_TRUE(p) << p.error();

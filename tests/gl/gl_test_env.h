@@ -41,5 +41,8 @@ CameraMatrices testCamera(float aspect, float yaw = 30.0f, float pitch = 20.0f);
 std::string sourcePath(const std::string& relative);
 // A palette shipped in palettes/NAME/NAME.palette (a failed load fails the test).
 Palette shippedPalette(const std::string& name);
+// A palette of `n` solid grey entries from white to black (on a solid background): tone
+// without pattern, for tests that measure tone.
+Palette greyRamp(int n);
 
 }  // namespace npr::test
