@@ -58,14 +58,20 @@ vec3 mappedCoordinate() {
 
 // A layer's colour at a mapped coordinate. Where every layer tiles at the array's size the
 // sampler wraps (REPEAT) and filters bilinearly within the level, so a turned or scaled
-// pattern has no stair-steps; layers of different sizes tile at their own size, read at the
-// nearest texel.
+// pattern has no stair-steps: `s` is then the palette's sRGB view, filtered in linear light
+// (an average of encoded values is darker than the light it stands for) and encoded again
+// here, as everything else in the shaders is. Layers of different sizes tile at their own
+// size, read at the nearest texel.
+vec3 encodeSrgb(vec3 c) {
+  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
 vec4 mappedTexel(sampler2DArray s, vec3 c, int layer, ivec2 size) {
 #ifdef LAYER_SIZES_DIFFER
   int l = int(c.z);
   return texelFetch(s, ivec3(wrapTexel(c.xy / float(1 << l), max(size >> l, ivec2(1))), layer), l);
 #else
-  return textureLod(s, vec3(c.xy / vec2(size), float(layer)), c.z);
+  vec4 t = textureLod(s, vec3(c.xy / vec2(size), float(layer)), c.z);
+  return vec4(encodeSrgb(t.rgb), t.a);
 #endif
 }
 

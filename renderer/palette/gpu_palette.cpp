@@ -65,8 +65,8 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   gp->layers_ = gl::createTexture();
   glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Palette));
   glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers_.id());
-  for (int k = 0; k < levels; ++k)
-    glTexImage3D(GL_TEXTURE_2D_ARRAY, k, GL_RGBA8, mipSide(w, k), mipSide(h, k), n, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  // Immutable storage, so a second view can read the same texels as sRGB (below).
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, levels, GL_RGBA8, w, h, n);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (int i = 0; i < n; ++i) {
     const std::vector<ImageRGBA8> chain =
@@ -76,10 +76,17 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
       glTexSubImage3D(GL_TEXTURE_2D_ARRAY, k, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, flipped));
     }
   }
-  // texelFetch ignores the sampler; mapped patterns of same-size layers sample bilinearly in
-  // the level the CPU picks (pattern.glsl), wrapping.
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_BASE_LEVEL, 0);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAX_LEVEL, levels - 1);
+  // Read with texelFetch (encoded values, no filtering) at one texel per pixel, and where
+  // layers differ in size.
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // Filtering must average light, not encoded values: between paper and ink an encoded average
+  // is darker than the light it stands for (a bilinear crosshatch at 2 pixels a texel lost
+  // half a palette step of tone). Mapped patterns therefore filter through an sRGB view of the
+  // same texels and encode the result again (pattern.glsl).
+  gp->layersSrgb_ = gl::createTexture();
+  glTextureView(gp->layersSrgb_.id(), GL_TEXTURE_2D_ARRAY, gp->layers_.id(), GL_SRGB8_ALPHA8, 0, GLuint(levels), 0, GLuint(n));
+  glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layersSrgb_.id());
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -220,7 +227,9 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
-  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, layers_.id());
+  // Mapped patterns of same-size layers filter (pattern.glsl's mappedTexel): the sRGB view.
+  const bool filtered = patternMapping() != gl::PatternMapping::Screen && !sizesDiffer_;
+  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered ? layersSrgb_.id() : layers_.id());
   prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
 }
 

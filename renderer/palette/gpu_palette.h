@@ -84,7 +84,8 @@ class GpuPalette {
 
  private:
   GpuPalette() = default;
-  gl::Texture layers_;      // GL_TEXTURE_2D_ARRAY, RGBA8, one layer per entry
+  gl::Texture layers_;      // GL_TEXTURE_2D_ARRAY, RGBA8, one layer per entry, with mip levels
+  gl::Texture layersSrgb_;  // the same texels viewed as sRGB: filtered in linear light
   gl::Texture background_;  // GL_TEXTURE_2D, only for an image background
   std::vector<glm::ivec2> layerSizes_;
   bool sizesDiffer_ = false;
