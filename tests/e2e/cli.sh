@@ -91,5 +91,27 @@ expect 2 "bad --triangle-lighting" -- "$viewer" --headless --triangle-lighting q
 expect 2 "--occlusion-strength 2" -- "$viewer" --headless --occlusion --occlusion-strength 2
 expect 2 "--occlusion-strength nan" -- "$viewer" --headless --occlusion --occlusion-strength nan
 
+# Pattern scale, the palette maker and contact sheets.
+expect 0 "--pattern-scale 2" -- "$viewer" --headless --size 96x96 --light 1,3,1 --pattern-scale 2 --screenshot "$tmp/scaled.png"
+cmp -s "$tmp/plain.png" "$tmp/scaled.png" && { echo "FAIL: --pattern-scale changes nothing"; fail=1; }
+expect 2 "--pattern-scale 0" -- "$viewer" --headless --pattern-scale 0
+expect 2 "--pattern-scale 100" -- "$viewer" --headless --pattern-scale 100
+"$viewer" --headless --size 64x64 --screenshot "$tmp/source.png" 2>/dev/null
+expect 0 "--make-palette --ladder darken" -- "$viewer" --make-palette "$tmp/source.png" --ladder darken --levels 5 --out "$tmp/made"
+grep -q '"evenly_spaced"' "$tmp/out" || { echo "FAIL: --make-palette prints no palette report"; fail=1; }
+expect 0 "the made palette renders" -- "$viewer" --headless --size 64x64 --palette "$tmp/made" --screenshot "$tmp/made.png"
+expect 1 "--make-palette into a folder that is not empty" -- "$viewer" --make-palette "$tmp/source.png" --ladder blur --out "$tmp/made"
+grep -q "not empty" "$tmp/err" || { echo "FAIL: no reason for the refused folder: $(cat "$tmp/err")"; fail=1; }
+expect 1 "--make-palette from a missing image" -- "$viewer" --make-palette "$tmp/none.png" --ladder blur --out "$tmp/none"
+[ -e "$tmp/none" ] && { echo "FAIL: a failed --make-palette left a folder"; fail=1; }
+expect 2 "--make-palette --levels 0" -- "$viewer" --make-palette "$tmp/source.png" --ladder blur --levels 0 --out "$tmp/l0"
+expect 2 "--make-palette --levels 1000" -- "$viewer" --make-palette "$tmp/source.png" --ladder blur --levels 1000 --out "$tmp/l1000"
+expect 2 "--make-palette without --out" -- "$viewer" --make-palette "$tmp/source.png" --ladder blur
+expect 2 "--make-palette with an unknown ladder" -- "$viewer" --make-palette "$tmp/source.png" --ladder melt --out "$tmp/melt"
+expect 2 "--ladder without --make-palette" -- "$viewer" --ladder blur
+expect 0 "--palette-sheet" -- "$viewer" --palette-sheet "$tmp/sheets" --palette "$tmp/made" --palette "$src/palettes/stipple"
+[ -s "$tmp/sheets/made.png" ] && [ -s "$tmp/sheets/stipple.png" ] || { echo "FAIL: --palette-sheet wrote $(ls "$tmp/sheets")"; fail=1; }
+ls -a "$tmp" | grep -q partial && { echo "FAIL: --make-palette left a partial folder"; fail=1; }
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail
