@@ -57,7 +57,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
   CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: the benchmark's (default benchmark-results) or --make-palette's");
-  std::string ladder;
+  std::string ladder, patternFilter;
+  app.add_option("--pattern-filter", patternFilter,
+                 "Scaled or anchored patterns: nearest (the nearest texel, default) | linear (bilinear in linear light: smoother, slower)");
   app.add_option("--make-palette", o.makePalette,
                  "Make a palette from IMAGE (with --ladder) or from a stroke image (with --tam), write it to --out DIR and print its report");
   app.add_option("--ladder", ladder, "--make-palette step applied progressively: blur|offset|solarize|posterize|threshold|darken|desaturate");
@@ -101,6 +103,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     return {std::nullopt, 0};
   } catch (const CLI::ParseError& e) {
     return {std::nullopt, fail(e.what())};
+  }
+  if (!patternFilter.empty()) {
+    if (patternFilter != "nearest" && patternFilter != "linear")
+      return {std::nullopt, fail("unknown --pattern-filter '" + patternFilter + "': use nearest or linear")};
+    o.patternLinear = patternFilter == "linear";
   }
   if (!ladder.empty()) {
     o.ladder = parseLadder(ladder);

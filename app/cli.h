@@ -48,6 +48,7 @@ struct Options {
   std::optional<PatternSpace> pattern;  // --pattern
   bool patternNoRotation = false;       // --pattern-no-rotation
   std::optional<float> patternScale;    // --pattern-scale (default: the window's content scale)
+  bool patternLinear = false;           // --pattern-filter linear
   std::optional<OrientSettings> orient; // --orient
   std::optional<int> orientBins;        // --orient-bins
   bool ground = false;                  // --ground

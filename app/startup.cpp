@@ -24,6 +24,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.pattern) state.settings.pattern = *o.pattern;
   state.settings.patternFollowsRotation = !o.patternNoRotation;
   if (o.patternScale) state.settings.patternScale = *o.patternScale;
+  state.settings.patternLinearFilter = o.patternLinear;
   if (o.orient) state.settings.orient = *o.orient;
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
   state.settings.ground = o.ground;

@@ -78,6 +78,10 @@ struct RenderSettings {
   // pixel (the original); a high-DPI window defaults to its content scale so hatching keeps its
   // physical size. Below 1 the palette's mip levels keep its tone (palette_mipmaps.h).
   float patternScale = 1.0f;
+  // Where the pattern is mapped (scaled or anchored): the nearest texel of the mip level (one
+  // fetch, the default) or bilinear in linear light (no stair-steps on turned or non-integer
+  // scaled patterns; about 15% of a bunny frame on llvmpipe).
+  bool patternLinearFilter = false;
   static constexpr float kMinPatternScale = 0.125f, kMaxPatternScale = 16.0f;
   OrientSettings orient;
   // A ground plane under the model, drawn with the same palette and path (mesh/ground_plane.h).

@@ -132,8 +132,8 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     frame = patterns_.frame();
   }
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
-  if (palette_) palette_->setPatternFrame(frame, scale);
-  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame, scale);
+  if (palette_) palette_->setPatternFrame(frame, scale, s.patternLinearFilter);
+  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame, scale, s.patternLinearFilter);
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {

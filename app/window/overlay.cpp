@@ -69,6 +69,7 @@ void drawOverlay(Viewer& v) {
   }
   ImGui::SliderFloat("pattern scale", &s.settings.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale,
                      "%.2f px/texel", ImGuiSliderFlags_Logarithmic);
+  ImGui::Checkbox("smooth pattern (linear filter)", &s.settings.patternLinearFilter);
   // Hatching orientation, and what the palette offers it: entries with a dominant direction.
   OrientSettings& orient = s.settings.orient;
   int source = static_cast<int>(orient.source);

@@ -17,6 +17,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
   if (p.pattern != PatternMapping::Screen) d.push_back(patternDefine(p.pattern));
+  if (p.filtered) d.push_back("PATTERN_FILTERED");
   if (p.orientBins > 0) {
     d.push_back("ORIENTED");
     d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
@@ -70,6 +71,7 @@ struct SourceOf {
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
     if (q.pattern != PatternMapping::Screen) s.defines.push_back(patternDefine(q.pattern));
     if (q.layerSizesDiffer) s.defines.push_back("LAYER_SIZES_DIFFER");
+    if (q.filtered) s.defines.push_back("PATTERN_FILTERED");
     if (q.orientBins > 0) {
       s.defines.push_back("ORIENTED");
       s.defines.push_back("ORIENT_BINS " + std::to_string(q.orientBins));
@@ -128,8 +130,8 @@ bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b) {
 }
 
 bool operator<(const QuadProgram& a, const QuadProgram& b) {
-  return std::tie(a.kind, a.backgroundImage, a.pattern, a.layerSizesDiffer, a.orientBins, a.orientBuffer) <
-         std::tie(b.kind, b.backgroundImage, b.pattern, b.layerSizesDiffer, b.orientBins, b.orientBuffer);
+  return std::tie(a.kind, a.backgroundImage, a.pattern, a.layerSizesDiffer, a.filtered, a.orientBins, a.orientBuffer) <
+         std::tie(b.kind, b.backgroundImage, b.pattern, b.layerSizesDiffer, b.filtered, b.orientBins, b.orientBuffer);
 }
 
 bool operator<(const LineProgram& a, const LineProgram& b) {

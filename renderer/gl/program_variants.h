@@ -28,8 +28,9 @@ struct PaletteVariant {
   bool backgroundImage = false;  // only meaningful when not precomposited
   MatchMode match = MatchMode::Intensity;
   PatternMapping pattern = PatternMapping::Screen;
+  bool filtered = false;         // mapped patterns filtered bilinearly in linear light (pattern.glsl)
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, orientBins); }
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins); }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
@@ -70,6 +71,7 @@ struct QuadProgram {
   bool backgroundImage = false;
   PatternMapping pattern = PatternMapping::Screen;  // layer quads: how pixels reach the layer
   bool layerSizesDiffer = false;  // layer quads: the palette's layers tile at different sizes
+  bool filtered = false;          // layer quads: mapped and filtered (pattern.glsl)
   int orientBins = 0;     // layer quads: turned along the stroke angle (orientation.glsl)
   bool orientBuffer = false;  // ... read per pixel from the stroke-angle buffer (else fixed)
 };

@@ -82,8 +82,8 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   // Filtering must average light, not encoded values: between paper and ink an encoded average
   // is darker than the light it stands for (a bilinear crosshatch at 2 pixels a texel lost
-  // half a palette step of tone). Mapped patterns therefore filter through an sRGB view of the
-  // same texels and encode the result again (pattern.glsl).
+  // half a palette step of tone). Filtered patterns therefore read an sRGB view of the same
+  // texels and encode the result again (pattern.glsl).
   gp->layersSrgb_ = gl::createTexture();
   glTextureView(gp->layersSrgb_.id(), GL_TEXTURE_2D_ARRAY, gp->layers_.id(), GL_SRGB8_ALPHA8, 0, GLuint(levels), 0, GLuint(n));
   glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layersSrgb_.id());
@@ -150,6 +150,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.backgroundImage = backgroundImage_;
   v.match = mode;
   v.pattern = patternMapping();
+  v.filtered = filtered();
   v.orientBins = orientBins();
   return v;
 }
@@ -227,9 +228,8 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
-  // Mapped patterns of same-size layers filter (pattern.glsl's mappedTexel): the sRGB view.
-  const bool filtered = patternMapping() != gl::PatternMapping::Screen && !sizesDiffer_;
-  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered ? layersSrgb_.id() : layers_.id());
+  // Filtered lookups (pattern.glsl's mappedTexel) read the sRGB view.
+  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered() ? layersSrgb_.id() : layers_.id());
   prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
 }
 

@@ -42,13 +42,16 @@ class GpuPalette {
 
   // The pattern for the frames drawn next: the anchored pattern's frame (nullopt: screen
   // space) and the pattern scale (texel size in pixels, > 0).
-  void setPatternFrame(const std::optional<PatternFrame>& frame, float patternScale = 1.0f) {
+  void setPatternFrame(const std::optional<PatternFrame>& frame, float patternScale = 1.0f, bool linearFilter = false) {
     pattern_ = frame;
     patternScale_ = patternScale;
+    linearFilter_ = linearFilter;
   }
   bool anchored() const { return pattern_.has_value(); }
   gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
+  // Mapped lookups filter bilinearly in linear light (asked for, and the layers share a size).
+  bool filtered() const { return linearFilter_ && patternMapping() != gl::PatternMapping::Screen && !sizesDiffer_; }
   // Mip levels of the layer array (level 0 included).
   int mipLevels() const { return mipLevels_; }
   // The mip level a pattern drawn at `texelsPerPixel` reads: the nearest level (GL's
@@ -105,6 +108,7 @@ class GpuPalette {
   gl::Texture lutIndex_, lutBlend_, lut3D_;
   std::optional<PatternFrame> pattern_;
   float patternScale_ = 1.0f;
+  bool linearFilter_ = false;
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;

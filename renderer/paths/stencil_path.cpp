@@ -20,7 +20,8 @@ Status StencilPath::draw(FrameContext& f) {
   const gl::StrokeSource stroke = f.strokeSource();
   const bool angleBuffer = stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light;
   Result<gl::ShaderProgram*> layerQuad =
-      f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->orientBins(), angleBuffer});
+      f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->filtered(),
+                                     f.palette->orientBins(), angleBuffer});
   if (!layerQuad) return Error{layerQuad.error()};
   if (angleBuffer)
     if (Status st = strokeAngles_.draw(f); !st) return st;

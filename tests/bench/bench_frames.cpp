@@ -5,7 +5,7 @@
 // palette path can do). The light moves every frame, so per-triangle paths pay their CPU
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
-//      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--orient] [--shadows]
+//      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
 //      [--static-light] [--occlusion] [--gpu-triangles]
 #include <algorithm>
 #include <chrono>
@@ -51,6 +51,7 @@ struct PathRow {
   bool materials = false;                 // the mesh's own materials (--materials)
   bool anchored = false;                  // the anchored pattern space (--patterns)
   float patternScale = 1.0f;              // texel size in pixels (--pattern-scale S)
+  bool linear = false;                    // mapped lookups filtered (--pattern-linear)
   bool oriented = false;                  // strokes along the curvature (--orient)
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
@@ -63,6 +64,7 @@ struct PathRow {
 int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
+  bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
   bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
@@ -73,6 +75,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--materials")) materials = true;
     else if (!std::strcmp(argv[i], "--patterns")) patterns = true;
     else if (!std::strcmp(argv[i], "--pattern-scale") && i + 1 < argc) scales.push_back(float(std::atof(argv[++i])));
+    else if (!std::strcmp(argv[i], "--pattern-linear")) patternLinear = true;
     else if (!std::strcmp(argv[i], "--orient")) orient = true;
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
@@ -83,7 +86,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
@@ -161,6 +164,11 @@ int main(int argc, char** argv) {
         on.label += "+anchored";
         on.anchored = true;
         paths.push_back(on);
+        if (patternLinear) {
+          on.label += "+linear";
+          on.linear = true;
+          paths.push_back(on);
+        }
       }
       for (float scale : scales)
         if (pathInfo(p.path).usesPalette) {
@@ -170,6 +178,11 @@ int main(int argc, char** argv) {
           on.label += label;
           on.patternScale = scale;
           paths.push_back(on);
+          if (patternLinear) {
+            on.label += "+linear";
+            on.linear = true;
+            paths.push_back(on);
+          }
         }
       if (shadows && p.path != RenderPath::Triangle && p.path != RenderPath::Stencil) {
         PathRow on = p;
@@ -221,6 +234,7 @@ int main(int argc, char** argv) {
         s.materials = paths[p].materials;
         s.pattern = paths[p].anchored ? PatternSpace::Anchored : PatternSpace::Screen;
         s.patternScale = paths[p].patternScale;
+        s.patternLinearFilter = paths[p].linear;
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;

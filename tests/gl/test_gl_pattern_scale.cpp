@@ -60,10 +60,12 @@ TEST_F(Fixture, HalfScaleShowsTheNextMipLevelTexelForPixel) {
   const int w = 160, h = 120;
   OrbitCamera cam(0.0f, 0.0f, 3.0f);
   cam.frame(0.5f);  // the square fills the frame
-  for (float scale : {0.5f, 1.0f}) {
+  int done = 0;
+  for (float scale : {0.5f, 1.0f, 0.5f}) {
     RenderSettings s;
     s.path = RenderPath::Pixel;
     s.patternScale = scale;
+    s.patternLinearFilter = scale == 0.5f && done++ > 0;  // the second time, filtered: at texel centres it is the texel
     const ImageRGBA8 img = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
     const ImageRGBA8& level = scale == 1.0f ? p.entries[0].image : p.entries[0].mips[0];
     const int n = level.width;
@@ -115,12 +117,14 @@ TEST_F(Fixture, ToneHoldsFromAQuarterToThreePixelsATexel) {
       RenderSettings s;
       s.path = RenderPath::Pixel;
       const double base = meanLight(renderImage(*r, cam.matrices(1.0f), s, n, n));
-      for (float scale : {0.25f, 0.5f, 0.75f, 1.5f, 3.0f}) {
-        if (std::fmod(float(n), tile * scale) != 0.0f) continue;  // wood's 128-texel tiles at some scales
-        s.patternScale = scale;
-        const double tone = meanLight(renderImage(*r, cam.matrices(1.0f), s, n, n));
-        EXPECT_NEAR(tone, base, 0.01) << name << " entry " << i << " at pattern scale " << scale;
-      }
+      for (float scale : {0.25f, 0.5f, 0.75f, 1.5f, 3.0f})
+        for (bool linear : {false, true}) {
+          if (std::fmod(float(n), tile * scale) != 0.0f) continue;  // wood's 128-texel tiles at some scales
+          s.patternScale = scale;
+          s.patternLinearFilter = linear;
+          const double tone = meanLight(renderImage(*r, cam.matrices(1.0f), s, n, n));
+          EXPECT_NEAR(tone, base, 0.01) << name << " entry " << i << " at pattern scale " << scale << (linear ? " linear" : " nearest");
+        }
     }
   }
 }
@@ -135,6 +139,7 @@ TEST_F(Fixture, StencilQuadsFollowThePatternScale) {
   for (float scale : {0.5f, 1.5f, 3.0f}) {
     RenderSettings s;
     s.patternScale = scale;
+    s.patternLinearFilter = scale == 1.5f;
     s.path = RenderPath::Stencil;
     const ImageRGBA8 stencil = renderImage(*r, cam, s, w, h);
     s.path = RenderPath::Triangle;
@@ -160,6 +165,7 @@ TEST_F(Fixture, EveryPathDrawsScaledAndAnchoredScaledPatterns) {
         s.path = path;
         s.pattern = space;
         s.patternScale = scale;
+        s.patternLinearFilter = scale > 1.0f;
         s.orient.source = OrientSource::Fixed;  // turned lookups too, where entries have a direction
         const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
         EXPECT_EQ(img.width, w) << renderPathName(path);
