@@ -266,6 +266,28 @@ int main(int argc, char** argv) {
   w.palette("pencil", "name Pencil\nmatch intensity\n# 10 levels of soft graphite strokes (a tonal art map).\n", pencilMaps.images, &bg,
             "level", pencilMaps.mips);
 
+  // Charcoal: broad, grainy strokes that catch on the tooth of a rougher paper (the charcoal
+  // style of the NPR lecture slides draws through it).
+  ImageRGBA8 tooth = blank(), roughPaper = blank();
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float t = std::clamp(0.55f * valueNoise(float(x), float(y), 128, 51) + 0.45f * rand01(std::uint32_t(x), std::uint32_t(y), 52), 0.0f, 1.0f);
+      setPixel(tooth, x, y, glm::vec3(t), 1.0f);
+      const float v = 0.86f + 0.08f * t;
+      setPixel(roughPaper, x, y, glm::vec3(v, v * 0.98f, v * 0.95f), 1.0f);
+    }
+  npr::TamSpec charcoal;
+  charcoal.tones = 10;
+  charcoal.darkest = 0.8f;
+  charcoal.seed = 15;
+  charcoal.tooth = tooth;
+  charcoal.families = {npr::StrokeFamily{70.0f, 10.0f, 0.3f, 0.4f, 4.5f, 0.4f, 0.08f, 0.75f, 0.25f, 0.0f, 0.85f},
+                       npr::StrokeFamily{160.0f, 10.0f, 0.28f, 0.4f, 4.0f, 0.4f, 0.08f, 0.75f, 0.25f, 0.5f, 0.85f}};
+  charcoal.ink = glm::vec3(0.09f, 0.08f, 0.08f);
+  const Drawn charcoalMaps = drawn(charcoal, roughPaper, "charcoal");
+  w.palette("charcoal", "name Charcoal\nmatch intensity\n# 10 levels of broad grainy strokes on toothed paper (a tonal art map).\n", charcoalMaps.images,
+            &roughPaper, "level", charcoalMaps.mips);
+
   std::vector<ImageRGBA8> cel;
   for (glm::vec3 c : {glm::vec3(0.16f, 0.18f, 0.30f), glm::vec3(0.38f, 0.42f, 0.62f), glm::vec3(0.66f, 0.71f, 0.88f), glm::vec3(0.95f, 0.96f, 1.0f)})
     cel.push_back(solid(c));

@@ -35,6 +35,7 @@ struct Mark {
   float width = 1;   // texels (a dot's radius for dots)
   float bend = 0;    // midpoint offset, fraction of the length
   float pressure = 1;
+  float grain = 0;
   bool dot = false;
 };
 
@@ -73,6 +74,12 @@ class Canvas {
     for (size_t i = 0; i < cov_.size(); ++i) sum_ += shown(i, 0.0f);
   }
   int size() const { return size_; }
+  // Tooth height 0..1 at texel i (1 without a tooth image).
+  void setTooth(const ImageRGBA8& tooth) {
+    tooth_.resize(cov_.size());
+    for (size_t i = 0; i < cov_.size(); ++i) tooth_[i] = tooth.pixels[i * 4] / 255.0f;
+  }
+  float tooth(size_t i) const { return tooth_.empty() ? 1.0f : tooth_[i]; }
   float coverage(int x, int y) const { return cov_[index(x, y)]; }
   size_t index(int x, int y) const {
     const int n = size_;
@@ -109,6 +116,7 @@ class Canvas {
   const ImageRGBA8* paper_;
   int size_;
   std::vector<float> cov_;
+  std::vector<float> tooth_;
   std::uint8_t ink_[3]{};
   glm::dvec3 sum_{0.0};
 };
@@ -162,9 +170,9 @@ void drawMark(const Mark& m, Canvas& c, int canvasIndex, const Stamp* stamp, std
   const int y0 = int(std::floor(centre.y - ry)), y1 = int(std::ceil(centre.y + ry));
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x) {
-      const float a = markCoverage(m, glm::vec2(float(x) + 0.5f, float(y) + 0.5f), n, stamp);
-      if (a <= 0.0f) continue;
       const size_t i = c.index(x, y);
+      const float a = markCoverage(m, glm::vec2(float(x) + 0.5f, float(y) + 0.5f), n, stamp) * (1.0f - m.grain * (1.0f - c.tooth(i)));
+      if (a <= 0.0f) continue;
       const float old = c.at(i);
       changes.push_back({canvasIndex, i, old});
       c.set(i, 1.0f - (1.0f - old) * (1.0f - a));
@@ -237,7 +245,13 @@ Result<TonalArtMap> buildTonalArtMap(const TamSpec& spec, const ImageRGBA8& pape
 
   const std::vector<ImageRGBA8> paperChain = mipChain(paper, spec.strokeLevels);
   std::vector<Canvas> canvas;
-  for (const ImageRGBA8& p : paperChain) canvas.emplace_back(p, spec.ink);
+  if (spec.tooth && (spec.tooth->width != spec.size || spec.tooth->height != spec.size))
+    return Error{"tonal art map: the tooth image must be " + std::to_string(spec.size) + "x" + std::to_string(spec.size)};
+  const std::vector<ImageRGBA8> toothChain = spec.tooth ? mipChain(*spec.tooth, spec.strokeLevels) : std::vector<ImageRGBA8>{};
+  for (const ImageRGBA8& p : paperChain) {
+    canvas.emplace_back(p, spec.ink);
+    if (spec.tooth) canvas.back().setTooth(toothChain[canvas.size() - 1]);
+  }
   const std::optional<Stamp> stamp = spec.stamp ? std::optional<Stamp>(makeStamp(*spec.stamp)) : std::nullopt;
   const Stamp* stampPtr = stamp ? &*stamp : nullptr;
 
@@ -290,6 +304,7 @@ Result<TonalArtMap> buildTonalArtMap(const TamSpec& spec, const ImageRGBA8& pape
             c.width = std::max(0.5f, rng.jitter(fam.width, fam.widthJitter));
             c.bend = rng.range(-fam.bend, fam.bend);
             c.pressure = std::min(1.0f, rng.jitter(fam.pressure, fam.pressureJitter));
+            c.grain = fam.grain;
             const int n = canvas[size_t(m)].size();
             float ink = 0.0f;
             for (int j = 0; j < 8; ++j) {

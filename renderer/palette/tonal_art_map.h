@@ -35,6 +35,7 @@ struct StrokeFamily {
   float pressure = 0.9f;       // peak opacity
   float pressureJitter = 0.15f;
   float joinsAt = 0.0f;        // first drawn once the target darkness (0 paper .. 1 ink) passes this
+  float grain = 0.0f;          // 0..1: how much the paper's tooth (TamSpec::tooth) keeps ink out of its valleys
 };
 
 struct TamSpec {
@@ -47,6 +48,9 @@ struct TamSpec {
   float dotRadius = 1.4f;    // texels
   glm::vec3 ink{0.06f, 0.05f, 0.08f};  // encoded colour
   std::optional<ImageRGBA8> stamp;  // a user's stroke image (ink = darkness x alpha), stretched along each stroke
+  // The paper's tooth (grey, size x size; bright = a peak that catches ink), for strokes with
+  // grain: charcoal and pencil skip over the valleys.
+  std::optional<ImageRGBA8> tooth;
   std::uint32_t seed = 1;
   int maxMarksPerLevel = 60000;  // a level that cannot reach its tone stops here (and says so)
 };

@@ -25,7 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-const char* const kDrawn[] = {"crosshatch", "hatch", "stipple", "pencil"};
+const char* const kDrawn[] = {"crosshatch", "hatch", "stipple", "pencil", "charcoal"};
 
 Palette shipped(const std::string& name) {
   Result<Palette> p = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/" + name + "/" + name + ".palette");
@@ -177,7 +177,7 @@ TEST(DrawnPalettes, ShippedLevelsNestTexelByTexel) {
 
 TEST(DrawnPalettes, ToneHoldsAtEveryMipLevel) {
   // The drawn palettes' own levels, and levels reduced from images that have none.
-  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "wood", "solarize", "gooch", "cel"}) {
+  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "charcoal", "wood", "solarize", "gooch", "cel"}) {
     const Palette p = shipped(name);
     for (size_t i = 0; i < p.entries.size(); ++i) {
       const std::vector<float> tones = entryMipTones(p, i);
