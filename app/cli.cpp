@@ -87,6 +87,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
+  app.add_option("--turntable", o.turntable,
+                 "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
   app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
@@ -162,6 +164,14 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     Result<CameraAnimation> a = parseCameraAnimation(animate);
     if (!a) return {std::nullopt, fail(a.error())};
     o.animation = *a;
+  }
+  if (o.turntable != 0) {
+    if (o.turntable < 2 || o.turntable > 3600) return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
+    if (!animate.empty()) return {std::nullopt, fail("--turntable is its own camera motion: leave out --animate")};
+    o.headless = true;
+    o.frames = o.turntable;
+    o.animation.orbitDegrees = 360.0f / float(o.turntable);
+    if (o.saveFrames.empty()) o.saveFrames = "turntable";
   }
   if (!o.saveFrames.empty()) {
     std::error_code ec;

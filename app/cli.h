@@ -57,6 +57,7 @@ struct Options {
   std::optional<float> occlusionStrength;  // --occlusion-strength
   TriangleLighting triangleLighting = TriangleLighting::Auto;  // --triangle-lighting
   std::string saveFrames;     // --save-frames DIR
+  int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
   bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;

@@ -196,7 +196,15 @@ Status Renderer::prepareOcclusion(const RenderSettings& s) {
     occlusion_ = std::move(*bake);
   }
   if (occlusion_->done()) return okStatus();
-  if (Status st = occlusion_->step(occlusionBudgetMs_, programs_, stats_); !st) return st;
+  if (occlusionBudgetMs_ <= 0.0 && progress_) {
+    // To the end now, in slices, saying how far it got.
+    while (!occlusion_->done()) {
+      if (Status st = occlusion_->step(250.0, programs_, stats_); !st) return st;
+      progress_("baking ambient occlusion", double(occlusion_->directionsDone()) / occlusion_->directions());
+    }
+  } else if (Status st = occlusion_->step(occlusionBudgetMs_, programs_, stats_); !st) {
+    return st;
+  }
   if (!occlusion_->done()) return okStatus();
   gpuMesh_.uploadOcclusion(occlusion_->values());
   for (auto& g : groups_) g->gpuMesh.uploadOcclusion(occlusion_->values());  // subsets keep every vertex

@@ -12,6 +12,7 @@
 #include <map>
 #include <string>
 #include <vector>
+#include <functional>
 #include <memory>
 
 #include "renderer/core/camera.h"
@@ -92,6 +93,9 @@ class Renderer {
   // headless runs and tests want), uploaded when done. Null before it starts.
   const OcclusionBake* occlusionBake() const { return occlusion_.get(); }
   void setOcclusionBudget(double ms) { occlusionBudgetMs_ = ms; }
+  // Told how far long work inside a frame has got (the occlusion bake when it bakes to the end
+  // at once), so a terminal can show it; empty: nothing told.
+  void setProgress(std::function<void(const std::string& what, double fraction)> progress) { progress_ = std::move(progress); }
   // The current mesh's hatching direction field: computed the first time a frame orients
   // strokes along the curvature, kept until the mesh changes (null until then).
   const DirectionField* directionField() const { return field_ ? &*field_ : nullptr; }
@@ -162,6 +166,7 @@ class Renderer {
   std::unique_ptr<OcclusionBake> occlusion_;
   const std::vector<float>* occlusionValues(const RenderSettings& settings) const;  // null until baked
   double occlusionBudgetMs_ = 0.0;
+  std::function<void(const std::string&, double)> progress_;
   bool shadowsReady_ = false;  // this frame draws with shadows_
   unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache
   // The ground plane under the current mesh (--ground), drawn like one more part of it; built

@@ -17,6 +17,7 @@
 
 #include "app/benchmark/benchmark_results.h"
 #include "app/benchmark/interleaved_timing.h"
+#include "app/progress_line.h"
 #include "app/headless/headless_session.h"
 #include "app/viewer_state.h"
 #include "renderer/gl/gl_debug.h"
@@ -299,6 +300,9 @@ int runBenchmark(const Options& o) {
   std::vector<ConfigResult> results;
   std::uint64_t nonFinite = 0;
   std::vector<std::string> failures;
+  const int configurations = int(models.size() * palettes.size()) * (o.allMatchModes ? 3 : 1);
+  ProgressLine progress("benchmark");
+  int measured = 0;
   for (const std::string& modelName : models) {
     Result<Mesh> loaded = loadModel(modelName);
     if (!loaded) return reportFailure(loaded.error());
@@ -315,6 +319,7 @@ int runBenchmark(const Options& o) {
         nonFinite += c.nonFinite;
         for (const std::string& f : c.failures) failures.push_back(c.model + ", " + c.palette + ": " + f);
         results.push_back(std::move(c));
+        progress.update(double(++measured) / configurations);
       }
     }
   }

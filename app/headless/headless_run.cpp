@@ -2,11 +2,15 @@
 #include "app/headless/headless_run.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <chrono>
 #include <cstdio>
 #include <vector>
 
 #include "app/headless/headless_session.h"
+#include "app/progress_line.h"
 #include "app/startup.h"
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/gl_debug.h"
@@ -26,6 +30,20 @@ int runHeadless(const Options& o) {
   const int frames = std::max(1, o.frames);
   const float aspect = float(o.size.x) / float(o.size.y);
   std::vector<double> ms;
+  // A turntable also goes into an animated GIF, frame by frame (30 frames a second, looping).
+  std::optional<AnimationWriter> gif;
+  const std::string gifPath = o.turntable ? (std::filesystem::path(o.saveFrames) / "turntable.gif").string() : std::string();
+  if (o.turntable) {
+    Result<AnimationWriter> w = AnimationWriter::open(gifPath, o.size.x, o.size.y, frames, 30);
+    if (!w) return reportFailure(w.error());
+    gif = std::move(*w);
+  }
+  ProgressLine progress("rendering " + std::to_string(frames) + " frames");
+  std::unique_ptr<ProgressLine> bakeProgress;
+  renderer->setProgress([&](const std::string& what, double f) {
+    if (!bakeProgress) bakeProgress = std::make_unique<ProgressLine>(what);
+    bakeProgress->update(f);
+  });
   target->bind();
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -36,12 +54,17 @@ int runHeadless(const Options& o) {
       return reportFailure("render failed: " + s.error());
     finishGpuWork();
     ms.push_back(msSince(t0));
-    if (!o.saveFrames.empty()) {
-      if (Status s = writeImage(frameFileName(o.saveFrames, f), target->readRGBA8()); !s) return reportFailure(s.error());
+    if (!o.saveFrames.empty() || gif) {
+      const ImageRGBA8 image = target->readRGBA8();
+      if (Status s = writeImage(frameFileName(o.saveFrames, f), image); !s) return reportFailure(s.error());
+      if (gif)
+        if (Status s = gif->append(image); !s) return reportFailure(s.error());
     }
+    if (frames > 1) progress.update(double(f + 1) / frames);
     stepCameraAnimation(state.camera, o.animation, o.size);
   }
   if (!o.saveFrames.empty()) std::fprintf(stderr, "npr-viewer: %d frame(s) written to %s\n", frames, o.saveFrames.c_str());
+  if (gif) std::fprintf(stderr, "npr-viewer: turntable written to %s\n", gifPath.c_str());
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
                state.mesh->report.file.c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),

@@ -174,4 +174,52 @@ Status writeImage(const std::string& path, const ImageRGBA8& image) {
   return okStatus();
 }
 
+struct AnimationWriter::State {
+  std::string path;
+  std::unique_ptr<OIIO::ImageOutput> out;
+  OIIO::ImageSpec spec;
+  int frames = 0, written = 0;
+};
+
+AnimationWriter::AnimationWriter(AnimationWriter&&) noexcept = default;
+AnimationWriter& AnimationWriter::operator=(AnimationWriter&&) noexcept = default;
+AnimationWriter::~AnimationWriter() {
+  if (state_ && state_->out) state_->out->close();
+}
+
+Result<AnimationWriter> AnimationWriter::open(const std::string& path, int width, int height, int frames, int fps) {
+  if (frames < 1 || width < 1 || height < 1) return Error{path + ": an animation needs at least one frame of at least one pixel"};
+  AnimationWriter w;
+  w.state_ = std::make_unique<State>();
+  State& s = *w.state_;
+  s.path = path;
+  s.frames = frames;
+  s.out = OIIO::ImageOutput::create(path);
+  if (!s.out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
+  if (frames > 1 && !(s.out->supports("multiimage") && s.out->supports("appendsubimage")))
+    return Error{path + ": " + s.out->format_name() + " files hold one image; use .gif for an animation"};
+  s.spec = OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::UINT8);
+  s.spec.attribute("oiio:UnassociatedAlpha", 1);
+  s.spec.attribute("FramesPerSecond", OIIO::TypeRational, std::vector<int>{fps, 1}.data());
+  s.spec.attribute("oiio:LoopCount", 0);  // loop forever
+  const std::vector<OIIO::ImageSpec> specs(static_cast<size_t>(frames), s.spec);
+  if (!s.out->open(path, frames, specs.data())) return Error{path + ": cannot open for writing: " + s.out->geterror()};
+  return w;
+}
+
+Status AnimationWriter::append(const ImageRGBA8& frame) {
+  State& s = *state_;
+  if (s.written >= s.frames) return Error{s.path + ": more frames than the animation was opened for"};
+  if (frame.width != s.spec.width || frame.height != s.spec.height) return Error{s.path + ": a frame of another size"};
+  if (s.written > 0 && !s.out->open(s.path, s.spec, OIIO::ImageOutput::AppendSubimage))
+    return Error{s.path + ": cannot add frame " + std::to_string(s.written) + ": " + s.out->geterror()};
+  if (!s.out->write_image(OIIO::TypeDesc::UINT8, frame.pixels.data())) return Error{s.path + ": write failed: " + s.out->geterror()};
+  if (++s.written == s.frames) {
+    const bool closed = s.out->close();
+    if (!closed) return Error{s.path + ": close failed: " + s.out->geterror()};
+    s.out.reset();
+  }
+  return okStatus();
+}
+
 }  // namespace npr

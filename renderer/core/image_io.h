@@ -3,6 +3,7 @@
 // file's extension names (PNG, TGA, EXR, ...).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "renderer/core/image.h"
@@ -29,5 +30,22 @@ struct ImageSize {
 [[nodiscard]] Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit = {kMaxImageSide, kMaxImageSide});
 [[nodiscard]] Result<ImageRGBA8> resizeImage(const ImageRGBA8& image, int width, int height);
 [[nodiscard]] Status writeImage(const std::string& path, const ImageRGBA8& image);
+
+// An animation written frame by frame as the frames are made (an animated GIF, or any format
+// OpenImageIO writes with several subimages): the frames are never all in memory.
+class AnimationWriter {
+ public:
+  [[nodiscard]] static Result<AnimationWriter> open(const std::string& path, int width, int height, int frames, int fps);
+  AnimationWriter(AnimationWriter&&) noexcept;
+  AnimationWriter& operator=(AnimationWriter&&) noexcept;
+  ~AnimationWriter();
+  // Each frame must be width x height; the file is finished after the last one.
+  [[nodiscard]] Status append(const ImageRGBA8& frame);
+
+ private:
+  AnimationWriter() = default;
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace npr

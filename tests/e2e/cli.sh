@@ -113,5 +113,18 @@ expect 0 "--palette-sheet" -- "$viewer" --palette-sheet "$tmp/sheets" --palette 
 [ -s "$tmp/sheets/made.png" ] && [ -s "$tmp/sheets/stipple.png" ] || { echo "FAIL: --palette-sheet wrote $(ls "$tmp/sheets")"; fail=1; }
 ls -a "$tmp" | grep -q partial && { echo "FAIL: --make-palette left a partial folder"; fail=1; }
 
+# Turntables: N frames of one orbit and an animated GIF of N subimages; progress redrawn on a
+# terminal, plain lines in a pipe.
+expect 0 "--turntable 36" -- "$viewer" --turntable 36 --size 64x48 --save-frames "$tmp/turn"
+[ "$(ls "$tmp/turn"/frame-*.png | wc -l)" = 36 ] || { echo "FAIL: --turntable 36 wrote $(ls "$tmp/turn" | wc -l) files"; fail=1; }
+oiiotool --info "$tmp/turn/turntable.gif" | grep -q "36 subimages" || { echo "FAIL: the GIF: $(oiiotool --info "$tmp/turn/turntable.gif")"; fail=1; }
+cmp -s "$tmp/turn/frame-0000.png" "$tmp/turn/frame-0001.png" && { echo "FAIL: the turntable does not turn"; fail=1; }
+grep -q $'\r' "$tmp/err" && { echo "FAIL: a redrawn progress line in a pipe"; fail=1; }
+grep -q "rendering 36 frames: 100%" "$tmp/err" || { echo "FAIL: no plain progress lines in a pipe"; fail=1; }
+script -qec "'$viewer' --turntable 4 --size 32x24 --save-frames '$tmp/turn4'" /dev/null > "$tmp/pty" 2>&1
+grep -q $'\r'"rendering 4 frames:" "$tmp/pty" || { echo "FAIL: no progress line on a terminal: $(cat -v "$tmp/pty" | head -3)"; fail=1; }
+expect 2 "--turntable 1" -- "$viewer" --turntable 1
+expect 2 "--turntable with --animate" -- "$viewer" --turntable 10 --animate orbit:1
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail
