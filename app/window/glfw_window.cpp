@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -59,6 +60,17 @@ ImGuiSession::ImGuiSession(GLFWwindow* window) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
+  // On a high-DPI screen the overlay keeps its physical size: widgets scaled, and the font
+  // rasterised at the scaled size rather than magnified (which blurs it).
+  float sx = 1.0f, sy = 1.0f;
+  glfwGetWindowContentScale(window, &sx, &sy);
+  const float scale = std::isfinite(sx) && sx > 0.0f ? std::clamp(sx, 1.0f, 4.0f) : 1.0f;
+  if (scale != 1.0f) {
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImFontConfig font;
+    font.SizePixels = 13.0f * scale;
+    ImGui::GetIO().Fonts->AddFontDefault(&font);
+  }
   ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the window's own callbacks
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
