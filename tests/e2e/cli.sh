@@ -126,5 +126,14 @@ grep -q $'\r'"rendering 4 frames:" "$tmp/pty" || { echo "FAIL: no progress line 
 expect 2 "--turntable 1" -- "$viewer" --turntable 1
 expect 2 "--turntable with --animate" -- "$viewer" --turntable 10 --animate orbit:1
 
+# The first run on a machine without a display (.ci/setup run): files it names, exit 0.
+(unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
+  || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }
+for f in still.png turntable/turntable.gif turntable/frame-0035.png; do
+  [ -s "$tmp/first/$f" ] || { echo "FAIL: first run did not write $f"; fail=1; }
+done
+grep -q "$tmp/first" "$tmp/first.log" || { echo "FAIL: first run does not name its folder"; fail=1; }
+grep -q "bash .ci/setup run" "$tmp/first.log" || { echo "FAIL: first run does not say how to open the window"; fail=1; }
+
 [ $fail = 0 ] && echo "cli: all checks passed"
 exit $fail
