@@ -57,6 +57,8 @@ struct Options {
   std::optional<float> occlusionStrength;  // --occlusion-strength
   TriangleLighting triangleLighting = TriangleLighting::Auto;  // --triangle-lighting
   std::string saveFrames;     // --save-frames DIR
+  std::string svg;            // --svg FILE: the last frame's feature lines as SVG
+  bool svgRaster = false;     // --svg-raster: with the frame embedded underneath
   int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)

@@ -87,6 +87,8 @@ class Renderer {
   // The anchored pattern starts again from the screen's frame at the next frame: call on view
   // jumps (frame the model, reset the view). A new mesh does it too.
   void resetPattern() { patterns_.reset(); }
+  // The feature lines the frame shows for this camera (object space), for vector export.
+  std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings) { return lines_.lines(camera, settings.lines); }
   const PatternTracker& patternTracker() const { return patterns_; }
   // The ambient occlusion bake of the current mesh: started the first time a frame asks for
   // occlusion, run for at most `occlusionBudgetMs` per frame (0: to the end in one frame, as

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/headless/headless_session.h"
+#include "app/line_export.h"
 #include "app/progress_line.h"
 #include "app/startup.h"
 #include "renderer/core/elapsed.h"
@@ -45,9 +46,11 @@ int runHeadless(const Options& o) {
     bakeProgress->update(f);
   });
   target->bind();
+  CameraMatrices lastCamera = state.camera.matrices(aspect);
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
     const CameraMatrices cam = state.camera.matrices(aspect);
+    lastCamera = cam;
     if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
     target->bind();
     if (Status s = renderer->render(cam, state.settings, {0, 0, o.size.x, o.size.y}); !s)
@@ -69,6 +72,11 @@ int runHeadless(const Options& o) {
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
                state.mesh->report.file.c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
                matchModeName(state.settings.match), ms[ms.size() / 2]);
+  if (!o.svg.empty()) {
+    const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};
+    if (Status s = exportLinesSvg(*renderer, lastCamera, state.settings, o.size, o.svgRaster ? &frame : nullptr, o.svg); !s) return reportFailure(s.error());
+    target->bind();
+  }
   if (!o.screenshot.empty()) {
     if (Status s = writeImage(o.screenshot, target->readRGBA8()); !s) return reportFailure(s.error());
   }

@@ -3,6 +3,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -172,6 +173,19 @@ Status writeImage(const std::string& path, const ImageRGBA8& image) {
   if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) return Error{path + ": write failed: " + out->geterror()};
   if (!out->close()) return Error{path + ": close failed: " + out->geterror()};
   return okStatus();
+}
+
+Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput proxy(bytes);
+  auto out = OIIO::ImageOutput::create("png");
+  if (!out) return Error{"PNG encoder unavailable: " + OIIO::geterror()};
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!out->set_ioproxy(&proxy) || !out->open("memory.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
+      !out->close())
+    return Error{"PNG encoding failed: " + out->geterror()};
+  return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
 }
 
 struct AnimationWriter::State {

@@ -30,6 +30,8 @@ struct ImageSize {
 [[nodiscard]] Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit = {kMaxImageSide, kMaxImageSide});
 [[nodiscard]] Result<ImageRGBA8> resizeImage(const ImageRGBA8& image, int width, int height);
 [[nodiscard]] Status writeImage(const std::string& path, const ImageRGBA8& image);
+// The image as PNG file bytes (for embedding).
+[[nodiscard]] Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image);
 
 // An animation written frame by frame as the frames are made (an animated GIF, or any format
 // OpenImageIO writes with several subimages): the frames are never all in memory.

@@ -80,4 +80,21 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   return okStatus();
 }
 
+std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const LineSettings& ls) {
+  std::vector<FeatureLine> out;
+  if (!mesh_ || !ls.objectSpace()) return out;
+  if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
+  if (ls.silhouettes) {
+    const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
+    const auto& s = edges_->silhouettes(eye);
+    out.insert(out.end(), s.begin(), s.end());
+    silhouetteEye_ = glm::vec3(NAN);  // the uploaded silhouettes may be another eye's now
+  }
+  for (const FeatureLine& l : edges_->staticLines(ls.creaseAngle)) {
+    const auto kind = static_cast<EdgeKind>(int(l.kind + 0.5f));
+    if ((kind == EdgeKind::Crease && ls.creases) || (kind == EdgeKind::Boundary && ls.boundaries)) out.push_back(l);
+  }
+  return out;
+}
+
 }  // namespace npr

@@ -26,6 +26,9 @@ class LinePass {
   void setMesh(const Mesh* mesh);
   [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
+  // The object-space lines `draw` shows for this camera and these settings (silhouettes,
+  // creases, boundaries, as enabled): what vector export writes.
+  std::vector<FeatureLine> lines(const CameraMatrices& camera, const LineSettings& lines);
 
  private:
   const Mesh* mesh_ = nullptr;

@@ -5,7 +5,10 @@
 
 #include <map>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/lines/feature_edges.h"
+#include "renderer/lines/svg_export.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
 #include "renderer/mesh/mesh_generators.h"
@@ -113,6 +116,51 @@ TEST(FeatureEdges, NonManifoldEdgesAreJunctions) {
   EXPECT_GE(e.junctionEdges(), 1u);
   // Every junction is drawn with the boundaries; no edge is lost or doubled.
   EXPECT_EQ(countKind(e.staticLines(60.0f), EdgeKind::Boundary), 7u);
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// Vector export: edges that share ends chain into polylines in drawing order; a closed outline
+// is one closed chain; a surface in front cuts a line.
+TEST(SvgExport, EdgesChainAtSharedEndsAndHiddenPartsAreCut) {
+  CameraMatrices cam;
+  cam.view = glm::lookAt(glm::vec3(0, 0, 3), glm::vec3(0), glm::vec3(0, 1, 0));
+  cam.projection = glm::perspective(glm::radians(45.0f), 1.0f, 0.1f, 10.0f);
+  const glm::ivec2 size(200, 200);
+  ImageRGBA32F empty{200, 200, std::vector<float>(200 * 200 * 4, 0.0f)};  // no surface anywhere
+  const float s = float(EdgeKind::Silhouette), c = float(EdgeKind::Crease);
+  const glm::vec3 p[4] = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
+  // The square's sides listed out of order, one reversed, plus a crease elsewhere.
+  const std::vector<FeatureLine> lines = {{p[2], p[3], s}, {p[0], p[1], s}, {p[2], p[1], s}, {p[3], p[0], s},
+                                          {{0.8f, 0.8f, 0}, {0.9f, 0.9f, 0}, c}};
+  const SvgLines out = visibleLineChains(lines, cam, size, empty);
+  ASSERT_EQ(out.chains[0].size(), 1u);
+  const auto& loop = out.chains[0][0];
+  ASSERT_EQ(loop.size(), 5u);
+  EXPECT_LT(glm::length(loop.front() - loop.back()), 1e-3f);
+  for (size_t i = 1; i < loop.size(); ++i) EXPECT_GT(glm::length(loop[i] - loop[i - 1]), 10.0f) << "consecutive points are the sides' ends";
+  EXPECT_EQ(out.chains[1].size(), 1u);
+  EXPECT_EQ(out.paths, 2);
+  // A surface in front of the square's left half (eye z -1, the square at -3) hides that part.
+  ImageRGBA32F front = empty;
+  for (int y = 0; y < 200; ++y)
+    for (int x = 0; x < 100; ++x) {
+      front.pixels[(size_t(y) * 200 + size_t(x)) * 4 + 2] = -1.0f;
+      front.pixels[(size_t(y) * 200 + size_t(x)) * 4 + 3] = 1.0f;
+    }
+  const SvgLines cut = visibleLineChains(lines, cam, size, front);
+  for (const auto& chain : cut.chains[0])
+    for (const glm::vec2& q : chain) EXPECT_GE(q.x, 98.0f) << "a point of a hidden part was kept";
+  EXPECT_LT(cut.lengthPx, 0.7 * out.lengthPx);
+  EXPECT_GT(cut.lengthPx, 0.3 * out.lengthPx);
+  const std::string svg = svgDocument(out, size, LineSettings{}, {});
+  EXPECT_NE(svg.find("<g id=\"silhouettes\""), std::string::npos);
+  EXPECT_NE(svg.find("<g id=\"creases\""), std::string::npos);
+  EXPECT_EQ(svg.find("<image"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,187 @@
+// Vector export of the feature lines (see svg_export.h).
+#include "renderer/lines/svg_export.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+namespace npr {
+namespace {
+
+// Whether eye-space point p (on the surface or its outline) is hidden at pixel (x, y): hidden
+// only if every pixel of the 3x3 block around it has a surface clearly in front, so lines on
+// the outline (where the depth jumps) and on the surface itself stay.
+bool hidden(const ImageRGBA32F& eye, int x, int y, const glm::vec3& p) {
+  const float tolerance = 0.004f * std::fabs(p.z) + 0.004f;  // eye units: the model fits a unit sphere
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int xx = x + dx, yy = y + dy;
+      if (xx < 0 || yy < 0 || xx >= eye.width || yy >= eye.height) return false;
+      const float* e = &eye.pixels[(std::size_t(yy) * std::size_t(eye.width) + std::size_t(xx)) * 4];
+      if (e[3] < 0.5f) return false;                 // no surface there
+      if (e[2] <= p.z + tolerance) return false;     // the surface is not in front (eye z is negative)
+    }
+  return true;
+}
+
+struct Projector {
+  const CameraMatrices& camera;
+  glm::vec2 size;
+  glm::vec2 window(const glm::vec3& eye) const {
+    const glm::vec4 c = camera.projection * glm::vec4(eye, 1.0f);
+    const glm::vec2 ndc = glm::vec2(c) / c.w;
+    return {(ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y};
+  }
+};
+
+// Joins segments that share an end (to a 1/1000 pixel) into chains, in drawing order: chains
+// start at ends where the lines do not simply continue (a free end or a junction), and what is
+// left after that are closed loops.
+std::vector<std::vector<glm::vec2>> chain(const std::vector<std::pair<glm::vec2, glm::vec2>>& segments) {
+  auto key = [](glm::vec2 p) { return std::make_pair(std::llround(p.x * 1000.0), std::llround(p.y * 1000.0)); };
+  std::map<std::pair<long long, long long>, std::vector<std::size_t>> at;
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    at[key(segments[i].first)].push_back(i);
+    at[key(segments[i].second)].push_back(i);
+  }
+  std::vector<char> used(segments.size(), 0);
+  std::vector<std::vector<glm::vec2>> chains;
+  auto walk = [&](std::size_t first, bool fromSecond) {
+    std::vector<glm::vec2> c;
+    std::size_t s = first;
+    glm::vec2 end = fromSecond ? segments[s].second : segments[s].first;
+    c.push_back(end);
+    while (true) {
+      used[s] = 1;
+      end = key(segments[s].first) == key(end) ? segments[s].second : segments[s].first;
+      c.push_back(end);
+      const auto& next = at[key(end)];
+      if (next.size() != 2) break;  // a free end or a junction: the chain stops
+      const std::size_t n = next[0] == s ? next[1] : next[0];
+      if (used[n]) break;
+      s = n;
+    }
+    chains.push_back(std::move(c));
+  };
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    if (used[i]) continue;
+    if (at[key(segments[i].first)].size() != 2) walk(i, false);
+    else if (at[key(segments[i].second)].size() != 2) walk(i, true);
+  }
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    if (!used[i]) walk(i, false);
+  return chains;
+}
+
+}  // namespace
+
+SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
+                           const ImageRGBA32F& eyePosition) {
+  const Projector proj{camera, glm::vec2(size)};
+  const float nearZ = -1e-4f;  // clip just in front of the eye; the projection's near plane clips the rest
+  std::vector<std::pair<glm::vec2, glm::vec2>> segments[3];
+  for (const FeatureLine& l : lines) {
+    glm::vec3 a = glm::vec3(camera.view * glm::vec4(l.a, 1.0f)), b = glm::vec3(camera.view * glm::vec4(l.b, 1.0f));
+    if (a.z > nearZ && b.z > nearZ) continue;  // behind the eye
+    if (a.z > nearZ) a = glm::mix(b, a, (b.z - nearZ) / (b.z - a.z));
+    if (b.z > nearZ) b = glm::mix(a, b, (a.z - nearZ) / (a.z - b.z));
+    const glm::vec2 wa = proj.window(a), wb = proj.window(b);
+    if (!std::isfinite(wa.x + wa.y + wb.x + wb.y)) continue;
+    // Sampled at about a pixel's step along the screen; runs of visible samples are kept.
+    const int steps = std::clamp(int(std::ceil(glm::length(wb - wa))), 1, 100000);
+    const int kind = std::clamp(int(l.kind + 0.5f), 0, 2);
+    int runStart = -1;
+    glm::vec2 previous{0.0f};
+    for (int i = 0; i <= steps + 1; ++i) {
+      bool visible = false;
+      glm::vec2 w{0.0f};
+      if (i <= steps) {
+        // Perspective-correct: the eye point whose projection lies a fraction t along the screen segment.
+        const float t = float(i) / float(steps);
+        const float s = (t / b.z) / ((1.0f - t) / a.z + t / b.z);
+        const glm::vec3 p = glm::mix(a, b, s);
+        w = glm::mix(wa, wb, t);
+        const int x = int(std::floor(w.x)), y = int(std::floor(w.y));
+        visible = x >= 0 && y >= 0 && x < size.x && y < size.y && !hidden(eyePosition, x, y, p);
+      }
+      if (visible && runStart < 0) {
+        runStart = i;
+        previous = w;
+      }
+      if (!visible && runStart >= 0) {
+        const glm::vec2 from = runStart == 0 ? wa : previous, to = i - 1 == steps ? wb : glm::mix(wa, wb, float(i - 1) / float(steps));
+        if (glm::length(to - from) > 0.0f) segments[kind].emplace_back(from, to);
+        runStart = -1;
+      }
+    }
+  }
+  SvgLines out;
+  for (int k = 0; k < 3; ++k) {
+    out.chains[k] = chain(segments[k]);
+    for (const auto& c : out.chains[k]) {
+      ++out.paths;
+      for (std::size_t i = 1; i < c.size(); ++i) out.lengthPx += glm::length(c[i] - c[i - 1]);
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string hexColour(const glm::vec3& c) {
+  char s[8];
+  auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  std::snprintf(s, sizeof s, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return s;
+}
+
+std::string base64(const std::vector<std::uint8_t>& data) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((data.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < data.size(); i += 3) {
+    const std::uint32_t v = std::uint32_t(data[i]) << 16 | (i + 1 < data.size() ? std::uint32_t(data[i + 1]) << 8 : 0u) |
+                            (i + 2 < data.size() ? std::uint32_t(data[i + 2]) : 0u);
+    out += table[(v >> 18) & 63];
+    out += table[(v >> 12) & 63];
+    out += i + 1 < data.size() ? table[(v >> 6) & 63] : '=';
+    out += i + 2 < data.size() ? table[v & 63] : '=';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const LineSettings& style, const std::vector<std::uint8_t>& rasterPng) {
+  std::ostringstream o;
+  o << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+    << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"" << size.x
+    << "\" height=\"" << size.y << "\" viewBox=\"0 0 " << size.x << " " << size.y << "\">\n"
+    << "<title>npr-viewer feature lines</title>\n";
+  if (!rasterPng.empty())
+    o << "<image id=\"rendering\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y
+      << "\" xlink:href=\"data:image/png;base64," << base64(rasterPng) << "\"/>\n";
+  const char* names[3] = {"silhouettes", "creases", "boundaries"};
+  const glm::vec3 colours[3] = {style.silhouetteColour, style.creaseColour, style.boundaryColour};
+  char number[32];
+  for (int k = 0; k < 3; ++k) {
+    if (lines.chains[k].empty()) continue;
+    o << "<g id=\"" << names[k] << "\" fill=\"none\" stroke=\"" << hexColour(colours[k]) << "\" stroke-width=\"" << style.width
+      << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+    for (const auto& c : lines.chains[k]) {
+      o << "<polyline points=\"";
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        std::snprintf(number, sizeof number, "%s%.2f,%.2f", i ? " " : "", double(c[i].x), double(c[i].y));
+        o << number;
+      }
+      o << "\"/>\n";
+    }
+    o << "</g>\n";
+  }
+  o << "</svg>\n";
+  return o.str();
+}
+
+}  // namespace npr

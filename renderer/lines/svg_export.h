@@ -1,0 +1,35 @@
+// Vector export of the feature lines (`--svg FILE`): the object-space lines the line pass draws
+// for a camera, projected, cut where the model hides them (each edge sampled at a pixel step
+// against the frame's eye-space depth), chained into polylines at shared ends in drawing order,
+// one SVG group per line kind with its colour and width, optionally over the rendered frame as
+// an embedded raster layer. Plain SVG 1.1 that vector editors read. No GL here: the caller
+// hands over the lines and the depth it read back.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "renderer/core/camera.h"
+#include "renderer/core/image.h"
+#include "renderer/lines/feature_edges.h"
+#include "renderer/render_settings.h"
+
+namespace npr {
+
+struct SvgLines {
+  // 2D polylines in window pixels (y down), one list per EdgeKind.
+  std::vector<std::vector<glm::vec2>> chains[3];
+  int paths = 0;
+  double lengthPx = 0;  // total drawn length
+};
+
+// Projects `lines` (object space) with `camera` into a `size` window and keeps what the model
+// does not hide: `eyePosition` is the frame's eye-space position per pixel (rows top first,
+// alpha 0 where no surface), as Renderer::renderGeometry(EyePosition) reads it back.
+SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
+                           const ImageRGBA32F& eyePosition);
+
+// The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath.
+std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const LineSettings& style, const std::vector<std::uint8_t>& rasterPng);
+
+}  // namespace npr

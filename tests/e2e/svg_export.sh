@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# End-to-end: --svg. The file parses as XML, is SVG 1.1 with one group per line kind, and its
+# lines, rasterised by rsvg-convert, coincide with the raster lines within a pixel (drawn over a
+# plain white palette so only the lines show), on the bunny and the teapot.
+set -u
+viewer="$1"; overlap="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0
+oiiotool --pattern constant:color=1,1,1 4x4 3 -o "$tmp/white.png"
+printf 'white.png\nbackground #FFFFFF\n' > "$tmp/white.palette"
+src="$(cd "$(dirname "$0")/../.." && pwd)"
+for model in bunny teapot; do
+  args=("$src/models/$model.obj" --headless --size 480x360 --palette "$tmp/white.palette" --lines silhouette,boundary)
+  if ! "$viewer" "${args[@]}" --screenshot "$tmp/$model.png" --svg "$tmp/$model.svg" 2>"$tmp/err"; then
+    echo "FAIL: $model: --svg: $(cat "$tmp/err")"; fail=1; continue
+  fi
+  grep -Eq "wrote .*$model.svg: [1-9][0-9]* paths, [0-9]+ px of lines" "$tmp/err" || { echo "FAIL: no path count in the log: $(cat "$tmp/err")"; fail=1; }
+  python3 - "$tmp/$model.svg" <<'PY' || fail=1
+import sys, xml.dom.minidom
+doc = xml.dom.minidom.parse(sys.argv[1])
+svg = doc.documentElement
+assert svg.tagName == "svg" and svg.getAttribute("version") == "1.1", "not SVG 1.1"
+assert svg.getAttribute("width") == "480" and svg.getAttribute("height") == "360", "canvas is not the frame"
+groups = [g.getAttribute("id") for g in svg.getElementsByTagName("g")]
+assert "silhouettes" in groups, groups
+assert len(svg.getElementsByTagName("polyline")) > 0, "no polylines"
+PY
+  rsvg-convert -b white "$tmp/$model.svg" -o "$tmp/$model-svg.png" || { echo "FAIL: rsvg-convert cannot draw $model.svg"; fail=1; continue; }
+  "$overlap" "$tmp/$model.png" "$tmp/$model-svg.png" 1 0.9 || { echo "FAIL: $model: the SVG's lines and the raster lines do not coincide"; fail=1; }
+done
+# With the frame embedded underneath, and a refusal without lines.
+"$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
+grep -q 'data:image/png;base64,' "$tmp/raster.svg" || { echo "FAIL: --svg-raster embeds no image"; fail=1; }
+"$viewer" --headless --size 96x72 --svg "$tmp/none.svg" 2>"$tmp/err" && { echo "FAIL: --svg without lines succeeded"; fail=1; }
+grep -q "lines" "$tmp/err" || { echo "FAIL: --svg without lines gives no reason"; fail=1; }
+[ $fail = 0 ] && echo "svg: all checks passed"
+exit $fail
