@@ -87,7 +87,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
-  app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (headless; needs --lines)");
+  app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (needs --lines; the overlay has a button too)");
   app.add_flag("--svg-raster", o.svgRaster, "--svg: embed the rendered frame under the lines");
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");

@@ -201,6 +201,8 @@ void drawOverlay(Viewer& v) {
   ImGui::SameLine();
   if (ImGui::Button("screenshot (F12)")) applyAction(v, {Action::Screenshot});
   ImGui::SameLine();
+  if (ImGui::Button("export lines (SVG)")) v.svgRequested = true;
+  ImGui::SameLine();
   bool vsync = v.vsync;
   if (ImGui::Checkbox("vsync (V)", &vsync)) applyAction(v, {Action::ToggleVsync});
   ImGui::Checkbox("help (H)", &v.help);

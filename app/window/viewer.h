@@ -23,6 +23,8 @@ struct Viewer {
   FrameTimer timer;
   bool overlay = true, help = false, vsync = true, quit = false;
   bool screenshotRequested = false;
+  bool svgRequested = false;  // the overlay's "export lines (SVG)"
+  int svgCount = 0;
   int screenshotCount = 0;
   std::filesystem::path screenshotDir = ".";
   glm::dvec2 lastCursor{0.0};

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "app/camera_animation.h"
+#include "app/line_export.h"
 #include "app/startup.h"
 #include "renderer/core/image_io.h"
 #include "app/window/input_callbacks.h"
@@ -71,6 +72,16 @@ int runWindowViewer(const Options& o) {
     } else {
       drawView(v.state.settings, {0, 0, fb.x, fb.y});
     }
+    // Vector export of what this frame shows (the lines of the full view, even when split).
+    const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
+    if (v.svgRequested || (lastFrame && !o.svg.empty())) {
+      const std::filesystem::path file =
+          v.svgRequested ? v.screenshotDir / ("npr-lines-" + std::to_string(++v.svgCount) + ".svg") : std::filesystem::path(o.svg);
+      v.svgRequested = false;
+      const Status st = exportLinesSvg(*v.renderer, cam, v.state.settings, fb, nullptr, file.string());
+      v.state.note(st ? "lines written to " + file.string() : st.error());
+      bindWindowFramebuffer();
+    }
     // The frames written are the scene alone, without the overlay.
     if (!o.saveFrames.empty()) {
       const Status st = writeImage(frameFileName(o.saveFrames, frame), readFramebufferRGBA8(0, 0, fb.x, fb.y));
@@ -78,7 +89,6 @@ int runWindowViewer(const Options& o) {
     }
     imgui.draw();
 
-    const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
     if (v.screenshotRequested) {
       v.screenshotRequested = false;
       takeScreenshot(v, v.screenshotDir / ("npr-screenshot-" + std::to_string(++v.screenshotCount) + ".png"));
