@@ -89,6 +89,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
   app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (needs --lines; the overlay has a button too)");
   app.add_flag("--svg-raster", o.svgRaster, "--svg: embed the rendered frame under the lines");
+  app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)");
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
@@ -167,6 +168,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (!a) return {std::nullopt, fail(a.error())};
     o.animation = *a;
   }
+  if (o.tile != 0 && (o.tile < 64 || o.tile > 16384)) return {std::nullopt, fail("--tile must be 64..16384 pixels, got " + std::to_string(o.tile))};
   if (o.turntable != 0) {
     if (o.turntable < 2 || o.turntable > 3600) return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
     if (!animate.empty()) return {std::nullopt, fail("--turntable is its own camera motion: leave out --animate")};
@@ -198,8 +200,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (!size.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
-    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 16384 || h > 16384)
-      return {std::nullopt, fail("--size must be WxH with 1 <= W, H <= 16384, got '" + size + "'")};
+    if (std::sscanf(size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') || w < 1 || h < 1 || w > 65536 || h > 65536)
+      return {std::nullopt, fail("--size must be WxH with 1 <= W, H <= 65536, got '" + size + "'")};
     o.size = {w, h};
   }
   if (!light.empty()) {

@@ -59,7 +59,8 @@ struct Options {
   std::string saveFrames;     // --save-frames DIR
   std::string svg;            // --svg FILE: the last frame's feature lines as SVG
   bool svgRaster = false;     // --svg-raster: with the frame embedded underneath
-  int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
+  int turntable = 0;
+  int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
   bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;

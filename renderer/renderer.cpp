@@ -134,6 +134,8 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
   if (palette_) palette_->setPatternFrame(frame, scale, s.patternLinearFilter);
   for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame, scale, s.patternLinearFilter);
+  if (palette_) palette_->setFrameOffset(glm::vec2(frameOffset_));
+  for (auto& [name, p] : materialPalettes_) p->setFrameOffset(glm::vec2(frameOffset_));
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {

@@ -87,6 +87,9 @@ class Renderer {
   // The anchored pattern starts again from the screen's frame at the next frame: call on view
   // jumps (frame the model, reset the view). A new mesh does it too.
   void resetPattern() { patterns_.reset(); }
+  // Where the viewport's pixels sit in the whole frame, for a poster drawn in tiles: palette
+  // patterns continue across the tiles' seams. (0, 0) for an ordinary frame.
+  void setFrameOffset(const glm::ivec2& offset) { frameOffset_ = offset; }
   // The feature lines the frame shows for this camera (object space), for vector export.
   std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings) { return lines_.lines(camera, settings.lines); }
   const PatternTracker& patternTracker() const { return patterns_; }
@@ -168,6 +171,7 @@ class Renderer {
   std::unique_ptr<OcclusionBake> occlusion_;
   const std::vector<float>* occlusionValues(const RenderSettings& settings) const;  // null until baked
   double occlusionBudgetMs_ = 0.0;
+  glm::ivec2 frameOffset_{0};
   std::function<void(const std::string&, double)> progress_;
   bool shadowsReady_ = false;  // this frame draws with shadows_
   unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache

@@ -20,12 +20,14 @@ uniform ivec2 uLayerSize0;
 #define LAYER_SIZE(i) uLayerSize0
 #endif
 
+#include "pattern.glsl"
+
 #ifndef PALETTE_PRECOMPOSITED
 #ifdef BACKGROUND_IMAGE
 uniform sampler2D uBackground;
 uniform ivec2 uBackgroundSize;
 uniform float uBackgroundScale;  // texels per pixel: 1 / pattern scale
-vec3 backgroundColour() { return texelFetch(uBackground, ivec2(gl_FragCoord.xy * uBackgroundScale) % uBackgroundSize, 0).rgb; }
+vec3 backgroundColour() { return texelFetch(uBackground, ivec2(framePixel() * uBackgroundScale) % uBackgroundSize, 0).rgb; }
 #else
 uniform vec3 uBackgroundColour;
 vec3 backgroundColour() { return uBackgroundColour; }
@@ -40,12 +42,11 @@ vec3 composite(vec4 t) {
 #endif
 }
 
-#include "pattern.glsl"
 #ifdef PATTERN_MAPPED
 vec3 paletteCoordinate() { return mappedCoordinate(); }
 vec4 layerTexel(vec3 c, int entry) { return mappedTexel(uPalette, c, entry, LAYER_SIZE(entry)); }
 #else
-vec3 paletteCoordinate() { return vec3(gl_FragCoord.xy, 0.0); }
+vec3 paletteCoordinate() { return vec3(framePixel(), 0.0); }
 vec4 layerTexel(vec3 c, int entry) { return texelFetch(uPalette, ivec3(wrapTexel(c.xy, LAYER_SIZE(entry)), entry), 0); }
 #endif
 
@@ -64,7 +65,7 @@ vec3 paletteColour(int entry) {
 vec3 paletteColour(int entry) { return composite(layerTexel(paletteCoordinate(), entry)); }
 #else
 vec3 paletteColour(int entry) {
-  ivec2 p = ivec2(gl_FragCoord.xy) % LAYER_SIZE(entry);
+  ivec2 p = ivec2(framePixel()) % LAYER_SIZE(entry);
   return composite(texelFetch(uPalette, ivec3(p, entry), 0));
 }
 #endif

@@ -14,13 +14,18 @@
 #define PATTERN_MAPPED
 #endif
 
+// This pixel in the whole frame: a poster drawn in tiles offsets each tile's pixels, so the
+// pattern continues across tile seams.
+uniform vec2 uFrameOffset;
+vec2 framePixel() { return gl_FragCoord.xy + uFrameOffset; }
+
 uniform vec4 uPatternMatrix;  // column-major 2x2: (m00, m10, m01, m11)
 uniform vec2 uPatternOrigin;
 uniform float uPatternOctave;  // fract(log2 scale)
 uniform vec2 uPatternLod;      // the mip level of the coarse and the fine octave
 
 vec2 patternCoordinate() {
-  vec2 d = gl_FragCoord.xy - uPatternOrigin;
+  vec2 d = framePixel() - uPatternOrigin;
   return vec2(uPatternMatrix.x * d.x + uPatternMatrix.z * d.y, uPatternMatrix.y * d.x + uPatternMatrix.w * d.y);
 }
 

@@ -1,6 +1,7 @@
 // Full-screen passes: the background (QUAD_BACKGROUND) and one palette layer (QUAD_LAYER,
 // alpha-blended by the fixed-function blender as in the original stencil algorithm).
 out vec4 fragColor;
+#include "pattern.glsl"
 
 #ifdef QUAD_BACKGROUND
 #ifdef BACKGROUND_IMAGE
@@ -12,7 +13,7 @@ uniform vec3 uBackgroundColour;
 #endif
 void main() {
 #ifdef BACKGROUND_IMAGE
-  fragColor = vec4(texelFetch(uBackground, ivec2(gl_FragCoord.xy * uBackgroundScale) % uBackgroundSize, 0).rgb, 1.0);
+  fragColor = vec4(texelFetch(uBackground, ivec2(framePixel() * uBackgroundScale) % uBackgroundSize, 0).rgb, 1.0);
 #else
   fragColor = vec4(uBackgroundColour, 1.0);
 #endif
@@ -27,12 +28,11 @@ void main() {
 uniform sampler2DArray uPalette;
 uniform ivec2 uLayerSize;
 uniform int uLayer;
-#include "pattern.glsl"
 #ifdef PATTERN_MAPPED
 vec3 layerCoordinate() { return mappedCoordinate(); }
 vec4 layerTexel(vec3 c) { return mappedTexel(uPalette, c, uLayer, uLayerSize); }
 #else
-vec3 layerCoordinate() { return vec3(gl_FragCoord.xy, 0.0); }
+vec3 layerCoordinate() { return vec3(framePixel(), 0.0); }
 vec4 layerTexel(vec3 c) { return texelFetch(uPalette, ivec3(wrapTexel(c.xy, uLayerSize), uLayer), 0); }
 #endif
 #ifdef ORIENTED

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/headless/headless_session.h"
+#include "app/headless/poster.h"
 #include "app/line_export.h"
 #include "app/progress_line.h"
 #include "app/startup.h"
@@ -23,11 +24,19 @@ namespace npr {
 int runHeadless(const Options& o) {
   auto session = openHeadlessSession(true);
   if (!session) return reportFailure(session.error());
-  auto target = OffscreenTarget::create(o.size.x, o.size.y);
-  if (!target) return reportFailure(target.error());
   Renderer* renderer = session->renderer.get();
   ViewerState state;
   if (Status s = startScene(o, state, *renderer); !s) return reportFailure(s.error());
+  // A still beyond what the GL draws at once, or asked for in tiles: a poster.
+  const bool tiled = o.tile > 0 || std::max(o.size.x, o.size.y) > maxFramebufferSide();
+  if (tiled) {
+    if (o.frames > 1 || !o.saveFrames.empty() || o.turntable || !o.svg.empty())
+      return reportFailure("a tiled poster (--tile, or --size beyond " + std::to_string(maxFramebufferSide()) +
+                           ") is one still: leave out --frames, --save-frames, --turntable and --svg");
+    return renderPoster(o, state, *renderer);
+  }
+  auto target = OffscreenTarget::create(o.size.x, o.size.y);
+  if (!target) return reportFailure(target.error());
   const int frames = std::max(1, o.frames);
   const float aspect = float(o.size.x) / float(o.size.y);
   std::vector<double> ms;

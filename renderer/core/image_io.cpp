@@ -188,6 +188,47 @@ Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) {
   return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
 }
 
+struct StripWriter::State {
+  std::string path;
+  std::unique_ptr<OIIO::ImageOutput> out;
+  int width = 0, height = 0, row = 0;
+};
+
+StripWriter::StripWriter(StripWriter&&) noexcept = default;
+StripWriter& StripWriter::operator=(StripWriter&&) noexcept = default;
+StripWriter::~StripWriter() {
+  if (state_ && state_->out) state_->out->close();
+}
+
+Result<StripWriter> StripWriter::open(const std::string& path, int width, int height) {
+  StripWriter w;
+  w.state_ = std::make_unique<State>();
+  State& s = *w.state_;
+  s.path = path;
+  s.width = width;
+  s.height = height;
+  s.out = OIIO::ImageOutput::create(path);
+  if (!s.out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
+  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:UnassociatedAlpha", 1);
+  if (!s.out->open(path, spec)) return Error{path + ": cannot open for writing: " + s.out->geterror()};
+  return w;
+}
+
+Status StripWriter::append(const ImageRGBA8& strip) {
+  State& s = *state_;
+  if (!s.out || strip.width != s.width || s.row + strip.height > s.height) return Error{s.path + ": a strip that does not fit the image"};
+  if (!s.out->write_scanlines(s.row, s.row + strip.height, 0, OIIO::TypeDesc::UINT8, strip.pixels.data()))
+    return Error{s.path + ": write failed: " + s.out->geterror()};
+  s.row += strip.height;
+  if (s.row == s.height) {
+    const bool closed = s.out->close();
+    s.out.reset();
+    if (!closed) return Error{s.path + ": close failed"};
+  }
+  return okStatus();
+}
+
 struct AnimationWriter::State {
   std::string path;
   std::unique_ptr<OIIO::ImageOutput> out;

@@ -33,6 +33,23 @@ struct ImageSize {
 // The image as PNG file bytes (for embedding).
 [[nodiscard]] Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image);
 
+// A large image written in horizontal strips, top to bottom, as they are made (a poster
+// rendered in tiles): the whole image is never in memory.
+class StripWriter {
+ public:
+  [[nodiscard]] static Result<StripWriter> open(const std::string& path, int width, int height);
+  StripWriter(StripWriter&&) noexcept;
+  StripWriter& operator=(StripWriter&&) noexcept;
+  ~StripWriter();
+  // The next rows (`strip` is width wide); the file is finished after the last row.
+  [[nodiscard]] Status append(const ImageRGBA8& strip);
+
+ private:
+  StripWriter() = default;
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
 // An animation written frame by frame as the frames are made (an animated GIF, or any format
 // OpenImageIO writes with several subimages): the frames are never all in memory.
 class AnimationWriter {

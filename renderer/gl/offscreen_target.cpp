@@ -1,6 +1,8 @@
 // FBO creation and read-back (see offscreen_target.h).
 #include "renderer/gl/offscreen_target.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "renderer/gl/texture.h"
@@ -90,4 +92,11 @@ ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height) {
 namespace npr {
 void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
 void finishGpuWork() { glFinish(); }
+int maxFramebufferSide() {
+  GLint renderbuffer = 0, viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  return std::min({int(renderbuffer), int(viewport[0]), int(viewport[1])});
+}
+
 }  // namespace npr

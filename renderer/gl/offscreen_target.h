@@ -34,6 +34,8 @@ class OffscreenTarget {
 namespace npr {
 // Reads `width` x `height` pixels from the bound read framebuffer (the window's for F12).
 ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height);
+// The largest framebuffer side this GL draws into (renderbuffer and viewport limits).
+int maxFramebufferSide();
 // Makes the window's own framebuffer the target again (after offscreen passes).
 void bindWindowFramebuffer();
 // Blocks until the GPU has finished all submitted work: what frame timings must include.

@@ -228,12 +228,14 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
+  prog.set("uFrameOffset", frameOffset_);
   // Filtered lookups (pattern.glsl's mappedTexel) read the sRGB view.
   gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered() ? layersSrgb_.id() : layers_.id());
   prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
 }
 
 void GpuPalette::bindBackground(gl::ShaderProgram& prog) const {
+  prog.set("uFrameOffset", frameOffset_);
   if (backgroundImage_) {
     gl::bindTexture(TextureUnit::Background, GL_TEXTURE_2D, background_.id());
     prog.set("uBackground", gl::unitIndex(TextureUnit::Background));

@@ -48,6 +48,9 @@ class GpuPalette {
     linearFilter_ = linearFilter;
   }
   bool anchored() const { return pattern_.has_value(); }
+  // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
+  // continue across tiles.
+  void setFrameOffset(const glm::vec2& offset) { frameOffset_ = offset; }
   gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
   // Mapped lookups filter bilinearly in linear light (asked for, and the layers share a size).
@@ -109,6 +112,7 @@ class GpuPalette {
   std::optional<PatternFrame> pattern_;
   float patternScale_ = 1.0f;
   bool linearFilter_ = false;
+  glm::vec2 frameOffset_{0.0f};
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;

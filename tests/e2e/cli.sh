@@ -126,6 +126,19 @@ grep -q $'\r'"rendering 4 frames:" "$tmp/pty" || { echo "FAIL: no progress line 
 expect 2 "--turntable 1" -- "$viewer" --turntable 1
 expect 2 "--turntable with --animate" -- "$viewer" --turntable 10 --animate orbit:1
 
+# Posters: 2x2 tiles equal one frame of the same size (patterns, lines and image edges continue
+# across the seams); beyond the GL limit the still tiles itself.
+for p in pixel stencil; do
+  expect 0 "one frame ($p)" -- "$viewer" --headless --size 320x240 --path $p --lines silhouette,crease,image --screenshot "$tmp/one-$p.png"
+  expect 0 "2x2 tiles ($p)" -- "$viewer" --headless --size 320x240 --path $p --lines silhouette,crease,image --tile 160 --screenshot "$tmp/tiled-$p.png"
+  oiiotool "$tmp/one-$p.png" "$tmp/tiled-$p.png" --fail 0.02 --failpercent 0.1 --diff > "$tmp/diff" \
+    || { echo "FAIL: $p: the tiled poster differs from one frame: $(grep -E 'Mean|pixels' "$tmp/diff" | head -2)"; fail=1; }
+done
+expect 0 "a poster wider than the GL allows" -- "$viewer" --headless --size 17000x200 --camera 30,20,0.6 --screenshot "$tmp/poster.png"
+oiiotool --info "$tmp/poster.png" | grep -q "17000 x  200" || { echo "FAIL: poster size: $(oiiotool --info "$tmp/poster.png")"; fail=1; }
+expect 1 "a tiled poster with frames" -- "$viewer" --headless --size 320x240 --tile 160 --frames 3 --screenshot "$tmp/x.png"
+expect 2 "--tile 10" -- "$viewer" --headless --tile 10
+
 # The first run on a machine without a display (.ci/setup run): files it names, exit 0.
 (unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
   || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }
