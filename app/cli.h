@@ -38,6 +38,7 @@ struct Options {
   bool tam = false;
   int levels = 10;
   std::string paletteSheet;  // --palette-sheet DIR
+  std::string style;         // --style NAME|FILE (palettes/styles/NAME.style)
   bool benchmark = false;
   bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";

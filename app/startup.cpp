@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "app/style_file.h"
+
 namespace npr {
 
 Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
@@ -14,6 +16,13 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   for (const auto& p : o.palettes)
     if (std::find(state.palettes.begin(), state.palettes.end(), p) == state.palettes.end()) state.palettes.push_back(p);
   if (Status s = state.loadPalette(first, renderer); !s) return s;
+  // A style sets the look; what the command line names beside it wins.
+  if (!o.style.empty()) {
+    Result<Style> style = loadStyle(resolveStyle(o.style));
+    if (!style) return Error{style.error()};
+    if (!o.palettes.empty()) style->palette.reset();
+    if (Status s = applyStyle(*style, state, renderer); !s) return s;
+  }
   for (const auto& [material, file] : o.materialPalettes)
     if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
   if (o.path) state.settings.path = *o.path;
@@ -24,7 +33,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.pattern) state.settings.pattern = *o.pattern;
   state.settings.patternFollowsRotation = !o.patternNoRotation;
   if (o.patternScale) state.settings.patternScale = *o.patternScale;
-  state.settings.patternLinearFilter = o.patternLinear;
+  if (o.patternLinear) state.settings.patternLinearFilter = true;
   if (o.orient) state.settings.orient = *o.orient;
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
   state.settings.ground = o.ground;
@@ -33,14 +42,16 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
   state.settings.triangleLighting = o.triangleLighting;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
-  state.settings.bands = o.bands;
+  if (!o.bands.empty()) state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;
-  lines.silhouettes = o.silhouettes;
-  lines.creases = o.creases;
-  lines.boundaries = o.boundaries;
-  lines.imageSpace = o.imageEdges;
-  lines.sketchy = o.sketchy;
-  lines.depthFalloff = o.lineFalloff;
+  if (o.silhouettes || o.creases || o.boundaries || o.imageEdges) {
+    lines.silhouettes = o.silhouettes;
+    lines.creases = o.creases;
+    lines.boundaries = o.boundaries;
+    lines.imageSpace = o.imageEdges;
+  }
+  if (o.sketchy) lines.sketchy = true;
+  if (o.lineFalloff) lines.depthFalloff = true;
   if (o.creaseAngle) lines.creaseAngle = *o.creaseAngle;
   if (o.lineWidth) lines.width = *o.lineWidth;
   if (o.tone)

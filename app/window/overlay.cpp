@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
+
+#include "app/style_file.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -29,6 +32,23 @@ void drawOverlay(Viewer& v) {
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
   ImGui::Separator();
   ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
+  // Styles: a whole look at once (app/style_file.h); a style that fails changes nothing.
+  if (ImGui::BeginCombo("style", "choose a style")) {
+    for (const std::string& file : discoverStyles())
+      if (ImGui::Selectable(fs::path(file).stem().c_str())) {
+        Result<Style> style = loadStyle(file);
+        if (!style) s.note("style not applied: " + style.error());
+        else if (Status st2 = applyStyle(*style, s, *v.renderer); !st2) s.note("style not applied: " + st2.error());
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("save style")) {
+    const fs::path file = v.screenshotDir / ("npr-style-" + std::to_string(++v.styleCount) + ".style");
+    std::ofstream out(file);
+    out << styleText(s, *v.renderer, "Saved style " + std::to_string(v.styleCount));
+    s.note(out.flush() ? "style written to " + file.string() : "cannot write " + file.string());
+  }
   // Palette list: the number keys and [ ] choose among these.
   const std::string current = s.palette ? s.palette->name : "-";
   if (ImGui::BeginCombo("palette", current.c_str())) {

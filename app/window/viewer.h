@@ -25,6 +25,7 @@ struct Viewer {
   bool screenshotRequested = false;
   bool svgRequested = false;  // the overlay's "export lines (SVG)"
   int svgCount = 0;
+  int styleCount = 0;  // "save style" files written
   int screenshotCount = 0;
   std::filesystem::path screenshotDir = ".";
   glm::dvec2 lastCursor{0.0};

@@ -151,42 +151,6 @@ TEST(TonalArtMap, RefusesSpecsItCannotDraw) {
   EXPECT_FALSE(buildTonalArtMap(s, whitePaper(64)));  // paper of the wrong size
 }
 
-TEST(DrawnPalettes, ShippedLevelsAreEvenlySpacedInTone) {
-  for (const char* name : kDrawn) {
-    const Palette p = shipped(name);
-    const PaletteAnalysis a = analysePalette(p);
-    EXPECT_LE(a.spacingError, PaletteAnalysis::kEvenSpacing) << name;
-    EXPECT_TRUE(a.monotonic) << name;
-  }
-}
-
-TEST(DrawnPalettes, ShippedLevelsNestTexelByTexel) {
-  for (const char* name : kDrawn) {
-    const Palette p = shipped(name);
-    for (size_t i = 1; i < p.entries.size(); ++i) {
-      int lost = 0;
-      const ImageRGBA8& a = p.entries[i - 1].image;
-      const ImageRGBA8& b = p.entries[i].image;
-      ASSERT_EQ(a.width, b.width);
-      for (int y = 0; y < a.height; ++y)
-        for (int x = 0; x < a.width; ++x) lost += alphaAt(b, x, y) < alphaAt(a, x, y);
-      EXPECT_EQ(lost, 0) << name << " level " << i;
-    }
-  }
-}
-
-TEST(DrawnPalettes, ToneHoldsAtEveryMipLevel) {
-  // The drawn palettes' own levels, and levels reduced from images that have none.
-  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "charcoal", "wood", "solarize", "gooch", "cel"}) {
-    const Palette p = shipped(name);
-    for (size_t i = 0; i < p.entries.size(); ++i) {
-      const std::vector<float> tones = entryMipTones(p, i);
-      ASSERT_GE(tones.size(), 4u) << name;
-      for (size_t k = 1; k < tones.size(); ++k) EXPECT_NEAR(tones[k] / 3.0f, tones[0] / 3.0f, 0.01f) << name << " entry " << i << " mip " << k;
-    }
-  }
-}
-
 // Mean absolute difference of the colours of columns x0 and x1 (wrapping) over all rows.
 double columnDifference(const ImageRGBA8& img, int x0, int x1) {
   double sum = 0;
@@ -229,22 +193,54 @@ ImageRGBA8 cropped(const ImageRGBA8& img, int n) {
   return c;
 }
 
-TEST(DrawnPalettes, TileWithoutSeams) {
+// Each shipped drawn palette is loaded once (loading analyses every level; the sanitizer build
+// made four separate tests cost two minutes) and checked for all the properties at once.
+TEST(DrawnPalettes, ShippedAreEvenNestedMipConsistentAndSeamless) {
   for (const char* name : kDrawn) {
+    SCOPED_TRACE(name);
     const Palette p = shipped(name);
+    ASSERT_GE(p.entries.size(), 8u);
+    const PaletteAnalysis a = analysePalette(p);
+    EXPECT_LE(a.spacingError, PaletteAnalysis::kEvenSpacing) << "levels evenly spaced in tone";
+    EXPECT_TRUE(a.monotonic);
     for (size_t i = 0; i < p.entries.size(); ++i) {
-      EXPECT_TRUE(tilesWithoutSeam(p.entries[i].image)) << name << " entry " << i << " across x";
-      EXPECT_TRUE(tilesWithoutSeam(transposed(p.entries[i].image))) << name << " entry " << i << " across y";
+      SCOPED_TRACE("entry " + std::to_string(i));
+      EXPECT_EQ(p.entries[i].mips.size(), 2u) << "the generator's own mip levels";
+      if (i > 0) {  // nested texel by texel
+        int lost = 0;
+        const ImageRGBA8& lighter = p.entries[i - 1].image;
+        const ImageRGBA8& darker = p.entries[i].image;
+        for (int y = 0; y < lighter.height; ++y)
+          for (int x = 0; x < lighter.width; ++x) lost += alphaAt(darker, x, y) < alphaAt(lighter, x, y);
+        EXPECT_EQ(lost, 0) << "texels with less ink than the lighter level";
+      }
+      const std::vector<float> tones = entryMipTones(p, i);
+      ASSERT_GE(tones.size(), 4u);
+      for (size_t k = 1; k < tones.size(); ++k) EXPECT_NEAR(tones[k] / 3.0f, tones[0] / 3.0f, 0.01f) << "mip " << k;
+      EXPECT_TRUE(tilesWithoutSeam(p.entries[i].image)) << "across x";
+      EXPECT_TRUE(tilesWithoutSeam(transposed(p.entries[i].image))) << "across y";
     }
   }
-  // The check can fail: a drawn level cut out of a larger tile (its strokes end at the edges)
-  // does not tile, and a ramp does not.
+  // The seam check can fail: a drawn level cut out of a larger tile (its strokes end at the
+  // edges) does not tile, and a ramp does not.
   EXPECT_FALSE(tilesWithoutSeam(cropped(shipped("crosshatch").entries[4].image, 128)));
   ImageRGBA8 ramp{64, 64, std::vector<std::uint8_t>(64 * 64 * 4, 255)};
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x)
       for (int k = 0; k < 3; ++k) ramp.pixels[(size_t(y) * 64 + size_t(x)) * 4 + size_t(k)] = std::uint8_t(x * 4);
   EXPECT_FALSE(tilesWithoutSeam(ramp));
+}
+
+// Levels reduced from palettes without their own keep their tone too.
+TEST(DrawnPalettes, ReducedMipLevelsKeepTheTone) {
+  for (const char* name : {"wood", "solarize", "gooch", "cel"}) {
+    const Palette p = shipped(name);
+    for (size_t i = 0; i < p.entries.size(); ++i) {
+      const std::vector<float> tones = entryMipTones(p, i);
+      ASSERT_GE(tones.size(), 4u) << name;
+      for (size_t k = 1; k < tones.size(); ++k) EXPECT_NEAR(tones[k] / 3.0f, tones[0] / 3.0f, 0.01f) << name << " entry " << i << " mip " << k;
+    }
+  }
 }
 
 TEST(PaletteMipmaps, ReductionKeepsTheImagesLightAndFollowsGlSizes) {

@@ -139,6 +139,18 @@ oiiotool --info "$tmp/poster.png" | grep -q "17000 x  200" || { echo "FAIL: post
 expect 1 "a tiled poster with frames" -- "$viewer" --headless --size 320x240 --tile 160 --frames 3 --screenshot "$tmp/x.png"
 expect 2 "--tile 10" -- "$viewer" --headless --tile 10
 
+# Style presets: a shipped style changes the look; options beside it win; a bad one says why.
+expect 0 "--style technical" -- "$viewer" --headless --size 96x96 --light 1,3,1 --style technical --screenshot "$tmp/technical.png"
+cmp -s "$tmp/plain.png" "$tmp/technical.png" && { echo "FAIL: --style changes nothing"; fail=1; }
+expect 0 "--style technical --palette crosshatch" -- "$viewer" --headless --size 96x96 --light 1,3,1 --style technical --palette "$src/palettes/crosshatch" --screenshot "$tmp/technical-cross.png"
+cmp -s "$tmp/technical.png" "$tmp/technical-cross.png" && { echo "FAIL: --palette beside --style does not win"; fail=1; }
+printf 'path pixel
+glow 3
+' > "$tmp/bad.style"
+expect 1 "a bad style file" -- "$viewer" --headless --style "$tmp/bad.style"
+grep -q "bad.style line 2" "$tmp/err" || { echo "FAIL: the bad style's line is not named: $(cat "$tmp/err")"; fail=1; }
+expect 1 "a style that does not exist" -- "$viewer" --headless --style nosuchstyle
+
 # The first run on a machine without a display (.ci/setup run): files it names, exit 0.
 (unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
   || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }

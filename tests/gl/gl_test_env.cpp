@@ -1,13 +1,20 @@
 // GL test environment (see gl_test_env.h). Provides main(): creates the context first.
 #include "gl/gl_test_env.h"
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <type_traits>
 
+#include "renderer/core/image_io.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/gl/shader_program.h"
+#include "support/test_util.h"
 
 namespace npr::test {
 
@@ -96,6 +103,31 @@ Palette greyRamp(int n) {
     p.entries.push_back(std::move(e));
   }
   return p;
+}
+
+void expectGolden(const std::string& name, const ImageRGBA8& img, double failFraction, double meanDiff) {
+  const std::string golden = sourcePath("tests/golden/" + name + ".png");
+  if (const char* u = std::getenv("NPR_UPDATE_GOLDEN"); u && std::string(u) == "1") {
+    ASSERT_TRUE(writeImage(golden, img));
+    return;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run with NPR_UPDATE_GOLDEN=1 to create it";
+  OIIO::ImageBuf expected(golden);
+  OIIO::ImageBuf actual(OIIO::ImageSpec(img.width, img.height, 4, OIIO::TypeDesc::UINT8), const_cast<std::uint8_t*>(img.pixels.data()));
+  ASSERT_EQ(expected.spec().width, img.width);
+  ASSERT_EQ(expected.spec().height, img.height);
+  const auto cmp = OIIO::ImageBufAlgo::compare(actual, expected, 2.0f / 255.0f, 1.0f / 255.0f);
+  const double failed = double(cmp.nfail) / (double(img.width) * img.height);
+  const bool ok = failed <= failFraction && cmp.meanerror <= meanDiff;
+  EXPECT_TRUE(ok) << name << ": " << cmp.nfail << " pixels differ by more than 2/255 (" << failed * 100 << "%, limit "
+                  << failFraction * 100 << "%), mean difference " << cmp.meanerror << " (limit " << meanDiff << "), max "
+                  << cmp.maxerror << "; actual and diff images in " << test::outputPath("");
+  if (!ok) {
+    (void)writeImage(test::outputPath(name + "-actual.png"), img);
+    OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(actual, expected);
+    diff = OIIO::ImageBufAlgo::mul(diff, 4.0f);
+    diff.write(test::outputPath(name + "-diff.png"));
+  }
 }
 
 Palette shippedPalette(const std::string& name) {

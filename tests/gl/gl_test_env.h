@@ -44,5 +44,10 @@ Palette shippedPalette(const std::string& name);
 // A palette of `n` solid grey entries from white to black (on a solid background): tone
 // without pattern, for tests that measure tone.
 Palette greyRamp(int n);
+// Compares with tests/golden/NAME.png: at most `failFraction` of the pixels may differ by
+// more than 2/255 in a channel, and the mean channel difference must stay under `meanDiff`.
+// A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in build/test-output.
+// NPR_UPDATE_GOLDEN=1 rewrites the goldens instead (then look at them before committing).
+void expectGolden(const std::string& name, const ImageRGBA8& img, double failFraction, double meanDiff);
 
 }  // namespace npr::test

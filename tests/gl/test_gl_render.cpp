@@ -30,6 +30,7 @@ using test::shippedPalette;
 using test::sourcePath;
 using test::testCamera;
 using test::greyRamp;
+using test::expectGolden;
 
 
 using Fixture = test::RendererFixture;
@@ -393,35 +394,6 @@ TEST_F(Fixture, CelBandsAreHardWithAntialiasedEdges) {
 }
 
 // ---- Golden images -----------------------------------------------------------------------
-
-// Compares with tests/golden/NAME.png: at most `failFraction` of the pixels may differ by
-// more than 2/255 in a channel, and the mean channel difference must stay under `meanDiff`.
-// A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in build/test-output.
-// NPR_UPDATE_GOLDEN=1 rewrites the goldens instead (then look at them before committing).
-void expectGolden(const std::string& name, const ImageRGBA8& img, double failFraction, double meanDiff) {
-  const std::string golden = sourcePath("tests/golden/" + name + ".png");
-  if (const char* u = std::getenv("NPR_UPDATE_GOLDEN"); u && std::string(u) == "1") {
-    ASSERT_TRUE(writeImage(golden, img));
-    return;
-  }
-  ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing: run with NPR_UPDATE_GOLDEN=1 to create it";
-  OIIO::ImageBuf expected(golden);
-  OIIO::ImageBuf actual(OIIO::ImageSpec(img.width, img.height, 4, OIIO::TypeDesc::UINT8), const_cast<std::uint8_t*>(img.pixels.data()));
-  ASSERT_EQ(expected.spec().width, img.width);
-  ASSERT_EQ(expected.spec().height, img.height);
-  const auto cmp = OIIO::ImageBufAlgo::compare(actual, expected, 2.0f / 255.0f, 1.0f / 255.0f);
-  const double failed = double(cmp.nfail) / (double(img.width) * img.height);
-  const bool ok = failed <= failFraction && cmp.meanerror <= meanDiff;
-  EXPECT_TRUE(ok) << name << ": " << cmp.nfail << " pixels differ by more than 2/255 (" << failed * 100 << "%, limit "
-                  << failFraction * 100 << "%), mean difference " << cmp.meanerror << " (limit " << meanDiff << "), max "
-                  << cmp.maxerror << "; actual and diff images in " << test::outputPath("");
-  if (!ok) {
-    (void)writeImage(test::outputPath(name + "-actual.png"), img);
-    OIIO::ImageBuf diff = OIIO::ImageBufAlgo::absdiff(actual, expected);
-    diff = OIIO::ImageBufAlgo::mul(diff, 4.0f);
-    diff.write(test::outputPath(name + "-diff.png"));
-  }
-}
 
 TEST_F(Fixture, GoldenImagesPerPath) {
   auto mesh = loadMesh(sourcePath("models/teapot.obj"));

@@ -2,8 +2,12 @@
 // that fails to load leaves the current one drawing exactly as before.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include "app/style_file.h"
 #include "app/viewer_state.h"
 #include "gl/gl_test_env.h"
+#include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -32,6 +36,74 @@ TEST_F(Fixture, FailedPaletteLoadKeepsTheCurrentOne) {
   const ImageRGBA8 after = renderImage(*r, testCamera(1.0f), s, 64, 64);
   EXPECT_EQ(countDiffering(before, after), 0);
   EXPECT_GE(state.messages.size(), 2u);  // both failures are reported for the overlay
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// Style presets: every shipped style loads, applies and draws, with a golden image each; a
+// saved style loads back to the same settings; a bad style changes nothing and says where.
+using StyleFixture = test::RendererFixture;
+TEST_F(StyleFixture, EveryShippedStyleAppliesAndMatchesItsGolden) {
+  const std::vector<std::string> styles = discoverStyles();
+  ASSERT_GE(styles.size(), 7u);
+  auto mesh = loadMesh(test::sourcePath("models/teapot.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  for (const std::string& file : styles) {
+    ViewerState state;
+    ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
+    Result<Style> style = loadStyle(file);
+    ASSERT_TRUE(style) << style.error();
+    ASSERT_TRUE(applyStyle(*style, state, *r)) << file;
+    ASSERT_TRUE(style->palette.has_value()) << file << " names no palette";
+    const std::string name = std::filesystem::path(file).stem().string();
+    test::expectGolden("style-" + name, test::renderImage(*r, test::testCamera(1.0f), state.settings, 160, 160), 0.005, 0.004);
+    ASSERT_TRUE(r->lighting().setToneModel(ToneModel::OpenGL, r->lighting().toneParameters()));
+  }
+}
+
+TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
+  const Mesh mesh = test::icosphere(3);
+  r->setMesh(&mesh);
+  ViewerState state;
+  ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
+  Result<Style> technical = loadStyle(resolveStyle("technical"));
+  ASSERT_TRUE(technical) << technical.error();
+  ASSERT_TRUE(applyStyle(*technical, state, *r));
+  test::TempDir d;
+  const std::string saved = d.write("saved.style", styleText(state, *r, "round trip"));
+  ViewerState other;
+  ASSERT_TRUE(other.loadPalette(defaultPalettePath(), *r));
+  ASSERT_TRUE(r->lighting().setToneModel(ToneModel::OpenGL, r->lighting().toneParameters()));
+  Result<Style> back = loadStyle(saved);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_TRUE(applyStyle(*back, other, *r));
+  EXPECT_EQ(other.palette->name, state.palette->name);
+  EXPECT_EQ(other.settings.path, state.settings.path);
+  EXPECT_EQ(other.settings.match, state.settings.match);
+  EXPECT_EQ(other.settings.lines.silhouettes, state.settings.lines.silhouettes);
+  EXPECT_EQ(other.settings.lines.creases, state.settings.lines.creases);
+  EXPECT_EQ(other.settings.lines.creaseAngle, state.settings.lines.creaseAngle);
+  EXPECT_EQ(r->lighting().toneModel(), ToneModel::Gooch);
+  // Bad styles: the reason with file and line, and the look as it was.
+  const std::string before = styleText(other, *r, "x");
+  for (const auto& [text, line] : std::vector<std::pair<std::string, int>>{{"name A\nfrobnicate 3\n", 2},
+                                                                           {"path sideways\n", 1},
+                                                                           {"\nrange-scale nan\n", 2},
+                                                                           {"lines silhouette,glow\n", 1},
+                                                                           {"pattern-scale 100\n", 1}}) {
+    Result<Style> bad = loadStyle(d.write("bad.style", text));
+    ASSERT_FALSE(bad) << text;
+    EXPECT_NE(bad.error().find("bad.style line " + std::to_string(line)), std::string::npos) << bad.error();
+  }
+  Result<Style> missing = loadStyle(d.write("missing.style", "path smooth\npalette nowhere/none.palette\nlines crease\n"));
+  ASSERT_TRUE(missing);  // the file parses; its palette fails when applied
+  EXPECT_FALSE(applyStyle(*missing, other, *r));
+  EXPECT_EQ(styleText(other, *r, "x"), before);
 }
 
 }  // namespace
