@@ -24,14 +24,6 @@ using test::sourcePath;
 using test::testCamera;
 using Fixture = test::RendererFixture;
 
-Mesh square() {
-  Mesh m;
-  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  finalizeMesh(m);
-  return m;
-}
-
 // One entry of random opaque texels with a level 1 of its own, unrelated to level 0, so a
 // pixel that shows level 1 cannot be mistaken for a filtered level 0.
 Palette noisePalette() {
@@ -53,7 +45,7 @@ Palette noisePalette() {
 }
 
 TEST_F(Fixture, HalfScaleShowsTheNextMipLevelTexelForPixel) {
-  const Mesh sq = square();
+  const Mesh sq = test::square();
   r->setMesh(&sq);
   const Palette p = noisePalette();
   ASSERT_TRUE(r->setPalette(p));
@@ -104,7 +96,7 @@ Palette onlyEntry(const Palette& p, size_t i) {
 // what it shows texel for pixel, magnified (bilinear in linear light) or minified (its mip
 // levels), for drawn levels and for levels reduced from a plain image.
 TEST_F(Fixture, ToneHoldsFromAQuarterToThreePixelsATexel) {
-  const Mesh sq = square();
+  const Mesh sq = test::square();
   r->setMesh(&sq);
   const int n = 768;
   OrbitCamera cam(0.0f, 0.0f, 3.0f);

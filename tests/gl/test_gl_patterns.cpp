@@ -19,14 +19,6 @@ using test::renderImage;
 using test::sourcePath;
 using Fixture = test::RendererFixture;
 
-Mesh square() {
-  Mesh m;
-  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  finalizeMesh(m);
-  return m;
-}
-
 // Fraction of pixels covered in both images (not background) where b at (x + dx, y + dy)
 // equals a at (x, y).
 double agreement(const ImageRGBA8& a, const ImageRGBA8& b, const ImageRGBA32F& coverA, int dx, int dy, int* compared) {
@@ -45,7 +37,7 @@ double agreement(const ImageRGBA8& a, const ImageRGBA8& b, const ImageRGBA32F& c
 }
 
 TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
-  const Mesh sq = square();
+  const Mesh sq = test::square();
   r->setMesh(&sq);
   ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
   const float head[4] = {0, 0, 1, 0};

@@ -28,6 +28,14 @@ std::string TempDir::write(const std::string& name, const std::string& content) 
   return p.string();
 }
 
+Mesh square() {
+  Mesh m;
+  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  finalizeMesh(m);
+  return m;
+}
+
 void writeObj(const Mesh& m, const std::string& path) {
   FILE* f = std::fopen(path.c_str(), "w");
   for (const auto& p : m.positions) std::fprintf(f, "v %.7f %.7f %.7f\n", p.x, p.y, p.z);
