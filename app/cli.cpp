@@ -219,15 +219,14 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.camera = glm::vec3(v[0], v[1], v[2]);
   }
   if (!lines.empty()) {
-    std::stringstream ss(lines);
-    std::string kind;
-    while (std::getline(ss, kind, ',')) {
-      if (kind == "silhouette" || kind == "silhouettes") o.silhouettes = true;
-      else if (kind == "crease" || kind == "creases") o.creases = true;
-      else if (kind == "boundary" || kind == "boundaries") o.boundaries = true;
-      else if (kind == "image") o.imageEdges = true;
-      else return {std::nullopt, fail("unknown --lines kind '" + kind + "': use silhouette, crease, boundary or image")};
-    }
+    LineSettings kinds;
+    std::string unknown;
+    if (!parseLineKinds(lines, kinds, &unknown))
+      return {std::nullopt, fail("unknown --lines kind '" + unknown + "': use silhouette, crease, boundary or image")};
+    o.silhouettes = kinds.silhouettes;
+    o.creases = kinds.creases;
+    o.boundaries = kinds.boundaries;
+    o.imageEdges = kinds.imageSpace;
   }
   if (!std::isnan(creaseAngle)) {
     if (!(creaseAngle >= 0.0f && creaseAngle <= 180.0f)) return {std::nullopt, fail("--crease-angle must be in [0, 180]")};
@@ -249,10 +248,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     }
   }
   if (!tone.empty()) {
-    if (tone == "opengl") o.tone = ToneModel::OpenGL;
-    else if (tone == "gooch") o.tone = ToneModel::Gooch;
-    else if (tone == "splashback") o.tone = ToneModel::Splashback;
-    else return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch or splashback")};
+    o.tone = parseToneModel(tone);
+    if (!o.tone) return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch or splashback")};
   }
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.

@@ -43,12 +43,6 @@ std::optional<float> number(const std::string& s) {
   return v;
 }
 
-std::optional<ToneModel> parseTone(const std::string& s) {
-  for (ToneModel t : {ToneModel::OpenGL, ToneModel::Gooch, ToneModel::Splashback})
-    if (s == toneModelName(t)) return t;
-  return std::nullopt;
-}
-
 }  // namespace
 
 Result<Style> loadStyle(const std::string& path) {
@@ -90,7 +84,7 @@ Result<Style> loadStyle(const std::string& path) {
       if (!p || !pathInfo(*p).userSelectable) return bad("must be one of " + userRenderPathNames());
       st.path = *p;
     } else if (key == "tone") {
-      if (!(st.tone = parseTone(arg))) return bad("must be opengl, gooch or splashback");
+      if (!(st.tone = parseToneModel(arg))) return bad("must be opengl, gooch or splashback");
     } else if (key == "bands") {
       std::vector<float> b;
       std::stringstream ss(arg);
@@ -103,17 +97,7 @@ Result<Style> loadStyle(const std::string& path) {
       st.bands = b;
     } else if (key == "lines") {
       anyLine = true;
-      lines.silhouettes = lines.creases = lines.boundaries = lines.imageSpace = false;
-      std::stringstream ss(arg);
-      std::string kind;
-      while (arg != "none" && std::getline(ss, kind, ',')) {
-        kind = trim(kind);
-        if (kind == "silhouette" || kind == "silhouettes") lines.silhouettes = true;
-        else if (kind == "crease" || kind == "creases") lines.creases = true;
-        else if (kind == "boundary" || kind == "boundaries") lines.boundaries = true;
-        else if (kind == "image") lines.imageSpace = true;
-        else return bad("must be none or silhouette, crease, boundary, image separated by commas");
-      }
+      if (!parseLineKinds(arg, lines)) return bad("must be none or silhouette, crease, boundary, image separated by commas");
     } else if (key == "line-width") {
       const auto v = number(arg);
       if (!v || *v <= 0.0f || *v > 64.0f) return bad("must be in (0, 64] pixels");

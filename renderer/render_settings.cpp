@@ -1,6 +1,7 @@
 // Names of the settings on the command line and in the overlay (see render_settings.h).
 #include "renderer/render_settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +37,29 @@ std::optional<OrientSettings> parseOrient(const std::string& s) {
     o.degrees = float(std::fmod(std::fmod(d, 180.0) + 180.0, 180.0));
   }
   return o;
+}
+
+bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown) {
+  LineSettings kinds = lines;
+  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.imageSpace = false;
+  std::size_t start = 0;
+  while (list != "none" && start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    std::string kind = list.substr(start, end - start);
+    kind.erase(0, kind.find_first_not_of(" \t"));
+    kind.erase(kind.find_last_not_of(" \t") + 1);
+    if (kind == "silhouette" || kind == "silhouettes") kinds.silhouettes = true;
+    else if (kind == "crease" || kind == "creases") kinds.creases = true;
+    else if (kind == "boundary" || kind == "boundaries") kinds.boundaries = true;
+    else if (kind == "image") kinds.imageSpace = true;
+    else {
+      if (unknown) *unknown = kind;
+      return false;
+    }
+    start = end + 1;
+  }
+  lines = kinds;
+  return true;
 }
 
 }  // namespace npr

@@ -57,6 +57,10 @@ struct OrientSettings {
 // gives back, and a number alone is a fixed angle.
 std::string orientName(const OrientSettings& o);
 std::optional<OrientSettings> parseOrient(const std::string& s);
+// "none" or kinds separated by commas (silhouette, crease, boundary, image; plurals too): sets
+// exactly those kinds on in `lines`. False, `lines` untouched and the kind in `unknown`, on a
+// kind it does not know.
+bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown = nullptr);
 
 // Where the per-triangle paths (stencil, triangle) light their triangles: on the CPU (the
 // original), on the GPU with the entries read back (shading/gpu_triangle_lighting.h), or

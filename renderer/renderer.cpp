@@ -132,10 +132,12 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     frame = patterns_.frame();
   }
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
-  if (palette_) palette_->setPatternFrame(frame, scale, s.patternLinearFilter);
-  for (auto& [name, p] : materialPalettes_) p->setPatternFrame(frame, scale, s.patternLinearFilter);
-  if (palette_) palette_->setFrameOffset(glm::vec2(frameOffset_));
-  for (auto& [name, p] : materialPalettes_) p->setFrameOffset(glm::vec2(frameOffset_));
+  auto place = [&](GpuPalette& p) {
+    p.setPatternFrame(frame, scale, s.patternLinearFilter);
+    p.setFrameOffset(glm::vec2(frameOffset_));
+  };
+  if (palette_) place(*palette_);
+  for (auto& [name, p] : materialPalettes_) place(*p);
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {

@@ -9,11 +9,11 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
-#include <functional>
-#include <memory>
 
 #include "renderer/core/camera.h"
 #include "renderer/core/frame_stats.h"

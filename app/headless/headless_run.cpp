@@ -2,11 +2,11 @@
 #include "app/headless/headless_run.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <chrono>
-#include <cstdio>
 #include <vector>
 
 #include "app/headless/headless_session.h"

@@ -34,10 +34,10 @@ int runWindowViewer(const Options& o) {
   // The occlusion bake runs a few directions per frame in the window, so it stays responsive
   // and the overlay shows progress (headless runs bake to the end at once).
   v.renderer->setOcclusionBudget(30.0);
+  // Hatching keeps its physical size on a high-DPI screen unless a style or the command line
+  // sets a scale (startScene applies those over this default).
+  v.state.settings.patternScale = std::clamp(v.window->contentScale(), RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
   if (Status s = startScene(o, v.state, *v.renderer); !s) return reportFailure(s.error());
-  // Hatching keeps its physical size on a high-DPI screen unless the user chose a scale.
-  if (!o.patternScale)
-    v.state.settings.patternScale = std::clamp(v.window->contentScale(), RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
   if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
   if (v.screenshotDir.empty()) v.screenshotDir = ".";
   installInputCallbacks(v);

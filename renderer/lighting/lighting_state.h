@@ -7,6 +7,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,7 @@ struct Material {
 // Gooch by (alpha |cos theta| + 1 - alpha)^p, theta between the normal and that light.
 enum class ToneModel { OpenGL, Gooch, Splashback };
 const char* toneModelName(ToneModel t);
+std::optional<ToneModel> parseToneModel(const std::string& name);  // what toneModelName gives
 
 struct ToneParameters {
   float blue = 0.4f;    // k_blue = (0, 0, blue)

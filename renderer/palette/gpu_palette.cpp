@@ -207,24 +207,19 @@ int GpuPalette::lodFor(float texelsPerPixel) const {
 }
 
 void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
-  if (pattern_) {
-    // The frame's scale split into octaves: the coarse layer's marks are S 2^octave pixels wide.
-    const float l = std::log2(pattern_->scale);
-    const float octave = l - std::floor(l);
-    const float markSize = patternScale_ * std::exp2(octave);
-    const float c = std::cos(pattern_->rotation), s = std::sin(pattern_->rotation);
-    // u = R(-rotation) (x - origin) / markSize, column-major.
-    prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
-    prog.set("uPatternOrigin", pattern_->translation);
-    prog.set("uPatternOctave", octave);
-    prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
-  } else if (patternScale_ != 1.0f) {
-    prog.set("uPatternMatrix", glm::vec4(1, 0, 0, 1) / patternScale_);
-    prog.set("uPatternOrigin", glm::vec2(0.0f));
-    prog.set("uPatternOctave", 0.0f);
-    const float lod = float(lodFor(1.0f / patternScale_));
-    prog.set("uPatternLod", glm::vec2(lod));
-  }
+  if (patternMapping() == gl::PatternMapping::Screen) return;
+  // A fixed scale is the identity frame; the anchored frame's scale is split into octaves (the
+  // coarse layer's marks are S 2^octave pixels wide; only PATTERN_ANCHORED reads the fine one).
+  const PatternFrame frame = pattern_.value_or(PatternFrame{});
+  const float l = std::log2(frame.scale);
+  const float octave = pattern_ ? l - std::floor(l) : 0.0f;
+  const float markSize = patternScale_ * std::exp2(octave);
+  const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
+  // u = R(-rotation) (x - origin) / markSize, column-major.
+  prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
+  prog.set("uPatternOrigin", frame.translation);
+  prog.set("uPatternOctave", octave);
+  prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
