@@ -37,7 +37,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
                "whose average colour or intensity matches best, in screen space."};
   Options o;
-  std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials;
+  std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials, outlineMethod;
+  float outlineOffset = NAN;
   std::vector<std::string> paletteFor;
   std::string animate, pattern, orient, triangleLighting;
   float creaseAngle = NAN, lineWidth = NAN;
@@ -97,13 +98,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
   app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
-  app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image");
+  app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image,hardware,rim");
+  app.add_option("--outline", outlineMethod, "Hardware outlines (--lines hardware) from back faces: fatten (even widths), offset or edges");
+  app.add_option("--outline-offset", outlineOffset, "--outline offset: back faces pulled this fraction of their depth towards the eye (0..0.2, default 0.005)");
   app.add_option("--crease-angle", creaseAngle, "Dihedral angle above which an edge is a crease, degrees (default 60)");
   app.add_option("--line-width", lineWidth, "Line width in pixels (default 2)");
   app.add_flag("--sketchy", o.sketchy, "Draw each line as a few jittered strokes");
   app.add_flag("--line-falloff", o.lineFalloff, "Thinner lines with distance");
   app.add_option("--bands", bands, "Cel band thresholds T1,T2,... on the match query axis [0,3] (one fewer than the palette's tones)");
-  app.add_option("--tone", tone, "Lighting model the palette matches against: opengl|gooch|splashback");
+  app.add_option("--tone", tone, "Lighting model the palette matches against: opengl|gooch|splashback|charcoal");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -222,11 +225,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     LineSettings kinds;
     std::string unknown;
     if (!parseLineKinds(lines, kinds, &unknown))
-      return {std::nullopt, fail("unknown --lines kind '" + unknown + "': use silhouette, crease, boundary or image")};
-    o.silhouettes = kinds.silhouettes;
-    o.creases = kinds.creases;
-    o.boundaries = kinds.boundaries;
-    o.imageEdges = kinds.imageSpace;
+      return {std::nullopt, fail("unknown --lines kind '" + unknown + "': use silhouette, crease, boundary, image, hardware or rim")};
+    o.lineKinds = kinds;
+  }
+  if (!outlineMethod.empty() && !(o.outlineMethod = parseOutlineMethod(outlineMethod)))
+    return {std::nullopt, fail("unknown --outline '" + outlineMethod + "': use fatten, offset or edges")};
+  if (!std::isnan(outlineOffset)) {
+    if (!(outlineOffset >= LineSettings::kMinOutlineOffset && outlineOffset <= LineSettings::kMaxOutlineOffset))
+      return {std::nullopt, fail("--outline-offset must be in [0, 0.2]")};
+    o.outlineOffset = outlineOffset;
   }
   if (!std::isnan(creaseAngle)) {
     if (!(creaseAngle >= 0.0f && creaseAngle <= 180.0f)) return {std::nullopt, fail("--crease-angle must be in [0, 180]")};
@@ -249,7 +256,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   }
   if (!tone.empty()) {
     o.tone = parseToneModel(tone);
-    if (!o.tone) return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch or splashback")};
+    if (!o.tone) return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch, splashback or charcoal")};
   }
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.

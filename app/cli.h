@@ -64,7 +64,9 @@ struct Options {
   int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
-  bool silhouettes = false, creases = false, boundaries = false, imageEdges = false;
+  std::optional<LineSettings> lineKinds;  // --lines: which kinds (the rest of it is defaults)
+  std::optional<OutlineMethod> outlineMethod;  // --outline
+  std::optional<float> outlineOffset;          // --outline-offset
   std::optional<float> creaseAngle, lineWidth;
   bool sketchy = false, lineFalloff = false;
   std::optional<ToneModel> tone;

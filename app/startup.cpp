@@ -44,12 +44,16 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   if (!o.bands.empty()) state.settings.bands = o.bands;
   LineSettings& lines = state.settings.lines;
-  if (o.silhouettes || o.creases || o.boundaries || o.imageEdges) {
-    lines.silhouettes = o.silhouettes;
-    lines.creases = o.creases;
-    lines.boundaries = o.boundaries;
-    lines.imageSpace = o.imageEdges;
+  if (o.lineKinds) {
+    lines.silhouettes = o.lineKinds->silhouettes;
+    lines.creases = o.lineKinds->creases;
+    lines.boundaries = o.lineKinds->boundaries;
+    lines.imageSpace = o.lineKinds->imageSpace;
+    lines.hardware = o.lineKinds->hardware;
+    lines.rim = o.lineKinds->rim;
   }
+  if (o.outlineMethod) lines.outline = *o.outlineMethod;
+  if (o.outlineOffset) lines.outlineOffset = *o.outlineOffset;
   if (o.sketchy) lines.sketchy = true;
   if (o.lineFalloff) lines.depthFalloff = true;
   if (o.creaseAngle) lines.creaseAngle = *o.creaseAngle;

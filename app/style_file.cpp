@@ -84,7 +84,7 @@ Result<Style> loadStyle(const std::string& path) {
       if (!p || !pathInfo(*p).userSelectable) return bad("must be one of " + userRenderPathNames());
       st.path = *p;
     } else if (key == "tone") {
-      if (!(st.tone = parseToneModel(arg))) return bad("must be opengl, gooch or splashback");
+      if (!(st.tone = parseToneModel(arg))) return bad("must be opengl, gooch, splashback or charcoal");
     } else if (key == "bands") {
       std::vector<float> b;
       std::stringstream ss(arg);
@@ -97,7 +97,7 @@ Result<Style> loadStyle(const std::string& path) {
       st.bands = b;
     } else if (key == "lines") {
       anyLine = true;
-      if (!parseLineKinds(arg, lines)) return bad("must be none or silhouette, crease, boundary, image separated by commas");
+      if (!parseLineKinds(arg, lines)) return bad("must be none or silhouette, crease, boundary, image, hardware, rim separated by commas");
     } else if (key == "line-width") {
       const auto v = number(arg);
       if (!v || *v <= 0.0f || *v > 64.0f) return bad("must be in (0, 64] pixels");
@@ -112,6 +112,16 @@ Result<Style> loadStyle(const std::string& path) {
       if (arg != "on" && arg != "off") return bad("must be on or off");
       anyLine = true;
       lines.sketchy = arg == "on";
+    } else if (key == "outline") {
+      const auto m = parseOutlineMethod(arg);
+      if (!m) return bad("must be fatten, offset or edges");
+      anyLine = true;
+      lines.outline = *m;
+    } else if (key == "outline-offset") {
+      const auto v = number(arg);
+      if (!v || *v < LineSettings::kMinOutlineOffset || *v > LineSettings::kMaxOutlineOffset) return bad("must be in [0, 0.2]");
+      anyLine = true;
+      lines.outlineOffset = *v;
     } else if (key == "pattern") {
       if (!(st.pattern = parsePatternSpace(arg))) return bad("must be screen or anchored");
     } else if (key == "pattern-scale") {
@@ -152,6 +162,10 @@ Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
     s.lines.width = l.width;
     s.lines.creaseAngle = l.creaseAngle;
     s.lines.sketchy = l.sketchy;
+    s.lines.hardware = l.hardware;
+    s.lines.rim = l.rim;
+    s.lines.outline = l.outline;
+    s.lines.outlineOffset = l.outlineOffset;
   }
   if (st.pattern) s.pattern = *st.pattern;
   if (st.patternScale) s.patternScale = *st.patternScale;
@@ -181,10 +195,13 @@ std::string styleText(const ViewerState& state, Renderer& renderer, const std::s
   if (s.lines.creases) kinds.push_back("crease");
   if (s.lines.boundaries) kinds.push_back("boundary");
   if (s.lines.imageSpace) kinds.push_back("image");
+  if (s.lines.hardware) kinds.push_back("hardware");
+  if (s.lines.rim) kinds.push_back("rim");
   o << "lines ";
   if (kinds.empty()) o << "none";
   for (size_t i = 0; i < kinds.size(); ++i) o << (i ? "," : "") << kinds[i];
   o << "\nline-width " << s.lines.width << "\ncrease-angle " << s.lines.creaseAngle << "\nsketchy " << (s.lines.sketchy ? "on" : "off") << "\n";
+  o << "outline " << outlineMethodName(s.lines.outline) << "\noutline-offset " << s.lines.outlineOffset << "\n";
   o << "pattern " << patternSpaceName(s.pattern) << "\npattern-scale " << s.patternScale << "\npattern-filter "
     << (s.patternLinearFilter ? "linear" : "nearest") << "\n";
   o << "orient " << orientName(s.orient) << "\n";

@@ -7,8 +7,9 @@
 //   name TEXT
 //   palette NAME|PATH        (a shipped palette's folder name, or a path relative to the file)
 //   match colors|intensity|order      range-scale S       path stencil|triangle|...
-//   tone opengl|gooch|splashback      bands T1,T2,...
-//   lines none|silhouette,crease,boundary,image   line-width PX   crease-angle DEG
+//   tone opengl|gooch|splashback|charcoal      bands T1,T2,...
+//   lines none|silhouette,crease,boundary,image,hardware,rim   line-width PX   crease-angle DEG
+//   outline fatten|offset|edges   outline-offset K
 //   sketchy on|off           pattern screen|anchored   pattern-scale S   pattern-filter nearest|linear
 //   orient none|curvature|light|DEGREES
 #pragma once

@@ -39,9 +39,24 @@ std::optional<OrientSettings> parseOrient(const std::string& s) {
   return o;
 }
 
+const char* outlineMethodName(OutlineMethod m) {
+  switch (m) {
+    case OutlineMethod::Edges: return "edges";
+    case OutlineMethod::Offset: return "offset";
+    case OutlineMethod::Fatten: return "fatten";
+  }
+  return "fatten";
+}
+
+std::optional<OutlineMethod> parseOutlineMethod(const std::string& s) {
+  for (OutlineMethod m : {OutlineMethod::Edges, OutlineMethod::Offset, OutlineMethod::Fatten})
+    if (s == outlineMethodName(m)) return m;
+  return std::nullopt;
+}
+
 bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown) {
   LineSettings kinds = lines;
-  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.imageSpace = false;
+  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.imageSpace = kinds.hardware = kinds.rim = false;
   std::size_t start = 0;
   while (list != "none" && start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
@@ -52,6 +67,8 @@ bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* u
     else if (kind == "crease" || kind == "creases") kinds.creases = true;
     else if (kind == "boundary" || kind == "boundaries") kinds.boundaries = true;
     else if (kind == "image") kinds.imageSpace = true;
+    else if (kind == "hardware") kinds.hardware = true;
+    else if (kind == "rim") kinds.rim = true;
     else {
       if (unknown) *unknown = kind;
       return false;

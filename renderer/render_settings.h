@@ -13,8 +13,16 @@
 
 namespace npr {
 
+// How hardware outlines are made from the back faces (lines/hardware_outline_pass.h): their
+// edges as wide quads, the faces pulled towards the eye in proportion to depth, or the faces
+// fattened on screen (Raskar and Cohen; even widths, the default).
+enum class OutlineMethod { Edges, Offset, Fatten };
+const char* outlineMethodName(OutlineMethod m);
+std::optional<OutlineMethod> parseOutlineMethod(const std::string& s);
+
 // Lines drawn over any path (object-space feature edges, lines/feature_edges.h; image-space
-// edges, lines/image_edges_pass.h).
+// edges, lines/image_edges_pass.h; hardware outlines and the charcoal rim,
+// lines/hardware_outline_pass.h).
 struct LineSettings {
   bool silhouettes = false, creases = false, boundaries = false;
   float creaseAngle = 60.0f;  // degrees
@@ -25,8 +33,18 @@ struct LineSettings {
   // Image space: Sobel on the depth and normal buffers, thresholded, drawn as a post-process.
   bool imageSpace = false;
   float imageThreshold = 0.4f;
+  // Hardware outlines: the silhouette drawn from back faces in the silhouette colour, no
+  // adjacency needed (`--lines hardware`).
+  bool hardware = false;
+  OutlineMethod outline = OutlineMethod::Fatten;
+  float outlineOffset = 0.005f;  // Offset: back faces pulled this fraction of their depth towards the eye
+  // Charcoal rim (`--lines rim`): front faces with 0 < N.V < rimLimit fattened outward by the
+  // line width and drawn with the palette entry of their tone (1 + N.V) / 3.
+  bool rim = false;
+  float rimLimit = 0.1f;
+  static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
   bool objectSpace() const { return silhouettes || creases || boundaries; }
-  bool any() const { return objectSpace() || imageSpace; }
+  bool any() const { return objectSpace() || imageSpace || hardware || rim; }
 };
 
 // Where the palette's pattern lives: fixed to the screen (the original), or anchored to the
@@ -57,7 +75,8 @@ struct OrientSettings {
 // gives back, and a number alone is a fixed angle.
 std::string orientName(const OrientSettings& o);
 std::optional<OrientSettings> parseOrient(const std::string& s);
-// "none" or kinds separated by commas (silhouette, crease, boundary, image; plurals too): sets
+// "none" or kinds separated by commas (silhouette, crease, boundary, image, hardware, rim;
+// plurals too): sets
 // exactly those kinds on in `lines`. False, `lines` untouched and the kind in `unknown`, on a
 // kind it does not know.
 bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown = nullptr);

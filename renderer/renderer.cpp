@@ -6,6 +6,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/mesh/ground_plane.h"
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
@@ -273,6 +274,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   clearViewport(viewport);
   Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
   if (result) result = drawPath(camera, s, viewport, gl::MeshOutput::Colour);
+  if (result && mesh_) result = drawHardwareOutlines(gpuMesh_, camera, s.lines, palette_.get(), s.match, viewport, programs_, stats_);
   if (result && mesh_) result = imageEdges_.draw(gpuMesh_, camera, s.lines, viewport, programs_, emptyVao_, stats_);
   if (result && mesh_) result = lines_.draw(camera, s.lines, viewport, programs_, stats_);
   timer_.end();

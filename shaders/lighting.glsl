@@ -1,7 +1,7 @@
 // The OpenGL 2.1 lighting equation (section 2.14.1), in eye space: the same equation as
 // renderer/lighting/lighting_model.h, specialised by #defines to the features the scene uses:
 // NUM_LIGHTS, HAS_POSITIONAL, HAS_ATTENUATION, HAS_SPOT, HAS_SPECULAR, LOCAL_VIEWER,
-// TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK. Uniforms are
+// TWO_SIDED, LIGHTING_OFF, and the tone models TONE_GOOCH / TONE_SPLASHBACK / TONE_CHARCOAL. Uniforms are
 // the prepared products of light and material colours; with MATERIALS (the mesh's own
 // materials) they are the lights' own colours, multiplied here by the material the caller
 // passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
@@ -100,6 +100,12 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
 #endif
   vec3 n = safeNormalize(normal);
   if (side == 1) n = -n;
+#ifdef TONE_CHARCOAL
+  // (1 + V.N) / 3 with the true direction to the eye (the origin of eye space).
+  vec3 toEye = safeNormalize(-pos);
+  if (toEye == vec3(0.0)) toEye = vec3(0.0, 0.0, 1.0);
+  return vec3(clamp((1.0 + dot(n, toEye)) / 3.0, 0.0, 1.0));
+#endif
 #if defined(TONE_GOOCH) || defined(TONE_SPLASHBACK)
   // Cool-to-warm tone with the first light (see lighting_model.h for the sign convention).
   vec3 vp = vec3(0.0, 0.0, 1.0);

@@ -2,7 +2,8 @@
 // four strip vertices, widened in pixels and pulled slightly towards the eye so the depth
 // test against the model removes hidden lines without z-fighting on their own faces.
 // SKETCHY draws each edge as three jittered sub-strokes whose jitter is a hash of the edge's
-// endpoints: stable from frame to frame. DEPTH_FALLOFF thins lines with distance.
+// endpoints: stable from frame to frame. Each sub-stroke tapers to a point at both ends and its
+// pressure (darkness and width) changes along it between two hashed values, as a pencil's does. DEPTH_FALLOFF thins lines with distance.
 layout(location = 0) in vec3 aStart;
 layout(location = 1) in vec3 aEnd;
 layout(location = 2) in float aKind;
@@ -16,6 +17,11 @@ uniform float uFalloffDepth;
 out vec3 vColour;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
+#ifdef SKETCHY
+out float vAlong;          // pixels from the stroke's start (its cap included)
+flat out float vLength;    // the stroke's length in pixels
+flat out vec2 vPressure;   // at its start and end: how hard the pencil pressed (0.45..1)
+#endif
 
 uint hashBits(uint x) {
   x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
@@ -50,7 +56,8 @@ void main() {
   float amp = 1.0 + 0.5 * width;
   s0 += nrm0 * (hash01(seed) - 0.5) * amp + dir0 * (hash01(seed + 1u) - 0.6) * 2.0 * amp;
   s1 += nrm0 * (hash01(seed + 2u) - 0.5) * amp + dir0 * (hash01(seed + 3u) - 0.4) * 2.0 * amp;
-  width *= 0.6;
+  width *= 0.75;
+  vPressure = vec2(0.45) + 0.55 * vec2(hash01(seed + 4u), hash01(seed + 5u));
 #endif
   vec2 d = s1 - s0;
   float len = length(d);
@@ -62,5 +69,9 @@ void main() {
   vec4 p = end ? p1 : p0;
   vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
   vAcross = side * vHalfWidth;
+#ifdef SKETCHY
+  vLength = len + width;
+  vAlong = end ? vLength : 0.0;
+#endif
   gl_Position = vec4(s / half_ * p.w, p.z - 3e-4 * p.w, p.w);
 }

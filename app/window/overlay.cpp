@@ -162,6 +162,15 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("boundaries", &ls.boundaries);
     ImGui::Checkbox("image-space edges", &ls.imageSpace);
     ImGui::SameLine();
+    ImGui::Checkbox("hardware outline", &ls.hardware);
+    ImGui::SameLine();
+    ImGui::Checkbox("charcoal rim", &ls.rim);
+    if (ls.hardware) {
+      int method = static_cast<int>(ls.outline);
+      if (ImGui::Combo("outline method", &method, "edges\0offset\0fatten\0")) ls.outline = static_cast<OutlineMethod>(method);
+      if (ls.outline == OutlineMethod::Offset)
+        ImGui::SliderFloat("outline offset", &ls.outlineOffset, LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset, "%.3f");
+    }
     ImGui::Checkbox("sketchy", &ls.sketchy);
     ImGui::SameLine();
     ImGui::Checkbox("depth falloff", &ls.depthFalloff);
@@ -193,8 +202,8 @@ void drawOverlay(Viewer& v) {
     LightingState& lighting = v.renderer->lighting();
     int tone = static_cast<int>(lighting.toneModel());
     ToneParameters tp = lighting.toneParameters();
-    bool changed = ImGui::Combo("tone", &tone, "OpenGL\0Gooch\0splashback\0");
-    if (tone != 0) {
+    bool changed = ImGui::Combo("tone", &tone, "OpenGL\0Gooch\0splashback\0charcoal\0");
+    if (tone == static_cast<int>(ToneModel::Gooch) || tone == static_cast<int>(ToneModel::Splashback)) {  // charcoal has no parameters
       changed |= ImGui::SliderFloat("blue", &tp.blue, 0.0f, 1.0f);
       changed |= ImGui::SliderFloat("yellow", &tp.yellow, 0.0f, 1.0f);
       changed |= ImGui::SliderFloat("alpha", &tp.alpha, 0.0f, 1.0f);

@@ -63,6 +63,14 @@ inline constexpr PassState kLines = [] {
   s.depthFunc = GL_LEQUAL;
   return s;
 }();
+// Hardware outlines and the charcoal rim: opaque, depth-tested LEQUAL against the front faces
+// (only what sticks out past them shows), writing no depth.
+inline constexpr PassState kOutline = [] {
+  PassState s;
+  s.depthTest = true;
+  s.depthFunc = GL_LEQUAL;
+  return s;
+}();
 // Screen-space overlays over the frame (image-space edges): blended, no depth.
 inline constexpr PassState kScreenOverlay = [] { PassState s; s.blend = true; return s; }();
 // Shadow maps: depth only, slope-scaled bias (with the lookup's normal offset, shadows/).

@@ -85,6 +85,17 @@ struct SourceOf {
     if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
     return s;
   }
+  ProgramSource operator()(const OutlineProgram& o) const {
+    ProgramSource s{"outline.vert", "outline.frag", {}, "outline.geom"};
+    switch (o.method) {
+      case OutlineProgram::Method::Edges: s.defines.push_back("OUTLINE_EDGES"); break;
+      case OutlineProgram::Method::Offset: s.defines.push_back("OUTLINE_OFFSET"); break;
+      case OutlineProgram::Method::Fatten: s.defines.push_back("OUTLINE_FATTEN"); break;
+      case OutlineProgram::Method::Rim: s.defines.push_back("OUTLINE_RIM"); break;
+    }
+    if (o.palette) for (auto& d : paletteDefines(*o.palette)) s.defines.push_back(d);
+    return s;
+  }
   ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
@@ -132,6 +143,11 @@ bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b) {
 bool operator<(const QuadProgram& a, const QuadProgram& b) {
   return std::tie(a.kind, a.backgroundImage, a.pattern, a.layerSizesDiffer, a.filtered, a.orientBins, a.orientBuffer) <
          std::tie(b.kind, b.backgroundImage, b.pattern, b.layerSizesDiffer, b.filtered, b.orientBins, b.orientBuffer);
+}
+
+bool operator<(const OutlineProgram& a, const OutlineProgram& b) {
+  if (a.method != b.method) return a.method < b.method;
+  return a.palette < b.palette;
 }
 
 bool operator<(const LineProgram& a, const LineProgram& b) {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -82,6 +83,13 @@ struct LineProgram {
   bool depthFalloff = false;
 };
 
+// outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the
+// charcoal rim (which reads the palette).
+struct OutlineProgram {
+  enum class Method : std::uint8_t { Edges, Offset, Fatten, Rim } method = Method::Fatten;
+  std::optional<PaletteVariant> palette;  // Rim only
+};
+
 // fullscreen.vert + edges.frag: Sobel on the frame's depth and normals.
 struct EdgeProgram {};
 
@@ -102,12 +110,15 @@ struct TriangleLightProgram {
   bool occlusion = false;
 };
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
                                     TriangleLightProgram>;
 
 struct ProgramSource {
+  ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
+      : vertexFile(std::move(vertex)), fragmentFile(std::move(fragment)), defines(std::move(defs)), geometryFile(std::move(geometry)) {}
   std::string vertexFile, fragmentFile;
   std::vector<std::string> defines;
+  std::string geometryFile;  // empty: none
 };
 ProgramSource programSource(const ProgramVariant& variant);
 
@@ -115,6 +126,7 @@ bool operator<(const PaletteVariant& a, const PaletteVariant& b);
 bool operator<(const MeshProgram& a, const MeshProgram& b);
 bool operator<(const QuadProgram& a, const QuadProgram& b);
 bool operator<(const LineProgram& a, const LineProgram& b);
+bool operator<(const OutlineProgram& a, const OutlineProgram& b);
 inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }

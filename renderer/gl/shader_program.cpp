@@ -3,6 +3,7 @@
 
 #include <cctype>
 #include <cstring>
+#include <optional>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -61,7 +62,7 @@ bool mentions(const std::string& text, const char* name) {
 void setStrictUniforms(bool on) { g_strict = on; }
 
 Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile, const std::string& fragmentFile,
-                                           const std::vector<std::string>& defines) {
+                                           const std::vector<std::string>& defines, const std::string& geometryFile) {
   Result<std::string> vsText = assembleShader(vertexFile, defines);
   if (!vsText) return Error{vsText.error()};
   Result<std::string> fsText = assembleShader(fragmentFile, defines);
@@ -70,18 +71,30 @@ Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile, const 
   if (!vs) return Error{vs.error()};
   Result<Shader> fs = compile(GL_FRAGMENT_SHADER, *fsText, variantLabel(fragmentFile, defines));
   if (!fs) return Error{fs.error()};
+  std::string gsText;
+  std::optional<Shader> gs;
+  if (!geometryFile.empty()) {
+    Result<std::string> text = assembleShader(geometryFile, defines);
+    if (!text) return Error{text.error()};
+    Result<Shader> compiled = compile(GL_GEOMETRY_SHADER, *text, variantLabel(geometryFile, defines));
+    if (!compiled) return Error{compiled.error()};
+    gsText = std::move(*text);
+    gs = std::move(*compiled);
+  }
   ShaderProgram p;
-  p.label_ = variantLabel(vertexFile + "+" + fragmentFile, defines);
+  p.label_ = variantLabel(vertexFile + (gs ? "+" + geometryFile : "") + "+" + fragmentFile, defines);
   p.program_ = Program(glCreateProgram());
   glAttachShader(p.program_.id(), vs->id());
+  if (gs) glAttachShader(p.program_.id(), gs->id());
   glAttachShader(p.program_.id(), fs->id());
   glLinkProgram(p.program_.id());
   GLint ok = 0;
   glGetProgramiv(p.program_.id(), GL_LINK_STATUS, &ok);
   glDetachShader(p.program_.id(), vs->id());
   glDetachShader(p.program_.id(), fs->id());
+  if (gs) glDetachShader(p.program_.id(), gs->id());
   if (!ok) return Error{"program " + p.label_ + " failed to link:\n" + infoLog(p.program_.id(), true)};
-  p.source_ = *vsText + *fsText;
+  p.source_ = *vsText + gsText + *fsText;
   return p;
 }
 

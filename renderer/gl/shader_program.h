@@ -18,9 +18,10 @@ namespace npr::gl {
 
 class ShaderProgram {
  public:
-  // `defines` are "NAME" or "NAME VALUE" lines prepended to both stages.
+  // `defines` are "NAME" or "NAME VALUE" lines prepended to every stage. A geometry stage
+  // is optional (empty `geometryFile`: none).
   [[nodiscard]] static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
-                                                   const std::vector<std::string>& defines);
+                                                   const std::vector<std::string>& defines, const std::string& geometryFile = {});
 
   GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }

@@ -149,6 +149,14 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
   const int side = (back && p.twoSided) ? 1 : 0;
   V3 n = safeNormalize(normal);
   if (side) n = -n;
+  if (p.tone == ToneModel::Charcoal) {
+    // The true direction to the eye even for an infinite viewer: at the silhouette it is
+    // what makes V.N zero.
+    V3 toEye = safeNormalize(p.eye - pos);
+    if (toEye == V3(0)) toEye = p.viewDirection;
+    const T t = clamp01((T(1) + glm::dot(n, toEye)) / T(3));
+    return V3(t);
+  }
   if (p.tone != ToneModel::OpenGL) {
     // Gooch: l is the direction the light travels (towards the surface), so surfaces facing
     // the light (l.n = -1) get the warm colour and those facing away the cool one.

@@ -29,12 +29,13 @@ const char* toneModelName(ToneModel t) {
     case ToneModel::OpenGL: return "opengl";
     case ToneModel::Gooch: return "gooch";
     case ToneModel::Splashback: return "splashback";
+    case ToneModel::Charcoal: return "charcoal";
   }
   return "?";
 }
 
 std::optional<ToneModel> parseToneModel(const std::string& name) {
-  for (ToneModel t : {ToneModel::OpenGL, ToneModel::Gooch, ToneModel::Splashback})
+  for (ToneModel t : {ToneModel::OpenGL, ToneModel::Gooch, ToneModel::Splashback, ToneModel::Charcoal})
     if (name == toneModelName(t)) return t;
   return std::nullopt;
 }
@@ -66,6 +67,7 @@ std::vector<std::string> LightingFeatures::glslDefines() const {
   d.push_back("NUM_LIGHTS " + std::to_string(lightCount));
   if (tone == ToneModel::Gooch) d.push_back("TONE_GOOCH");
   if (tone == ToneModel::Splashback) d.push_back("TONE_SPLASHBACK");
+  if (tone == ToneModel::Charcoal) d.push_back("TONE_CHARCOAL");
   if (positional) d.push_back("HAS_POSITIONAL");
   if (attenuation) d.push_back("HAS_ATTENUATION");
   if (spot) d.push_back("HAS_SPOT");

@@ -44,7 +44,9 @@ struct Material {
 // What the lit colour is computed with. OpenGL is the fixed-function equation; Gooch is
 // cool-to-warm tone (Gooch et al. 1998) with the first enabled light; Splashback multiplies
 // Gooch by (alpha |cos theta| + 1 - alpha)^p, theta between the normal and that light.
-enum class ToneModel { OpenGL, Gooch, Splashback };
+// Charcoal (the NPR lecture slides) ignores lights and colours: grey (1 + V.N) / 3 with V
+// towards the eye, bright where the surface faces the viewer, 1/3 at the silhouette.
+enum class ToneModel { OpenGL, Gooch, Splashback, Charcoal };
 const char* toneModelName(ToneModel t);
 std::optional<ToneModel> parseToneModel(const std::string& name);  // what toneModelName gives
 

@@ -55,7 +55,8 @@ LightingState randomState(std::mt19937& rng) {
   (void)st.LightModeli(GL_LIGHT_MODEL_TWO_SIDE, int(rng() % 2));
   if (rng() % 4 == 0) {  // the tone models go through the same comparison
     ToneParameters tp{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng) * 8.0f};
-    (void)st.setToneModel(rng() % 2 ? ToneModel::Gooch : ToneModel::Splashback, tp);
+    const ToneModel tones[] = {ToneModel::Gooch, ToneModel::Splashback, ToneModel::Charcoal};
+    (void)st.setToneModel(tones[rng() % 3], tp);
   }
   return st;
 }

@@ -1,0 +1,58 @@
+// Hardware outlines and the charcoal rim (see hardware_outline_pass.h).
+#include "renderer/lines/hardware_outline_pass.h"
+
+#include <algorithm>
+
+#include "renderer/gl/pass_state.h"
+
+namespace npr {
+namespace {
+
+gl::OutlineProgram::Method methodOf(OutlineMethod m) {
+  switch (m) {
+    case OutlineMethod::Edges: return gl::OutlineProgram::Method::Edges;
+    case OutlineMethod::Offset: return gl::OutlineProgram::Method::Offset;
+    case OutlineMethod::Fatten: return gl::OutlineProgram::Method::Fatten;
+  }
+  return gl::OutlineProgram::Method::Fatten;
+}
+
+}  // namespace
+
+Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& ls, const GpuPalette* palette,
+                            MatchMode match, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
+  struct Draw {
+    gl::OutlineProgram variant;
+    bool on;
+  };
+  gl::OutlineProgram rim{gl::OutlineProgram::Method::Rim, std::nullopt};
+  if (palette) {
+    rim.palette = palette->variant(match);
+    rim.palette->orientBins = 0;  // the rim is a smudge along the outline: not turned
+  }
+  const Draw draws[] = {{gl::OutlineProgram{methodOf(ls.outline), std::nullopt}, ls.hardware}, {rim, ls.rim && palette != nullptr}};
+  for (const Draw& d : draws) {
+    if (!d.on) continue;
+    Result<gl::ShaderProgram*> prog = programs.get(d.variant, stats.shaderBuilds);
+    if (!prog) return Error{prog.error()};
+    gl::ShaderProgram& p = **prog;
+    gl::apply(gl::pass::kOutline);
+    p.use();
+    p.set("uModelView", camera.view);
+    p.set("uProjection", camera.projection);
+    p.set("uViewport", glm::vec2(viewport.z, viewport.w));
+    p.set("uWidth", std::max(ls.width, 0.5f));
+    if (d.variant.method == gl::OutlineProgram::Method::Rim) {
+      p.set("uRimLimit", std::clamp(ls.rimLimit, 0.0f, 1.0f));
+      palette->bind(p, false);
+    } else {
+      p.set("uColour", ls.silhouetteColour);
+      p.set("uOffset", std::clamp(ls.outlineOffset, LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset));
+    }
+    mesh.drawAll();
+    ++stats.drawCalls;
+  }
+  return okStatus();
+}
+
+}  // namespace npr
