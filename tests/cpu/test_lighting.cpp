@@ -234,8 +234,8 @@ TEST(ToneModels, GoochCoolToWarm) {
   const glm::vec3 side = shadeEye(s, {0, 0, -3}, {1, 0, 0});  // halfway
   EXPECT_NEAR(side.r, 0.52f, 1e-5f);
   EXPECT_NEAR(side.b, 0.52f, 1e-5f);
-  EXPECT_TRUE(s.features().glslDefines().end() !=
-              std::find(s.features().glslDefines().begin(), s.features().glslDefines().end(), "TONE_GOOCH"));
+  const std::vector<std::string> defines = s.features().glslDefines();  // one vector: find needs one range
+  EXPECT_NE(std::find(defines.begin(), defines.end(), "TONE_GOOCH"), defines.end());
 }
 
 TEST(ToneModels, SplashbackMultiplier) {
@@ -252,6 +252,25 @@ TEST(ToneModels, SplashbackMultiplier) {
   // A tilted normal: cos = 0.6, factor (0.3 + 0.5)^2 = 0.64; t = 0.2: 0.2 k_cool + 0.8 k_warm
   const glm::vec3 c = shadeEye(s, {0, 0, -3}, {0.8f, 0, 0.6f});
   EXPECT_NEAR(c.r, (0.2f * 0.16f + 0.8f * 0.88f) * 0.64f, 1e-5f);
+}
+
+TEST(ToneModels, CharcoalIsOnePlusViewDotNormalOverThree) {
+  LightingState s;
+  ASSERT_TRUE(s.setToneModel(ToneModel::Charcoal, ToneParameters{}));
+  // Facing the eye: 2/3; at the silhouette (normal across the ray to the eye): 1/3; facing
+  // away: 0. The true direction to the eye counts, not the view axis: a point off the axis
+  // whose normal is the axis is not at its brightest.
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {0, 0, 1}).r, 2.0f / 3.0f, 1e-5f);
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {1, 0, 0}).g, 1.0f / 3.0f, 1e-5f);
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {0, 0, -1}).b, 0.0f, 1e-5f);
+  EXPECT_NEAR(shadeEye(s, {3, 0, -3}, {-1, 0, 1}).r, 2.0f / 3.0f, 1e-5f);
+  EXPECT_NEAR(shadeEye(s, {3, 0, -3}, {0, 0, 1}).r, (1.0f + std::sqrt(0.5f)) / 3.0f, 1e-5f);
+  // Lights and materials play no part.
+  const float red[4] = {1, 0, 0, 1};
+  ASSERT_TRUE(s.Materialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, red));
+  EXPECT_NEAR(shadeEye(s, {0, 0, -3}, {0, 0, 1}).g, 2.0f / 3.0f, 1e-5f);
+  const std::vector<std::string> defines = s.features().glslDefines();
+  EXPECT_NE(std::find(defines.begin(), defines.end(), "TONE_CHARCOAL"), defines.end());
 }
 
 TEST(ToneModels, ParametersAreValidated) {
