@@ -20,12 +20,13 @@ double percentile95(std::vector<double> v) {
   return v[std::min(v.size() - 1, static_cast<size_t>(0.95 * double(v.size())))];
 }
 
-std::vector<FrameTiming> timeInterleaved(Renderer& r, const OffscreenTarget& target, std::size_t configurations, int frames,
+std::vector<FrameTiming> timeInterleaved(Renderer& renderer, const OffscreenTarget& target, std::size_t configurations, int frames,
                                          int warmup, const std::function<TimedFrame(std::size_t, int)>& prepare, int& failures) {
   std::vector<std::vector<double>> wall(configurations), cpu(configurations), shading(configurations), gpu(configurations);
   for (int round = -warmup; round < frames; ++round) {
     for (std::size_t c = 0; c < configurations; ++c) {
       const TimedFrame frame = prepare(c, round);
+      Renderer& r = frame.renderer ? *frame.renderer : renderer;
       target.bind();
       const auto t0 = std::chrono::steady_clock::now();
       const Status st = r.render(frame.camera, frame.settings, {0, 0, target.width(), target.height()});

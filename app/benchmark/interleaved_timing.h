@@ -32,6 +32,7 @@ struct FrameTiming {
 struct TimedFrame {
   CameraMatrices camera;
   RenderSettings settings;
+  Renderer* renderer = nullptr;  // draws this frame; null: the one timeInterleaved was given (styles each keep their own)
 };
 
 // `frames` rounds after `warmup` rounds (shader builds, uploads), each rendering every

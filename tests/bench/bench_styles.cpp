@@ -1,0 +1,235 @@
+// The seeds' styles, measured (issue 19). Headless at 1280x720 (by default):
+//   lines   hardware outlines (fatten, edges, offset) against the object-space silhouettes on
+//           the bunny, the teapot and the 871K torus: the share of each line image within a
+//           pixel of the other, line widths across the silhouette (median, 10th and 90th
+//           percentile), and frame costs interleaved in one run with the camera orbiting
+//           (object-space silhouettes are recomputed every frame, as while a user orbits).
+//   styles  every shipped style (palettes/styles) on the bunny, the teapot and the torus:
+//           frame time against the `reference` path in one run, each style with its own
+//           renderer and palette.
+// Run: build/tests/bench/bench_styles [--size WxH] [--frames N] [--part lines|styles] [--mesh bunny|teapot|torus]
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/benchmark/interleaved_timing.h"
+#include "app/style_file.h"
+#include "app/viewer_state.h"
+#include "bench_common.h"
+#include "renderer/gl/headless_context.h"
+#include "renderer/gl/offscreen_target.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/mesh_loader.h"
+#include "renderer/renderer.h"
+#include "support/line_comparison.h"
+
+using namespace npr;
+
+namespace {
+
+struct Scene {
+  const char* name;
+  const Mesh* mesh;
+};
+
+const glm::vec3 kLight{2.0f, 2.5f, 3.0f};
+
+void setLight(Renderer& r, const CameraMatrices& m) {
+  r.lighting().setModelView(m.view);
+  const float pos[4] = {kLight.x, kLight.y, kLight.z, 1.0f};
+  (void)r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+}
+
+ImageRGBA8 frame(Renderer& r, const OffscreenTarget& target, const CameraMatrices& cam, const RenderSettings& s) {
+  target.bind();
+  setLight(r, cam);
+  if (Status st = r.render(cam, s, {0, 0, target.width(), target.height()}); !st) std::fprintf(stderr, "bench_styles: %s\n", st.error().c_str());
+  return target.readRGBA8();
+}
+
+// One white entry on a white ground: only the lines are ink.
+Palette whitePalette() {
+  Palette p;
+  p.name = "white";
+  PaletteEntry e;
+  e.image = ImageRGBA8{4, 4, std::vector<std::uint8_t>(64, 255)};
+  e.average = glm::vec3(1.0f);
+  e.intensity = 3.0f;
+  p.entries.push_back(std::move(e));
+  return p;
+}
+
+int lines(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames, const Palette& crosshatch) {
+  auto created = Renderer::create();
+  if (!created) return 1;
+  Renderer& r = **created;
+  applyDefaultMaterial(r.lighting());
+  const float aspect = float(target.width()) / float(target.height());
+  struct Row {
+    const char* label;
+    LineSettings lines;
+  };
+  std::vector<Row> rows = {{"no lines", {}}, {"object-space silhouettes", {}}};
+  rows[1].lines.silhouettes = true;
+  for (OutlineMethod m : {OutlineMethod::Fatten, OutlineMethod::Edges, OutlineMethod::Offset}) {
+    Row row{nullptr, {}};
+    row.lines.hardware = true;
+    row.lines.outline = m;
+    row.label = m == OutlineMethod::Fatten ? "hardware fatten" : m == OutlineMethod::Edges ? "hardware edges" : "hardware offset";
+    rows.push_back(row);
+  }
+  for (Row& row : rows) row.lines.width = 3.0f;
+
+  std::printf("## Hardware outlines against object-space silhouettes (3 px lines)\n\n");
+  std::printf("| mesh | method | object-space px near it | its px near object-space | width median | p10 | p90 |\n|---|---|---|---|---|---|---|\n");
+  for (const Scene& sc : scenes) {
+    r.setMesh(sc.mesh);
+    if (!r.setPalette(whitePalette())) return 1;
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(sc.mesh->radius);
+    const CameraMatrices m = cam.matrices(aspect);
+    RenderSettings s;
+    s.lines = rows[1].lines;
+    const test::LineMask object = test::lineMask(frame(r, target, m, s));
+    const std::vector<FeatureLine> edges = r.featureLines(m, s);
+    const test::Spread ow = test::spreadOf(test::widthsAcross(object, edges, m));
+    std::printf("| %s | object-space | - | - | %.1f | %.1f | %.1f |\n", sc.name, double(ow.median), double(ow.p10), double(ow.p90));
+    for (std::size_t i = 2; i < rows.size(); ++i) {
+      s.lines = rows[i].lines;
+      const test::LineMask hw = test::lineMask(frame(r, target, m, s));
+      const test::Spread w = test::spreadOf(test::widthsAcross(hw, edges, m));
+      std::printf("| %s | %s | %.3f | %.3f | %.1f | %.1f | %.1f |\n", sc.name, rows[i].label + 9, test::nearShare(object, hw, 1),
+                  test::nearShare(hw, object, 1), double(w.median), double(w.p10), double(w.p90));
+    }
+    std::fflush(stdout);
+  }
+
+  std::printf("\n## Frame cost, crosshatch, pixel path, camera orbiting 0.5 degrees per frame\n\n");
+  std::printf("| mesh | lines | median ms | p95 ms | CPU ms | x no lines | x object-space |\n|---|---|---|---|---|---|---|\n");
+  for (const Scene& sc : scenes) {
+    r.setMesh(sc.mesh);
+    if (!r.setPalette(crosshatch)) return 1;
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(sc.mesh->radius);
+    int failed = 0;
+    const std::vector<FrameTiming> t = timeInterleaved(r, target, rows.size(), frames, 2, [&](std::size_t c, int round) {
+      OrbitCamera moving = cam;
+      moving.orbit(0.5f * float(round), 0.0f);
+      TimedFrame f{moving.matrices(aspect), RenderSettings{}};
+      f.settings.lines = rows[c].lines;
+      setLight(r, f.camera);
+      return f;
+    }, failed);
+    if (failed) return 1;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      std::printf("| %s | %s | %.1f | %.1f | %.1f | %.2f | %.2f |\n", sc.name, rows[i].label, t[i].medianMs, t[i].p95Ms, t[i].cpuMs,
+                  t[i].medianMs / t[0].medianMs, t[i].medianMs / t[1].medianMs);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
+int styles(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames) {
+  struct Entry {
+    std::string name;
+    ViewerState state;
+    std::unique_ptr<Renderer> renderer;
+  };
+  std::vector<Entry> entries;
+  // The floor: the reference path (per-pixel Phong, no palette) with the default look.
+  std::vector<std::string> files{""};
+  for (const std::string& f : discoverStyles()) files.push_back(f);
+  for (const std::string& file : files) {
+    Entry e;
+    auto created = Renderer::create();
+    if (!created) return 1;
+    e.renderer = std::move(*created);
+    applyDefaultMaterial(e.renderer->lighting());
+    if (file.empty()) {
+      e.name = "reference (floor)";
+      e.state.settings.path = RenderPath::Reference;
+    } else {
+      Result<Style> st = loadStyle(file);
+      if (!st) {
+        std::fprintf(stderr, "bench_styles: %s\n", st.error().c_str());
+        return 1;
+      }
+      if (Status ok = applyStyle(*st, e.state, *e.renderer); !ok) {
+        std::fprintf(stderr, "bench_styles: %s\n", ok.error().c_str());
+        return 1;
+      }
+      e.name = st->name;
+    }
+    entries.push_back(std::move(e));
+  }
+  const float aspect = float(target.width()) / float(target.height());
+  std::printf("\n## Styles: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
+  std::printf("| mesh | style | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|\n");
+  for (const Scene& sc : scenes) {
+    for (Entry& e : entries) e.renderer->setMesh(sc.mesh);
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(sc.mesh->radius);
+    int failed = 0;
+    const std::vector<FrameTiming> t = timeInterleaved(*entries[0].renderer, target, entries.size(), frames, 2, [&](std::size_t c, int round) {
+      OrbitCamera moving = cam;
+      moving.orbit(0.5f * float(round), 0.0f);
+      TimedFrame f{moving.matrices(aspect), entries[c].state.settings, entries[c].renderer.get()};
+      setLight(*entries[c].renderer, f.camera);
+      return f;
+    }, failed);
+    if (failed) {
+      std::fprintf(stderr, "bench_styles: %d frame(s) failed\n", failed);
+      return 1;
+    }
+    for (std::size_t i = 0; i < entries.size(); ++i)
+      std::printf("| %s | %s | %.1f | %.1f | %.1f | %.2f |\n", sc.name, entries[i].name.c_str(), t[i].medianMs, t[i].p95Ms, t[i].cpuMs,
+                  t[i].medianMs / t[0].medianMs);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int w = 1280, h = 720, frames = 9;
+  std::string part, meshFilter;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &w, &h);
+    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--part") && i + 1 < argc) part = argv[++i];
+    else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
+    else {
+      std::fprintf(stderr, "usage: bench_styles [--size WxH] [--frames N] [--part lines|styles] [--mesh bunny|teapot|torus]\n");
+      return 2;
+    }
+  }
+  if (frames < 1 || w < 1 || h < 1 || (!part.empty() && part != "lines" && part != "styles") ||
+      (!meshFilter.empty() && meshFilter != "bunny" && meshFilter != "teapot" && meshFilter != "torus")) {
+    std::fprintf(stderr, "bench_styles: --frames and --size must be positive, --part lines or styles, --mesh bunny, teapot or torus\n");
+    return 2;
+  }
+  auto ctx = HeadlessContext::create(false);
+  if (!ctx) {
+    std::fprintf(stderr, "%s\n", ctx.error().c_str());
+    return 1;
+  }
+  auto target = OffscreenTarget::create(w, h);
+  auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
+  auto teapot = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/teapot.obj");
+  auto crosshatch = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
+  if (!target || !bunny || !teapot || !crosshatch) {
+    std::fprintf(stderr, "bench_styles: could not set up (target, models or palette)\n");
+    return 1;
+  }
+  std::vector<Scene> scenes;
+  if (meshFilter.empty() || meshFilter == "bunny") scenes.push_back({"bunny", &*bunny});
+  if (meshFilter.empty() || meshFilter == "teapot") scenes.push_back({"teapot", &*teapot});
+  if (meshFilter.empty() || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});
+  std::printf("GL: %s; %dx%d, %d frames per row\n\n", (*ctx)->description().c_str(), w, h, frames);
+  if ((part.empty() || part == "lines") && lines(scenes, *target, frames, *crosshatch)) return 1;
+  if ((part.empty() || part == "styles") && styles(scenes, *target, frames)) return 1;
+  return 0;
+}
