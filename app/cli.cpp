@@ -39,6 +39,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   Options o;
   std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials, outlineMethod;
   float outlineOffset = NAN;
+  std::string strokeSize;
   std::vector<std::string> paletteFor;
   std::string animate, pattern, orient, triangleLighting;
   float creaseAngle = NAN, lineWidth = NAN;
@@ -82,6 +83,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "Hatching direction: none (the texture's own, default) | curvature (along the surface's form) | light "
                  "(along the light's gradient) | DEGREES (a fixed screen angle)");
   app.add_option("--orient-bins", o.orientBins, "Steps the turn is quantised to over 180 degrees (2..64, default 8)");
+  app.add_flag("--strokes", o.strokes, "Painterly brush strokes over the path: particles on the surface, coloured by the palette");
+  app.add_option("--stroke-density", o.strokeDensity, "Strokes per unit area of the model fitted to the unit sphere (default 3000)");
+  app.add_option("--stroke-budget", o.strokeBudget, "At most this many strokes (default 200000)");
+  app.add_option("--stroke-size", strokeSize, "Stroke length x width in pixels, LxW (default 16x6)");
   app.add_flag("--ground", o.ground, "A ground plane under the model, drawn with the same palette and path");
   app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
   app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
@@ -166,6 +171,17 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     else if (triangleLighting == "gpu") o.triangleLighting = TriangleLighting::Gpu;
     else if (triangleLighting == "auto") o.triangleLighting = TriangleLighting::Auto;
     else return {std::nullopt, fail("unknown --triangle-lighting '" + triangleLighting + "': use cpu, gpu or auto")};
+  }
+  if (o.strokeDensity && !(*o.strokeDensity >= StrokeSettings::kMinDensity && *o.strokeDensity <= StrokeSettings::kMaxDensity))
+    return {std::nullopt, fail("--stroke-density must be in 1..1000000 strokes per unit area")};
+  if (o.strokeBudget && !(*o.strokeBudget >= 0 && *o.strokeBudget <= StrokeSettings::kMaxBudget))
+    return {std::nullopt, fail("--stroke-budget must be in 0..4000000")};
+  if (!strokeSize.empty()) {
+    float lw[2];
+    if (std::sscanf(strokeSize.c_str(), "%fx%f", &lw[0], &lw[1]) != 2 || !(lw[0] >= 1.0f && lw[0] <= StrokeSettings::kMaxSize) ||
+        !(lw[1] >= 1.0f && lw[1] <= StrokeSettings::kMaxSize))
+      return {std::nullopt, fail("--stroke-size must be LxW in pixels, each 1..256, got '" + strokeSize + "'")};
+    o.strokeSize = glm::vec2(lw[0], lw[1]);
   }
   if (o.occlusionStrength && !(*o.occlusionStrength >= 0.0f && *o.occlusionStrength <= 1.0f))
     return {std::nullopt, fail("--occlusion-strength must be in 0..1, got " + std::to_string(*o.occlusionStrength))};

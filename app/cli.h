@@ -64,6 +64,10 @@ struct Options {
   int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   bool naiveStencil = false;
   // Lines and tone (overlay toggles too)
+  bool strokes = false;                   // --strokes
+  std::optional<float> strokeDensity;     // --stroke-density
+  std::optional<int> strokeBudget;        // --stroke-budget
+  std::optional<glm::vec2> strokeSize;    // --stroke-size LxW
   std::optional<LineSettings> lineKinds;  // --lines: which kinds (the rest of it is defaults)
   std::optional<OutlineMethod> outlineMethod;  // --outline
   std::optional<float> outlineOffset;          // --outline-offset

@@ -43,6 +43,11 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.settings.triangleLighting = o.triangleLighting;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   if (!o.bands.empty()) state.settings.bands = o.bands;
+  StrokeSettings& strokes = state.settings.strokes;
+  if (o.strokes) strokes.on = true;
+  if (o.strokeDensity) strokes.density = *o.strokeDensity;
+  if (o.strokeBudget) strokes.budget = *o.strokeBudget;
+  if (o.strokeSize) strokes.length = o.strokeSize->x, strokes.width = o.strokeSize->y;
   LineSettings& lines = state.settings.lines;
   if (o.lineKinds) {
     lines.silhouettes = o.lineKinds->silhouettes;

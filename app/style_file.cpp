@@ -112,6 +112,23 @@ Result<Style> loadStyle(const std::string& path) {
       if (arg != "on" && arg != "off") return bad("must be on or off");
       anyLine = true;
       lines.sketchy = arg == "on";
+    } else if (key == "strokes") {
+      if (arg != "on" && arg != "off") return bad("must be on or off");
+      st.strokes = st.strokes.value_or(StrokeSettings{});
+      st.strokes->on = arg == "on";
+    } else if (key == "stroke-density") {
+      const auto v = number(arg);
+      if (!v || *v < StrokeSettings::kMinDensity || *v > StrokeSettings::kMaxDensity) return bad("must be in 1..1000000 strokes per unit area");
+      st.strokes = st.strokes.value_or(StrokeSettings{});
+      st.strokes->density = *v;
+    } else if (key == "stroke-size") {
+      float lw[2];
+      if (std::sscanf(arg.c_str(), "%fx%f", &lw[0], &lw[1]) != 2 || !(lw[0] >= 1.0f && lw[0] <= StrokeSettings::kMaxSize) ||
+          !(lw[1] >= 1.0f && lw[1] <= StrokeSettings::kMaxSize))
+        return bad("must be LxW in pixels, each 1..256");
+      st.strokes = st.strokes.value_or(StrokeSettings{});
+      st.strokes->length = lw[0];
+      st.strokes->width = lw[1];
     } else if (key == "outline") {
       const auto m = parseOutlineMethod(arg);
       if (!m) return bad("must be fatten, offset or edges");
@@ -167,6 +184,12 @@ Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
     s.lines.outline = l.outline;
     s.lines.outlineOffset = l.outlineOffset;
   }
+  if (st.strokes) {
+    s.strokes.on = st.strokes->on;
+    s.strokes.density = st.strokes->density;
+    s.strokes.length = st.strokes->length;
+    s.strokes.width = st.strokes->width;
+  }
   if (st.pattern) s.pattern = *st.pattern;
   if (st.patternScale) s.patternScale = *st.patternScale;
   if (st.patternLinear) s.patternLinearFilter = *st.patternLinear;
@@ -205,6 +228,8 @@ std::string styleText(const ViewerState& state, Renderer& renderer, const std::s
   o << "pattern " << patternSpaceName(s.pattern) << "\npattern-scale " << s.patternScale << "\npattern-filter "
     << (s.patternLinearFilter ? "linear" : "nearest") << "\n";
   o << "orient " << orientName(s.orient) << "\n";
+  o << "strokes " << (s.strokes.on ? "on" : "off") << "\nstroke-density " << s.strokes.density << "\nstroke-size " << s.strokes.length << "x"
+    << s.strokes.width << "\n";
   return o.str();
 }
 

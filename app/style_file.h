@@ -12,6 +12,7 @@
 //   outline fatten|offset|edges   outline-offset K
 //   sketchy on|off           pattern screen|anchored   pattern-scale S   pattern-filter nearest|linear
 //   orient none|curvature|light|DEGREES
+//   strokes on|off   stroke-density D   stroke-size LxW
 #pragma once
 
 #include <optional>
@@ -37,6 +38,7 @@ struct Style {
   std::optional<float> patternScale;
   std::optional<bool> patternLinear;
   std::optional<OrientSettings> orient;
+  std::optional<StrokeSettings> strokes;  // strokes, stroke-density, stroke-size
 };
 
 // The shipped styles (palettes/styles/*.style), sorted.

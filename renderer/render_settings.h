@@ -81,6 +81,20 @@ std::optional<OrientSettings> parseOrient(const std::string& s);
 // kind it does not know.
 bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown = nullptr);
 
+// Painterly brush strokes drawn over the path (strokes/brush_stroke_pass.h): particles seeded
+// once on the surface at `density` per unit area (the model fitted to the unit sphere), at
+// most `budget`, each a brush-textured quad of `length` x `width` pixels. Beyond the framing
+// distance fewer are drawn, faded in and out over a band of ranks (`fade` off: cut, which pops).
+struct StrokeSettings {
+  bool on = false;
+  float density = 3000.0f;
+  int budget = 200000;
+  float length = 16.0f, width = 6.0f;
+  bool fade = true;
+  static constexpr float kMinDensity = 1.0f, kMaxDensity = 1e6f, kMaxSize = 256.0f;
+  static constexpr int kMaxBudget = 4000000;
+};
+
 // Where the per-triangle paths (stencil, triangle) light their triangles: on the CPU (the
 // original), on the GPU with the entries read back (shading/gpu_triangle_lighting.h), or
 // `auto`: the GPU when shadows are on (the CPU lighting has no shadow maps), else the CPU.
@@ -120,6 +134,7 @@ struct RenderSettings {
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
   LineSettings lines;
+  StrokeSettings strokes;
 };
 
 }  // namespace npr

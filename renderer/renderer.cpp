@@ -32,6 +32,7 @@ void Renderer::setMesh(const Mesh* mesh) {
   materials_.clear();
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
+  strokes_.setMesh(mesh_);
   patterns_.setMesh(mesh_);
   groups_.clear();
   groupsDirty_ = true;
@@ -158,7 +159,11 @@ void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& vie
     p->setOrientation(s.orient, light, size);
     turned = turned || p->oriented();
   }
-  if (!turned || s.orient.source != OrientSource::Curvature || !mesh_ || field_) return;
+  if (turned && s.orient.source == OrientSource::Curvature) ensureDirectionField();
+}
+
+void Renderer::ensureDirectionField() {
+  if (!mesh_ || field_) return;
   field_ = computeDirectionField(*mesh_);
   stats_.cpuFieldMs = field_->ms;
   gpuMesh_.uploadDirections(field_->directions);
@@ -274,6 +279,10 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   clearViewport(viewport);
   Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
   if (result) result = drawPath(camera, s, viewport, gl::MeshOutput::Colour);
+  if (result && mesh_ && s.strokes.on && palette_) {
+    ensureDirectionField();
+    result = strokes_.draw(camera, s.strokes, lighting_, *palette_, s.match, field_->directions, viewport, programs_, stats_);
+  }
   if (result && mesh_) result = drawHardwareOutlines(gpuMesh_, camera, s.lines, palette_.get(), s.match, viewport, programs_, stats_);
   if (result && mesh_) result = imageEdges_.draw(gpuMesh_, camera, s.lines, viewport, programs_, emptyVao_, stats_);
   if (result && mesh_) result = lines_.draw(camera, s.lines, viewport, programs_, stats_);

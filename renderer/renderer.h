@@ -36,6 +36,7 @@
 #include "renderer/shading/triangle_shading_cache.h"
 #include "renderer/shadows/occlusion_bake.h"
 #include "renderer/shadows/shadow_maps.h"
+#include "renderer/strokes/brush_stroke_pass.h"
 
 namespace npr {
 
@@ -104,6 +105,9 @@ class Renderer {
   // The current mesh's hatching direction field: computed the first time a frame orients
   // strokes along the curvature, kept until the mesh changes (null until then).
   const DirectionField* directionField() const { return field_ ? &*field_ : nullptr; }
+  // The painterly strokes seeded on the current mesh (0 until a frame draws them).
+  std::size_t strokeCount() const { return strokes_.strokes(); }
+  double strokeSeedMs() const { return strokes_.seedMs(); }
 
   // Reads finished GPU timer queries into stats().gpuMs (render() does this first). Call it
   // after the GPU work is finished to attribute a frame's time to that frame.
@@ -163,6 +167,9 @@ class Renderer {
   // a palette turns along the curvature and the mesh has none yet.
   void prepareOrientation(const RenderSettings& settings, const glm::ivec4& viewport);
   std::optional<DirectionField> field_;
+  // Computes the direction field of the current mesh if it has none yet (and uploads it).
+  void ensureDirectionField();
+  BrushStrokePass strokes_;
   // Brings the shadow maps up to date when `settings.shadows` is on.
   Status prepareShadows(const CameraMatrices& camera, const RenderSettings& settings);
   ShadowMaps shadows_;

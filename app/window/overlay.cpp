@@ -114,6 +114,21 @@ void drawOverlay(Viewer& v) {
   }
   if (const DirectionField* field = v.renderer->directionField())
     ImGui::Text("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
+  StrokeSettings& strokes = s.settings.strokes;
+  ImGui::Checkbox("brush strokes", &strokes.on);
+  if (strokes.on) {
+    // Density reseeds the strokes (a fraction of a second on a large mesh): on release only.
+    static float pending = -1.0f;
+    float density = pending > 0.0f ? pending : strokes.density;
+    if (ImGui::SliderFloat("stroke density", &density, 100.0f, 50000.0f, "%.0f / unit area", ImGuiSliderFlags_Logarithmic)) pending = density;
+    if (ImGui::IsItemDeactivatedAfterEdit() && pending > 0.0f) {
+      strokes.density = std::clamp(pending, StrokeSettings::kMinDensity, StrokeSettings::kMaxDensity);
+      pending = -1.0f;
+    }
+    ImGui::SliderFloat("stroke length", &strokes.length, 2.0f, 64.0f, "%.0f px");
+    ImGui::SliderFloat("stroke width", &strokes.width, 1.0f, 32.0f, "%.0f px");
+    ImGui::Text("%zu strokes (seeded in %.0f ms)", v.renderer->strokeCount(), v.renderer->strokeSeedMs());
+  }
   ImGui::Checkbox("ground plane", &s.settings.ground);
   ImGui::SameLine();
   ImGui::Checkbox("shadows", &s.settings.shadows);

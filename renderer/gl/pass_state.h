@@ -71,6 +71,14 @@ inline constexpr PassState kOutline = [] {
   s.depthFunc = GL_LEQUAL;
   return s;
 }();
+// Painterly strokes: blended over the frame in a fixed order, depth-tested against the model
+// (nearer surfaces hide them), writing no depth.
+inline constexpr PassState kStrokes = [] {
+  PassState s;
+  s.depthTest = s.blend = true;
+  s.depthFunc = GL_LEQUAL;
+  return s;
+}();
 // Screen-space overlays over the frame (image-space edges): blended, no depth.
 inline constexpr PassState kScreenOverlay = [] { PassState s; s.blend = true; return s; }();
 // Shadow maps: depth only, slope-scaled bias (with the lookup's normal offset, shadows/).

@@ -96,6 +96,11 @@ struct SourceOf {
     if (o.palette) for (auto& d : paletteDefines(*o.palette)) s.defines.push_back(d);
     return s;
   }
+  ProgramSource operator()(const StrokeProgram& st) const {
+    ProgramSource s{"strokes.vert", "strokes.frag", st.lighting.glslDefines()};
+    for (auto& d : paletteDefines(st.palette)) s.defines.push_back(d);
+    return s;
+  }
   ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
@@ -147,6 +152,12 @@ bool operator<(const QuadProgram& a, const QuadProgram& b) {
 
 bool operator<(const OutlineProgram& a, const OutlineProgram& b) {
   if (a.method != b.method) return a.method < b.method;
+  return a.palette < b.palette;
+}
+
+bool operator<(const StrokeProgram& a, const StrokeProgram& b) {
+  const auto l = lightingKey(a.lighting), r = lightingKey(b.lighting);
+  if (l != r) return l < r;
   return a.palette < b.palette;
 }
 

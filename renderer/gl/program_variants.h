@@ -90,6 +90,13 @@ struct OutlineProgram {
   std::optional<PaletteVariant> palette;  // Rim only
 };
 
+// strokes.vert + strokes.frag: painterly brush strokes, lit with the scene's lighting and
+// coloured through the palette's matcher.
+struct StrokeProgram {
+  LightingFeatures lighting;
+  PaletteVariant palette;
+};
+
 // fullscreen.vert + edges.frag: Sobel on the frame's depth and normals.
 struct EdgeProgram {};
 
@@ -110,7 +117,7 @@ struct TriangleLightProgram {
   bool occlusion = false;
 };
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
+using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
                                     TriangleLightProgram>;
 
 struct ProgramSource {
@@ -127,6 +134,7 @@ bool operator<(const MeshProgram& a, const MeshProgram& b);
 bool operator<(const QuadProgram& a, const QuadProgram& b);
 bool operator<(const LineProgram& a, const LineProgram& b);
 bool operator<(const OutlineProgram& a, const OutlineProgram& b);
+bool operator<(const StrokeProgram& a, const StrokeProgram& b);
 inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }

@@ -19,6 +19,7 @@ enum class TextureUnit : GLint {
   MaterialMaps,    // their diffuse maps (GL_TEXTURE_2D_ARRAY)
   StrokeAngles,    // the stencil path's per-pixel hatching angles
   ShadowMaps,      // every light's shadow maps (GL_TEXTURE_2D_ARRAY, depth compare)
+  Brush,           // painterly strokes' brush coverage
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

@@ -29,6 +29,8 @@ class GpuPalette {
   [[nodiscard]] static Result<std::unique_ptr<GpuPalette>> upload(const Palette& palette);
 
   int size() const { return static_cast<int>(layerSizes_.size()); }
+  // Each entry's average colour (over the background), as the analysis measured it.
+  const std::vector<glm::vec3>& averages() const { return averages_; }
   bool backgroundImage() const { return backgroundImage_; }
   glm::ivec2 layerSize(int entry) const { return layerSizes_[static_cast<size_t>(entry)]; }
 

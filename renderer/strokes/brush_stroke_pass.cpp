@@ -1,0 +1,136 @@
+// Painterly brush strokes (see brush_stroke_pass.h).
+#include "renderer/strokes/brush_stroke_pass.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+
+#include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_units.h"
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/lighting/lighting_uniforms.h"
+
+namespace npr {
+namespace {
+
+constexpr int kBrushLength = 64, kBrushWidth = 24, kBrushes = 4;
+
+float smoothstep(float a, float b, float x) {
+  const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// Four flat brushes side by side, coverage in [0, 255]: bristles as rows of their own
+// darkness, each starting and ending at its own place (a dry, ragged start and end), the
+// edges across the stroke soft.
+std::vector<std::uint8_t> brushCoverage() {
+  std::vector<std::uint8_t> px(std::size_t(kBrushLength * kBrushes * kBrushWidth));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int b = 0; b < kBrushes; ++b)
+    for (int y = 0; y < kBrushWidth; ++y) {
+      const float ink = 0.55f + 0.45f * u(rng);
+      const float start = 0.02f + 0.18f * u(rng), end = 0.8f + 0.18f * u(rng);
+      const float v = (float(y) + 0.5f) / kBrushWidth * 2.0f - 1.0f;
+      const float edge = 1.0f - smoothstep(0.6f, 1.0f, std::abs(v));
+      for (int x = 0; x < kBrushLength; ++x) {
+        const float s = (float(x) + 0.5f) / kBrushLength;
+        const float along = smoothstep(start, start + 0.15f, s) * (1.0f - smoothstep(end - 0.1f, end, s));
+        px[std::size_t(y * kBrushLength * kBrushes + b * kBrushLength + x)] = std::uint8_t(std::lround(255.0f * ink * edge * along));
+      }
+    }
+  return px;
+}
+
+}  // namespace
+
+void BrushStrokePass::setMesh(const Mesh* mesh) {
+  mesh_ = mesh;
+  seededDensity_ = -1.0f;
+  seededBudget_ = -1;
+  count_ = 0;
+}
+
+Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings& st, const LightingState& lighting, const GpuPalette& palette,
+                             MatchMode match, const std::vector<glm::vec3>& directions, const glm::ivec4& viewport,
+                             gl::ProgramCache& programs, FrameStats& stats) {
+  if (!st.on || !mesh_) return okStatus();
+  if (!vao_) {
+    vao_ = gl::createVertexArray();
+    instances_ = gl::createBuffer();
+    brush_ = gl::createTexture();
+    const std::vector<std::uint8_t> coverage = brushCoverage();
+    gl::bindTexture(gl::TextureUnit::Brush, GL_TEXTURE_2D, brush_.id());
+    glActiveTexture(GL_TEXTURE0 + GLenum(gl::TextureUnit::Brush));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kBrushLength * kBrushes, kBrushWidth, 0, GL_RED, GL_UNSIGNED_BYTE, coverage.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glActiveTexture(GL_TEXTURE0);
+  }
+  const float density = std::clamp(st.density, StrokeSettings::kMinDensity, StrokeSettings::kMaxDensity);
+  const int budget = std::clamp(st.budget, 0, StrokeSettings::kMaxBudget);
+  const bool withField = directions.size() == mesh_->positions.size();
+  if (density != seededDensity_ || budget != seededBudget_ || withField != seededWithField_) {
+    const StrokeSeeding seeding = seedStrokes(*mesh_, density, budget, directions);
+    static_assert(sizeof(StrokeParticle) == 11 * sizeof(float), "the instance layout below reads 11 floats per stroke");
+    gl::uploadBuffer(instances_, seeding.particles.data(), seeding.particles.size() * sizeof(StrokeParticle), GL_STATIC_DRAW);
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, instances_.id());
+    const GLsizei stride = sizeof(StrokeParticle);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(StrokeParticle, position)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(StrokeParticle, normal)));
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(StrokeParticle, direction)));
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(StrokeParticle, rank)));
+    for (GLuint a = 0; a < 4; ++a) {
+      glEnableVertexAttribArray(a);
+      glVertexAttribDivisor(a, 1);
+    }
+    count_ = seeding.particles.size();
+    seedMs_ = seeding.ms;
+    seededDensity_ = density;
+    seededBudget_ = budget;
+    seededWithField_ = withField;
+    ++stats.bufferUploads;
+  }
+  if (count_ == 0) return okStatus();
+
+  gl::PaletteVariant pv = palette.variant(match);
+  pv.orientBins = 0;
+  Result<gl::ShaderProgram*> prog = programs.get(gl::StrokeProgram{lighting.features(), pv}, stats.shaderBuilds);
+  if (!prog) return Error{prog.error()};
+  gl::ShaderProgram& p = **prog;
+  gl::apply(gl::pass::kStrokes);
+  p.use();
+  p.set("uModelView", camera.view);
+  p.set("uProjection", camera.projection);
+  p.set("uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(camera.view))));
+  p.set("uViewport", glm::vec2(viewport.z, viewport.w));
+  p.set("uStrokeSize", glm::clamp(glm::vec2(st.length, st.width), glm::vec2(1.0f), glm::vec2(StrokeSettings::kMaxSize)));
+  // Every stroke is drawn out to the distance the viewer frames the model at (3 radii).
+  p.set("uKeepDepth", 3.0f * mesh_->radius);
+  p.set("uFadeBand", st.fade ? 0.1f : 0.0f);
+  glm::vec4 light(0, 0, 1, 0);
+  for (int i = 0; i < kMaxLights; ++i)
+    if (lighting.light(i).enabled) {
+      light = lighting.light(i).position;
+      break;
+    }
+  p.set("uLightEye", glm::vec3(light));
+  p.set("uLightPositional", light.w != 0.0f ? 1.0f : 0.0f);
+  uploadLightingUniforms(p, prepareLighting<float>(lighting));
+  palette.bind(p, false);
+  const std::vector<glm::vec3>& averages = palette.averages();
+  p.setArray("uEntryColour", averages.data(), int(averages.size()));
+  gl::bindTexture(gl::TextureUnit::Brush, GL_TEXTURE_2D, brush_.id());
+  p.set("uBrush", gl::unitIndex(gl::TextureUnit::Brush));
+  glBindVertexArray(vao_.id());
+  glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count_));
+  ++stats.drawCalls;
+  return okStatus();
+}
+
+}  // namespace npr

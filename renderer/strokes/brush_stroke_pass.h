@@ -1,0 +1,50 @@
+// Painterly brush strokes, part two: drawing them (the games chapter's strokes as particles).
+// The particles (stroke_seeding.h) are uploaded once per mesh and density as one instance
+// buffer; every frame is one instanced draw of textured, alpha-blended quads in the particles'
+// fixed order (so overlaps never flicker), over the path's image and depth-tested against it.
+// Culling (back-facing, thinned with distance) happens in the vertex stage, with fades.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/camera.h"
+#include "renderer/core/frame_stats.h"
+#include "renderer/core/result.h"
+#include "renderer/gl/gl_handle.h"
+#include "renderer/gl/program_cache.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/palette/gpu_palette.h"
+#include "renderer/render_settings.h"
+#include "renderer/strokes/stroke_seeding.h"
+
+namespace npr {
+
+class BrushStrokePass {
+ public:
+  // Forgets the previous mesh's strokes (seeded again on the next draw).
+  void setMesh(const Mesh* mesh);
+  // `directions`: the mesh's direction field (one per vertex) or empty. Seeds first when the
+  // mesh, density or budget changed since the last seeding.
+  [[nodiscard]] Status draw(const CameraMatrices& camera, const StrokeSettings& strokes, const LightingState& lighting,
+                            const GpuPalette& palette, MatchMode match, const std::vector<glm::vec3>& directions,
+                            const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats);
+  std::size_t strokes() const { return count_; }
+  double seedMs() const { return seedMs_; }
+
+ private:
+  const Mesh* mesh_ = nullptr;
+  float seededDensity_ = -1.0f;
+  int seededBudget_ = -1;
+  bool seededWithField_ = false;
+  std::size_t count_ = 0;
+  double seedMs_ = 0.0;
+  gl::VertexArray vao_;
+  gl::Buffer instances_;
+  gl::Texture brush_;
+};
+
+}  // namespace npr
