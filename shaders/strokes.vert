@@ -18,7 +18,7 @@ uniform mat3 uNormalMatrix;
 uniform vec2 uViewport;      // pixels
 uniform vec2 uStrokeSize;    // length, width in pixels
 uniform float uKeepDepth;    // eye depth at which every stroke is drawn; beyond it (d0 / d)^2 of them
-uniform float uFadeBand;     // ranks over which a thinned stroke fades (0: cut)
+uniform float uFadeBand;     // relative width of the ranks over which a thinned stroke fades (0: cut)
 uniform vec3 uLightEye;      // the first light's direction or position (w in uLightPositional)
 uniform float uLightPositional;
 
@@ -34,7 +34,10 @@ void main() {
   float facing = dot(n, toEye);
   float depth = max(-eye.z, 1e-4);
   float keep = clamp(uKeepDepth * uKeepDepth / (depth * depth), 0.0, 1.0);
-  float kept = uFadeBand > 0.0 ? clamp((keep - aRankSeed.x) / uFadeBand + 1.0, 0.0, 1.0) : float(aRankSeed.x < keep);
+  // Faded over ranks [k, k (1 + band)], k chosen so that the strokes drawn still add up to
+  // `keep`: a band relative to the kept fraction, or far away the band would outnumber it.
+  float k = keep / (1.0 + 0.5 * uFadeBand);
+  float kept = uFadeBand > 0.0 ? clamp((k * (1.0 + uFadeBand) - aRankSeed.x) / (k * uFadeBand), 0.0, 1.0) : float(aRankSeed.x < keep);
   vAlpha = kept * smoothstep(0.0, 0.12, facing);
   vSeed = aRankSeed.y;
   int corner = gl_VertexID;

@@ -112,7 +112,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   p.set("uStrokeSize", glm::clamp(glm::vec2(st.length, st.width), glm::vec2(1.0f), glm::vec2(StrokeSettings::kMaxSize)));
   // Every stroke is drawn out to the distance the viewer frames the model at (3 radii).
   p.set("uKeepDepth", 3.0f * mesh_->radius);
-  p.set("uFadeBand", st.fade ? 0.1f : 0.0f);
+  p.set("uFadeBand", st.fade ? 0.3f : 0.0f);
   glm::vec4 light(0, 0, 1, 0);
   for (int i = 0; i < kMaxLights; ++i)
     if (lighting.light(i).enabled) {

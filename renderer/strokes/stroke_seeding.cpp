@@ -69,14 +69,16 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
   const double wanted = std::min(double(std::max(budget, 0)), std::max(0.0, double(density)) * area);
   if (!(area > 0.0) || wanted < 1.0) return out;
   const std::size_t count = std::size_t(wanted);
-  // Dart throwing fills about 0.6 A / r^2 points before candidates run out; the last pass's
-  // radius is set for `count`, the earlier ones 2 and sqrt(2) times it.
-  const float radius = float(std::sqrt(0.6 * area / double(count)));
+  // Dart throwing with 6 candidates per stroke takes about 0.5 A / r^2 points at radius r on
+  // the sphere; r is set for `count`, and passes of 2 and sqrt(2) times r come first. Should the
+  // candidates run out first, passes at r / sqrt(2) and then at no radius at all make up the
+  // count (taking the remaining candidates in their random order).
+  const float radius = float(std::sqrt(0.5 * area / double(count)));
   std::mt19937 rng(0x5eed);
   std::uniform_real_distribution<double> pick(0.0, area);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const bool haveDirections = directions.size() == mesh.positions.size();
-  std::vector<Candidate> candidates(count * 4);
+  std::vector<Candidate> candidates(count * 6);
   for (Candidate& cand : candidates) {
     const std::size_t t = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick(rng)) - cumulative.begin());
     const std::size_t tri = std::min(t, triangles - 1);
@@ -97,11 +99,11 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
     }
   }
   PointGrid grid(radius * 2.0f);
-  const float passRadius[3] = {2.0f * radius, std::sqrt(2.0f) * radius, radius};
+  const float passRadius[] = {2.0f * radius, std::sqrt(2.0f) * radius, radius, radius / std::sqrt(2.0f), 0.0f};
   std::vector<char> taken(candidates.size(), 0);
-  for (int pass = 0; pass < 3 && out.particles.size() < count; ++pass)
+  for (int pass = 0; pass < 5 && out.particles.size() < count; ++pass)
     for (std::size_t i = 0; i < candidates.size() && out.particles.size() < count; ++i) {
-      if (taken[i] || grid.anyWithin(candidates[i].position, passRadius[pass])) continue;
+      if (taken[i] || (passRadius[pass] > 0.0f && grid.anyWithin(candidates[i].position, passRadius[pass]))) continue;
       taken[i] = 1;
       grid.add(candidates[i].position);
       const Candidate& c = candidates[i];
