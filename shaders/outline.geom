@@ -3,9 +3,7 @@
 // but the part that sticks out past the silhouette. One method per variant:
 //   OUTLINE_EDGES   back faces' edges as screen-space quads twice the line width (core
 //                   profiles have no wide lines); the front faces hide their inner half.
-//   OUTLINE_OFFSET  back faces filled, moved towards the eye by uOffset times their depth (the
-//                   slides' k z: a constant polygon offset fails at depth). Scaling an eye-space
-//                   point towards the eye keeps where it projects and changes only its depth.
+//   (OUTLINE_OFFSET needs no geometry stage: outline.vert.)
 //   OUTLINE_FATTEN  back faces filled and fattened: each edge pushed outward on screen by the
 //                   line width. Raskar and Cohen push each edge in object space by
 //                   z sin(a) / (V.N_b), which is what projects to a constant screen width;
@@ -25,7 +23,6 @@ in vec3 vEye[];
 uniform mat4 uProjection;
 uniform vec2 uViewport;  // pixels
 uniform float uWidth;    // pixels
-uniform float uOffset;   // OUTLINE_OFFSET: fraction of the depth
 uniform float uRimLimit; // OUTLINE_RIM: largest N.V that counts as near the silhouette
 
 #ifdef OUTLINE_RIM
@@ -97,12 +94,6 @@ void main() {
     emitAt(j, screen[j] + cap + perp);
     EndPrimitive();
   }
-#elif defined(OUTLINE_OFFSET)
-  for (int i = 0; i < 3; ++i) {
-    gl_Position = uProjection * vec4(vEye[i] * (1.0 - uOffset), 1.0);
-    EmitVertex();
-  }
-  EndPrimitive();
 #else
   emitFattened(uWidth);
 #endif

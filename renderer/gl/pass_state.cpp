@@ -28,6 +28,13 @@ void apply(const PassState& s) {
   }
   s.scissor ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
   s.programPointSize ? glEnable(GL_PROGRAM_POINT_SIZE) : glDisable(GL_PROGRAM_POINT_SIZE);
+  if (s.cull != 0) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(s.cull);
+    glFrontFace(GL_CCW);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
   if (s.offsetFactor != 0.0f || s.offsetUnits != 0.0f) {
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(s.offsetFactor, s.offsetUnits);

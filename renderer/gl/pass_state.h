@@ -21,6 +21,8 @@ struct PassState {
   // Depth pushed away by factor x the polygon's depth slope + units x the depth resolution
   // (shadow maps: slope-scaled bias against acne).
   float offsetFactor = 0.0f, offsetUnits = 0.0f;
+  // Faces dropped by the rasterizer: GL_FRONT, GL_BACK, or 0 for none (counter-clockwise front).
+  GLenum cull = 0;
 };
 
 namespace pass {
@@ -69,6 +71,12 @@ inline constexpr PassState kOutline = [] {
   PassState s;
   s.depthTest = true;
   s.depthFunc = GL_LEQUAL;
+  return s;
+}();
+// Offset outlines: back faces only, culled by the rasterizer (no geometry stage needed).
+inline constexpr PassState kOutlineBackFaces = [] {
+  PassState s = kOutline;
+  s.cull = GL_FRONT;
   return s;
 }();
 // Painterly strokes: blended over the frame in a fixed order, depth-tested against the model

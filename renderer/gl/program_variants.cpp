@@ -86,7 +86,8 @@ struct SourceOf {
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {
-    ProgramSource s{"outline.vert", "outline.frag", {}, "outline.geom"};
+    // The offset method needs no geometry stage: the rasterizer culls the front faces.
+    ProgramSource s{"outline.vert", "outline.frag", {}, o.method == OutlineProgram::Method::Offset ? "" : "outline.geom"};
     switch (o.method) {
       case OutlineProgram::Method::Edges: s.defines.push_back("OUTLINE_EDGES"); break;
       case OutlineProgram::Method::Offset: s.defines.push_back("OUTLINE_OFFSET"); break;

@@ -36,18 +36,21 @@ Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, c
     Result<gl::ShaderProgram*> prog = programs.get(d.variant, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
-    gl::apply(gl::pass::kOutline);
+    gl::apply(d.variant.method == gl::OutlineProgram::Method::Offset ? gl::pass::kOutlineBackFaces : gl::pass::kOutline);
     p.use();
     p.set("uModelView", camera.view);
     p.set("uProjection", camera.projection);
-    p.set("uViewport", glm::vec2(viewport.z, viewport.w));
-    p.set("uWidth", std::max(ls.width, 0.5f));
+    if (d.variant.method == gl::OutlineProgram::Method::Offset) {
+      p.set("uOffset", std::clamp(ls.outlineOffset, LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset));
+    } else {
+      p.set("uViewport", glm::vec2(viewport.z, viewport.w));
+      p.set("uWidth", std::max(ls.width, 0.5f));
+    }
     if (d.variant.method == gl::OutlineProgram::Method::Rim) {
       p.set("uRimLimit", std::clamp(ls.rimLimit, 0.0f, 1.0f));
       palette->bind(p, false);
     } else {
       p.set("uColour", ls.silhouetteColour);
-      p.set("uOffset", std::clamp(ls.outlineOffset, LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset));
     }
     mesh.drawAll();
     ++stats.drawCalls;

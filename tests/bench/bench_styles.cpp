@@ -7,7 +7,11 @@
 //   styles  every shipped style (palettes/styles) on the bunny, the teapot and the torus:
 //           frame time against the `reference` path in one run, each style with its own
 //           renderer and palette.
-// Run: build/tests/bench/bench_styles [--size WxH] [--frames N] [--part lines|styles] [--mesh bunny|teapot|torus]
+//   strokes painterly brush strokes over the smooth path against `reference` (the 871K torus
+//           with a budget of 200K strokes), and their temporal stability: pixels popping between
+//           frames of a slow orbit and of a zoom out, faded against cut at their rank.
+// Run: build/tests/bench/bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes] [--mesh bunny|teapot|torus]
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -191,6 +195,113 @@ int styles(const std::vector<Scene>& scenes, const OffscreenTarget& target, int 
   return 0;
 }
 
+// Share of the pixels covered in either frame whose luminance changed by more than 0.08
+// between two consecutive frames: what a viewer sees as popping.
+double changedShare(const ImageRGBA8& a, const ImageRGBA8& b, const glm::vec3& ground) {
+  int covered = 0, changed = 0;
+  auto lum = [](const std::uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f; };
+  const float groundLum = 0.2126f * ground.r + 0.7152f * ground.g + 0.0722f * ground.b;
+  for (std::size_t i = 0; i < a.pixels.size(); i += 4) {
+    const float la = lum(&a.pixels[i]), lb = lum(&b.pixels[i]);
+    if (std::abs(la - groundLum) < 0.01f && std::abs(lb - groundLum) < 0.01f) continue;
+    ++covered;
+    changed += std::abs(la - lb) > 0.08f;
+  }
+  return covered ? double(changed) / covered : 0.0;
+}
+
+int strokes(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames) {
+  auto created = Renderer::create();
+  if (!created) return 1;
+  Renderer& r = **created;
+  applyDefaultMaterial(r.lighting());
+  Result<Palette> wood = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/wood/wood.palette");
+  if (!wood || !r.setPalette(*wood)) return 1;
+  const float aspect = float(target.width()) / float(target.height());
+  struct Row {
+    std::string label;
+    RenderSettings settings;
+  };
+  std::printf("\n## Painterly strokes: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
+  std::printf("| mesh | row | strokes | seeding ms | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|---|---|\n");
+  for (const Scene& sc : scenes) {
+    r.setMesh(sc.mesh);
+    const bool large = sc.mesh->triangleCount() > 500000;
+    std::vector<Row> rows(3);
+    rows[0].label = "reference";
+    rows[0].settings.path = RenderPath::Reference;
+    rows[1].label = "smooth (underpainting)";
+    rows[1].settings.path = RenderPath::Smooth;
+    rows[2].label = large ? "smooth + strokes (budget 200K)" : "smooth + strokes";
+    rows[2].settings = rows[1].settings;
+    rows[2].settings.strokes.on = true;
+    rows[2].settings.strokes.density = large ? 1e6f : 1500.0f;
+    rows[2].settings.strokes.budget = 200000;
+    rows[2].settings.strokes.length = 26.0f;
+    rows[2].settings.strokes.width = 9.0f;
+    for (Row& row : rows) row.settings.match = MatchMode::Colors;
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(sc.mesh->radius);
+    // Seeds (and the direction field) before timing: a one-off per mesh.
+    frame(r, target, cam.matrices(aspect), rows[2].settings);
+    const std::size_t count = r.strokeCount();
+    const double seedMs = r.strokeSeedMs();
+    int failed = 0;
+    const std::vector<FrameTiming> t = timeInterleaved(r, target, rows.size(), frames, 2, [&](std::size_t c, int round) {
+      OrbitCamera moving = cam;
+      moving.orbit(0.5f * float(round), 0.0f);
+      TimedFrame f{moving.matrices(aspect), rows[c].settings};
+      setLight(r, f.camera);
+      return f;
+    }, failed);
+    if (failed) return 1;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      std::printf("| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.2f |\n", sc.name, rows[i].label.c_str(), i == 2 ? std::to_string(count).c_str() : "-",
+                  i == 2 ? std::to_string(int(seedMs)).c_str() : "-", t[i].medianMs, t[i].p95Ms, t[i].cpuMs, t[i].medianMs / t[0].medianMs);
+    std::fflush(stdout);
+  }
+
+  // Temporal stability: consecutive frames of a slow orbit and of a zoom out, pixels whose
+  // luminance changes by more than 0.08 (about a stroke's step from its neighbours) as a share
+  // of the covered ones. Strokes moving with the surface change pixels too; the underpainting
+  // alone is the yardstick, and strokes cut at their rank instead of faded show the popping.
+  std::printf("\n## Painterly strokes: pixels popping between consecutive frames (luminance change > 0.08)\n\n");
+  std::printf("| mesh | motion | smooth | + strokes (faded) | + strokes (cut) |\n|---|---|---|---|---|\n");
+  for (const Scene& sc : scenes) {
+    if (sc.mesh->triangleCount() > 500000) continue;  // the bunny and the teapot say it
+    r.setMesh(sc.mesh);
+    RenderSettings base;
+    base.path = RenderPath::Smooth;
+    base.match = MatchMode::Colors;
+    RenderSettings faded = base, cut = base;
+    faded.strokes.on = cut.strokes.on = true;
+    faded.strokes.density = cut.strokes.density = 1500.0f;
+    faded.strokes.length = cut.strokes.length = 26.0f;
+    faded.strokes.width = cut.strokes.width = 9.0f;
+    cut.strokes.fade = false;
+    for (const char* motion : {"orbit 0.25 deg/frame", "zoom out 1%/frame"}) {
+      double sums[3] = {0, 0, 0};
+      const RenderSettings* settings[3] = {&base, &faded, &cut};
+      for (int k = 0; k < 3; ++k) {
+        OrbitCamera cam(30.0f, 20.0f, 3.0f);
+        cam.frame(sc.mesh->radius);
+        ImageRGBA8 previous;
+        for (int f = 0; f <= 20; ++f) {
+          OrbitCamera moving = cam;
+          if (motion[0] == 'o') moving.orbit(0.25f * float(f), 0.0f);
+          else moving.setYawPitchDistance(30.0f, 20.0f, cam.distance() * std::pow(1.01f, float(f)) * 1.5f);
+          const ImageRGBA8 img = frame(r, target, moving.matrices(aspect), *settings[k]);
+          if (f > 0) sums[k] += changedShare(previous, img, wood->backgroundColour);
+          previous = img;
+        }
+      }
+      std::printf("| %s | %s | %.4f | %.4f | %.4f |\n", sc.name, motion, sums[0] / 20, sums[1] / 20, sums[2] / 20);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -202,13 +313,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--part") && i + 1 < argc) part = argv[++i];
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else {
-      std::fprintf(stderr, "usage: bench_styles [--size WxH] [--frames N] [--part lines|styles] [--mesh bunny|teapot|torus]\n");
+      std::fprintf(stderr, "usage: bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes] [--mesh bunny|teapot|torus]\n");
       return 2;
     }
   }
-  if (frames < 1 || w < 1 || h < 1 || (!part.empty() && part != "lines" && part != "styles") ||
+  if (frames < 1 || w < 1 || h < 1 || (!part.empty() && part != "lines" && part != "styles" && part != "strokes") ||
       (!meshFilter.empty() && meshFilter != "bunny" && meshFilter != "teapot" && meshFilter != "torus")) {
-    std::fprintf(stderr, "bench_styles: --frames and --size must be positive, --part lines or styles, --mesh bunny, teapot or torus\n");
+    std::fprintf(stderr, "bench_styles: --frames and --size must be positive, --part lines, styles or strokes, --mesh bunny, teapot or torus\n");
     return 2;
   }
   auto ctx = HeadlessContext::create(false);
@@ -231,5 +342,6 @@ int main(int argc, char** argv) {
   std::printf("GL: %s; %dx%d, %d frames per row\n\n", (*ctx)->description().c_str(), w, h, frames);
   if ((part.empty() || part == "lines") && lines(scenes, *target, frames, *crosshatch)) return 1;
   if ((part.empty() || part == "styles") && styles(scenes, *target, frames)) return 1;
+  if ((part.empty() || part == "strokes") && strokes(scenes, *target, frames)) return 1;
   return 0;
 }
