@@ -151,6 +151,24 @@ expect 1 "a bad style file" -- "$viewer" --headless --style "$tmp/bad.style"
 grep -q "bad.style line 2" "$tmp/err" || { echo "FAIL: the bad style's line is not named: $(cat "$tmp/err")"; fail=1; }
 expect 1 "a style that does not exist" -- "$viewer" --headless --style nosuchstyle
 
+# The seeds' styles: hardware outlines, the charcoal rim and tone, painterly strokes; bad
+# values are refused with the option named.
+expect 0 "--lines hardware" -- "$viewer" --headless --size 96x96 --light 1,3,1 --lines hardware --screenshot "$tmp/hardware.png"
+cmp -s "$tmp/plain.png" "$tmp/hardware.png" && { echo "FAIL: --lines hardware changes nothing"; fail=1; }
+expect 0 "--outline offset" -- "$viewer" --headless --size 96x96 --light 1,3,1 --lines hardware --outline offset --outline-offset 0.05 --screenshot "$tmp/offset.png"
+cmp -s "$tmp/hardware.png" "$tmp/offset.png" && { echo "FAIL: --outline offset draws as fatten"; fail=1; }
+expect 2 "unknown --outline" -- "$viewer" --headless --lines hardware --outline wobbly
+grep -q -- "--outline" "$tmp/err" || { echo "FAIL: --outline error: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--outline-offset out of range" -- "$viewer" --headless --outline-offset 0.9
+expect 0 "--tone charcoal --lines rim" -- "$viewer" --headless --size 96x96 --tone charcoal --lines rim --screenshot "$tmp/rim.png"
+expect 0 "--strokes" -- "$viewer" --headless --size 96x96 --light 1,3,1 --strokes --stroke-size 12x5 --stroke-density 800 --screenshot "$tmp/strokes.png"
+cmp -s "$tmp/plain.png" "$tmp/strokes.png" && { echo "FAIL: --strokes changes nothing"; fail=1; }
+expect 2 "bad --stroke-size" -- "$viewer" --headless --strokes --stroke-size 12
+grep -q -- "--stroke-size" "$tmp/err" || { echo "FAIL: --stroke-size error: $(cat "$tmp/err")"; fail=1; }
+expect 2 "bad --stroke-density" -- "$viewer" --headless --strokes --stroke-density 0
+expect 2 "bad --stroke-budget" -- "$viewer" --headless --strokes --stroke-budget -1
+expect 0 "--style painterly" -- "$viewer" --headless --size 96x96 --style painterly --screenshot "$tmp/painterly.png"
+
 # The first run on a machine without a display (.ci/setup run): files it names, exit 0.
 (unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
   || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }
