@@ -75,7 +75,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
-  app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat)");
+  app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat) | object (glued to the surface, triplanar)");
   app.add_flag("--pattern-no-rotation", o.patternNoRotation, "Anchored patterns move and scale with the object but stay upright");
   app.add_option("--pattern-scale", o.patternScale,
                  "Size of a palette texel in screen pixels, 0.125..16 (default: the window's content scale, 1 headless)");
@@ -155,7 +155,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   }
   if (!pattern.empty()) {
     o.pattern = parsePatternSpace(pattern);
-    if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen or anchored")};
+    if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen, anchored or object")};
   }
   if (o.patternScale && !(*o.patternScale >= RenderSettings::kMinPatternScale && *o.patternScale <= RenderSettings::kMaxPatternScale))
     return {std::nullopt, fail("--pattern-scale must be in 0.125..16 (texel size in pixels), got " + std::to_string(*o.patternScale))};

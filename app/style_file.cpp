@@ -140,7 +140,7 @@ Result<Style> loadStyle(const std::string& path) {
       anyLine = true;
       lines.outlineOffset = *v;
     } else if (key == "pattern") {
-      if (!(st.pattern = parsePatternSpace(arg))) return bad("must be screen or anchored");
+      if (!(st.pattern = parsePatternSpace(arg))) return bad("must be screen, anchored or object");
     } else if (key == "pattern-scale") {
       const auto v = number(arg);
       if (!v || *v < RenderSettings::kMinPatternScale || *v > RenderSettings::kMaxPatternScale) return bad("must be in 0.125..16");

@@ -10,7 +10,7 @@
 //   tone opengl|gooch|splashback|charcoal      bands T1,T2,...
 //   lines none|silhouette,crease,boundary,image,hardware,rim   line-width PX   crease-angle DEG
 //   outline fatten|offset|edges   outline-offset K
-//   sketchy on|off           pattern screen|anchored   pattern-scale S   pattern-filter nearest|linear
+//   sketchy on|off           pattern screen|anchored|object   pattern-scale S   pattern-filter nearest|linear
 //   orient none|curvature|light|DEGREES
 //   strokes on|off   stroke-density D   stroke-size LxW
 #pragma once

@@ -47,13 +47,17 @@ struct LineSettings {
   bool any() const { return objectSpace() || imageSpace || hardware || rim; }
 };
 
-// Where the palette's pattern lives: fixed to the screen (the original), or anchored to the
-// object's motion while staying flat (patterns/pattern_tracker.h).
-enum class PatternSpace { Screen, Anchored };
-inline const char* patternSpaceName(PatternSpace p) { return p == PatternSpace::Anchored ? "anchored" : "screen"; }
+// Where the palette's pattern lives: fixed to the screen (the original), anchored to the
+// object's motion while staying flat (patterns/pattern_tracker.h), or glued to the surface in
+// object space (triplanar, octaves by screen scale: shaders/pattern.glsl).
+enum class PatternSpace { Screen, Anchored, Object };
+inline const char* patternSpaceName(PatternSpace p) {
+  return p == PatternSpace::Anchored ? "anchored" : p == PatternSpace::Object ? "object" : "screen";
+}
 inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
   if (s == "screen") return PatternSpace::Screen;
   if (s == "anchored") return PatternSpace::Anchored;
+  if (s == "object") return PatternSpace::Object;
   return std::nullopt;
 }
 

@@ -11,7 +11,7 @@
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/marker_pass.h"
-#include "renderer/passes/stroke_angle_pass.h"
+#include "renderer/passes/surface_buffer_pass.h"
 #include "renderer/paths/render_pass.h"
 
 namespace npr {
@@ -134,8 +134,11 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     frame = patterns_.frame();
   }
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
+  // Object units one pixel spans at eye depth 1 (the mesh's units are the eye's).
+  const float pixelSize = 2.0f / (std::max(std::abs(camera.projection[1][1]), 1e-6f) * float(std::max(viewport.w, 1)));
   auto place = [&](GpuPalette& p) {
     p.setPatternFrame(frame, scale, s.patternLinearFilter);
+    p.setObjectPattern(s.pattern == PatternSpace::Object, pixelSize);
     p.setFrameOffset(glm::vec2(frameOffset_));
   };
   if (palette_) place(*palette_);

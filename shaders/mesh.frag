@@ -76,6 +76,8 @@ void main() {
 #endif
 #if defined(PATH_STROKE_ANGLE)
   fragColor = vec4(strokeAngle, strokeValid ? 1.0 : 0.0, 0.0, 1.0);
+#elif defined(PATH_PATTERN_COORDINATE)
+  fragColor = vec4(mappedCoordinate(), 1.0);
 #elif defined(PATH_MASK)
   fragColor = vec4(0.0);
 #elif defined(PATH_EYE_POSITION)

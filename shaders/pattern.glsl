@@ -1,5 +1,5 @@
 // Where a pixel reads the palette when the pattern is mapped (palette.glsl and the stencil
-// path's layer quad): PATTERN_ANCHORED, the anchored pattern's frame that follows the object,
+// path's layer quad): PATTERN_OBJECT, the surface's own position (below); PATTERN_ANCHORED, the anchored pattern's frame that follows the object,
 // with two octaves cross-faded so marks keep their size on screen under zoom; PATTERN_SCALED,
 // a fixed pattern scale (texels of S pixels). uPatternMatrix maps window pixels (relative to
 // uPatternOrigin) to pattern texels of the coarser octave, whose marks are S 2^uPatternOctave
@@ -10,7 +10,7 @@
 #ifndef PATTERN_GLSL
 #define PATTERN_GLSL
 
-#if defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED)
+#if defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED) || defined(PATTERN_OBJECT)
 #define PATTERN_MAPPED
 #endif
 
@@ -50,6 +50,46 @@ uint patternHash(ivec2 p) {
   return h ^ (h >> 15);
 }
 
+#ifdef PATTERN_OBJECT
+// PATTERN_OBJECT: the pattern glued to the surface without texture coordinates. Triplanar: the
+// object-space position projected along the axis the normal is nearest; where another axis is
+// within 0.15 of it, the projections are dissolved by their share of that margin (a threshold
+// hashed from the surface point's cell of 8 fine texels, so each patch shows one projection's
+// marks at full contrast and the choice stays on the surface; a weighted average would wash
+// the hatching out where axes meet, as it does between two octaves). Octaves by
+// the screen scale (Bénard et al. 2009): from each pixel's depth, the power of two of texels
+// per object unit whose texels are 1 to 2 pattern-scale pixels wide on screen, and the next one
+// up read one mip level down, dissolved by where the depth falls in the octave (as anchored).
+// The stencil path's quads read the result from a buffer its mask pass drew
+// (PATTERN_OBJECT_BUFFER).
+#ifdef PATTERN_OBJECT_BUFFER
+uniform sampler2D uPatternCoordinates;  // (u, v, level) per pixel of the viewport
+uniform ivec2 uViewportOrigin;
+vec3 mappedCoordinate() { return texelFetch(uPatternCoordinates, ivec2(gl_FragCoord.xy) - uViewportOrigin, 0).xyz; }
+#else
+in vec3 vObjectPosition;
+in vec3 vObjectNormal;
+in float vEyeDepth;
+uniform float uPixelSize;     // object units per pixel at eye depth 1
+uniform float uPatternScale;  // pixels per texel
+vec3 mappedCoordinate() {
+  // Only axes within 0.15 of the nearest share: elsewhere one projection, unbroken.
+  vec3 n = abs(vObjectNormal) / max(length(vObjectNormal), 1e-20);
+  vec3 w = max(n - vec3(max(n.x, max(n.y, n.z)) - 0.15), 0.0);
+  w /= max(w.x + w.y + w.z, 1e-20);
+  float g = -log2(max(vEyeDepth * uPixelSize * uPatternScale, 1e-30));
+  float octave = floor(g);
+  float texels = exp2(octave);  // coarse texels per object unit
+  vec3 p = vObjectPosition;
+  // Dissolved in blocks of 8 fine texels: a stroke is broken at most every few pixels.
+  ivec3 cell = ivec3(floor(p * (2.0 * texels / 8.0)));
+  uint h = patternHash(cell.xy ^ ivec2(cell.z * 7919, cell.z * 104729));
+  float pick = float(h >> 16) / 65536.0, fade = (float(h & 0xffffu) + 0.5) / 65536.0;
+  vec2 q = pick < w.x ? p.yz : (pick < w.x + w.y ? p.zx : p.xy);
+  return g - octave > fade ? vec3(q * (2.0 * texels), uPatternLod.y) : vec3(q * texels, uPatternLod.x);
+}
+#endif
+#else
 // This pixel's palette coordinate: (texel at level 0 of the octave it shows, mip level).
 vec3 mappedCoordinate() {
   vec2 u = patternCoordinate();
@@ -60,6 +100,7 @@ vec3 mappedCoordinate() {
   return vec3(u, uPatternLod.x);
 #endif
 }
+#endif
 
 // A layer's colour at a mapped coordinate: by default the nearest texel of the level (one
 // fetch, as at scale 1). PATTERN_FILTERED (--pattern-filter linear, layers of one size) filters

@@ -41,7 +41,9 @@ uniform float uLayerAngle;  // the layer's stroke direction (radians; < -10: non
 uniform float uFrameTurn;
 #ifdef ORIENT_BUFFER
 uniform sampler2D uStrokeAngles;  // (angle, valid) per pixel of the viewport
-uniform ivec2 uViewportOrigin;
+#ifndef PATTERN_OBJECT_BUFFER
+uniform ivec2 uViewportOrigin;  // (declared by pattern.glsl for its own buffer)
+#endif
 #else
 uniform float uOrientFixed;
 #endif

@@ -79,7 +79,7 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
   }
   int pattern = static_cast<int>(s.settings.pattern);
-  if (ImGui::Combo("pattern (T)", &pattern, "screen\0anchored\0")) {
+  if (ImGui::Combo("pattern (T)", &pattern, "screen\0anchored\0object\0")) {
     s.settings.pattern = static_cast<PatternSpace>(pattern);
     v.renderer->resetPattern();
   }

@@ -59,7 +59,9 @@ void applyAction(Viewer& v, const KeyAction& a) {
     case Action::ToggleSplit: s.splitView = !s.splitView; break;
     case Action::FrameModel: s.camera.frame(s.mesh ? s.mesh->radius : 1.0f); r.resetPattern(); break;
     case Action::CyclePattern:
-      s.settings.pattern = s.settings.pattern == PatternSpace::Screen ? PatternSpace::Anchored : PatternSpace::Screen;
+      s.settings.pattern = s.settings.pattern == PatternSpace::Screen     ? PatternSpace::Anchored
+                           : s.settings.pattern == PatternSpace::Anchored ? PatternSpace::Object
+                                                                          : PatternSpace::Screen;
       r.resetPattern();
       break;
     case Action::ResetView: s.camera.reset(); r.resetPattern(); break;

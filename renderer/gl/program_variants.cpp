@@ -7,7 +7,9 @@
 namespace npr::gl {
 namespace {
 
-const char* patternDefine(PatternMapping m) { return m == PatternMapping::Anchored ? "PATTERN_ANCHORED" : "PATTERN_SCALED"; }
+const char* patternDefine(PatternMapping m) {
+  return m == PatternMapping::Anchored ? "PATTERN_ANCHORED" : m == PatternMapping::Object ? "PATTERN_OBJECT" : "PATTERN_SCALED";
+}
 
 std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   std::vector<std::string> d;
@@ -40,6 +42,7 @@ std::vector<std::string> shadingDefines(MeshShading s) {
     case MeshShading::EyePosition: return {"PATH_EYE_POSITION"};
     case MeshShading::EyeNormal: return {"PATH_EYE_NORMAL"};
     case MeshShading::StrokeAngle: return {"PATH_STROKE_ANGLE"};
+    case MeshShading::PatternCoordinate: return {"PATH_PATTERN_COORDINATE"};
   }
   return {};
 }
@@ -70,6 +73,9 @@ struct SourceOf {
     s.defines.push_back(q.kind == QuadProgram::Kind::Background ? "QUAD_BACKGROUND" : "QUAD_LAYER");
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
     if (q.pattern != PatternMapping::Screen) s.defines.push_back(patternDefine(q.pattern));
+    // Full-screen quads know nothing of the surface: they read the object-space pattern's
+    // coordinates from the buffer the stencil path drew.
+    if (q.pattern == PatternMapping::Object) s.defines.push_back("PATTERN_OBJECT_BUFFER");
     if (q.layerSizesDiffer) s.defines.push_back("LAYER_SIZES_DIFFER");
     if (q.filtered) s.defines.push_back("PATTERN_FILTERED");
     if (q.orientBins > 0) {

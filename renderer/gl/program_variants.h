@@ -18,8 +18,9 @@
 namespace npr::gl {
 
 // How pixels reach palette texels (pattern.glsl): one texel per pixel from the window's corner,
-// through a fixed scale (--pattern-scale), or through the anchored pattern's frame.
-enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored };
+// through a fixed scale (--pattern-scale), through the anchored pattern's frame, or from the
+// surface's object-space position (triplanar; full-screen quads read it from a buffer).
+enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored, Object };
 
 // What palette.glsl is compiled for: the palette's layout and the match mode.
 struct PaletteVariant {
@@ -47,6 +48,7 @@ enum class MeshShading : std::uint8_t {
   EyePosition,  // interpolated eye-space position (alpha -1 on back faces)
   EyeNormal,    // interpolated eye-space normal
   StrokeAngle,  // the hatching angle on screen and whether there is one (the stencil path's buffer)
+  PatternCoordinate,  // the object-space pattern's coordinate and level per pixel (the stencil path's buffer)
 };
 // Where a mesh pass takes each pixel's hatching angle from (orientation.glsl).
 enum class StrokeSource : std::uint8_t { None, Field, Light, Fixed };

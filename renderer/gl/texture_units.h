@@ -18,6 +18,7 @@ enum class TextureUnit : GLint {
   MaterialTable,   // the mesh's materials (GL_TEXTURE_BUFFER)
   MaterialMaps,    // their diffuse maps (GL_TEXTURE_2D_ARRAY)
   StrokeAngles,    // the stencil path's per-pixel hatching angles
+  PatternCoordinates,  // the stencil path's per-pixel object-space pattern coordinates
   ShadowMaps,      // every light's shadow maps (GL_TEXTURE_2D_ARRAY, depth compare)
   Brush,           // painterly strokes' brush coverage
 };

@@ -197,6 +197,7 @@ void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
 }
 
 gl::PatternMapping GpuPalette::patternMapping() const {
+  if (objectPattern_) return gl::PatternMapping::Object;
   if (pattern_) return gl::PatternMapping::Anchored;
   return patternScale_ != 1.0f ? gl::PatternMapping::Scaled : gl::PatternMapping::Screen;
 }
@@ -220,6 +221,13 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   prog.set("uPatternOrigin", frame.translation);
   prog.set("uPatternOctave", octave);
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
+  if (objectPattern_) {
+    // Octaves are chosen per pixel from its depth (pattern.glsl); the coarse one's texels are
+    // 1 to 2 pattern-scale pixels wide, the fine one's read one level down.
+    prog.set("uPixelSize", pixelSize_);
+    prog.set("uPatternScale", patternScale_);
+    prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / patternScale_)), float(lodFor(2.0f / patternScale_))));
+  }
 }
 
 void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {

@@ -50,6 +50,12 @@ class GpuPalette {
     linearFilter_ = linearFilter;
   }
   bool anchored() const { return pattern_.has_value(); }
+  // The object-space pattern (--pattern object) for the frames drawn next, or not; `pixelSize`
+  // is the object units one pixel spans at eye depth 1 (2 / (projection[1][1] x height)).
+  void setObjectPattern(bool on, float pixelSize) {
+    objectPattern_ = on;
+    pixelSize_ = pixelSize;
+  }
   // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
   // continue across tiles.
   void setFrameOffset(const glm::vec2& offset) { frameOffset_ = offset; }
@@ -76,6 +82,14 @@ class GpuPalette {
   float entryAngle(int entry) const { return entryAngles_[static_cast<size_t>(entry)]; }
 
   gl::PaletteVariant variant(MatchMode mode) const;
+  // For programs that only match (read no texels of the layers): no mapping, filter or turns.
+  gl::PaletteVariant matchingVariant(MatchMode mode) const {
+    gl::PaletteVariant v = variant(mode);
+    v.pattern = gl::PatternMapping::Screen;
+    v.filtered = false;
+    v.orientBins = 0;
+    return v;
+  }
   // The stroke source's uniforms (orientation.glsl): fixed angle, light, viewport size.
   void bindStrokeSource(gl::ShaderProgram& program) const;
   // The turned lookups' uniforms (steps, the frame's turn), for palette.glsl and layer quads.
@@ -114,6 +128,8 @@ class GpuPalette {
   std::optional<PatternFrame> pattern_;
   float patternScale_ = 1.0f;
   bool linearFilter_ = false;
+  bool objectPattern_ = false;
+  float pixelSize_ = 1.0f;
   glm::vec2 frameOffset_{0.0f};
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;

@@ -25,6 +25,9 @@ Status StencilPath::draw(FrameContext& f) {
   if (!layerQuad) return Error{layerQuad.error()};
   if (angleBuffer)
     if (Status st = strokeAngles_.draw(f); !st) return st;
+  const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
+  if (objectPattern)
+    if (Status st = patternCoordinates_.draw(f); !st) return st;
 
   (*mask)->use();
   setMeshTransform(**mask, f.camera);
@@ -33,6 +36,7 @@ Status StencilPath::draw(FrameContext& f) {
   (*layerQuad)->use();
   f.palette->bindLayers(**layerQuad);
   f.palette->bindPattern(**layerQuad);
+  if (objectPattern) patternCoordinates_.bind(**layerQuad, f.viewport);
   if (stroke != gl::StrokeSource::None) {
     f.palette->bindOrientation(**layerQuad);
     if (angleBuffer) strokeAngles_.bind(**layerQuad, f.viewport);

@@ -5,7 +5,8 @@
 // where marked, clearing the mark. Two savings over the original, each a setting: quads
 // scissored to the bucket's screen rectangle, and empty buckets skipped. With hatching
 // orientation the layer quads turn their lookups per pixel, by angles drawn first into a
-// buffer (passes/stroke_angle_pass.h) unless the angle is fixed.
+// buffer (passes/surface_buffer_pass.h) unless the angle is fixed; with the object-space
+// pattern they read its coordinates from another such buffer.
 //
 // Selection outputs (tests, the benchmark) come from the triangle path: the stencil path has
 // no per-pixel program that could write an entry, and its entries are the triangle path's by
@@ -13,7 +14,7 @@
 #pragma once
 
 #include "renderer/paths/render_pass.h"
-#include "renderer/passes/stroke_angle_pass.h"
+#include "renderer/passes/surface_buffer_pass.h"
 #include "renderer/paths/triangle_path.h"
 
 namespace npr {
@@ -24,7 +25,8 @@ class StencilPath : public RenderPass {
 
  private:
   TrianglePath selection_;
-  StrokeAnglePass strokeAngles_;
+  SurfaceBufferPass strokeAngles_{SurfaceBufferPass::Content::StrokeAngles};
+  SurfaceBufferPass patternCoordinates_{SurfaceBufferPass::Content::PatternCoordinates};
 };
 
 }  // namespace npr

@@ -78,8 +78,7 @@ Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::Progr
 
   gl::TriangleLightProgram variant;
   variant.lighting = in.lighting.features();
-  variant.palette = in.palette.variant(in.match);
-  variant.palette.orientBins = 0;
+  variant.palette = in.palette.matchingVariant(in.match);
   variant.shadowLayers = in.shadows ? in.shadows->layers() : 0;
   variant.occlusion = occluded;
   Result<gl::ShaderProgram*> prog = programs.get(variant, stats.shaderBuilds);

@@ -98,8 +98,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   }
   if (count_ == 0) return okStatus();
 
-  gl::PaletteVariant pv = palette.variant(match);
-  pv.orientBins = 0;
+  const gl::PaletteVariant pv = palette.matchingVariant(match);
   Result<gl::ShaderProgram*> prog = programs.get(gl::StrokeProgram{lighting.features(), pv}, stats.shaderBuilds);
   if (!prog) return Error{prog.error()};
   gl::ShaderProgram& p = **prog;

@@ -50,6 +50,7 @@ struct PathRow {
   bool skipEmpty = true, scissor = true;  // the stencil path's two savings
   bool materials = false;                 // the mesh's own materials (--materials)
   bool anchored = false;                  // the anchored pattern space (--patterns)
+  bool object = false;                    // the object pattern space (--patterns)
   float patternScale = 1.0f;              // texel size in pixels (--pattern-scale S)
   bool linear = false;                    // mapped lookups filtered (--pattern-linear)
   bool oriented = false;                  // strokes along the curvature (--orient)
@@ -88,7 +89,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
                            "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
-                           "the anchored pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
+                           "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing; --gpu-triangles adds the per-triangle paths lit on the GPU)\n");
@@ -169,6 +170,10 @@ int main(int argc, char** argv) {
           on.linear = true;
           paths.push_back(on);
         }
+        PathRow glued = p;
+        glued.label += "+object";
+        glued.object = true;
+        paths.push_back(glued);
       }
       for (float scale : scales)
         if (pathInfo(p.path).usesPalette) {
@@ -232,7 +237,7 @@ int main(int argc, char** argv) {
         s.stencilScissor = paths[p].scissor;
         s.stencilSkipEmpty = paths[p].skipEmpty;
         s.materials = paths[p].materials;
-        s.pattern = paths[p].anchored ? PatternSpace::Anchored : PatternSpace::Screen;
+        s.pattern = paths[p].anchored ? PatternSpace::Anchored : paths[p].object ? PatternSpace::Object : PatternSpace::Screen;
         s.patternScale = paths[p].patternScale;
         s.patternLinearFilter = paths[p].linear;
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;

@@ -38,10 +38,52 @@ float luminance(const std::uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1]
 
 struct Run {
   double slide = 0.0;   // mean over frames of the mean over covered pixels
+  double anisotropy = 1.0, scaleSpread = 1.0;  // flatness on screen, first frame (object space)
   std::vector<float> meanTone, contrast;
   double fitMs = 0.0;
   int samples = 0;
 };
+
+// How far from flat the object-space pattern is on screen: per pixel, the Jacobian of its
+// texel coordinate (the projection along the normal's nearest axis, the pixel's octave) by
+// neighbouring pixels of one surface; its singular values' ratio (anisotropy: 1 for a pattern
+// flat to the screen) and the spread of their geometric mean (p90 / p10: 1 for one scale).
+// From the geometry, not the shader; the dissolves between axes and octaves are left out.
+void objectFlatness(const ImageRGBA32F& eye, const ImageRGBA32F& normal, const CameraMatrices& m, int w, int h, Run& out) {
+  const glm::mat4 toObject = glm::inverse(m.view);
+  const float pixelSize = 2.0f / (m.projection[1][1] * float(h));
+  auto at = [&](int x, int y) { return (std::size_t(y) * std::size_t(w) + std::size_t(x)) * 4; };
+  std::vector<double> anis, scales;
+  for (int y = 0; y + 1 < h; y += 2)
+    for (int x = 0; x + 1 < w; x += 2) {
+      const std::size_t i = at(x, y), r = at(x + 1, y), d = at(x, y + 1);
+      if (eye.pixels[i + 3] <= 0.0f || eye.pixels[r + 3] <= 0.0f || eye.pixels[d + 3] <= 0.0f) continue;
+      const glm::vec3 e(eye.pixels[i], eye.pixels[i + 1], eye.pixels[i + 2]);
+      const glm::vec3 er(eye.pixels[r], eye.pixels[r + 1], eye.pixels[r + 2]), ed(eye.pixels[d], eye.pixels[d + 1], eye.pixels[d + 2]);
+      const float depth = -e.z;
+      if (std::fabs(er.z - e.z) > 0.01f * depth || std::fabs(ed.z - e.z) > 0.01f * depth) continue;  // an edge between surfaces
+      const glm::vec3 n = glm::abs(glm::mat3(toObject) * glm::vec3(normal.pixels[i], normal.pixels[i + 1], normal.pixels[i + 2]));
+      const int axis = n.x >= n.y && n.x >= n.z ? 0 : (n.y >= n.z ? 1 : 2);
+      auto plane = [&](const glm::vec3& eyePoint) {
+        const glm::vec3 p = glm::vec3(toObject * glm::vec4(eyePoint, 1.0f));
+        return axis == 0 ? glm::vec2(p.y, p.z) : axis == 1 ? glm::vec2(p.z, p.x) : glm::vec2(p.x, p.y);
+      };
+      const float texels = std::exp2(std::floor(-std::log2(depth * pixelSize)));
+      const glm::vec2 dx = (plane(er) - plane(e)) * texels, dy = (plane(ed) - plane(e)) * texels;
+      // Singular values of [dx dy] from the eigenvalues of its Gram matrix.
+      const double a = glm::dot(dx, dx), b = glm::dot(dx, dy), c = glm::dot(dy, dy);
+      const double mid = 0.5 * (a + c), root = std::sqrt(std::max(0.0, 0.25 * (a - c) * (a - c) + b * b));
+      const double s1 = std::sqrt(std::max(0.0, mid + root)), s2 = std::sqrt(std::max(0.0, mid - root));
+      if (!(s1 > 0.0)) continue;
+      anis.push_back(std::min(100.0, s1 / std::max(s2, 1e-9)));
+      scales.push_back(std::sqrt(s1 * std::max(s2, 1e-9)));
+    }
+  if (anis.empty()) return;
+  std::sort(anis.begin(), anis.end());
+  std::sort(scales.begin(), scales.end());
+  out.anisotropy = anis[anis.size() / 2];
+  out.scaleSpread = scales[scales.size() * 9 / 10] / std::max(scales[scales.size() / 10], 1e-9);
+}
 
 Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Script& sc, PatternSpace space, int frames, int w, int h) {
   Run out;
@@ -77,6 +119,11 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!r.renderGeometry(m, GeometryOutput::EyePosition, {0, 0, w, h})) std::abort();
     const ImageRGBA32F geo = ftarget->readRGBA32F();
+    if (space == PatternSpace::Object && f == 0) {
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      if (!r.renderGeometry(m, GeometryOutput::EyeNormal, {0, 0, w, h})) std::abort();
+      objectFlatness(geo, ftarget->readRGBA32F(), m, w, h, out);
+    }
     // Tone and contrast over the model.
     double sum = 0.0, sum2 = 0.0;
     int covered = 0;
@@ -142,21 +189,27 @@ int main(int argc, char** argv) {
                             {"zoom 8x", 0.0f, {}, std::pow(8.0f, 1.0f / float(frames))}};
   std::printf("GL: %s; %dx%d, %d frames per script, pixel path, crosshatch (one step = %.3f luminance)\n\n",
               (*ctx)->description().c_str(), w, h, frames, step);
-  std::printf("| mesh | script | pattern | slide px/frame | tone vs screen, worst (steps) | contrast first -> last | fit ms | samples |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | script | pattern | slide px/frame | tone vs screen, worst (steps) | contrast first -> last | fit ms | samples | anisotropy / scale spread |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& scene : scenes) {
     r.setMesh(scene.mesh);
     for (const Script& sc : scripts) {
       const Run screen = runScript(r, *target, *scene.mesh, sc, PatternSpace::Screen, frames, w, h);
       const Run anchored = runScript(r, *target, *scene.mesh, sc, PatternSpace::Anchored, frames, w, h);
-      for (const Run* run : {&screen, &anchored}) {
+      const Run object = runScript(r, *target, *scene.mesh, sc, PatternSpace::Object, frames, w, h);
+      for (const Run* run : {&screen, &anchored, &object}) {
         float worst = 0.0f;
         for (std::size_t f = 0; f < run->meanTone.size() && f < screen.meanTone.size(); ++f)
           worst = std::max(worst, std::fabs(run->meanTone[f] - screen.meanTone[f]) / step);
-        std::printf("| %s | %s | %s | %.3f | %.2f | %.3f -> %.3f | %s | %s |\n", scene.name, sc.name,
-                    run == &screen ? "screen" : "anchored", run->slide, worst, run->contrast.front(), run->contrast.back(),
-                    run == &screen ? "-" : std::to_string(run->fitMs).substr(0, 5).c_str(),
-                    run == &screen ? "-" : std::to_string(run->samples).c_str());
+        // The object-space pattern is a function of the surface point: it does not slide (its
+        // octave and axis dissolves change which marks show, not where they sit).
+        const std::string slide = run == &object ? "0 (glued)" : std::to_string(run->slide).substr(0, 5);
+        char flat[48];
+        std::snprintf(flat, sizeof flat, "%.2f / %.2f", run->anisotropy, run->scaleSpread);
+        std::printf("| %s | %s | %s | %s | %.2f | %.3f -> %.3f | %s | %s | %s |\n", scene.name, sc.name,
+                    run == &screen ? "screen" : run == &anchored ? "anchored" : "object", slide.c_str(), worst, run->contrast.front(),
+                    run->contrast.back(), run != &anchored ? "-" : std::to_string(run->fitMs).substr(0, 5).c_str(),
+                    run != &anchored ? "-" : std::to_string(run->samples).c_str(), flat);
       }
       std::fflush(stdout);
     }

@@ -1,0 +1,64 @@
+// The stencil path's per-pixel buffers (see surface_buffer_pass.h).
+#include "renderer/passes/surface_buffer_pass.h"
+
+#include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_units.h"
+
+namespace npr {
+namespace {
+
+Status drawMesh(FrameContext& f, const gl::MeshProgram& variant, bool pattern) {
+  Result<gl::ShaderProgram*> prog = f.program(variant);
+  if (!prog) return Error{prog.error()};
+  gl::apply(gl::pass::kMesh);
+  (*prog)->use();
+  setMeshTransform(**prog, f.camera);
+  if (pattern) f.palette->bindPattern(**prog);
+  else f.palette->bindStrokeSource(**prog);
+  f.gpuMesh.drawAll();
+  ++f.stats.drawCalls;
+  return okStatus();
+}
+
+}  // namespace
+
+Status drawStrokeAngles(FrameContext& f) {
+  gl::MeshProgram variant;
+  variant.shading = gl::MeshShading::StrokeAngle;
+  variant.stroke = f.strokeSource();
+  return drawMesh(f, variant, false);
+}
+
+Status SurfaceBufferPass::draw(FrameContext& f) {
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const glm::ivec4& vp = f.viewport;
+  const bool angles = content_ == Content::StrokeAngles;
+  // Pattern coordinates grow with zoom (texels per object unit): full floats.
+  if (target_.resize({vp.z, vp.w}, angles ? GL_RG16F : GL_RGBA32F, angles ? GL_RG : GL_RGBA)) ++f.stats.bufferUploads;
+  target_.bindAndClear();
+  Status st = okStatus();
+  if (angles) {
+    st = drawStrokeAngles(f);
+  } else {
+    gl::MeshProgram variant;
+    variant.shading = gl::MeshShading::PatternCoordinate;
+    variant.palette = f.palette->variant(f.settings.match);
+    variant.palette->orientBins = 0;
+    variant.palette->filtered = false;
+    st = drawMesh(f, variant, true);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+  glViewport(vp.x, vp.y, vp.z, vp.w);
+  return st;
+}
+
+void SurfaceBufferPass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {
+  const bool angles = content_ == Content::StrokeAngles;
+  const gl::TextureUnit unit = angles ? gl::TextureUnit::StrokeAngles : gl::TextureUnit::PatternCoordinates;
+  gl::bindTexture(unit, GL_TEXTURE_2D, target_.colour());
+  p.set(angles ? "uStrokeAngles" : "uPatternCoordinates", gl::unitIndex(unit));
+  p.set("uViewportOrigin", glm::ivec2(viewport.x, viewport.y));
+}
+
+}  // namespace npr

@@ -1,0 +1,36 @@
+// The stencil path's per-pixel buffers: its layer quads cover the screen and know nothing of
+// the surface under a pixel, so what they need of it is drawn first, the mesh once more into a
+// texture of the viewport's size: each pixel's stroke angle on screen and whether it has one
+// (hatching orientation along the curvature or the light), or its object-space pattern
+// coordinate and mip level (--pattern object): what the shaded paths compute in place. One
+// extra geometry pass each, with its own depth buffer, drawn only when a frame needs it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/result.h"
+#include "renderer/gl/texture_target.h"
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+
+// Draws each pixel's (stroke angle in radians, 1 where it has one) of `f`'s mesh into the
+// bound framebuffer (a float target): the buffer's contents, and a test output.
+[[nodiscard]] Status drawStrokeAngles(FrameContext& f);
+
+class SurfaceBufferPass {
+ public:
+  enum class Content { StrokeAngles, PatternCoordinates };
+  explicit SurfaceBufferPass(Content content) : content_(content) {}
+  // Draws the buffer for `f`'s mesh (its palette says where angles and patterns come from)
+  // and leaves the bound framebuffer and viewport as they were.
+  [[nodiscard]] Status draw(FrameContext& f);
+  // Binds the buffer for a layer quad compiled with ORIENT_BUFFER or PATTERN_OBJECT_BUFFER.
+  void bind(gl::ShaderProgram& program, const glm::ivec4& viewport) const;
+
+ private:
+  Content content_;
+  gl::TextureTarget target_;
+};
+
+}  // namespace npr
