@@ -136,9 +136,10 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
   // Object units one pixel spans at eye depth 1 (the mesh's units are the eye's).
   const float pixelSize = 2.0f / (std::max(std::abs(camera.projection[1][1]), 1e-6f) * float(std::max(viewport.w, 1)));
+  const glm::mat4 eyeToObject = glm::inverse(camera.view);
   auto place = [&](GpuPalette& p) {
     p.setPatternFrame(frame, scale, s.patternLinearFilter);
-    p.setObjectPattern(s.pattern == PatternSpace::Object, pixelSize);
+    p.setObjectPattern(s.pattern == PatternSpace::Object, pixelSize, eyeToObject);
     p.setFrameOffset(glm::vec2(frameOffset_));
   };
   if (palette_) place(*palette_);

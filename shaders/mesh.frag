@@ -15,6 +15,9 @@
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 
+in vec3 vPosition;  // eye space (the object-space pattern reads them too: pattern.glsl)
+in vec3 vNormal;
+
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
 #endif
@@ -28,8 +31,6 @@
 #include "orientation.glsl"
 #endif
 
-in vec3 vPosition;
-in vec3 vNormal;
 #if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
 in vec2 vStrokeDirection;
 #endif

@@ -16,11 +16,6 @@ invariant gl_Position;
 
 out vec3 vPosition;  // eye space
 out vec3 vNormal;    // eye space, not normalised
-#if defined(PATTERN_OBJECT) && !defined(PATTERN_OBJECT_BUFFER)
-out vec3 vObjectPosition;  // the object-space pattern's inputs (pattern.glsl)
-out vec3 vObjectNormal;
-out float vEyeDepth;
-#endif
 
 #ifdef MATERIALS
 #include "material.glsl"
@@ -62,11 +57,6 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
-#if defined(PATTERN_OBJECT) && !defined(PATTERN_OBJECT_BUFFER)
-  vObjectPosition = aPosition;
-  vObjectNormal = aNormal;
-  vEyeDepth = -eye.z;
-#endif
 #if defined(ORIENT_FIELD)
   // a tangent turns with the modelview, not the normal matrix
   vStrokeDirection = screenDirection(uProjection, eye.xyz, mat3(uModelView) * aDirection);

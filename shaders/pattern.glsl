@@ -67,20 +67,21 @@ uniform sampler2D uPatternCoordinates;  // (u, v, level) per pixel of the viewpo
 uniform ivec2 uViewportOrigin;
 vec3 mappedCoordinate() { return texelFetch(uPatternCoordinates, ivec2(gl_FragCoord.xy) - uViewportOrigin, 0).xyz; }
 #else
-in vec3 vObjectPosition;
-in vec3 vObjectNormal;
-in float vEyeDepth;
+// From the eye-space position and normal every mesh pass interpolates (mesh.frag declares
+// them): no varyings of its own, which on the 871K mesh cost vertex work.
+uniform mat4 uEyeToObject;    // the view's inverse: rigid, so object units are eye units
 uniform float uPixelSize;     // object units per pixel at eye depth 1
 uniform float uPatternScale;  // pixels per texel
 vec3 mappedCoordinate() {
   // Only axes within 0.15 of the nearest share: elsewhere one projection, unbroken.
-  vec3 n = abs(vObjectNormal) / max(length(vObjectNormal), 1e-20);
+  vec3 n = abs(mat3(uEyeToObject) * vNormal);
+  n /= max(length(n), 1e-20);
   vec3 w = max(n - vec3(max(n.x, max(n.y, n.z)) - 0.15), 0.0);
   w /= max(w.x + w.y + w.z, 1e-20);
-  float g = -log2(max(vEyeDepth * uPixelSize * uPatternScale, 1e-30));
+  float g = -log2(max(-vPosition.z * uPixelSize * uPatternScale, 1e-30));
   float octave = floor(g);
   float texels = exp2(octave);  // coarse texels per object unit
-  vec3 p = vObjectPosition;
+  vec3 p = (uEyeToObject * vec4(vPosition, 1.0)).xyz;
   // Dissolved in blocks of 8 fine texels: a stroke is broken at most every few pixels.
   ivec3 cell = ivec3(floor(p * (2.0 * texels / 8.0)));
   uint h = patternHash(cell.xy ^ ivec2(cell.z * 7919, cell.z * 104729));

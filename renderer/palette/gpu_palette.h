@@ -51,10 +51,12 @@ class GpuPalette {
   }
   bool anchored() const { return pattern_.has_value(); }
   // The object-space pattern (--pattern object) for the frames drawn next, or not; `pixelSize`
-  // is the object units one pixel spans at eye depth 1 (2 / (projection[1][1] x height)).
-  void setObjectPattern(bool on, float pixelSize) {
+  // is the object units one pixel spans at eye depth 1 (2 / (projection[1][1] x height)),
+  // `eyeToObject` the view's inverse.
+  void setObjectPattern(bool on, float pixelSize, const glm::mat4& eyeToObject) {
     objectPattern_ = on;
     pixelSize_ = pixelSize;
+    eyeToObject_ = eyeToObject;
   }
   // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
   // continue across tiles.
@@ -130,6 +132,7 @@ class GpuPalette {
   bool linearFilter_ = false;
   bool objectPattern_ = false;
   float pixelSize_ = 1.0f;
+  glm::mat4 eyeToObject_{1.0f};
   glm::vec2 frameOffset_{0.0f};
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
