@@ -44,7 +44,6 @@ struct LineSettings {
   float rimLimit = 0.1f;
   static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
   bool objectSpace() const { return silhouettes || creases || boundaries; }
-  bool any() const { return objectSpace() || imageSpace || hardware || rim; }
 };
 
 // Where the palette's pattern lives: fixed to the screen (the original), anchored to the

@@ -103,9 +103,19 @@ Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit) {
   const int rowsPerChunk = 64;
   std::vector<float> buf(static_cast<size_t>(spec.width) * rowsPerChunk * nc);
   std::vector<float> lin(reduce ? static_cast<size_t>(spec.width) * 4 : 0);
+  // Rows are read in the file's own format into a buffer kept across chunks and converted
+  // here: asked for floats, OpenImageIO allocates a conversion buffer on every call, which
+  // under the sanitizers (fresh pages, poisoned and quarantined) cost seconds per palette.
+  // Files whose channels differ in format are left to its conversion.
+  const bool native = spec.channelformats.empty();
+  std::vector<unsigned char> raw(native ? spec.scanline_bytes(true) * rowsPerChunk : 0);
   for (int y0 = 0; y0 < spec.height; y0 += rowsPerChunk) {
     const int y1 = std::min(spec.height, y0 + rowsPerChunk);
-    if (!in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data())) {
+    const bool read = native ? in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::UNKNOWN, raw.data()) &&
+                                   OIIO::convert_pixel_values(spec.format, raw.data(), OIIO::TypeDesc::FLOAT, buf.data(),
+                                                              (y1 - y0) * spec.width * nc)
+                             : in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data());
+    if (!read) {
       std::string why = in.geterror();
       return Error{path + ": image data could not be read (truncated or corrupt): " + (why.empty() ? "read failed" : why)};
     }
