@@ -176,13 +176,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     return {std::nullopt, fail("--stroke-density must be in 1..1000000 strokes per unit area")};
   if (o.strokeBudget && !(*o.strokeBudget >= 0 && *o.strokeBudget <= StrokeSettings::kMaxBudget))
     return {std::nullopt, fail("--stroke-budget must be in 0..4000000")};
-  if (!strokeSize.empty()) {
-    float lw[2];
-    if (std::sscanf(strokeSize.c_str(), "%fx%f", &lw[0], &lw[1]) != 2 || !(lw[0] >= 1.0f && lw[0] <= StrokeSettings::kMaxSize) ||
-        !(lw[1] >= 1.0f && lw[1] <= StrokeSettings::kMaxSize))
-      return {std::nullopt, fail("--stroke-size must be LxW in pixels, each 1..256, got '" + strokeSize + "'")};
-    o.strokeSize = glm::vec2(lw[0], lw[1]);
-  }
+  if (!strokeSize.empty() && !(o.strokeSize = parseStrokeSize(strokeSize)))
+    return {std::nullopt, fail("--stroke-size must be LxW in pixels, each 1..256, got '" + strokeSize + "'")};
   if (o.occlusionStrength && !(*o.occlusionStrength >= 0.0f && *o.occlusionStrength <= 1.0f))
     return {std::nullopt, fail("--occlusion-strength must be in 0..1, got " + std::to_string(*o.occlusionStrength))};
   if (!animate.empty()) {

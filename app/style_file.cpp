@@ -122,13 +122,11 @@ Result<Style> loadStyle(const std::string& path) {
       st.strokes = st.strokes.value_or(StrokeSettings{});
       st.strokes->density = *v;
     } else if (key == "stroke-size") {
-      float lw[2];
-      if (std::sscanf(arg.c_str(), "%fx%f", &lw[0], &lw[1]) != 2 || !(lw[0] >= 1.0f && lw[0] <= StrokeSettings::kMaxSize) ||
-          !(lw[1] >= 1.0f && lw[1] <= StrokeSettings::kMaxSize))
-        return bad("must be LxW in pixels, each 1..256");
+      const std::optional<glm::vec2> size = parseStrokeSize(arg);
+      if (!size) return bad("must be LxW in pixels, each 1..256");
       st.strokes = st.strokes.value_or(StrokeSettings{});
-      st.strokes->length = lw[0];
-      st.strokes->width = lw[1];
+      st.strokes->length = size->x;
+      st.strokes->width = size->y;
     } else if (key == "outline") {
       const auto m = parseOutlineMethod(arg);
       if (!m) return bad("must be fatten, offset or edges");

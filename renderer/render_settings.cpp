@@ -39,6 +39,14 @@ std::optional<OrientSettings> parseOrient(const std::string& s) {
   return o;
 }
 
+std::optional<glm::vec2> parseStrokeSize(const std::string& s) {
+  float l = 0.0f, w = 0.0f;
+  char extra = 0;
+  if (std::sscanf(s.c_str(), "%fx%f%c", &l, &w, &extra) != 2) return std::nullopt;
+  if (!(l >= 1.0f && l <= StrokeSettings::kMaxSize && w >= 1.0f && w <= StrokeSettings::kMaxSize)) return std::nullopt;
+  return glm::vec2(l, w);
+}
+
 const char* outlineMethodName(OutlineMethod m) {
   switch (m) {
     case OutlineMethod::Edges: return "edges";

@@ -97,6 +97,8 @@ struct StrokeSettings {
   static constexpr float kMinDensity = 1.0f, kMaxDensity = 1e6f, kMaxSize = 256.0f;
   static constexpr int kMaxBudget = 4000000;
 };
+// "LxW" in pixels, each in 1..kMaxSize (the command line and style files share it).
+std::optional<glm::vec2> parseStrokeSize(const std::string& s);
 
 // Where the per-triangle paths (stencil, triangle) light their triangles: on the CPU (the
 // original), on the GPU with the entries read back (shading/gpu_triangle_lighting.h), or

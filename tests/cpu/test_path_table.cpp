@@ -10,6 +10,7 @@
 #include "renderer/gl/program_variants.h"
 #include "renderer/paths/path_table.h"
 #include "renderer/paths/render_pass.h"
+#include "renderer/render_settings.h"
 
 namespace npr {
 namespace {
@@ -82,6 +83,48 @@ TEST(ProgramVariants, DefinesFollowTheFields) {
   EXPECT_TRUE(has(q.defines, "QUAD_BACKGROUND") && has(q.defines, "BACKGROUND_IMAGE"));
 }
 
+// The outline programs: a geometry stage for the methods that build quads and fattened faces,
+// none for the offset method (the rasterizer culls); the rim reads the palette. The
+// object-space pattern's quads read its coordinates from the stencil path's buffer.
+TEST(ProgramVariants, OutlinesStrokesAndObjectPatterns) {
+  const gl::ProgramSource fatten = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Fatten, std::nullopt});
+  EXPECT_EQ(fatten.geometryFile, "outline.geom");
+  EXPECT_TRUE(has(fatten.defines, "OUTLINE_FATTEN"));
+  const gl::ProgramSource offset = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Offset, std::nullopt});
+  EXPECT_TRUE(offset.geometryFile.empty());
+  gl::PaletteVariant pv;
+  pv.size = 4;
+  pv.pattern = gl::PatternMapping::Object;
+  const gl::ProgramSource rim = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Rim, pv});
+  EXPECT_TRUE(has(rim.defines, "OUTLINE_RIM") && has(rim.defines, "PALETTE_SIZE 4"));
+  const gl::ProgramSource strokes = gl::programSource(gl::StrokeProgram{LightingFeatures{}, pv});
+  EXPECT_EQ(strokes.vertexFile, "strokes.vert");
+  const gl::ProgramSource quad = gl::programSource(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, gl::PatternMapping::Object});
+  EXPECT_TRUE(has(quad.defines, "PATTERN_OBJECT") && has(quad.defines, "PATTERN_OBJECT_BUFFER"));
+  gl::MeshProgram m;
+  m.palette = pv;
+  EXPECT_TRUE(has(gl::programSource(m).defines, "PATTERN_OBJECT"));
+  EXPECT_FALSE(has(gl::programSource(m).defines, "PATTERN_OBJECT_BUFFER"));
+}
+
+// The settings' text forms: what the command line and style files accept.
+TEST(RenderSettingsText, NewKindsMethodsSpacesAndSizes) {
+  LineSettings l;
+  std::string unknown;
+  ASSERT_TRUE(parseLineKinds("silhouette,hardware,rim", l, &unknown));
+  EXPECT_TRUE(l.silhouettes && l.hardware && l.rim && !l.creases);
+  EXPECT_FALSE(parseLineKinds("silhouette,wobbly", l, &unknown));
+  EXPECT_EQ(unknown, "wobbly");
+  EXPECT_TRUE(l.hardware);  // untouched on failure
+  for (OutlineMethod m : {OutlineMethod::Edges, OutlineMethod::Offset, OutlineMethod::Fatten})
+    EXPECT_EQ(parseOutlineMethod(outlineMethodName(m)), m);
+  EXPECT_FALSE(parseOutlineMethod("round"));
+  EXPECT_EQ(parsePatternSpace("object"), PatternSpace::Object);
+  EXPECT_EQ(parsePatternSpace(patternSpaceName(PatternSpace::Object)), PatternSpace::Object);
+  EXPECT_EQ(parseStrokeSize("16x6"), glm::vec2(16.0f, 6.0f));
+  for (const char* bad : {"16", "16x", "0x6", "16x300", "16x6x2", "nanx6", "16x6px"}) EXPECT_FALSE(parseStrokeSize(bad)) << bad;
+}
+
 TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   // The cache is a std::map over the variant: equal variants must share a key and every
   // field that changes the defines must change the key.
@@ -111,13 +154,20 @@ TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   variants.push_back(gl::LineProgram{false, true});
   variants.push_back(gl::EdgeProgram{});
   variants.push_back(gl::MarkerProgram{});
+  for (auto method : {gl::OutlineProgram::Method::Edges, gl::OutlineProgram::Method::Offset, gl::OutlineProgram::Method::Fatten})
+    variants.push_back(gl::OutlineProgram{method, std::nullopt});
+  variants.push_back(gl::OutlineProgram{gl::OutlineProgram::Method::Rim, gl::PaletteVariant{}});
+  variants.push_back(gl::StrokeProgram{LightingFeatures{}, gl::PaletteVariant{}});
+  with([](gl::MeshProgram& m) { m.palette->pattern = gl::PatternMapping::Object; });
+  with([](gl::MeshProgram& m) { m.shading = gl::MeshShading::PatternCoordinate; });
+  variants.push_back(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, gl::PatternMapping::Object});
   for (size_t i = 0; i < variants.size(); ++i) cache.emplace(variants[i], int(i));
   EXPECT_EQ(cache.size(), variants.size());
   std::set<std::vector<std::string>> defineSets;
   for (const auto& v : variants) {
     const gl::ProgramSource s = gl::programSource(v);
     std::vector<std::string> key = s.defines;
-    key.push_back(s.vertexFile + "+" + s.fragmentFile);
+    key.push_back(s.vertexFile + "+" + s.geometryFile + "+" + s.fragmentFile);
     defineSets.insert(key);
   }
   EXPECT_EQ(defineSets.size(), variants.size()) << "two variants compile to the same program";
