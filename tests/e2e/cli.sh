@@ -96,6 +96,12 @@ expect 0 "--pattern-scale 2" -- "$viewer" --headless --size 96x96 --light 1,3,1 
 cmp -s "$tmp/plain.png" "$tmp/scaled.png" && { echo "FAIL: --pattern-scale changes nothing"; fail=1; }
 expect 2 "--pattern-scale 0" -- "$viewer" --headless --pattern-scale 0
 expect 2 "--pattern-scale 100" -- "$viewer" --headless --pattern-scale 100
+for path in pixel stencil; do
+  expect 0 "--pattern object --path $path" -- "$viewer" --headless --size 96x96 --light 1,3,1 --pattern object --path $path --screenshot "$tmp/object-$path.png"
+done
+cmp -s "$tmp/plain.png" "$tmp/object-pixel.png" && { echo "FAIL: --pattern object changes nothing"; fail=1; }
+expect 2 "unknown --pattern" -- "$viewer" --headless --pattern glued
+grep -q "object" "$tmp/err" || { echo "FAIL: --pattern error does not offer object: $(cat "$tmp/err")"; fail=1; }
 "$viewer" --headless --size 64x64 --screenshot "$tmp/source.png" 2>/dev/null
 expect 0 "--make-palette --ladder darken" -- "$viewer" --make-palette "$tmp/source.png" --ladder darken --levels 5 --out "$tmp/made"
 grep -q '"evenly_spaced"' "$tmp/out" || { echo "FAIL: --make-palette prints no palette report"; fail=1; }
