@@ -30,8 +30,9 @@ Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, c
     rim.palette = palette->variant(match);
     rim.palette->orientBins = 0;  // the rim is a smudge along the outline: not turned
     // The rim's faces are fattened past the surface: no object-space position to map, so the
-    // object-space pattern is read in screen space there.
-    if (rim.palette->pattern == gl::PatternMapping::Object) rim.palette->pattern = gl::PatternMapping::Screen;
+    // object-space pattern is read in screen space there, through the scaled mapping (the
+    // pattern scale and, with a linear filter, the sRGB view the palette binds then).
+    if (rim.palette->pattern == gl::PatternMapping::Object) rim.palette->pattern = gl::PatternMapping::Scaled;
   }
   const Draw draws[] = {{gl::OutlineProgram{methodOf(ls.outline), std::nullopt}, ls.hardware}, {rim, ls.rim && palette != nullptr}};
   for (const Draw& d : draws) {
