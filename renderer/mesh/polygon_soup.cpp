@@ -95,7 +95,10 @@ bool FaceBuilder::add(std::vector<long long>& corners, const std::vector<int>& t
   for (std::size_t k = 0; k < corners.size(); ++k) {
     const long long c = corners[k];
     if (c < 0 || c >= count) {
-      warn_.add(where() + ": face references vertex " + std::to_string(c + 1) + " but only " + std::to_string(count) +
+      // One-based in the message; unsigned for the largest index a file can write (found by
+      // fuzz_off: c + 1 overflowed).
+      const std::string number1 = c >= 0 ? std::to_string(static_cast<unsigned long long>(c) + 1ULL) : std::to_string(c + 1);
+      warn_.add(where() + ": face references vertex " + number1 + " but only " + std::to_string(count) +
                 " vertices are defined; face skipped");
       ++report_.skipped_faces;
       return false;

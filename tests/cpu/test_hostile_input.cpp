@@ -114,6 +114,18 @@ TEST(HostileInput, OwnReadersRefuseBrokenHeadersWithoutAllocating) {
   }
 }
 
+TEST(HostileInput, LargestVertexIndexIsNamedWithoutOverflow) {
+  // Found by fuzz_off: a face naming vertex 9223372036854775807 (the largest long long)
+  // overflowed while the warning added one for its one-based number.
+  TempDir d;
+  auto m = loadMesh(d.write("huge-index.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 9223372036854775807 2\n"));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 1u);
+  bool named = false;
+  for (const std::string& w : m->report.warnings) named = named || contains(w, "vertex 9223372036854775808");
+  EXPECT_TRUE(named);
+}
+
 TEST(HostileInput, CorruptOmFileCostsAMessageNotTheProcess) {
   // Found by fuzz_om: OpenMesh's reader asserts on this file's vertex chunk (abort). It now
   // runs in a child process; this test's process must survive and get a message.
