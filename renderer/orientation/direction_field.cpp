@@ -14,11 +14,6 @@
 namespace npr {
 namespace {
 
-float smoothstep(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
 // A tangent direction as the 4-way symmetric value z^4 in the frame (t1, t2): a direction
 // and its quarter turns give the same value. Zero for a vector normal to the plane.
 glm::vec2 crossValue(const glm::vec3& d, const glm::vec3& t1, const glm::vec3& t2) {
@@ -56,7 +51,7 @@ DirectionField computeDirectionField(const Mesh& mesh, const DirectionFieldOptio
       tangentBasis(n, t1[v], t2[v]);
       const float k1 = std::fabs(pc.kMax[v]), k2 = std::fabs(pc.kMin[v]);
       const float anisotropy = (k1 - k2) / (k1 + k2 + 1e-20f);
-      confidence[v] = smoothstep(1.0f / 3.0f, 0.6f, anisotropy) * smoothstep(opt.flatCurvature, 6.0f * opt.flatCurvature, k1 - k2);
+      confidence[v] = glm::smoothstep(1.0f / 3.0f, 0.6f, anisotropy) * glm::smoothstep(opt.flatCurvature, 6.0f * opt.flatCurvature, k1 - k2);
       d[v] = confidence[v] >= 0.5f ? pc.maxDirection[v] : guideDirection(n);
     }
   });

@@ -223,11 +223,11 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
   if (objectPattern_) {
     // Octaves are chosen per pixel from its depth (pattern.glsl); the coarse one's texels are
-    // 1 to 2 pattern-scale pixels wide, the fine one's read one level down.
+    // 1 to 2 pattern-scale pixels wide, the fine one's read one level down: the levels above,
+    // whose frame is the identity here (octave 0, marks of the pattern scale).
     prog.set("uPixelSize", pixelSize_);
     prog.set("uEyeToObject", eyeToObject_);
     prog.set("uPatternScale", patternScale_);
-    prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / patternScale_)), float(lodFor(2.0f / patternScale_))));
   }
 }
 

@@ -15,11 +15,6 @@ namespace {
 
 constexpr int kBrushLength = 64, kBrushWidth = 24, kBrushes = 4;
 
-float smoothstep(float a, float b, float x) {
-  const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
 // Four flat brushes side by side, coverage in [0, 255]: bristles as rows of their own
 // darkness, each starting and ending at its own place (a dry, ragged start and end), the
 // edges across the stroke soft.
@@ -32,10 +27,10 @@ std::vector<std::uint8_t> brushCoverage() {
       const float ink = 0.55f + 0.45f * u(rng);
       const float start = 0.02f + 0.18f * u(rng), end = 0.8f + 0.18f * u(rng);
       const float v = (float(y) + 0.5f) / kBrushWidth * 2.0f - 1.0f;
-      const float edge = 1.0f - smoothstep(0.6f, 1.0f, std::abs(v));
+      const float edge = 1.0f - glm::smoothstep(0.6f, 1.0f, std::abs(v));
       for (int x = 0; x < kBrushLength; ++x) {
         const float s = (float(x) + 0.5f) / kBrushLength;
-        const float along = smoothstep(start, start + 0.15f, s) * (1.0f - smoothstep(end - 0.1f, end, s));
+        const float along = glm::smoothstep(start, start + 0.15f, s) * (1.0f - glm::smoothstep(end - 0.1f, end, s));
         px[std::size_t(y * kBrushLength * kBrushes + b * kBrushLength + x)] = std::uint8_t(std::lround(255.0f * ink * edge * along));
       }
     }

@@ -12,7 +12,9 @@ LineMask lineMask(const ImageRGBA8& img) {
   LineMask m{img.width, img.height, std::vector<char>(std::size_t(img.width) * std::size_t(img.height))};
   for (std::size_t i = 0; i < m.ink.size(); ++i) {
     const std::uint8_t* p = &img.pixels[i * 4];
-    m.ink[i] = (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) < 127.5f;
+    // Composited over white (rsvg-convert leaves the ground transparent; renders are opaque).
+    const float a = p[3] / 255.0f;
+    m.ink[i] = (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f * a + (1.0f - a) < 0.5f;
   }
   return m;
 }

@@ -1,6 +1,7 @@
 // Comparing two line drawings of the same view (hardware outlines against object-space
-// silhouettes, issue 19): how much of each lies near the other, and how wide lines are
-// across the silhouette. Images are dark lines on a light ground, rows top-down.
+// silhouettes; the SVG export against the raster lines, tests/e2e/line_overlap): how much of
+// each lies near the other, and how wide lines are across the silhouette. Images are dark
+// lines on a light ground (transparent counts as ground), rows top-down.
 #pragma once
 
 #include <vector>
@@ -15,10 +16,11 @@ namespace npr::test {
 
 struct LineMask {
   int width = 0, height = 0;
-  std::vector<char> ink;  // luminance below one half
+  std::vector<char> ink;
   bool at(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height && ink[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
   int count() const;
 };
+// Ink: luminance composited over white below one half.
 LineMask lineMask(const ImageRGBA8& image);
 
 // The share of `a`'s ink pixels that lie within `radius` pixels (a square) of ink in `b`.
