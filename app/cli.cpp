@@ -91,6 +91,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
   app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
   app.add_option("--occlusion-strength", o.occlusionStrength, "How much the occlusion darkens, 0..1 (default 1)");
+  app.add_option("--shadow-palette", o.shadowPalette,
+                 "Control image: a palette drawn where cast shadows fall, blended in by the shadowed share of the light (needs --shadows)");
+  app.add_option("--occlusion-palette", o.occlusionPalette,
+                 "Control image: a palette drawn in crevices, blended in by the ambient occlusion (needs --occlusion)");
   app.add_option("--triangle-lighting", triangleLighting,
                  "Per-triangle paths light on the cpu | gpu (read back) | auto (gpu with --shadows, default)");
   app.add_option("--animate", animate,
@@ -200,6 +204,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (ec || !std::filesystem::is_directory(o.saveFrames))
       return {std::nullopt, fail("--save-frames: cannot create the folder '" + o.saveFrames + "'" + (ec ? " (" + ec.message() + ")" : ""))};
   }
+  for (const auto& [option, file] : {std::pair{"--shadow-palette", &o.shadowPalette}, std::pair{"--occlusion-palette", &o.occlusionPalette}})
+    if (!file->empty() && !std::filesystem::exists(*file))
+      return {std::nullopt, fail(std::string(option) + ": palette file '" + *file + "' does not exist")};
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == pf.size())

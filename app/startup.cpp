@@ -25,6 +25,10 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   }
   for (const auto& [material, file] : o.materialPalettes)
     if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
+  if (!o.shadowPalette.empty())
+    if (Status s = state.setControlPalette(ControlParameter::Shadow, o.shadowPalette, renderer); !s) return s;
+  if (!o.occlusionPalette.empty())
+    if (Status s = state.setControlPalette(ControlParameter::Occlusion, o.occlusionPalette, renderer); !s) return s;
   if (o.path) state.settings.path = *o.path;
   if (o.match) state.settings.match = *o.match;
   if (o.rangeScale) state.settings.rangeScale = *o.rangeScale;
@@ -36,9 +40,9 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.patternLinear) state.settings.patternLinearFilter = true;
   if (o.orient) state.settings.orient = *o.orient;
   if (o.orientBins) state.settings.orient.bins = *o.orientBins;
-  state.settings.ground = o.ground;
-  state.settings.shadows = o.shadows;
-  state.settings.occlusion = o.occlusion;
+  if (o.ground) state.settings.ground = true;
+  if (o.shadows) state.settings.shadows = true;
+  if (o.occlusion) state.settings.occlusion = true;
   if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
   state.settings.triangleLighting = o.triangleLighting;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
@@ -67,6 +71,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
     if (Status s = renderer.lighting().setToneModel(*o.tone, renderer.lighting().toneParameters()); !s) return s;
   if (o.light) state.light = *o.light;
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());
+  state.noteIdleControlPalettes();
   return okStatus();
 }
 

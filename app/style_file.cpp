@@ -52,6 +52,13 @@ Result<Style> loadStyle(const std::string& path) {
   st.file = path;
   st.name = fs::path(path).stem().string();
   const fs::path dir = fs::path(path).parent_path();
+  // A shipped palette's folder name, or a path relative to the style file.
+  auto resolvePalette = [&](const std::string& arg) {
+    std::error_code ec;
+    const fs::path shipped = fs::path(dataDirectory()) / "palettes" / arg;
+    const fs::path relative = dir / arg;
+    return fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
+  };
   std::istringstream in(*text);
   std::string raw;
   int lineNo = 0;
@@ -68,11 +75,14 @@ Result<Style> loadStyle(const std::string& path) {
     if (key == "name") {
       st.name = arg;
     } else if (key == "palette") {
-      std::error_code ec;
-      const fs::path shipped = fs::path(dataDirectory()) / "palettes" / arg;
-      const fs::path relative = dir / arg;
       if (arg.empty()) return bad("needs a shipped palette's name or a path");
-      st.palette = fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
+      st.palette = resolvePalette(arg);
+    } else if (key == "shadow-palette" || key == "occlusion-palette") {
+      if (arg.empty()) return bad("needs a shipped palette's name, a path or none");
+      (key == "shadow-palette" ? st.shadowPalette : st.occlusionPalette) = arg == "none" ? std::string() : resolvePalette(arg);
+    } else if (key == "ground" || key == "shadows" || key == "occlusion") {
+      if (arg != "on" && arg != "off") return bad("must be on or off");
+      (key == "ground" ? st.ground : key == "shadows" ? st.shadows : st.occlusion) = arg == "on";
     } else if (key == "match") {
       if (!(st.match = parseMatchMode(arg))) return bad("must be colors, intensity or order");
     } else if (key == "range-scale") {
@@ -157,10 +167,19 @@ Result<Style> loadStyle(const std::string& path) {
 }
 
 Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
+  for (const auto* control : {&st.shadowPalette, &st.occlusionPalette})
+    if (*control && !(*control)->empty())
+      if (Result<Palette> p = loadPalette(**control); !p) return Error{st.file + ": control palette not loaded: " + p.error()};
   // The palette first: it may fail, and it brings its own defaults, which the style's own
   // match mode and range scale then override.
   if (st.palette)
     if (Status s = state.loadPalette(*st.palette, renderer); !s) return Error{st.file + ": " + s.error()};
+  // Control palettes next. Their files are read before anything changes, so a broken one
+  // leaves the look as it was (an upload failing after them is the rare exception).
+  if (st.shadowPalette)
+    if (Status s = state.setControlPalette(ControlParameter::Shadow, *st.shadowPalette, renderer); !s) return Error{st.file + ": " + s.error()};
+  if (st.occlusionPalette)
+    if (Status s = state.setControlPalette(ControlParameter::Occlusion, *st.occlusionPalette, renderer); !s) return Error{st.file + ": " + s.error()};
   if (st.tone)
     if (Status s = renderer.lighting().setToneModel(*st.tone, renderer.lighting().toneParameters()); !s) return Error{st.file + ": " + s.error()};
   RenderSettings& s = state.settings;
@@ -192,6 +211,9 @@ Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
   if (st.patternScale) s.patternScale = *st.patternScale;
   if (st.patternLinear) s.patternLinearFilter = *st.patternLinear;
   if (st.orient) s.orient = *st.orient;
+  if (st.ground) s.ground = *st.ground;
+  if (st.shadows) s.shadows = *st.shadows;
+  if (st.occlusion) s.occlusion = *st.occlusion;
   state.note("style " + st.name + " applied");
   return okStatus();
 }
@@ -226,6 +248,9 @@ std::string styleText(const ViewerState& state, Renderer& renderer, const std::s
   o << "pattern " << patternSpaceName(s.pattern) << "\npattern-scale " << s.patternScale << "\npattern-filter "
     << (s.patternLinearFilter ? "linear" : "nearest") << "\n";
   o << "orient " << orientName(s.orient) << "\n";
+  o << "ground " << (s.ground ? "on" : "off") << "\nshadows " << (s.shadows ? "on" : "off") << "\nocclusion " << (s.occlusion ? "on" : "off") << "\n";
+  auto control = [](const std::string& file) { return file.empty() ? std::string("none") : fs::absolute(file).lexically_normal().string(); };
+  o << "shadow-palette " << control(state.shadowPalette) << "\nocclusion-palette " << control(state.occlusionPalette) << "\n";
   o << "strokes " << (s.strokes.on ? "on" : "off") << "\nstroke-density " << s.strokes.density << "\nstroke-size " << s.strokes.length << "x"
     << s.strokes.width << "\n";
   return o.str();

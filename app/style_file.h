@@ -13,6 +13,8 @@
 //   sketchy on|off           pattern screen|anchored|object   pattern-scale S   pattern-filter nearest|linear
 //   orient none|curvature|light|DEGREES
 //   strokes on|off   stroke-density D   stroke-size LxW
+//   ground on|off   shadows on|off   occlusion on|off
+//   shadow-palette NAME|PATH|none   occlusion-palette NAME|PATH|none   (control images)
 #pragma once
 
 #include <optional>
@@ -39,6 +41,8 @@ struct Style {
   std::optional<bool> patternLinear;
   std::optional<OrientSettings> orient;
   std::optional<StrokeSettings> strokes;  // strokes, stroke-density, stroke-size
+  std::optional<bool> ground, shadows, occlusion;
+  std::optional<std::string> shadowPalette, occlusionPalette;  // resolved paths; empty: none
 };
 
 // The shipped styles (palettes/styles/*.style), sorted.

@@ -91,6 +91,37 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
   return okStatus();
 }
 
+Status ViewerState::setControlPalette(ControlParameter parameter, const std::string& path, Renderer& renderer) {
+  const char* what = parameter == ControlParameter::Shadow ? "shadow palette" : "occlusion palette";
+  std::string& current = parameter == ControlParameter::Shadow ? shadowPalette : occlusionPalette;
+  if (path.empty()) {
+    renderer.clearControlPalette(parameter);
+    current.clear();
+    return okStatus();
+  }
+  Result<Palette> p = npr::loadPalette(path);
+  if (!p) {
+    note(std::string(what) + " not loaded: " + p.error());
+    return Error{p.error()};
+  }
+  if (Status s = renderer.setControlPalette(parameter, *p); !s) {
+    note(std::string(what) + " not loaded: " + s.error());
+    return s;
+  }
+  for (const auto& w : p->warnings) note(w);
+  current = path;
+  return okStatus();
+}
+
+void ViewerState::noteIdleControlPalettes() {
+  if (!shadowPalette.empty() && !settings.shadows)
+    note("the shadow palette is drawn where cast shadows fall: turn shadows on (--shadows, overlay) to see it");
+  if (!occlusionPalette.empty() && !settings.occlusion)
+    note("the occlusion palette is drawn in crevices: turn occlusion on (--occlusion, overlay) to see it");
+  if ((!shadowPalette.empty() || !occlusionPalette.empty()) && !pathInfo(settings.path).usesPalette)
+    note(std::string("control palettes are not drawn by the ") + renderPathName(settings.path) + " path (it has no palette)");
+}
+
 Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
   Result<Palette> p = npr::loadPalette(path);
   if (!p) {

@@ -44,6 +44,12 @@ struct ViewerState {
   // returns the material to the main palette. A palette that fails to load changes nothing.
   Status setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer);
   std::map<std::string, std::string> materialPalettes;  // material name -> palette file
+  // Control-image palettes (drawn where shadows fall / in crevices); an empty path removes
+  // it. A palette that fails to load changes nothing.
+  Status setControlPalette(ControlParameter parameter, const std::string& path, Renderer& renderer);
+  std::string shadowPalette, occlusionPalette;  // their files; empty: none
+  // Says when a control palette is loaded but this frame's settings give it nothing to show.
+  void noteIdleControlPalettes();
   void note(const std::string& message);
   void noteMissingMaterial(const std::string& material);
 

@@ -10,6 +10,7 @@
 #include "renderer/mesh/ground_plane.h"
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
+#include "renderer/passes/control_palette_pass.h"
 #include "renderer/passes/marker_pass.h"
 #include "renderer/passes/surface_buffer_pass.h"
 #include "renderer/paths/render_pass.h"
@@ -59,6 +60,26 @@ Status Renderer::setMaterialPalette(const std::string& material, const Palette& 
 
 void Renderer::clearMaterialPalette(const std::string& material) {
   if (materialPalettes_.erase(material)) groupsDirty_ = true;
+}
+
+Status Renderer::setControlPalette(ControlParameter parameter, const Palette& palette) {
+  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
+  if (!uploaded) return Error{uploaded.error()};
+  (parameter == ControlParameter::Shadow ? shadowPalette_ : occlusionPalette_) = std::move(*uploaded);
+  stats_.bufferUploads += 1;
+  return okStatus();
+}
+
+void Renderer::clearControlPalette(ControlParameter parameter) {
+  (parameter == ControlParameter::Shadow ? shadowPalette_ : occlusionPalette_).reset();
+}
+
+std::vector<GpuPalette*> Renderer::extraPalettes() const {
+  std::vector<GpuPalette*> out;
+  for (const auto& [name, p] : materialPalettes_) out.push_back(p.get());
+  if (shadowPalette_) out.push_back(shadowPalette_.get());
+  if (occlusionPalette_) out.push_back(occlusionPalette_.get());
+  return out;
 }
 
 std::vector<std::string> Renderer::materialPaletteNames() const {
@@ -121,6 +142,10 @@ Status Renderer::prepare(const RenderSettings& s) {
   // Cel bands belong to the main palette (they are one fewer than its tones).
   for (auto& [name, p] : materialPalettes_)
     if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"palette of material '" + name + "': " + st.error()};
+  if (shadowPalette_)
+    if (Status st = shadowPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"shadow palette: " + st.error()};
+  if (occlusionPalette_)
+    if (Status st = occlusionPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"occlusion palette: " + st.error()};
   if (palette_) return palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_);
   return okStatus();
 }
@@ -143,7 +168,7 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     p.setFrameOffset(glm::vec2(frameOffset_));
   };
   if (palette_) place(*palette_);
-  for (auto& [name, p] : materialPalettes_) place(*p);
+  for (GpuPalette* p : extraPalettes()) place(*p);
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {
@@ -159,7 +184,7 @@ void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& vie
     palette_->setOrientation(s.orient, light, size);
     turned = palette_->oriented();
   }
-  for (auto& [name, p] : materialPalettes_) {
+  for (GpuPalette* p : extraPalettes()) {
     p->setOrientation(s.orient, light, size);
     turned = turned || p->oriented();
   }
@@ -242,7 +267,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
-    if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
+    if (Status st = drawPathWithControls(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
   // One draw of the path per palette, each over its part of the mesh; depth testing across
@@ -253,7 +278,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
-    if (Status st = paths_[pathIndex(s.path)]->draw(frame); !st) return st;
+    if (Status st = drawPathWithControls(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
 }
@@ -266,7 +291,14 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
   plain.materials = false;
   FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
   frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
-  return paths_[pathIndex(s.path)]->draw(frame);
+  return drawPathWithControls(frame, s.path);
+}
+
+Status Renderer::drawPathWithControls(FrameContext& frame, RenderPath path) {
+  if (Status st = paths_[pathIndex(path)]->draw(frame); !st) return st;
+  frame.shadowPalette = shadowPalette_.get();
+  frame.occlusionPalette = occlusionPalette_.get();
+  return drawControlPalettes(frame, path);
 }
 
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {

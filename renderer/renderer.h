@@ -20,6 +20,7 @@
 #include "renderer/core/result.h"
 #include "renderer/gl/gpu_timer.h"
 #include "renderer/gl/program_cache.h"
+#include "renderer/lighting/control_weights.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/lines/image_edges_pass.h"
 #include "renderer/lines/line_pass.h"
@@ -45,6 +46,8 @@ namespace npr {
 // floats: read it from a float target; one entry is a = b, weight 0).
 enum class SelectionOutput { Entry, Blend };
 
+struct FrameContext;
+
 class Renderer {
  public:
   [[nodiscard]] static Result<std::unique_ptr<Renderer>> create();
@@ -64,6 +67,12 @@ class Renderer {
   void clearMaterialPalette(const std::string& material);
   // The materials that have their own palette and whether the current mesh has them.
   std::vector<std::string> materialPaletteNames() const;
+  // Control-image palettes (passes/control_palette_pass.h): drawn where shadows fall or in
+  // crevices, blended in by that parameter over the main palette. Matched with the main
+  // palette's match mode and range scale; on failure nothing changes.
+  [[nodiscard]] Status setControlPalette(ControlParameter parameter, const Palette& palette);
+  void clearControlPalette(ControlParameter parameter);
+  bool hasControlPalette(ControlParameter parameter) const { return controlPalette(parameter) != nullptr; }
 
   // The OpenGL-like lighting state (Lightfv, Materialfv, ...).
   LightingState& lighting() { return lighting_; }
@@ -130,6 +139,8 @@ class Renderer {
   void clearViewport(const glm::ivec4& viewport);
   Status drawPath(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
                   gl::MeshOutput output);
+  // The path, then the control-image palettes over what it drew.
+  Status drawPathWithControls(FrameContext& frame, RenderPath path);
   // The ground plane with the path's own pass, after the model (--ground).
   Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
   // Splits the mesh into one part per palette when materials have palettes of their own.
@@ -145,6 +156,12 @@ class Renderer {
     TriangleShadingCache triangles;
   };
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
+  std::unique_ptr<GpuPalette> shadowPalette_, occlusionPalette_;
+  GpuPalette* controlPalette(ControlParameter parameter) const {
+    return parameter == ControlParameter::Shadow ? shadowPalette_.get() : occlusionPalette_.get();
+  }
+  // Every palette loaded besides the main one: per-material, then control palettes.
+  std::vector<GpuPalette*> extraPalettes() const;
   std::vector<std::unique_ptr<PaletteGroup>> groups_;
   bool groupsDirty_ = false;
 

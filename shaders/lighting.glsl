@@ -6,6 +6,8 @@
 // materials) they are the lights' own colours, multiplied here by the material the caller
 // passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
 // light up in its shadow map: a blocked light keeps its ambient term only, as OpenGL's would.
+// CONTROL_SHADOW also measures, in shadowShare, how much of the diffuse light reaching the
+// surface the shadows block (control-image palettes: passes/control_palette_pass.h).
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
@@ -68,6 +70,13 @@ uniform vec2 uToneWeights;  // alpha, beta: k_cool = k_blue + alpha k_d
 #endif
 
 const float kMaxFloat = 3.402823e38;
+
+#ifdef CONTROL_SHADOW
+// The share of the diffuse light on the surface that shadows block: 0 lit (or facing away
+// from every light: attached shadow is the tone's business), 1 in full cast shadow. Set by
+// shadeParts; each light weighted by its unshadowed diffuse term's brightness there.
+float shadowShare = 0.0;
+#endif
 
 // x^e with OpenGL's convention x^0 = 1, and 0 for x <= 0 otherwise (GLSL's pow is undefined there).
 float powGL(float x, float e) {
@@ -137,6 +146,9 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
   if (toEye == vec3(0.0)) toEye = vec3(0.0, 0.0, 1.0);
 #endif
 #endif
+#ifdef CONTROL_SHADOW
+  float diffuseSum = 0.0, blockedSum = 0.0;
+#endif
   for (int i = 0; i < NUM_LIGHTS; ++i) {
     vec3 vp = uLightPosition[i].xyz;
     float att = 1.0;
@@ -162,6 +174,14 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
     float visible = 1.0;
 #ifdef SHADOWS
     if (ndl > 0.0) visible = shadowVisibility(i, pos, n, ndl);
+#ifdef CONTROL_SHADOW
+    // Bounded weights (attenuation can reach kMaxFloat): the share stays finite.
+    float reach = ndl * min(att * spot, 1e6) * dot(LIGHT_DIFFUSE(side, i), vec3(1.0 / 3.0));
+    if (reach > 0.0 && !isinf(reach)) {
+      diffuseSum += reach;
+      blockedSum += reach * (1.0 - visible);
+    }
+#endif
     ndl *= visible;
 #endif
     vec3 term = LIGHT_AMBIENT(side, i) + ndl * LIGHT_DIFFUSE(side, i);
@@ -175,6 +195,9 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
     }
 #endif
   }
+#ifdef CONTROL_SHADOW
+  shadowShare = diffuseSum > 0.0 ? clamp(blockedSum / diffuseSum, 0.0, 1.0) : 0.0;
+#endif
 #endif
   return c;
 #endif

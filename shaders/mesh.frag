@@ -14,6 +14,9 @@
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
+// CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
+// with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
+// shadows block, or 1 - the occlusion factor; pixels where it is 0 are left alone.
 
 in vec3 vPosition;  // eye space (the object-space pattern reads them too: pattern.glsl)
 in vec3 vNormal;
@@ -43,6 +46,12 @@ in float vOcclusion;
 #if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
 in vec3 vColorFront;
 in vec3 vColorBack;
+#endif
+#if defined(CONTROL_SHADOW) || defined(CONTROL_OCCLUSION)
+#define CONTROL
+#ifdef PATH_VERTEX
+in float vControl;
+#endif
 #endif
 #ifdef PATH_TRIANGLE
 uniform int uEntry;  // drawn bucket by bucket
@@ -117,5 +126,16 @@ void main() {
 #elif defined(PATH_LIT_TEXTURED)
   fragColor = vec4(lit * paletteColour(0), 1.0);
 #endif
+#endif
+#ifdef CONTROL
+#if defined(PATH_VERTEX)
+  float control = vControl;
+#elif defined(CONTROL_SHADOW)
+  float control = shadowShare;
+#else
+  float control = 1.0 - OCCLUSION_FACTOR;
+#endif
+  if (!(control > 0.0)) discard;
+  fragColor.a = min(control, 1.0);
 #endif
 }

@@ -4,6 +4,8 @@
 // the mesh's own appearance: a colour (white where the mesh has none), texture coordinates
 // and a material index per vertex (vertices are split where these differ). ORIENT_FIELD passes
 // the hatching direction field on (orientation.glsl); OCCLUSION the baked ambient occlusion.
+// CONTROL_SHADOW / CONTROL_OCCLUSION with per-vertex lighting pass the control-image palette's
+// weight on (mesh.frag).
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -50,6 +52,15 @@ out float vOcclusion;  // what ambient and diffuse are scaled by
 #include "lighting.glsl"
 out vec3 vColorFront;
 out vec3 vColorBack;
+#if defined(CONTROL_SHADOW) || defined(CONTROL_OCCLUSION)
+out float vControl;
+#endif
+#endif
+#if defined(PER_VERTEX_LIGHTING) && defined(CONTROL_SHADOW)
+// The front side's share (a back side lit after it would overwrite shadowShare).
+#define FRONT_SHADOW_SHARE vControl = shadowShare
+#else
+#define FRONT_SHADOW_SHARE
 #endif
 
 void main() {
@@ -79,6 +90,7 @@ void main() {
 #if defined(PER_VERTEX_LIGHTING) && defined(MATERIALS)
   SurfaceMaterial mat = fetchMaterial(aMaterial);
   vColorFront = shadeScaled(mat, eye.xyz, vNormal, false, aColour * aMapAverage * occlusion);
+  FRONT_SHADOW_SHARE;
 #ifdef TWO_SIDED
   vColorBack = shadeScaled(mat, eye.xyz, vNormal, true, aColour * aMapAverage * occlusion);
 #else
@@ -86,10 +98,14 @@ void main() {
 #endif
 #elif defined(PER_VERTEX_LIGHTING)
   vColorFront = shadeScaled(eye.xyz, vNormal, false, vec3(occlusion));
+  FRONT_SHADOW_SHARE;
 #ifdef TWO_SIDED
   vColorBack = shadeScaled(eye.xyz, vNormal, true, vec3(occlusion));
 #else
   vColorBack = vColorFront;
 #endif
+#endif
+#if defined(PER_VERTEX_LIGHTING) && defined(CONTROL_OCCLUSION)
+  vControl = 1.0 - occlusion;
 #endif
 }

@@ -142,6 +142,18 @@ void drawOverlay(Viewer& v) {
       else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
     }
   }
+  // Control-image palettes: drawn where shadows fall and in crevices (seed 003).
+  if ((s.settings.shadows || s.settings.occlusion) && ImGui::CollapsingHeader("Control palettes")) {
+    auto choose = [&](const char* label, ControlParameter parameter, const std::string& current) {
+      if (!ImGui::BeginCombo(label, current.empty() ? "(none)" : std::filesystem::path(current).stem().string().c_str())) return;
+      if (ImGui::Selectable("(none)", current.empty())) (void)s.setControlPalette(parameter, "", *v.renderer);
+      for (const std::string& p : s.palettes)
+        if (ImGui::Selectable(std::filesystem::path(p).stem().string().c_str(), current == p)) (void)s.setControlPalette(parameter, p, *v.renderer);
+      ImGui::EndCombo();
+    };
+    if (s.settings.shadows) choose("in shadow", ControlParameter::Shadow, s.shadowPalette);
+    if (s.settings.occlusion) choose("in crevices", ControlParameter::Occlusion, s.occlusionPalette);
+  }
   if (s.settings.path == RenderPath::Triangle || s.settings.path == RenderPath::Stencil) {
     int where = static_cast<int>(s.settings.triangleLighting);
     if (ImGui::Combo("triangle lighting", &where, "auto (GPU with shadows)\0CPU\0GPU (read back)\0"))

@@ -57,6 +57,14 @@ inline constexpr PassState kStencilLayer = [] {
   s.stencilPass = GL_ZERO;
   return s;
 }();
+// Control-image palettes over a path's surface: only where the path left exactly this depth
+// (every mesh pass computes gl_Position invariantly), blended by the parameter, no depth write.
+inline constexpr PassState kControlPalette = [] {
+  PassState s;
+  s.depthTest = s.blend = true;
+  s.depthFunc = GL_EQUAL;
+  return s;
+}();
 // Feature lines: depth-tested against the model (LEQUAL, so lines on its surface pass) but
 // writing no depth, blended.
 inline constexpr PassState kLines = [] {

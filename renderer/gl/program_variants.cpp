@@ -62,6 +62,8 @@ struct SourceOf {
     if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");
     if (m.occlusion) s.defines.push_back("OCCLUSION");
+    if (m.control == MeshControl::Shadow) s.defines.push_back("CONTROL_SHADOW");
+    if (m.control == MeshControl::Occlusion) s.defines.push_back("CONTROL_OCCLUSION");
     if (m.shadowLayers > 0) {
       s.defines.push_back("SHADOWS");
       s.defines.push_back("SHADOW_LAYERS " + std::to_string(m.shadowLayers));
@@ -137,10 +139,10 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.control) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.control))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.control) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.control);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

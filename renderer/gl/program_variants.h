@@ -54,6 +54,10 @@ enum class MeshShading : std::uint8_t {
 enum class StrokeSource : std::uint8_t { None, Field, Light, Fixed };
 // What a palette pass writes: its texels, or (tests, the benchmark) the selection behind them.
 enum class MeshOutput : std::uint8_t { Colour, Entry, Blend };
+// A control-image palette pass (passes/control_palette_pass.h): the palette's texels with the
+// parameter that blends them in as alpha (the share of diffuse light shadows block, or
+// 1 - the occlusion factor).
+enum class MeshControl : std::uint8_t { None, Shadow, Occlusion };
 
 struct MeshProgram {
   MeshShading shading = MeshShading::Pixel;
@@ -66,6 +70,7 @@ struct MeshProgram {
   StrokeSource stroke = StrokeSource::None;
   int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
   bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)
+  MeshControl control = MeshControl::None;
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.

@@ -39,6 +39,9 @@ struct FrameContext {
   const ShadowMaps* shadows = nullptr;
   // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
+  // Control-image palettes (passes/control_palette_pass.h), when loaded.
+  const GpuPalette* shadowPalette = nullptr;
+  const GpuPalette* occlusionPalette = nullptr;
 
   // The palette's program variant for this output; selections are the same turned or not, so
   // they ignore the orientation.

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/lighting/control_weights.h"
 #include "renderer/lighting/lighting_model.h"
 
 namespace npr {
@@ -403,6 +404,32 @@ TEST(LightingSpaces, ObjectSpaceEqualsEyeSpaceForRigidModelview) {
   const glm::vec3 a = shade(eye, pe, ne), b = shade(obj, p, n);
   EXPECT_NEAR(a.r, b.r, 1e-5f);
   EXPECT_GT(a.r, 0.1f);
+}
+
+TEST(ControlWeights, PartitionOfUnityAtEveryParameterIncludingExtremes) {
+  // Control-image palettes: the main, occlusion and shadow weights sum to 1 and stay in [0, 1]
+  // for any parameters, NaN and infinities included; an absent palette's weight is 0.
+  const float values[] = {0.0f, 1e-7f, 0.25f, 0.5f, 0.999f, 1.0f, -1.0f, 2.0f, INFINITY, -INFINITY, NAN};
+  for (float sh : values)
+    for (float oc : values)
+      for (int present = 0; present < 4; ++present) {
+        const bool hasShadow = present & 1, hasOcclusion = present & 2;
+        const ControlWeights w = controlWeights(sh, oc, hasShadow, hasOcclusion);
+        SCOPED_TRACE(testing::Message() << sh << " " << oc << " " << present);
+        EXPECT_NEAR(w.main + w.occlusion + w.shadow, 1.0f, 1e-6f);
+        for (float x : {w.main, w.occlusion, w.shadow}) EXPECT_TRUE(x >= 0.0f && x <= 1.0f);
+        if (!hasShadow) {
+          EXPECT_EQ(w.shadow, 0.0f);
+        }
+        if (!hasOcclusion) {
+          EXPECT_EQ(w.occlusion, 0.0f);
+        }
+      }
+  // Full shadow is the shadow palette alone; a crevice in the light blends by its depth.
+  EXPECT_EQ(controlWeights(1.0f, 0.7f, true, true).shadow, 1.0f);
+  EXPECT_FLOAT_EQ(controlWeights(0.0f, 0.3f, true, true).occlusion, 0.3f);
+  EXPECT_FLOAT_EQ(controlWeights(0.5f, 0.5f, true, true).main, 0.25f);
+  EXPECT_FLOAT_EQ(controlWeights(NAN, 0.0f, true, true).main, 1.0f);
 }
 
 }  // namespace

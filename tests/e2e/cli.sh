@@ -90,6 +90,17 @@ expect 0 "--triangle-lighting cpu" -- "$viewer" --headless --size 96x96 --light 
 expect 2 "bad --triangle-lighting" -- "$viewer" --headless --triangle-lighting quantum
 expect 2 "--occlusion-strength 2" -- "$viewer" --headless --occlusion --occlusion-strength 2
 expect 2 "--occlusion-strength nan" -- "$viewer" --headless --occlusion --occlusion-strength nan
+# Control-image palettes: drawn where shadows fall (the frame changes); a missing file is a bad
+# argument; one whose parameter is off is a note saying what to turn on, not a failure.
+expect 0 "--shadow-palette" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --shadows \
+  --shadow-palette "$src/palettes/stipple/stipple.palette" --screenshot "$tmp/shadow-palette.png"
+cmp -s "$tmp/shadows.png" "$tmp/shadow-palette.png" && { echo "FAIL: --shadow-palette changes nothing"; fail=1; }
+expect 2 "--shadow-palette missing file" -- "$viewer" --headless --shadow-palette "$tmp/nope.palette"
+grep -q -- "--shadow-palette: palette file '.*nope.palette' does not exist" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
+expect 1 "--occlusion-palette broken" -- "$viewer" --headless --occlusion --occlusion-palette "$tmp/bad.palette"
+grep -q "occlusion palette not loaded.*line 1" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
+expect 0 "--occlusion-palette without --occlusion" -- "$viewer" --headless --size 32x32 --occlusion-palette "$src/palettes/stipple/stipple.palette"
+grep -q "turn occlusion on" "$tmp/err" || { echo "FAIL: no note for an idle occlusion palette: $(cat "$tmp/err")"; fail=1; }
 
 # Pattern scale, the palette maker and contact sheets.
 expect 0 "--pattern-scale 2" -- "$viewer" --headless --size 96x96 --light 1,3,1 --pattern-scale 2 --screenshot "$tmp/scaled.png"

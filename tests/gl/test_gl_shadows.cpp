@@ -4,7 +4,9 @@
 // two are the same (the per-triangle paths get shadows from the GPU per-triangle lighting,
 // whose entries agree with the CPU's). A flat plate lit at grazing angles shows no acne at any
 // zoom. Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
-// lower in a concave corner than on convex ones, and darkens the frame there.
+// lower in a concave corner than on convex ones, and darkens the frame there. Control-image
+// palettes (seed 003) fall where the ray-cast reference says the light is blocked, and weigh
+// the three palettes as a partition of unity in every path.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,6 +44,37 @@ int entryAt(const ImageRGBA8& entries, glm::ivec2 p) {
   EXPECT_TRUE(p.x >= 0 && p.y >= 0 && p.x < entries.width && p.y < entries.height) << p.x << ", " << p.y;
   if (p.x < 0 || p.y < 0 || p.x >= entries.width || p.y >= entries.height) return -1;
   return entries.pixels[(size_t(p.y) * entries.width + size_t(p.x)) * 4];
+}
+
+// A cube floating above a plate, both in the model.
+Mesh floatingCubeOverPlate() {
+  std::vector<Triangle> scene;
+  const Mesh c = unitCube();
+  for (std::size_t t = 0; t < c.triangleCount(); ++t) {
+    Triangle tri;
+    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = c.positions[c.indices[t * 3 + size_t(k)]] * 0.6f + glm::vec3(0.0f, 0.2f, 0.0f);
+    scene.push_back(tri);
+  }
+  Triangle a, b;
+  a.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(-1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, 1.5f)};
+  b.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, -1.5f)};
+  scene.push_back(a);
+  scene.push_back(b);
+  return meshFromTriangles(scene);
+}
+
+// One solid entry of `colour` (8-bit values): every lit colour matches it.
+Palette solidPalette(const std::string& name, glm::u8vec3 colour) {
+  Palette p;
+  p.name = name;
+  PaletteEntry e;
+  e.image = ImageRGBA8{4, 4, std::vector<std::uint8_t>(64, 255)};
+  for (std::size_t k = 0; k < 64; k += 4)
+    for (int ch = 0; ch < 3; ++ch) e.image.pixels[k + std::size_t(ch)] = colour[ch];
+  e.average = glm::vec3(colour) / 255.0f;
+  e.intensity = e.average.r + e.average.g + e.average.b;
+  p.entries.push_back(std::move(e));
+  return p;
 }
 
 CameraMatrices sceneCamera() {
@@ -147,19 +180,7 @@ TEST_F(Shadows, AgreeWithARayCastReference) {
   // A cube floating above a plate, both in the model, a directional light from the side: the
   // pixels the reference path draws darker with shadows are those a ray toward the light from
   // their surface point cannot leave (away from a 2-pixel band along the shadows' edges).
-  std::vector<Triangle> scene;
-  const Mesh c = unitCube();
-  for (std::size_t t = 0; t < c.triangleCount(); ++t) {
-    Triangle tri;
-    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = c.positions[c.indices[t * 3 + size_t(k)]] * 0.6f + glm::vec3(0.0f, 0.2f, 0.0f);
-    scene.push_back(tri);
-  }
-  Triangle a, b;
-  a.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(-1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, 1.5f)};
-  b.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, -1.5f)};
-  scene.push_back(a);
-  scene.push_back(b);
-  const Mesh m = meshFromTriangles(scene);
+  const Mesh m = floatingCubeOverPlate();
   r->setMesh(&m);
   for (const glm::vec3 dir : {glm::vec3(1.0f, 1.5f, 0.4f), glm::vec3(-0.6f, 1.0f, -0.8f), glm::vec3(0.2f, 1.0f, 0.1f)}) {
     const glm::vec3 toLight = glm::normalize(dir);
@@ -292,6 +313,72 @@ TEST_F(Shadows, OcclusionIsLowerInAConcaveCornerThanOnAConvexOne) {
     EXPECT_GT(inkDark, (path == RenderPath::Smooth ? 1.003 : 1.03) * inkPlain) << pathInfo(path).name;  // smooth: the blend softens it
   }
   r->setMesh(&cube);
+}
+
+TEST_F(Shadows, ControlPalettesFallWhereRaysAreBlocked) {
+  // Seed 003's control images: a shadow palette drawn where the light is blocked. White main
+  // palette, black shadow palette: the frame darkens exactly where a ray toward the light from
+  // the surface hits the scene (the ray-cast reference of AgreeWithARayCastReference).
+  const Mesh m = floatingCubeOverPlate();
+  r->setMesh(&m);
+  ASSERT_TRUE(r->setPalette(solidPalette("white", {255, 255, 255})));
+  for (const glm::vec3 dir : {glm::vec3(1.0f, 1.5f, 0.4f), glm::vec3(-0.6f, 1.0f, -0.8f)}) {
+    const glm::vec3 toLight = glm::normalize(dir);
+    light(glm::vec4(toLight, 0.0f));
+    RenderSettings s;
+    s.shadows = true;
+    r->clearControlPalette(ControlParameter::Shadow);
+    const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
+    ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, solidPalette("black", {0, 0, 0})));
+    const ImageRGBA8 drawn = test::renderImage(*r, cam, s, kSize, kSize);
+    const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+    const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+    const test::ShadowAgreement a = test::compareShadows(m, toLight, cam, pos, nrm, plain, drawn);
+    EXPECT_GT(a.shadowed, 200u);
+    EXPECT_GE(a.agreement, 0.99) << "light " << dir.x << ", " << dir.y << ", " << dir.z;
+  }
+  r->clearControlPalette(ControlParameter::Shadow);
+  r->setMesh(&cube);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+}
+
+TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
+  // Main blue, occlusion green, shadow red, one solid entry each: every covered pixel's
+  // channels are the three weights, which must sum to 1 (within the 8-bit blends' rounding),
+  // in every palette path. The per-pixel paths show both parameters.
+  const Mesh m = floatingCubeOverPlate();
+  r->setMesh(&m);
+  ASSERT_TRUE(r->setPalette(solidPalette("blue", {0, 0, 255})));
+  ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, solidPalette("red", {255, 0, 0})));
+  ASSERT_TRUE(r->setControlPalette(ControlParameter::Occlusion, solidPalette("green", {0, 255, 0})));
+  light(glm::vec4(glm::normalize(glm::vec3(1.0f, 1.5f, 0.4f)), 0.0f));
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Smooth, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.shadows = s.occlusion = true;
+    const ImageRGBA8 img = test::renderImage(*r, cam, s, kSize, kSize);
+    int covered = 0, off = 0, shadowed = 0, occluded = 0;
+    for (std::size_t i = 0; i < cover.pixels.size() / 4; ++i) {
+      if (cover.pixels[i * 4 + 3] == 0.0f) continue;
+      ++covered;
+      const int r8 = img.pixels[i * 4], g8 = img.pixels[i * 4 + 1], b8 = img.pixels[i * 4 + 2];
+      off += std::abs(r8 + g8 + b8 - 255) > 3;
+      shadowed += r8 > 230;
+      occluded += g8 > 25;
+    }
+    EXPECT_GT(covered, 8000);
+    EXPECT_EQ(off, 0) << "pixels whose weights do not sum to 1";
+    if (path != RenderPath::Vertex) {  // per vertex, the plate's four corners are all lit and open
+      EXPECT_GT(shadowed, 200);
+      EXPECT_GT(occluded, 100);
+    }
+  }
+  r->clearControlPalette(ControlParameter::Shadow);
+  r->clearControlPalette(ControlParameter::Occlusion);
+  r->setMesh(&cube);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
 }
 
 TEST_F(Shadows, OcclusionBakesInStepsWithABudget) {

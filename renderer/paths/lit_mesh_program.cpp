@@ -1,0 +1,46 @@
+// GPU-lit mesh programs (see lit_mesh_program.h).
+#include "renderer/paths/lit_mesh_program.h"
+
+#include <algorithm>
+
+#include "renderer/lighting/lighting_uniforms.h"
+#include "renderer/lighting/mesh_materials.h"
+
+namespace npr {
+
+gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, const GpuPalette* palette) {
+  gl::MeshProgram variant;
+  variant.shading = shading;
+  variant.output = f.output;
+  const bool materials = f.drawMaterials();
+  variant.materials = materials;
+  variant.materialMaps = materials && f.materials.hasMaps();
+  variant.vertexColours = materials && !f.mesh.colours.empty();
+  variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
+  if (f.shadows) variant.shadowLayers = f.shadows->layers();
+  variant.occlusion = shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
+  if (palette) {
+    // Selections are the same turned or not: only colour output turns the lookups.
+    const bool colour = f.output == gl::MeshOutput::Colour;
+    variant.palette = palette->variant(f.settings.match);
+    if (!colour) variant.palette->orientBins = 0;
+    variant.stroke = colour ? palette->strokeSource() : gl::StrokeSource::None;
+  }
+  return variant;
+}
+
+void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProgram& variant, const GpuPalette* palette) {
+  p.use();
+  setMeshTransform(p, f.camera);
+  if (variant.materials) {
+    uploadMaterialLightingUniforms(p, f.lighting, glm::mat4(1.0f));
+    f.materials.bind(p);
+  } else {
+    uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
+  }
+  if (palette) palette->bind(p, f.output == gl::MeshOutput::Colour);
+  if (f.shadows) f.shadows->bind(p, f.camera.view);
+  if (variant.occlusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
+}
+
+}  // namespace npr

@@ -1,0 +1,16 @@
+// The program and uniforms of a GPU-lit mesh pass (mesh.vert + mesh.frag lighting on the GPU):
+// lights or the mesh's own materials, shadow maps, baked occlusion, and a palette. Shared by
+// the single-pass paths (shaded_path.h) and the control-image palettes drawn over any path
+// (passes/control_palette_pass.h), so both light a pixel the same way.
+#pragma once
+
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+
+// The variant for `shading` in this frame, reading `palette` (null: a shading with no palette).
+gl::MeshProgram litMeshProgram(const FrameContext& frame, gl::MeshShading shading, const GpuPalette* palette);
+// Uses the program and sets everything that variant reads.
+void bindLitMesh(const FrameContext& frame, gl::ShaderProgram& program, const gl::MeshProgram& variant, const GpuPalette* palette);
+
+}  // namespace npr
