@@ -134,6 +134,9 @@ struct RenderSettings {
   // the GPU-lit paths: by mix(1, occlusion, strength).
   bool occlusion = false;
   float occlusionStrength = 1.0f;
+  // Draw the control-image palettes the renderer holds (off: the main palette alone, to
+  // compare; passes/control_palette_pass.h).
+  bool controlPalettes = true;
   TriangleLighting triangleLighting = TriangleLighting::Auto;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle

@@ -296,6 +296,7 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
 
 Status Renderer::drawPathWithControls(FrameContext& frame, RenderPath path) {
   if (Status st = paths_[pathIndex(path)]->draw(frame); !st) return st;
+  if (!frame.settings.controlPalettes) return okStatus();
   frame.shadowPalette = shadowPalette_.get();
   frame.occlusionPalette = occlusionPalette_.get();
   return drawControlPalettes(frame, path);

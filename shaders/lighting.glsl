@@ -6,8 +6,8 @@
 // materials) they are the lights' own colours, multiplied here by the material the caller
 // passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
 // light up in its shadow map: a blocked light keeps its ambient term only, as OpenGL's would.
-// CONTROL_SHADOW also measures, in shadowShare, how much of the diffuse light reaching the
-// surface the shadows block (control-image palettes: passes/control_palette_pass.h).
+// CONTROL_SHADOW adds shadowShareAt: how much of the diffuse light reaching the surface the
+// shadows block (control-image palettes: passes/control_palette_pass.h).
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
@@ -71,12 +71,6 @@ uniform vec2 uToneWeights;  // alpha, beta: k_cool = k_blue + alpha k_d
 
 const float kMaxFloat = 3.402823e38;
 
-#ifdef CONTROL_SHADOW
-// The share of the diffuse light on the surface that shadows block: 0 lit (or facing away
-// from every light: attached shadow is the tone's business), 1 in full cast shadow. Set by
-// shadeParts; each light weighted by its unshadowed diffuse term's brightness there.
-float shadowShare = 0.0;
-#endif
 
 // x^e with OpenGL's convention x^0 = 1, and 0 for x <= 0 otherwise (GLSL's pow is undefined there).
 float powGL(float x, float e) {
@@ -93,6 +87,73 @@ vec3 clamp01(vec3 c) {  // NaN -> 0, like the CPU
   bvec3 positive = greaterThan(c, vec3(0.0));
   return mix(vec3(0.0), min(c, vec3(1.0)), positive);
 }
+
+#if NUM_LIGHTS > 0
+// Light i as seen from eye-space point `pos` with unit normal `n`: the unit direction to it,
+// its attenuation and its spot factor (0: outside the cone).
+void lightReach(int i, vec3 pos, vec3 n, out vec3 vp, out float att, out float spot) {
+  vp = uLightPosition[i].xyz;
+  att = 1.0;
+#ifdef HAS_POSITIONAL
+  if (uLightPosition[i].w != 0.0) {
+    vec3 d = uLightPosition[i].xyz - pos;
+    float dist = length(d);
+    vp = (dist > 0.0 && !isinf(dist)) ? d / dist : n;
+#ifdef HAS_ATTENUATION
+    float den = uAttenuation[i].x + (uAttenuation[i].y + uAttenuation[i].z * dist) * dist;
+    att = den > 0.0 ? 1.0 / den : kMaxFloat;
+    if (isinf(att)) att = kMaxFloat;
+#endif
+  }
+#endif
+  spot = 1.0;
+#ifdef HAS_SPOT
+  float sdot = dot(-vp, uSpotDirection[i]);
+  spot = sdot >= uSpotCosCutoff[i] ? powGL(max(sdot, 0.0), uSpotExponent[i]) : 0.0;
+#endif
+}
+#endif
+
+#if defined(CONTROL_SHADOW) && defined(SHADOWS) && NUM_LIGHTS > 0
+// Each light's visibility as shadowShareAt found it, which shadeParts then reuses: the shadow
+// maps are read once per pixel (they are the expensive part on a software rasterizer).
+float controlVisible[NUM_LIGHTS];
+#define LIGHT_VISIBILITY(i, pos, n, ndl) controlVisible[i]
+#elif defined(SHADOWS)
+#define LIGHT_VISIBILITY(i, pos, n, ndl) shadowVisibility(i, pos, n, ndl)
+#endif
+
+#ifdef CONTROL_SHADOW
+// The share of the diffuse light reaching the surface that shadows block: 0 lit (or facing
+// away from every light: attached shadow is the tone's business), 1 in full cast shadow; each
+// light weighted by its unshadowed diffuse term there (the lights' own colours, so the control
+// pass can ask before it lights). Call it before shadeParts at the same point: that reuses the
+// visibilities found here.
+float shadowShareAt(vec3 pos, vec3 normal, bool backFacing) {
+#if defined(SHADOWS) && NUM_LIGHTS > 0 && !defined(LIGHTING_OFF)
+  vec3 n = safeNormalize(normal);
+#ifdef TWO_SIDED
+  if (backFacing) n = -n;
+#endif
+  float diffuseSum = 0.0, blockedSum = 0.0;
+  for (int i = 0; i < NUM_LIGHTS; ++i) {
+    vec3 vp;
+    float att, spot;
+    lightReach(i, pos, n, vp, att, spot);
+    float ndl = max(dot(n, vp), 0.0);
+    controlVisible[i] = ndl > 0.0 && spot != 0.0 ? shadowVisibility(i, pos, n, ndl) : 1.0;
+    // Bounded weights (attenuation can reach kMaxFloat): the share stays finite.
+    float reach = ndl * min(att * spot, 1e6) * dot(uLightDiffuse[i], vec3(1.0 / 3.0));
+    if (!(reach > 0.0) || isinf(reach)) continue;
+    diffuseSum += reach;
+    blockedSum += reach * (1.0 - controlVisible[i]);
+  }
+  return diffuseSum > 0.0 ? clamp(blockedSum / diffuseSum, 0.0, 1.0) : 0.0;
+#else
+  return 0.0;
+#endif
+}
+#endif
 
 // The lit colour in two parts: the return value is what a surface colour does not scale
 // (emission, specular), `scaled` what it does (ambient and diffuse), so a vertex colour or a
@@ -146,42 +207,15 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
   if (toEye == vec3(0.0)) toEye = vec3(0.0, 0.0, 1.0);
 #endif
 #endif
-#ifdef CONTROL_SHADOW
-  float diffuseSum = 0.0, blockedSum = 0.0;
-#endif
   for (int i = 0; i < NUM_LIGHTS; ++i) {
-    vec3 vp = uLightPosition[i].xyz;
-    float att = 1.0;
-#ifdef HAS_POSITIONAL
-    if (uLightPosition[i].w != 0.0) {
-      vec3 d = uLightPosition[i].xyz - pos;
-      float dist = length(d);
-      vp = (dist > 0.0 && !isinf(dist)) ? d / dist : n;
-#ifdef HAS_ATTENUATION
-      float den = uAttenuation[i].x + (uAttenuation[i].y + uAttenuation[i].z * dist) * dist;
-      att = den > 0.0 ? 1.0 / den : kMaxFloat;
-      if (isinf(att)) att = kMaxFloat;
-#endif
-    }
-#endif
-    float spot = 1.0;
-#ifdef HAS_SPOT
-    float sdot = dot(-vp, uSpotDirection[i]);
-    spot = sdot >= uSpotCosCutoff[i] ? powGL(max(sdot, 0.0), uSpotExponent[i]) : 0.0;
-#endif
+    vec3 vp;
+    float att, spot;
+    lightReach(i, pos, n, vp, att, spot);
     if (spot == 0.0) continue;
     float ndl = max(dot(n, vp), 0.0);
     float visible = 1.0;
 #ifdef SHADOWS
-    if (ndl > 0.0) visible = shadowVisibility(i, pos, n, ndl);
-#ifdef CONTROL_SHADOW
-    // Bounded weights (attenuation can reach kMaxFloat): the share stays finite.
-    float reach = ndl * min(att * spot, 1e6) * dot(LIGHT_DIFFUSE(side, i), vec3(1.0 / 3.0));
-    if (reach > 0.0 && !isinf(reach)) {
-      diffuseSum += reach;
-      blockedSum += reach * (1.0 - visible);
-    }
-#endif
+    if (ndl > 0.0) visible = LIGHT_VISIBILITY(i, pos, n, ndl);
     ndl *= visible;
 #endif
     vec3 term = LIGHT_AMBIENT(side, i) + ndl * LIGHT_DIFFUSE(side, i);
@@ -195,9 +229,6 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
     }
 #endif
   }
-#ifdef CONTROL_SHADOW
-  shadowShare = diffuseSum > 0.0 ? clamp(blockedSum / diffuseSum, 0.0, 1.0) : 0.0;
-#endif
 #endif
   return c;
 #endif

@@ -78,6 +78,18 @@ out vec4 fragColor;
 #endif
 
 void main() {
+#ifdef CONTROL
+  // The parameter first: where it is 0 (most of the frame) nothing is lit or looked up. Below
+  // 1/512 a blend moves no 8-bit channel by half a step: skipped too.
+#if defined(PATH_VERTEX)
+  float control = vControl;
+#elif defined(CONTROL_SHADOW)
+  float control = shadowShareAt(vPosition, vNormal, !gl_FrontFacing);
+#else
+  float control = 1.0 - OCCLUSION_FACTOR;
+#endif
+  if (!(control > 1.0 / 512.0)) discard;
+#endif
 #if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
   setStrokeFromDirection(vStrokeDirection);
 #elif defined(ORIENT_FIXED)
@@ -128,14 +140,6 @@ void main() {
 #endif
 #endif
 #ifdef CONTROL
-#if defined(PATH_VERTEX)
-  float control = vControl;
-#elif defined(CONTROL_SHADOW)
-  float control = shadowShare;
-#else
-  float control = 1.0 - OCCLUSION_FACTOR;
-#endif
-  if (!(control > 0.0)) discard;
   fragColor.a = min(control, 1.0);
 #endif
 }

@@ -56,12 +56,7 @@ out vec3 vColorBack;
 out float vControl;
 #endif
 #endif
-#if defined(PER_VERTEX_LIGHTING) && defined(CONTROL_SHADOW)
-// The front side's share (a back side lit after it would overwrite shadowShare).
-#define FRONT_SHADOW_SHARE vControl = shadowShare
-#else
-#define FRONT_SHADOW_SHARE
-#endif
+
 
 void main() {
   vec4 eye = uModelView * vec4(aPosition, 1.0);
@@ -90,7 +85,6 @@ void main() {
 #if defined(PER_VERTEX_LIGHTING) && defined(MATERIALS)
   SurfaceMaterial mat = fetchMaterial(aMaterial);
   vColorFront = shadeScaled(mat, eye.xyz, vNormal, false, aColour * aMapAverage * occlusion);
-  FRONT_SHADOW_SHARE;
 #ifdef TWO_SIDED
   vColorBack = shadeScaled(mat, eye.xyz, vNormal, true, aColour * aMapAverage * occlusion);
 #else
@@ -98,7 +92,6 @@ void main() {
 #endif
 #elif defined(PER_VERTEX_LIGHTING)
   vColorFront = shadeScaled(eye.xyz, vNormal, false, vec3(occlusion));
-  FRONT_SHADOW_SHARE;
 #ifdef TWO_SIDED
   vColorBack = shadeScaled(eye.xyz, vNormal, true, vec3(occlusion));
 #else
@@ -107,5 +100,7 @@ void main() {
 #endif
 #if defined(PER_VERTEX_LIGHTING) && defined(CONTROL_OCCLUSION)
   vControl = 1.0 - occlusion;
+#elif defined(PER_VERTEX_LIGHTING) && defined(CONTROL_SHADOW)
+  vControl = shadowShareAt(eye.xyz, vNormal, false);
 #endif
 }

@@ -151,6 +151,7 @@ void drawOverlay(Viewer& v) {
         if (ImGui::Selectable(std::filesystem::path(p).stem().string().c_str(), current == p)) (void)s.setControlPalette(parameter, p, *v.renderer);
       ImGui::EndCombo();
     };
+    ImGui::Checkbox("draw control palettes", &s.settings.controlPalettes);
     if (s.settings.shadows) choose("in shadow", ControlParameter::Shadow, s.shadowPalette);
     if (s.settings.occlusion) choose("in crevices", ControlParameter::Occlusion, s.occlusionPalette);
   }

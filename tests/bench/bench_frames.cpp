@@ -6,7 +6,7 @@
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
-//      [--static-light] [--occlusion] [--gpu-triangles]
+//      [--static-light] [--occlusion] [--gpu-triangles] [--control]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -58,6 +58,7 @@ struct PathRow {
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
   bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
+  bool control = false;                   // control-image palettes drawn (--control)
 };
 
 }  // namespace
@@ -66,7 +67,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -82,17 +83,19 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
     else if (!std::strcmp(argv[i], "--gpu-triangles")) gpuTriangles = true;
+    else if (!std::strcmp(argv[i], "--control")) control = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else if (!std::strcmp(argv[i], "--paths") && i + 1 < argc) pathFilter = "," + std::string(argv[++i]) + ",";
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
-                           "ambient occlusion, baked before timing; --gpu-triangles adds the per-triangle paths lit on the GPU)\n");
+                           "ambient occlusion, baked before timing; --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
+                           "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices)\n");
       return 2;
     }
   }
@@ -120,6 +123,10 @@ int main(int argc, char** argv) {
   auto crosshatch = loadPalette(std::string(NPR_SOURCE_DIR) + (orient ? "/palettes/hatch/hatch.palette" : "/palettes/crosshatch/crosshatch.palette"));
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
   if (!crosshatch || !bunny) return 1;
+  if (control) {
+    auto stipple = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/stipple/stipple.palette");
+    if (!stipple || !r.setControlPalette(ControlParameter::Shadow, *stipple) || !r.setControlPalette(ControlParameter::Occlusion, *stipple)) return 1;
+  }
   struct Scene { const char* name; const Mesh* mesh; };
   std::vector<Scene> scenes;
   if (meshFilter.empty() || meshFilter == "bunny") scenes.push_back({"bunny", &*bunny});
@@ -197,12 +204,22 @@ int main(int argc, char** argv) {
         on.label += "+shadows";
         on.shadows = true;
         paths.push_back(on);
+        if (control) {
+          on.label += "+control";
+          on.control = true;
+          paths.push_back(on);
+        }
       }
       if (occlusion && p.path != RenderPath::Triangle && p.path != RenderPath::Stencil) {
         PathRow on = p;
         on.label += "+occlusion";
         on.occlusion = true;
         paths.push_back(on);
+        if (control) {
+          on.label += "+control";
+          on.control = true;
+          paths.push_back(on);
+        }
       }
       if (gpuTriangles && (p.path == RenderPath::Triangle || p.path == RenderPath::Stencil)) {
         PathRow on = p;
@@ -244,6 +261,7 @@ int main(int argc, char** argv) {
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
+        s.controlPalettes = paths[p].control;
         s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
           OrbitCamera moving = cam;
