@@ -13,10 +13,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "app/benchmark/benchmark_results.h"
 #include "app/benchmark/interleaved_timing.h"
+#include "app/benchmark/ray_reference.h"
 #include "app/progress_line.h"
 #include "app/headless/headless_session.h"
 #include "app/viewer_state.h"
@@ -25,7 +27,9 @@
 #include "renderer/lighting/lighting_model.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/core/parallel.h"
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/shadows/occlusion_bake.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -65,8 +69,12 @@ bool measuredForAccuracy(const PathInfo& p) { return p.userSelectable && p.usesP
 
 bool finite3(const float* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
+void measureAccuracy(Renderer& r, const Mesh& mesh, const OrbitCamera& base, glm::ivec2 size, int frames, const RenderSettings& settings,
                      ConfigResult& out) {
+  // With shadows or occlusion on, the reference casts rays through the mesh for them.
+  const std::optional<RayScene> rays = settings.shadows || settings.occlusion ? std::optional<RayScene>(std::in_place, mesh) : std::nullopt;
+  const std::vector<glm::vec3> skyDirections = OcclusionBake::sampleDirections(OcclusionBake::kDefaultDirections);
+  const double occlusionStrength = std::clamp(double(settings.occlusionStrength), 0.0, 1.0);
   auto target = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
   if (!target) return;
   const float aspect = float(size.x) / float(size.y);
@@ -98,26 +106,55 @@ void measureAccuracy(Renderer& r, const OrbitCamera& base, glm::ivec2 size, int 
     const PaletteMatcher& matcher = *r.matcher();
     const auto lighting = prepareLighting<double>(r.lighting());
     // The ideal: the lighting model in double precision at each pixel's interpolated
-    // position and normal, independent of every path under test.
-    for (size_t i = 0; i < n; ++i) {
-      ideal[i] = NAN;
-      idealIndex[i] = -1;
-      if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
-      const float* p = &pos.pixels[i * 4];
-      const float* q = &nrm.pixels[i * 4];
-      if (!finite3(p) || !finite3(q)) {
-        ++out.nonFinite;
-        continue;
+    // position and normal, independent of every path under test; with shadows, each light's
+    // visibility by a ray toward it, and with occlusion the bake's quantity by rays in the
+    // bake's directions, both from the pixel's own surface point.
+    const glm::dmat4 toModel = glm::inverse(glm::dmat4(m.camera.view));
+    const glm::dmat3 toModel3(toModel);
+    std::vector<std::uint64_t> bad(size_t(workerCount()), 0);
+    parallelChunks(n, workerCount(), [&](size_t begin, size_t end, int chunk) {
+      for (size_t i = begin; i < end; ++i) {
+        ideal[i] = NAN;
+        idealIndex[i] = -1;
+        if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
+        const float* p = &pos.pixels[i * 4];
+        const float* q = &nrm.pixels[i * 4];
+        if (!finite3(p) || !finite3(q)) {
+          ++bad[size_t(chunk)];
+          continue;
+        }
+        const glm::dvec3 pe(p[0], p[1], p[2]), ne(q[0], q[1], q[2]);
+        const bool back = p[3] < 0.0f;
+        glm::dvec3 scale(1.0);
+        double visibility[kMaxLights];
+        if (rays && glm::length(ne) > 0.0) {
+          const glm::dvec3 side = glm::normalize(back && lighting.twoSided ? -ne : ne);
+          const glm::dvec3 pm(toModel * glm::dvec4(pe, 1.0)), nm = toModel3 * side;
+          const glm::dvec3 origin = pm + nm * rays->offset();
+          for (int l = 0; settings.shadows && l < lighting.count; ++l) {
+            const auto& light = lighting.lights[l];
+            glm::dvec3 vp = light.position;
+            double reach = INFINITY;
+            if (light.positional) {
+              const glm::dvec3 d = light.position - pe;
+              reach = glm::length(d);
+              vp = reach > 0.0 && std::isfinite(reach) ? d / reach : side;
+            }
+            visibility[l] = glm::dot(side, vp) > 0.0 && rays->blocked(origin, toModel3 * vp, reach) ? 0.0 : 1.0;
+          }
+          if (settings.occlusion) scale = glm::dvec3(1.0 + occlusionStrength * (rays->openness(pm, nm, skyDirections) - 1.0));
+        }
+        const glm::dvec3 lit = shade(lighting, pe, ne, back, scale, rays && settings.shadows ? visibility : nullptr);
+        if (!std::isfinite(lit.x) || !std::isfinite(lit.y) || !std::isfinite(lit.z)) {
+          ++bad[size_t(chunk)];
+          continue;
+        }
+        idealColour[i] = lit;
+        ideal[i] = settings.match == MatchMode::Colors ? 0.0f : matcher.tonePosition(glm::vec3(lit));
+        idealIndex[i] = matcher.match(glm::vec3(lit));
       }
-      const glm::dvec3 lit = shade(lighting, glm::dvec3(p[0], p[1], p[2]), glm::dvec3(q[0], q[1], q[2]), p[3] < 0.0f);
-      if (!std::isfinite(lit.x) || !std::isfinite(lit.y) || !std::isfinite(lit.z)) {
-        ++out.nonFinite;
-        continue;
-      }
-      idealColour[i] = lit;
-      ideal[i] = settings.match == MatchMode::Colors ? 0.0f : matcher.tonePosition(glm::vec3(lit));
-      idealIndex[i] = matcher.match(glm::vec3(lit));
-    }
+    });
+    for (std::uint64_t b : bad) out.nonFinite += b;
     const auto& ranks = matcher.entryRanks();
     const auto& avg = matcher.scaledAverages();
     for (size_t k = 0; k < out.paths.size(); ++k) {
@@ -259,8 +296,13 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   RenderSettings settings;
   settings.match = mode;
   settings.rangeScale = o.rangeScale.value_or(palette.defaultRangeScale.value_or(1.0f));
+  settings.shadows = o.shadows;
+  settings.occlusion = o.occlusion;
+  settings.occlusionStrength = o.occlusionStrength.value_or(1.0f);
   ConfigResult c;
   c.model = fs::path(mesh.report.file).filename().string();
+  if (o.shadows) c.model += " +shadows";
+  if (o.occlusion) c.model += " +occlusion";
   c.palette = palette.name + " (" + std::to_string(palette.entries.size()) + ")";
   c.mode = mode;
   c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
@@ -268,7 +310,7 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   for (const PathInfo& p : renderPaths())
     if (measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
   std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
-  measureAccuracy(r, camera, o.size, frames, settings, c);
+  measureAccuracy(r, mesh, camera, o.size, frames, settings, c);
   for (const PathInfo& p : renderPaths())
     if (!measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
   std::fprintf(stderr, "benchmark: speed...\n");

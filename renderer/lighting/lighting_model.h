@@ -138,11 +138,13 @@ glm::vec<3, T> safeNormalize(const glm::vec<3, T>& v) {
 // selects the back material and the flipped normal (only when two-sided lighting is on).
 // `scale` multiplies the material's ambient and diffuse reflectance (a vertex colour or a
 // texture's colour at the point), as a colour-material or a modulating texture would.
+// `visibility`, when given, is how much of each light (in p.lights order) reaches the point:
+// 1 lit, 0 blocked (a cast shadow keeps the light's ambient term only, as lighting.glsl does).
 // Always finite and in [0,1]: degenerate input (zero or NaN normal, NaN position, a light
 // at the point, zero attenuation) gives a defined colour, never NaN.
 template <class T>
 glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, const glm::vec<3, T>& normal, bool back = false,
-                     const glm::vec<3, T>& scale = glm::vec<3, T>(1)) {
+                     const glm::vec<3, T>& scale = glm::vec<3, T>(1), const T* visibility = nullptr) {
   using namespace lighting_detail;
   using V3 = glm::vec<3, T>;
   if (!p.lighting) return p.unlit;
@@ -199,12 +201,13 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
       spot = sdot >= l.spotCosCutoff ? powGL(std::max(sdot, T(0)), l.spotExponent) : T(0);
     }
     if (spot == T(0)) continue;
-    const T ndl = std::max(glm::dot(n, vp), T(0));
+    const T visible = visibility ? clamp01(visibility[i]) : T(1);
+    const T ndl = std::max(glm::dot(n, vp), T(0)) * visible;
     V3 term = l.ambient[side] + ndl * l.diffuse[side];
     V3 spec(0);
     if (p.specular && ndl > T(0)) {
       const V3 h = safeNormalize(vp + toEye);
-      spec = powGL(std::max(glm::dot(n, h), T(0)), p.shininess[side]) * l.specular[side];
+      spec = visible * powGL(std::max(glm::dot(n, h), T(0)), p.shininess[side]) * l.specular[side];
     }
     V3 contrib = (att * spot) * term, contribSpec = (att * spot) * spec;
     for (int k = 0; k < 3; ++k) {

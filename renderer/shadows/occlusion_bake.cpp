@@ -33,17 +33,25 @@ std::vector<int> spreadOrder(int n) {
 
 }  // namespace
 
+std::vector<glm::vec3> OcclusionBake::sampleDirections(int count) {
+  count = std::clamp(count, 1, 4096);
+  // A Fibonacci spiral over the sphere, taken in an order whose every prefix spreads evenly.
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  std::vector<glm::vec3> dirs;
+  for (int i : spreadOrder(count)) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / count, r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    dirs.push_back(glm::vec3(float(r * std::cos(golden * i)), float(z), float(r * std::sin(golden * i))));
+  }
+  return dirs;
+}
+
 Result<std::unique_ptr<OcclusionBake>> OcclusionBake::start(const Mesh& mesh, const GpuMesh& gpuMesh, int directions) {
   std::unique_ptr<OcclusionBake> b(new OcclusionBake());
   b->gpuMesh_ = &gpuMesh;
   b->vertexCount_ = mesh.positions.size();
   b->radius_ = mesh.radius > 0.0f && std::isfinite(mesh.radius) ? mesh.radius : 1.0f;
-  b->count_ = std::clamp(directions, 1, 4096);
-  const double golden = M_PI * (3.0 - std::sqrt(5.0));
-  for (int i : spreadOrder(b->count_)) {
-    const double z = 1.0 - 2.0 * (i + 0.5) / b->count_, r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    b->dirs_.push_back(glm::vec3(float(r * std::cos(golden * i)), float(z), float(r * std::sin(golden * i))));
-  }
+  b->dirs_ = sampleDirections(directions);
+  b->count_ = int(b->dirs_.size());
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   const int w = std::min<int>(maxSize, 4096);

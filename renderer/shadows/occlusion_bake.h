@@ -26,6 +26,10 @@ class OcclusionBake {
   static constexpr int kDefaultDirections = 64;
   static constexpr int kDepthSize = 1024;
 
+  // The directions a bake of `count` takes, in its order (unit, model space, toward the sky):
+  // the benchmark's ray-cast reference casts the same ones.
+  static std::vector<glm::vec3> sampleDirections(int count);
+
   // Prepares a bake of `mesh` (uploaded as `gpuMesh`, which must outlive the bake).
   [[nodiscard]] static Result<std::unique_ptr<OcclusionBake>> start(const Mesh& mesh, const GpuMesh& gpuMesh, int directions = kDefaultDirections);
 

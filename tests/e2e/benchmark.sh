@@ -31,5 +31,12 @@ le "$(err vertex)" "$(err triangle)" || { echo "FAIL: vertex ($(err vertex)) les
 [ "$(err triangle)" = "$(err stencil)" ] || { echo "FAIL: triangle ($(err triangle)) and stencil ($(err stencil)) differ"; fail=1; }
 awk -F, 'NR > 1 && $20 != 0 { bad = 1 } END { exit bad }' "$csv" || { echo "FAIL: non-finite values seen"; fail=1; }
 grep -q "0 lighting recomputations, 0 uploads, 0 shader builds" "$tmp/out/results.md" || { echo "FAIL: static frames did work"; fail=1; }
+# With --shadows the reference casts rays toward the light: the smooth path, whose only error is
+# rounding, then agrees with it (a reference lit without shadows puts it 0.04 steps off here).
+"$viewer" --benchmark "$src/models/teapot.obj" --size 256x256 --frames 6 --shadows --out "$tmp/shadows" > /dev/null 2> "$tmp/stderr" \
+  || { echo "FAIL: benchmark --shadows exited $?"; cat "$tmp/stderr"; fail=1; }
+smooth=$(awk -F, 'NR > 1 && $4 == "smooth" { print $14 }' "$tmp/shadows/results.csv")
+grep -q "teapot.obj +shadows" "$tmp/shadows/results.csv" || { echo "FAIL: the shadowed run is not labelled"; fail=1; }
+le "$smooth" 0.02 || { echo "FAIL: smooth path with shadows $smooth steps from the ray-cast reference"; fail=1; }
 [ $fail = 0 ] && echo "benchmark: all checks passed"
 exit $fail
