@@ -41,7 +41,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   float outlineOffset = NAN;
   std::string strokeSize;
   std::vector<std::string> paletteFor;
-  std::string animate, pattern, orient, triangleLighting;
+  std::string animate, pattern, orient, triangleLighting, occlusionMethod;
   float creaseAngle = NAN, lineWidth = NAN;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
@@ -91,6 +91,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
   app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
   app.add_option("--occlusion-strength", o.occlusionStrength, "How much the occlusion darkens, 0..1 (default 1)");
+  app.add_option("--occlusion-method", occlusionMethod,
+                 "baked (per vertex, once per mesh, default) | screen (per pixel, every frame, from what the frame shows; pixel, smooth and reference paths)");
   app.add_option("--shadow-palette", o.shadowPalette,
                  "Control image: a palette drawn where cast shadows fall, blended in by the shadowed share of the light (needs --shadows)");
   app.add_option("--occlusion-palette", o.occlusionPalette,
@@ -170,6 +172,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (o.orientBins && (*o.orientBins < OrientSettings::kMinBins || *o.orientBins > OrientSettings::kMaxBins))
     return {std::nullopt, fail("--orient-bins must be " + std::to_string(OrientSettings::kMinBins) + ".." +
                                    std::to_string(OrientSettings::kMaxBins) + ", got " + std::to_string(*o.orientBins))};
+  if (!occlusionMethod.empty()) {
+    if (occlusionMethod == "baked") o.occlusionMethod = OcclusionMethod::Baked;
+    else if (occlusionMethod == "screen") o.occlusionMethod = OcclusionMethod::Screen;
+    else return {std::nullopt, fail("unknown --occlusion-method '" + occlusionMethod + "': use baked or screen")};
+  }
   if (!triangleLighting.empty()) {
     if (triangleLighting == "cpu") o.triangleLighting = TriangleLighting::Cpu;
     else if (triangleLighting == "gpu") o.triangleLighting = TriangleLighting::Gpu;

@@ -56,6 +56,7 @@ struct Options {
   bool shadows = false;                 // --shadows
   bool occlusion = false;               // --occlusion
   std::optional<float> occlusionStrength;  // --occlusion-strength
+  std::optional<OcclusionMethod> occlusionMethod;  // --occlusion-method
   std::string shadowPalette, occlusionPalette;  // --shadow-palette, --occlusion-palette (control images)
   TriangleLighting triangleLighting = TriangleLighting::Auto;  // --triangle-lighting
   std::string saveFrames;     // --save-frames DIR

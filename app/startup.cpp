@@ -44,6 +44,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.shadows) state.settings.shadows = true;
   if (o.occlusion) state.settings.occlusion = true;
   if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
+  if (o.occlusionMethod) state.settings.occlusionMethod = *o.occlusionMethod;
   state.settings.triangleLighting = o.triangleLighting;
   if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
   if (!o.bands.empty()) state.settings.bands = o.bands;

@@ -105,6 +105,11 @@ std::optional<glm::vec2> parseStrokeSize(const std::string& s);
 // `auto`: the GPU when shadows are on (the CPU lighting has no shadow maps), else the CPU.
 enum class TriangleLighting { Auto, Cpu, Gpu };
 
+// Where ambient occlusion comes from: baked per vertex once per mesh (shadows/occlusion_bake.h)
+// or estimated per pixel every frame from what the frame shows (shadows/screen_occlusion_pass.h;
+// the per-pixel shadings only: pixel, smooth, reference's Phong, and the control palettes).
+enum class OcclusionMethod { Baked, Screen };
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -134,6 +139,9 @@ struct RenderSettings {
   // the GPU-lit paths: by mix(1, occlusion, strength).
   bool occlusion = false;
   float occlusionStrength = 1.0f;
+  OcclusionMethod occlusionMethod = OcclusionMethod::Baked;
+  // Screen-space occlusion's reach, in model radii (the hemisphere's radius around each pixel).
+  float screenOcclusionRadius = 0.3f;
   // Draw the control-image palettes the renderer holds (off: the main palette alone, to
   // compare; passes/control_palette_pass.h).
   bool controlPalettes = true;

@@ -224,11 +224,25 @@ Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettin
 }
 
 const std::vector<float>* Renderer::occlusionValues(const RenderSettings& s) const {
-  return s.occlusion && occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr;
+  return s.occlusion && s.occlusionMethod == OcclusionMethod::Baked && occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr;
+}
+
+Status Renderer::prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  screenOcclusionReady_ = false;
+  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Screen || !mesh_) return okStatus();
+  std::vector<const GpuMesh*> meshes{&gpuMesh_};
+  if (s.ground) {
+    prepareGround();
+    meshes.push_back(&groundGpu_);
+  }
+  const float radius = std::clamp(s.screenOcclusionRadius, 0.01f, 10.0f) * (mesh_->radius > 0.0f ? mesh_->radius : 1.0f);
+  if (Status st = screenOcclusion_.draw(meshes, camera, radius, viewport, programs_, emptyVao_, stats_); !st) return st;
+  screenOcclusionReady_ = true;
+  return okStatus();
 }
 
 Status Renderer::prepareOcclusion(const RenderSettings& s) {
-  if (!s.occlusion || !mesh_) return okStatus();
+  if (!s.occlusion || !mesh_ || s.occlusionMethod != OcclusionMethod::Baked) return okStatus();
   if (!occlusion_) {
     Result<std::unique_ptr<OcclusionBake>> bake = OcclusionBake::start(*mesh_, gpuMesh_);
     if (!bake) return Error{bake.error()};
@@ -267,6 +281,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
+    frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
     if (Status st = drawPathWithControls(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
@@ -278,6 +293,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
+    frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
     if (Status st = drawPathWithControls(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
@@ -291,6 +307,7 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
   plain.materials = false;
   FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
   frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+  frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
   return drawPathWithControls(frame, s.path);
 }
 
@@ -314,6 +331,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (shadowStatus) shadowStatus = prepareOcclusion(s);
   timer_.begin();
   clearViewport(viewport);
+  if (shadowStatus) shadowStatus = prepareScreenOcclusion(camera, s, viewport);
   Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
   if (result) result = drawPath(camera, s, viewport, gl::MeshOutput::Colour);
   if (result && mesh_ && s.strokes.on && palette_) {
@@ -337,6 +355,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   if (Status st = prepareShadows(camera, s); !st) return st;
   if (Status st = prepareOcclusion(s); !st) return st;
   clearViewport(viewport);
+  if (Status st = prepareScreenOcclusion(camera, s, viewport); !st) return st;
   const Status result = drawPath(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend);
   gl::restoreDefaults();
   return result;

@@ -36,6 +36,7 @@
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
 #include "renderer/shadows/occlusion_bake.h"
+#include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
 #include "renderer/strokes/brush_stroke_pass.h"
 
@@ -195,6 +196,10 @@ class Renderer {
   std::unique_ptr<OcclusionBake> occlusion_;
   const std::vector<float>* occlusionValues(const RenderSettings& settings) const;  // null until baked
   double occlusionBudgetMs_ = 0.0;
+  // This frame's screen-space occlusion, when `settings` ask for it; after the viewport's clear.
+  Status prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+  ScreenOcclusionPass screenOcclusion_;
+  bool screenOcclusionReady_ = false;
   glm::ivec2 frameOffset_{0};
   std::function<void(const std::string&, double)> progress_;
   bool shadowsReady_ = false;  // this frame draws with shadows_

@@ -10,6 +10,7 @@
 //  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
 //  PATH_STROKE_ANGLE  the pixel's hatching angle on screen (radians, valid) for the stencil path
 // ORIENT_FIELD, ORIENT_LIGHT or ORIENT_FIXED: where the hatching angle comes from (orientation.glsl).
+// SCREEN_OCCLUSION reads this frame's screen-space occlusion where OCCLUSION reads the bake.
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
@@ -37,7 +38,12 @@ in vec3 vNormal;
 #if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
 in vec2 vStrokeDirection;
 #endif
-#if defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
+#if defined(SCREEN_OCCLUSION)
+uniform sampler2D uScreenOcclusion;  // this frame's, 1 open (shadows/screen_occlusion_pass.h)
+uniform ivec2 uScreenOcclusionOrigin;
+uniform float uOcclusionStrength;
+#define OCCLUSION_FACTOR mix(1.0, texelFetch(uScreenOcclusion, ivec2(gl_FragCoord.xy) - uScreenOcclusionOrigin, 0).r, uOcclusionStrength)
+#elif defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
 in float vOcclusion;
 #define OCCLUSION_FACTOR vOcclusion
 #else

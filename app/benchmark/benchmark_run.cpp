@@ -299,10 +299,11 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   settings.shadows = o.shadows;
   settings.occlusion = o.occlusion;
   settings.occlusionStrength = o.occlusionStrength.value_or(1.0f);
+  settings.occlusionMethod = o.occlusionMethod.value_or(OcclusionMethod::Baked);
   ConfigResult c;
   c.model = fs::path(mesh.report.file).filename().string();
   if (o.shadows) c.model += " +shadows";
-  if (o.occlusion) c.model += " +occlusion";
+  if (o.occlusion) c.model += settings.occlusionMethod == OcclusionMethod::Screen ? " +screen occlusion" : " +occlusion";
   c.palette = palette.name + " (" + std::to_string(palette.entries.size()) + ")";
   c.mode = mode;
   c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";

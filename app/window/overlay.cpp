@@ -137,7 +137,12 @@ void drawOverlay(Viewer& v) {
   if (s.settings.occlusion) {
     ImGui::SliderFloat("occlusion strength", &s.settings.occlusionStrength, 0.0f, 1.0f);
     s.settings.occlusionStrength = std::isfinite(s.settings.occlusionStrength) ? std::clamp(s.settings.occlusionStrength, 0.0f, 1.0f) : 1.0f;
-    if (const OcclusionBake* bake = v.renderer->occlusionBake()) {
+    int method = static_cast<int>(s.settings.occlusionMethod);
+    if (ImGui::Combo("occlusion from", &method, "bake (per vertex, once)\0screen (per pixel, every frame)\0"))
+      s.settings.occlusionMethod = static_cast<OcclusionMethod>(method);
+    if (s.settings.occlusionMethod == OcclusionMethod::Screen) {
+      ImGui::SliderFloat("occlusion reach", &s.settings.screenOcclusionRadius, 0.05f, 1.0f, "%.2f radii");
+    } else if (const OcclusionBake* bake = v.renderer->occlusionBake()) {
       if (!bake->done()) ImGui::ProgressBar(float(bake->directionsDone()) / float(bake->directions()), ImVec2(200, 0), "baking occlusion");
       else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
     }

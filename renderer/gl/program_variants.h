@@ -70,6 +70,7 @@ struct MeshProgram {
   StrokeSource stroke = StrokeSource::None;
   int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
   bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)
+  bool screenOcclusion = false;  // ... or by this frame's screen-space occlusion (per-pixel shadings)
   MeshControl control = MeshControl::None;
 };
 
@@ -107,6 +108,12 @@ struct StrokeProgram {
 // fullscreen.vert + edges.frag: Sobel on the frame's depth and normals.
 struct EdgeProgram {};
 
+// fullscreen.vert + screen_occlusion.frag: screen-space ambient occlusion, then its blur.
+struct ScreenOcclusionProgram {
+  bool blur = false;
+  static constexpr int kKernelSize = 16;
+};
+
 // marker.vert + marker.frag: the light marker.
 struct MarkerProgram {};
 
@@ -125,7 +132,7 @@ struct TriangleLightProgram {
 };
 
 using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram>;
+                                    TriangleLightProgram, ScreenOcclusionProgram>;
 
 struct ProgramSource {
   ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
@@ -146,6 +153,7 @@ inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
 inline bool operator<(const OcclusionBakeProgram&, const OcclusionBakeProgram&) { return false; }
+inline bool operator<(const ScreenOcclusionProgram& a, const ScreenOcclusionProgram& b) { return a.blur < b.blur; }
 bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b);
 
 }  // namespace npr::gl

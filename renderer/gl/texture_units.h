@@ -21,6 +21,9 @@ enum class TextureUnit : GLint {
   PatternCoordinates,  // the stencil path's per-pixel object-space pattern coordinates
   ShadowMaps,      // every light's shadow maps (GL_TEXTURE_2D_ARRAY, depth compare)
   Brush,           // painterly strokes' brush coverage
+  ScreenOcclusion,  // screen-space ambient occlusion: the frame's (blurred) result, and its passes' inputs
+  ScreenOcclusionDepth,
+  ScreenOcclusionNormals,
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

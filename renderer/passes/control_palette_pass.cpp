@@ -37,7 +37,7 @@ Status drawControlPalettes(FrameContext& f, RenderPath path) {
     if (!layer.palette) continue;
     gl::MeshProgram variant = litMeshProgram(f, *shading, layer.palette);
     if (layer.control == gl::MeshControl::Shadow && variant.shadowLayers == 0) continue;
-    if (layer.control == gl::MeshControl::Occlusion && !variant.occlusion) continue;
+    if (layer.control == gl::MeshControl::Occlusion && !variant.occlusion && !variant.screenOcclusion) continue;
     variant.control = layer.control;
     Result<gl::ShaderProgram*> prog = f.program(variant);
     if (!prog) return Error{prog.error()};

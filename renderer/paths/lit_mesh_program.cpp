@@ -18,7 +18,9 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (f.shadows) variant.shadowLayers = f.shadows->layers();
-  variant.occlusion = shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
+  const bool perPixel = shading == gl::MeshShading::Pixel || shading == gl::MeshShading::Smooth || shading == gl::MeshShading::Phong;
+  variant.screenOcclusion = f.screenOcclusion && perPixel;
+  variant.occlusion = !f.screenOcclusion && shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (palette) {
     // Selections are the same turned or not: only colour output turns the lookups.
     const bool colour = f.output == gl::MeshOutput::Colour;
@@ -40,7 +42,8 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   }
   if (palette) palette->bind(p, f.output == gl::MeshOutput::Colour);
   if (f.shadows) f.shadows->bind(p, f.camera.view);
-  if (variant.occlusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
+  if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
+  if (variant.screenOcclusion) f.screenOcclusion->bind(p, f.viewport);
 }
 
 }  // namespace npr

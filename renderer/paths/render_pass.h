@@ -16,6 +16,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
@@ -39,6 +40,8 @@ struct FrameContext {
   const ShadowMaps* shadows = nullptr;
   // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
+  // This frame's screen-space occlusion, when on (per-pixel shadings read it instead of the bake).
+  const ScreenOcclusionPass* screenOcclusion = nullptr;
   // Control-image palettes (passes/control_palette_pass.h), when loaded.
   const GpuPalette* shadowPalette = nullptr;
   const GpuPalette* occlusionPalette = nullptr;

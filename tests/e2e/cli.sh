@@ -90,6 +90,10 @@ expect 0 "--triangle-lighting cpu" -- "$viewer" --headless --size 96x96 --light 
 expect 2 "bad --triangle-lighting" -- "$viewer" --headless --triangle-lighting quantum
 expect 2 "--occlusion-strength 2" -- "$viewer" --headless --occlusion --occlusion-strength 2
 expect 2 "--occlusion-strength nan" -- "$viewer" --headless --occlusion --occlusion-strength nan
+expect 0 "--occlusion-method screen" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --occlusion --occlusion-method screen --screenshot "$tmp/ssao.png"
+cmp -s "$tmp/ground.png" "$tmp/ssao.png" && { echo "FAIL: screen-space occlusion changes nothing"; fail=1; }
+expect 2 "bad --occlusion-method" -- "$viewer" --headless --occlusion --occlusion-method raytraced
+grep -q "use baked or screen" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
 # Control-image palettes: drawn where shadows fall (the frame changes); a missing file is a bad
 # argument; one whose parameter is off is a note saying what to turn on, not a failure.
 expect 0 "--shadow-palette" -- "$viewer" --headless --size 96x96 --light 1,3,1 --ground --shadows \

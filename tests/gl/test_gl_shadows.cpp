@@ -381,6 +381,47 @@ TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
   ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
 }
 
+TEST_F(Shadows, ScreenOcclusionDarkensConcaveCornersAndLeavesConvexShapesAlone) {
+  // Per pixel, every frame, from what the frame shows (measured in tone: a grey ramp): in the
+  // per-pixel paths the inner corner's floor next to the wall gets a darker entry than its far
+  // edge, which it does not without occlusion; a cube, convex everywhere, is left as it was;
+  // and the ground just in front of a cube standing on it darkens.
+  ASSERT_TRUE(r->setPalette(test::greyRamp(16)));
+  const Mesh corner = innerCorner();
+  RenderSettings on;
+  on.occlusion = true;
+  on.occlusionMethod = OcclusionMethod::Screen;
+  light({0.0f, 1.0f, 1.0f, 0.0f});  // the floor and the wall lit alike
+  auto nearAndFar = [&](const RenderSettings& s, glm::vec3 nearPoint, glm::vec3 farPoint) {
+    const ImageRGBA8 e = test::renderEntries(*r, cam, s, kSize, kSize);
+    return std::pair{entryAt(e, pixelOf(cam, nearPoint, kSize, kSize)), entryAt(e, pixelOf(cam, farPoint, kSize, kSize))};
+  };
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Smooth}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings off;
+    off.path = on.path = path;
+    if (path == RenderPath::Pixel) {  // entries (the smooth path's selection is a blend)
+      r->setMesh(&corner);
+      const auto [plainNear, plainFar] = nearAndFar(off, {0.0f, 0.0f, 0.04f}, {0.0f, 0.0f, 0.9f});
+      EXPECT_EQ(plainNear, plainFar);
+      const auto [near, far] = nearAndFar(on, {0.0f, 0.0f, 0.04f}, {0.0f, 0.0f, 0.9f});
+      EXPECT_GE(near, far + 2) << "floor by the wall " << near << ", at its far edge " << far;
+    }
+    r->setMesh(&cube);
+    const ImageRGBA8 plain = test::renderImage(*r, cam, off, 128, 128), screen = test::renderImage(*r, cam, on, 128, 128);
+    EXPECT_LT(test::countDiffering(plain, screen), 128 * 128 / 100) << "a convex cube is occluded";
+  }
+  RenderSettings s = on;
+  s.path = RenderPath::Pixel;
+  s.ground = true;
+  const auto [near, far] = nearAndFar(s, {0.0f, -0.5f, 0.6f}, {0.0f, -0.5f, 1.6f});
+  EXPECT_GE(near, far + 1) << "ground in front of the cube " << near << ", further out " << far;
+  s.occlusion = false;
+  const auto [flatNear, flatFar] = nearAndFar(s, {0.0f, -0.5f, 0.6f}, {0.0f, -0.5f, 1.6f});
+  EXPECT_EQ(flatNear, flatFar);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+}
+
 TEST_F(Shadows, OcclusionBakesInStepsWithABudget) {
   r->setOcclusionBudget(1e-6);  // one direction per frame
   RenderSettings s;

@@ -1,0 +1,94 @@
+// Screen-space ambient occlusion (see screen_occlusion_pass.h).
+#include "renderer/shadows/screen_occlusion_pass.h"
+
+#include <cmath>
+
+#include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_units.h"
+#include "renderer/passes/geometry_pass.h"
+
+namespace npr {
+namespace {
+
+// Points in the unit hemisphere around +z: directions cosine-weighted (a disc sampled evenly,
+// lifted onto the hemisphere: Malley's method, so the estimate weighs directions as the bake
+// does), at distances crowding toward the centre, where occluders matter most.
+std::vector<glm::vec3> hemisphereKernel(int n) {
+  std::vector<glm::vec3> k;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double r = std::sqrt((i + 0.5) / n), a = golden * i;
+    const glm::dvec3 d(r * std::cos(a), r * std::sin(a), std::sqrt(std::max(0.0, 1.0 - r * r)));
+    const double t = double((i * 5) % n + 1) / n;  // distances spread over the kernel's order
+    k.push_back(glm::vec3(d * (0.15 + 0.85 * t * t)));
+  }
+  return k;
+}
+
+}  // namespace
+
+Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, const CameraMatrices& camera, float radius, const glm::ivec4& viewport,
+                                 gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  const glm::ivec2 size(viewport.z, viewport.w);
+  if (geometry_.resize(size, GL_RGBA16F, GL_RGBA)) ++stats.bufferUploads;
+  if (raw_.resize(size, GL_R16F, GL_RED)) ++stats.bufferUploads;
+  if (blurred_.resize(size, GL_R16F, GL_RED)) ++stats.bufferUploads;
+  if (kernel_.empty()) kernel_ = hemisphereKernel(gl::ScreenOcclusionProgram::kKernelSize);
+  Status status = okStatus();
+  auto restore = [&] {
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  };
+  // (1) what the frame shows: normals and depth
+  geometry_.bindAndClear();
+  for (const GpuMesh* m : meshes)
+    if (status) status = drawGeometry(*m, camera, GeometryOutput::EyeNormal, programs, stats);
+  Result<gl::ShaderProgram*> estimate = programs.get(gl::ScreenOcclusionProgram{false}, stats.shaderBuilds);
+  Result<gl::ShaderProgram*> blur = programs.get(gl::ScreenOcclusionProgram{true}, stats.shaderBuilds);
+  if (status && !estimate) status = Error{estimate.error()};
+  if (status && !blur) status = Error{blur.error()};
+  if (!status) {
+    restore();
+    return status;
+  }
+  gl::apply(gl::pass::kBackground);
+  glBindVertexArray(emptyVao.id());
+  gl::bindTexture(gl::TextureUnit::ScreenOcclusionDepth, GL_TEXTURE_2D, geometry_.depth());
+  // (2) the estimate
+  raw_.bindAndClear();
+  gl::ShaderProgram& e = **estimate;
+  e.use();
+  gl::bindTexture(gl::TextureUnit::ScreenOcclusionNormals, GL_TEXTURE_2D, geometry_.colour());
+  e.set("uNormals", gl::unitIndex(gl::TextureUnit::ScreenOcclusionNormals));
+  e.set("uDepth", gl::unitIndex(gl::TextureUnit::ScreenOcclusionDepth));
+  e.set("uOrigin", glm::ivec2(0));
+  e.set("uProjectionMatrix", camera.projection);
+  e.set("uInverseProjection", glm::inverse(camera.projection));
+  e.set("uSize", glm::vec2(size));
+  e.set("uRadius", radius);
+  e.setArray("uKernel", kernel_.data(), int(kernel_.size()));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  // (3) the blur
+  blurred_.bindAndClear();
+  gl::ShaderProgram& b = **blur;
+  b.use();
+  gl::bindTexture(gl::TextureUnit::ScreenOcclusion, GL_TEXTURE_2D, raw_.colour());
+  b.set("uOcclusion", gl::unitIndex(gl::TextureUnit::ScreenOcclusion));
+  b.set("uDepth", gl::unitIndex(gl::TextureUnit::ScreenOcclusionDepth));
+  b.set("uOrigin", glm::ivec2(0));
+  b.set("uProjection", glm::vec2(camera.projection[2][2], camera.projection[3][2]));
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  stats.drawCalls += 2;
+  restore();
+  return okStatus();
+}
+
+void ScreenOcclusionPass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {
+  gl::bindTexture(gl::TextureUnit::ScreenOcclusion, GL_TEXTURE_2D, blurred_.colour());
+  p.set("uScreenOcclusion", gl::unitIndex(gl::TextureUnit::ScreenOcclusion));
+  p.set("uScreenOcclusionOrigin", glm::ivec2(viewport.x, viewport.y));
+}
+
+}  // namespace npr
