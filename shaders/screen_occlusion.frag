@@ -1,11 +1,13 @@
 // Screen-space ambient occlusion (renderer/shadows/screen_occlusion_pass.h), two passes of a
 // full-screen triangle:
-//  - (default) from the frame's eye-space normals and depth, the share of KERNEL_SIZE points in
+//  - (default) from the frame's eye-space normals and depth (at half the frame's resolution:
+//    occlusion varies slowly), the share of KERNEL_SIZE points in
 //    the hemisphere of radius uRadius over each pixel's surface point that no nearer surface
 //    covers, cosine-weighted like the bake (points lie nearer the normal more often), the
 //    kernel turned per pixel by one of 16 angles in a 4x4 tile;
 //  - BLUR: the 4x4 mean that cancels the tile's pattern, over pixels at a similar depth only,
-//    so occlusion does not bleed across silhouettes.
+//    so occlusion does not bleed across silhouettes; written with the pixel's depth, which the
+//    frame's read (mesh.frag) uses to take its value from texels of its own surface.
 // 1 is open, 0 enclosed; pixels without a surface are 1.
 uniform sampler2D uDepth;
 uniform ivec2 uOrigin;  // the viewport's corner in the framebuffer
@@ -24,7 +26,7 @@ void main() {
   ivec2 c = ivec2(gl_FragCoord.xy) - uOrigin;
   ivec2 size = textureSize(uDepth, 0);
   if (texelFetch(uDepth, c, 0).r >= 1.0) {
-    fragColor = vec4(1.0);
+    fragColor = vec4(1.0, 1e30, 0.0, 1.0);
     return;
   }
   float d0 = linearDepth(c);
@@ -36,21 +38,18 @@ void main() {
       sum += w * texelFetch(uOcclusion, p, 0).r;
       weight += w;
     }
-  fragColor = vec4(weight > 0.0 ? sum / weight : 1.0);
+  // Depth beside it: the frame's read weighs the texels around a pixel by their depth.
+  fragColor = vec4(weight > 0.0 ? sum / weight : 1.0, d0, 0.0, 1.0);
 }
 #else
 uniform sampler2D uNormals;  // eye-space normals; alpha 0 where no surface
-uniform mat4 uProjectionMatrix;
-uniform mat4 uInverseProjection;
-uniform vec2 uSize;          // the viewport's size in pixels
+uniform vec4 uProjectionXY;  // P[0][0], P[1][1], P[2][0], P[2][1] (a perspective projection)
+uniform vec2 uProjection;    // P[2][2], P[3][2]
+uniform vec2 uSize;          // the target's size in pixels
 uniform float uRadius;       // eye units
 uniform vec3 uKernel[KERNEL_SIZE];  // in the unit hemisphere around +z
 
-vec3 eyePosition(vec2 pixel, float depth) {
-  vec4 ndc = vec4(pixel / uSize * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-  vec4 eye = uInverseProjection * ndc;
-  return eye.xyz / eye.w;
-}
+float eyeZ(float depth) { return -uProjection.y / (depth * 2.0 - 1.0 + uProjection.x); }
 
 void main() {
   ivec2 c = ivec2(gl_FragCoord.xy) - uOrigin;
@@ -60,7 +59,9 @@ void main() {
     fragColor = vec4(1.0);
     return;
   }
-  vec3 pos = eyePosition(vec2(c) + 0.5, depth);
+  float z = eyeZ(depth);
+  vec2 ndc = (vec2(c) + 0.5) / uSize * 2.0 - 1.0;
+  vec3 pos = vec3((ndc * -z - uProjectionXY.zw * z) / uProjectionXY.xy, z);
   vec3 n = normalize(nt.xyz + vec3(1e-9));
   if (dot(n, -pos) < 0.0) n = -n;  // a back face seen: the side facing the eye
   // The tile's angle: 16 evenly spread, in an order that puts far-apart angles next to each other.
@@ -70,30 +71,25 @@ void main() {
   vec3 t = r - n * dot(r, n);
   if (dot(t, t) < 1e-6) t = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) - n * n.x : vec3(0.0, 1.0, 0.0) - n * n.y;
   t = normalize(t);
-  mat3 tbn = mat3(t, cross(n, t), n);
-  float open = 0.0;
+  mat3 tbn = mat3(t, cross(n, t), n) * uRadius;
+  float covered = 0.0;
   for (int i = 0; i < KERNEL_SIZE; ++i) {
-    vec3 s = pos + tbn * uKernel[i] * uRadius;
-    vec4 clip = uProjectionMatrix * vec4(s, 1.0);
-    if (clip.w <= 0.0) {
-      open += 1.0;
-      continue;
-    }
-    vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * uSize;
-    ivec2 q = ivec2(pixel);
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(uSize)))) {
-      open += 1.0;  // off screen: nothing known covers it
-      continue;
-    }
-    float sceneDepth = texelFetch(uDepth, q, 0).r;
-    float sceneZ = sceneDepth >= 1.0 ? -1e30 : eyePosition(vec2(q) + 0.5, sceneDepth).z;
-    // Covered when the surface there is nearer the eye than the point, by more than a little
-    // (no self-occlusion on flat ground) and by less than the radius (a surface far in front
-    // does not enclose this one).
-    float nearer = sceneZ - s.z;
-    float covered = nearer > 0.02 * uRadius ? 1.0 - smoothstep(0.5 * uRadius, uRadius, abs(pos.z - sceneZ)) : 0.0;
-    open += 1.0 - covered;
+    vec3 s = pos + tbn * uKernel[i];
+    if (s.z >= 0.0) continue;  // behind the eye: nothing known covers it
+    vec2 q = ((uProjectionXY.xy * s.xy + uProjectionXY.zw * s.z) / -s.z * 0.5 + 0.5) * uSize;
+    if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, uSize))) continue;  // off screen
+    float sceneDepth = texelFetch(uDepth, ivec2(q), 0).r;
+    if (sceneDepth >= 1.0) continue;
+    float sceneZ = eyeZ(sceneDepth);
+    if (sceneZ <= s.z) continue;  // the surface there is behind the point: it is open
+    // The surface point hiding it: an occluder only if it rises above this pixel's tangent
+    // plane (the pixel's own plane, met again through the depth buffer's texels, never counts:
+    // at grazing views its depth differs from the point's by the slope times a texel) and
+    // lies within about the radius (a surface far in front does not enclose this one).
+    vec2 qc = (floor(q) + 0.5) / uSize * 2.0 - 1.0;
+    vec3 d = vec3((qc * -sceneZ - uProjectionXY.zw * sceneZ) / uProjectionXY.xy, sceneZ) - pos;
+    if (dot(d, n) > 0.05 * uRadius) covered += 1.0 - smoothstep(uRadius, 2.0 * uRadius, length(d));
   }
-  fragColor = vec4(open / float(KERNEL_SIZE));
+  fragColor = vec4(1.0 - covered / float(KERNEL_SIZE));
 }
 #endif

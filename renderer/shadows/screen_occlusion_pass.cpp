@@ -1,6 +1,7 @@
 // Screen-space ambient occlusion (see screen_occlusion_pass.h).
 #include "renderer/shadows/screen_occlusion_pass.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "renderer/gl/pass_state.h"
@@ -31,10 +32,12 @@ Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, cons
                                  gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  const glm::ivec2 size(viewport.z, viewport.w);
+  // Half the viewport's resolution (a quarter of the pixels): occlusion varies slowly, and the
+  // frame reads it back filtered.
+  const glm::ivec2 size = glm::max(glm::ivec2(viewport.z, viewport.w) / 2, glm::ivec2(1));
   if (geometry_.resize(size, GL_RGBA16F, GL_RGBA)) ++stats.bufferUploads;
   if (raw_.resize(size, GL_R16F, GL_RED)) ++stats.bufferUploads;
-  if (blurred_.resize(size, GL_R16F, GL_RED)) ++stats.bufferUploads;
+  if (blurred_.resize(size, GL_RG32F, GL_RG)) ++stats.bufferUploads;  // occlusion, linear depth
   if (kernel_.empty()) kernel_ = hemisphereKernel(gl::ScreenOcclusionProgram::kKernelSize);
   Status status = okStatus();
   auto restore = [&] {
@@ -64,8 +67,9 @@ Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, cons
   e.set("uNormals", gl::unitIndex(gl::TextureUnit::ScreenOcclusionNormals));
   e.set("uDepth", gl::unitIndex(gl::TextureUnit::ScreenOcclusionDepth));
   e.set("uOrigin", glm::ivec2(0));
-  e.set("uProjectionMatrix", camera.projection);
-  e.set("uInverseProjection", glm::inverse(camera.projection));
+  const glm::mat4& P = camera.projection;
+  e.set("uProjectionXY", glm::vec4(P[0][0], P[1][1], P[2][0], P[2][1]));
+  e.set("uProjection", glm::vec2(P[2][2], P[3][2]));
   e.set("uSize", glm::vec2(size));
   e.set("uRadius", radius);
   e.setArray("uKernel", kernel_.data(), int(kernel_.size()));
@@ -88,7 +92,9 @@ Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, cons
 void ScreenOcclusionPass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {
   gl::bindTexture(gl::TextureUnit::ScreenOcclusion, GL_TEXTURE_2D, blurred_.colour());
   p.set("uScreenOcclusion", gl::unitIndex(gl::TextureUnit::ScreenOcclusion));
-  p.set("uScreenOcclusionOrigin", glm::ivec2(viewport.x, viewport.y));
+  // Window pixel -> the half-resolution texture's texels.
+  const glm::vec2 scale = glm::vec2(blurred_.size()) / glm::vec2(std::max(viewport.z, 1), std::max(viewport.w, 1));
+  p.set("uScreenOcclusionFrame", glm::vec4(viewport.x, viewport.y, scale.x, scale.y));
 }
 
 }  // namespace npr

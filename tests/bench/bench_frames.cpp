@@ -59,6 +59,7 @@ struct PathRow {
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
   bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
   bool control = false;                   // control-image palettes drawn (--control)
+  bool screenOcclusion = false;           // screen-space occlusion instead of the bake (--occlusion)
 };
 
 }  // namespace
@@ -94,7 +95,7 @@ int main(int argc, char** argv) {
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
-                           "ambient occlusion, baked before timing; --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
+                           "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
                            "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices)\n");
       return 2;
     }
@@ -220,6 +221,12 @@ int main(int argc, char** argv) {
           on.control = true;
           paths.push_back(on);
         }
+        if (p.path == RenderPath::Pixel || p.path == RenderPath::Smooth || p.path == RenderPath::Reference) {
+          PathRow screen = p;
+          screen.label += "+ssao";
+          screen.occlusion = screen.screenOcclusion = true;
+          paths.push_back(screen);
+        }
       }
       if (gpuTriangles && (p.path == RenderPath::Triangle || p.path == RenderPath::Stencil)) {
         PathRow on = p;
@@ -262,6 +269,7 @@ int main(int argc, char** argv) {
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
         s.controlPalettes = paths[p].control;
+        if (paths[p].screenOcclusion) s.occlusionMethod = OcclusionMethod::Screen;
         s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
           OrbitCamera moving = cam;
