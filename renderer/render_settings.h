@@ -135,6 +135,9 @@ struct RenderSettings {
   bool ground = false;
   // Cast shadows from every enabled light in the GPU-lit paths (shadows/shadow_maps.h).
   bool shadows = false;
+  // The ground's shadows read from a texture drawn whenever the maps are (shadows/
+  // ground_shadow_pass.h) rather than filtered per pixel; off: per pixel, to compare.
+  bool groundShadowTexture = true;
   // Ambient occlusion baked per vertex (shadows/occlusion_bake.h) scales ambient and diffuse in
   // the GPU-lit paths: by mix(1, occlusion, strength).
   bool occlusion = false;

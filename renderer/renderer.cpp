@@ -307,6 +307,10 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
   plain.materials = false;
   FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
   frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+  if (shadowsReady_ && s.groundShadowTexture) {
+    if (Status st = groundShadows_.update(shadows_, ground_, sceneVersion_, programs_, emptyVao_, stats_); !st) return st;
+    if (groundShadows_.ready()) frame.groundShadows = &groundShadows_;
+  }
   frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
   return drawPathWithControls(frame, s.path);
 }

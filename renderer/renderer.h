@@ -35,6 +35,7 @@
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/ground_shadow_pass.h"
 #include "renderer/shadows/occlusion_bake.h"
 #include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
@@ -211,6 +212,7 @@ class Renderer {
   GpuMesh groundGpu_;
   GpuMaterials groundMaterials_;  // never uploaded: the ground has no appearance
   TriangleShadingCache groundTriangles_;
+  GroundShadowPass groundShadows_;
   ImageEdgesPass imageEdges_;
 };
 

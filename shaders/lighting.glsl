@@ -6,7 +6,8 @@
 // materials) they are the lights' own colours, multiplied here by the material the caller
 // passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
 // light up in its shadow map: a blocked light keeps its ambient term only, as OpenGL's would.
-// CONTROL_SHADOW adds shadowShareAt: how much of the diffuse light reaching the surface the
+// GROUND_SHADOW_MAP (the ground plane, per pixel) reads the lights' visibility from the ground's
+// shadow texture instead. CONTROL_SHADOW adds shadowShareAt: how much of the diffuse light reaching the surface the
 // shadows block (control-image palettes: passes/control_palette_pass.h).
 
 #ifndef NUM_LIGHTS
@@ -114,13 +115,26 @@ void lightReach(int i, vec3 pos, vec3 n, out vec3 vp, out float att, out float s
 }
 #endif
 
+#if defined(GROUND_SHADOW_MAP) && defined(SHADOWS) && NUM_LIGHTS > 0
+// The ground plane's fragments read each light's visibility from the texture the ground's
+// shadows were drawn into (shadows/ground_shadow_pass.h): one filtered fetch instead of
+// filtering every light's map.
+in vec2 vGroundXZ;  // model space
+uniform sampler2D uGroundShadows;
+uniform vec4 uGroundShadowFrame;  // x0, z0, 1 / width, 1 / depth
+float groundShadow(int i) { return texture(uGroundShadows, (vGroundXZ - uGroundShadowFrame.xy) * uGroundShadowFrame.zw)[i]; }
+#define SHADOW_LOOKUP(i, pos, n, ndl) groundShadow(i)
+#elif defined(SHADOWS)
+#define SHADOW_LOOKUP(i, pos, n, ndl) shadowVisibility(i, pos, n, ndl)
+#endif
+
 #if defined(CONTROL_SHADOW) && defined(SHADOWS) && NUM_LIGHTS > 0
 // Each light's visibility as shadowShareAt found it, which shadeParts then reuses: the shadow
 // maps are read once per pixel (they are the expensive part on a software rasterizer).
 float controlVisible[NUM_LIGHTS];
 #define LIGHT_VISIBILITY(i, pos, n, ndl) controlVisible[i]
 #elif defined(SHADOWS)
-#define LIGHT_VISIBILITY(i, pos, n, ndl) shadowVisibility(i, pos, n, ndl)
+#define LIGHT_VISIBILITY(i, pos, n, ndl) SHADOW_LOOKUP(i, pos, n, ndl)
 #endif
 
 #ifdef CONTROL_SHADOW
@@ -141,7 +155,7 @@ float shadowShareAt(vec3 pos, vec3 normal, bool backFacing) {
     float att, spot;
     lightReach(i, pos, n, vp, att, spot);
     float ndl = max(dot(n, vp), 0.0);
-    controlVisible[i] = ndl > 0.0 && spot != 0.0 ? shadowVisibility(i, pos, n, ndl) : 1.0;
+    controlVisible[i] = ndl > 0.0 && spot != 0.0 ? SHADOW_LOOKUP(i, pos, n, ndl) : 1.0;
     // Bounded weights (attenuation can reach kMaxFloat): the share stays finite.
     float reach = ndl * min(att * spot, 1e6) * dot(uLightDiffuse[i], vec3(1.0 / 3.0));
     if (!(reach > 0.0) || isinf(reach)) continue;

@@ -42,6 +42,10 @@ layout(location = 6) in vec3 aDirection;  // the hatching direction field (zero:
 out vec2 vStrokeDirection;  // unit, on screen; zero: none
 #endif
 
+#ifdef GROUND_SHADOW_MAP
+out vec2 vGroundXZ;  // where the ground's shadow texture is read (lighting.glsl)
+#endif
+
 #ifdef OCCLUSION
 layout(location = 7) in float aOcclusion;  // baked: 1 open, 0 enclosed
 uniform float uOcclusionStrength;
@@ -63,6 +67,9 @@ void main() {
   gl_Position = uProjection * eye;
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
+#ifdef GROUND_SHADOW_MAP
+  vGroundXZ = aPosition.xz;
+#endif
 #if defined(ORIENT_FIELD)
   // a tangent turns with the modelview, not the normal matrix
   vStrokeDirection = screenDirection(uProjection, eye.xyz, mat3(uModelView) * aDirection);

@@ -63,6 +63,7 @@ struct SourceOf {
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");
     if (m.occlusion) s.defines.push_back("OCCLUSION");
     if (m.screenOcclusion) s.defines.push_back("SCREEN_OCCLUSION");
+    if (m.groundShadowMap) s.defines.push_back("GROUND_SHADOW_MAP");
     if (m.control == MeshControl::Shadow) s.defines.push_back("CONTROL_SHADOW");
     if (m.control == MeshControl::Occlusion) s.defines.push_back("CONTROL_OCCLUSION");
     if (m.shadowLayers > 0) {
@@ -117,6 +118,10 @@ struct SourceOf {
     if (o.blur) s.defines.push_back("BLUR");
     return s;
   }
+  ProgramSource operator()(const GroundShadowProgram& g) const {
+    return {"fullscreen.vert", "ground_shadow.frag",
+            {"NUM_LIGHTS " + std::to_string(g.lights), "SHADOWS", "SHADOW_LAYERS " + std::to_string(g.shadowLayers)}};
+  }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }
@@ -145,10 +150,10 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control);
+  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control, a.groundShadowMap) !=
+      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control, b.groundShadowMap))
+    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control, a.groundShadowMap) <
+           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control, b.groundShadowMap);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

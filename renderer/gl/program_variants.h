@@ -72,6 +72,7 @@ struct MeshProgram {
   bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)
   bool screenOcclusion = false;  // ... or by this frame's screen-space occlusion (per-pixel shadings)
   MeshControl control = MeshControl::None;
+  bool groundShadowMap = false;  // the ground's shadows read from its texture (shadows/ground_shadow_pass.h)
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -120,6 +121,12 @@ struct MarkerProgram {};
 // shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
 struct ShadowDepthProgram {};
 
+// fullscreen.vert + ground_shadow.frag: the ground's visibility per light from the shadow maps.
+struct GroundShadowProgram {
+  int lights = 1;  // 1..4
+  int shadowLayers = 1;
+};
+
 // occlusion_bake.vert + occlusion_bake.frag: one direction of the ambient occlusion bake.
 struct OcclusionBakeProgram {};
 
@@ -132,7 +139,7 @@ struct TriangleLightProgram {
 };
 
 using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, ScreenOcclusionProgram>;
+                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram>;
 
 struct ProgramSource {
   ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
@@ -152,6 +159,9 @@ bool operator<(const StrokeProgram& a, const StrokeProgram& b);
 inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
 inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
 inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
+inline bool operator<(const GroundShadowProgram& a, const GroundShadowProgram& b) {
+  return std::tie(a.lights, a.shadowLayers) < std::tie(b.lights, b.shadowLayers);
+}
 inline bool operator<(const OcclusionBakeProgram&, const OcclusionBakeProgram&) { return false; }
 inline bool operator<(const ScreenOcclusionProgram& a, const ScreenOcclusionProgram& b) { return a.blur < b.blur; }
 bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b);

@@ -24,6 +24,7 @@ enum class TextureUnit : GLint {
   ScreenOcclusion,  // screen-space ambient occlusion: the frame's (blurred) result, and its passes' inputs
   ScreenOcclusionDepth,
   ScreenOcclusionNormals,
+  GroundShadows,   // the ground plane's visibility per light
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

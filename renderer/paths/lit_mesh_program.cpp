@@ -20,6 +20,7 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   if (f.shadows) variant.shadowLayers = f.shadows->layers();
   const bool perPixel = shading == gl::MeshShading::Pixel || shading == gl::MeshShading::Smooth || shading == gl::MeshShading::Phong;
   variant.screenOcclusion = f.screenOcclusion && perPixel;
+  variant.groundShadowMap = f.groundShadows && perPixel && variant.shadowLayers > 0;
   variant.occlusion = !f.screenOcclusion && shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (palette) {
     // Selections are the same turned or not: only colour output turns the lookups.
@@ -44,6 +45,7 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   if (f.shadows) f.shadows->bind(p, f.camera.view);
   if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   if (variant.screenOcclusion) f.screenOcclusion->bind(p, f.viewport);
+  if (variant.groundShadowMap) f.groundShadows->bind(p);
 }
 
 }  // namespace npr

@@ -16,6 +16,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/ground_shadow_pass.h"
 #include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
 
@@ -40,6 +41,8 @@ struct FrameContext {
   const ShadowMaps* shadows = nullptr;
   // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
+  // The ground's shadow texture, when this pass draws the ground and the texture is ready.
+  const GroundShadowPass* groundShadows = nullptr;
   // This frame's screen-space occlusion, when on (per-pixel shadings read it instead of the bake).
   const ScreenOcclusionPass* screenOcclusion = nullptr;
   // Control-image palettes (passes/control_palette_pass.h), when loaded.

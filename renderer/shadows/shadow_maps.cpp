@@ -116,6 +116,7 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
     }
   }
   maps_ = std::move(maps);
+  ++generation_;
   size_ = size;
   layerCount_ = layers;
   sceneVersion_ = scene.version;

@@ -40,8 +40,17 @@ class ShadowMaps {
   void clear();
   // Layers in use (0: no enabled light has a map): what programs are compiled for.
   int layers() const { return layerCount_; }
-  // shadows.glsl's uniforms and the depth array, for a frame seen through `view`.
+  // shadows.glsl's uniforms and the depth array, for a frame seen through `view` (identity:
+  // shadows.glsl then works in model space).
   void bind(gl::ShaderProgram& program, const glm::mat4& view) const;
+  // Counts redraws: what results computed from the maps are keyed by.
+  unsigned generation() const { return generation_; }
+  // The enabled lights in the shader's order, in model space: (direction, 0) or (position, 1).
+  std::vector<glm::vec4> lightKeys() const {
+    std::vector<glm::vec4> keys;
+    for (const LightMap& m : maps_) keys.push_back(m.key);
+    return keys;
+  }
 
  private:
   struct LightMap {
@@ -58,6 +67,7 @@ class ShadowMaps {
   gl::Framebuffer fbo_;
   int size_ = 0, layerCount_ = 0, allocatedLayers_ = 0;
   unsigned sceneVersion_ = ~0u;
+  unsigned generation_ = 0;
 };
 
 }  // namespace npr

@@ -127,6 +127,29 @@ TEST_F(Shadows, CubeShadowOnTheGroundIsDarkerInEveryPath) {
   }
 }
 
+TEST_F(Shadows, GroundShadowTextureAgreesWithPerPixelLookups) {
+  // The ground's shadows read from its texture choose the entries the per-pixel lookups choose,
+  // but along the shadow's soft edge, for each kind of light.
+  for (const glm::vec4 position : {glm::vec4(1.0f, 1.0f, 0.3f, 0.0f), glm::vec4(2.0f, 2.0f, 0.5f, 1.0f)}) {
+    light(position);
+    for (RenderPath path : {RenderPath::Pixel, RenderPath::Smooth}) {
+      SCOPED_TRACE(pathInfo(path).name);
+      RenderSettings s;
+      s.path = path;
+      s.ground = s.shadows = true;
+      s.groundShadowTexture = false;
+      const ImageRGBA8 perPixel = test::renderImage(*r, cam, s, kSize, kSize);
+      s.groundShadowTexture = true;
+      const ImageRGBA8 textured = test::renderImage(*r, cam, s, kSize, kSize);
+      s.shadows = false;
+      const ImageRGBA8 unshadowed = test::renderImage(*r, cam, s, kSize, kSize);
+      const int shadowPixels = test::countDiffering(perPixel, unshadowed);
+      EXPECT_GT(shadowPixels, 1500) << "the scene must show a shadow";
+      EXPECT_LT(test::countDiffering(perPixel, textured), shadowPixels / 20) << "w " << position.w;
+    }
+  }
+}
+
 TEST_F(Shadows, SpotAndPointLightsCastShadowsToo) {
   RenderSettings s;
   s.ground = true;
