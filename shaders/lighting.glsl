@@ -197,6 +197,11 @@ vec3 shadeParts(MATERIAL_PARAMETER vec3 pos, vec3 normal, bool backFacing, out v
   vp = uLightPosition[0].w != 0.0 ? safeNormalize(uLightPosition[0].xyz - pos) : uLightPosition[0].xyz;
 #endif
   float ndl = dot(n, vp);
+#if defined(SHADOWS) && NUM_LIGHTS > 0
+  // In the first light's cast shadow the surface turns as far as the terminator's tone: a
+  // blocked light lights no more than one grazing the surface (lighting_model.h alike).
+  if (ndl > 0.0) ndl *= LIGHT_VISIBILITY(0, pos, n, ndl);
+#endif
   float t = (1.0 - ndl) * 0.5;
 #ifdef MATERIALS
   vec3 tone = t * uCool[0] + (1.0 - t) * uWarm[0];

@@ -167,7 +167,9 @@ glm::vec<3, T> shade(const PreparedLighting<T>& p, const glm::vec<3, T>& pos, co
       const auto& l = p.lights[0];
       vp = l.positional ? safeNormalize(l.position - pos) : l.position;
     }
-    const T ndl = glm::dot(n, vp);
+    T ndl = glm::dot(n, vp);
+    // In the first light's cast shadow: no more than the terminator's tone (lighting.glsl alike).
+    if (visibility && p.count > 0 && ndl > T(0)) ndl *= clamp01(visibility[0]);
     const T t = (T(1) - ndl) * T(0.5);  // (1 + l.n) / 2 with l = -vp
     V3 c = t * (p.coolBase + p.toneAlpha * p.kd[side] * scale) + (T(1) - t) * (p.warmBase + p.toneBeta * p.kd[side] * scale);
     if (p.tone == ToneModel::Splashback) c *= powGL(p.splashAlpha * std::fabs(ndl) + (T(1) - p.splashAlpha), p.splashPower);

@@ -150,6 +150,29 @@ TEST_F(Shadows, GroundShadowTextureAgreesWithPerPixelLookups) {
   }
 }
 
+TEST_F(Shadows, GoochToneCoolsInCastShadow) {
+  // The cool-to-warm tone takes the first light's shadow: the ground in the cube's shadow gets
+  // the terminator's (cooler) tone, the lit ground keeps its warm one.
+  light({1.0f, 1.0f, 0.0f, 0.0f});
+  ASSERT_TRUE(r->lighting().setToneModel(ToneModel::Gooch, r->lighting().toneParameters()));
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  s.ground = true;
+  auto at = [&](const ImageRGBA8& img, glm::vec3 p) {
+    const glm::ivec2 q = pixelOf(cam, p, kSize, kSize);
+    const std::uint8_t* c = &img.pixels[(size_t(q.y) * kSize + size_t(q.x)) * 4];
+    return glm::ivec3(c[0], c[1], c[2]);
+  };
+  const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_EQ(at(plain, {-1.0f, -0.5f, 0.0f}), at(plain, {1.3f, -0.5f, 0.0f}));
+  s.shadows = true;
+  const ImageRGBA8 shadowed = test::renderImage(*r, cam, s, kSize, kSize);
+  const glm::ivec3 inShadow = at(shadowed, {-1.0f, -0.5f, 0.0f}), lit = at(shadowed, {1.3f, -0.5f, 0.0f});
+  EXPECT_EQ(lit, at(plain, {1.3f, -0.5f, 0.0f}));
+  EXPECT_GT(inShadow.b - inShadow.r, lit.b - lit.r + 20) << "shadow " << inShadow.r << "," << inShadow.b << " lit " << lit.r << "," << lit.b;
+  ASSERT_TRUE(r->lighting().setToneModel(ToneModel::OpenGL, r->lighting().toneParameters()));
+}
+
 TEST_F(Shadows, SpotAndPointLightsCastShadowsToo) {
   RenderSettings s;
   s.ground = true;
