@@ -3,13 +3,7 @@
 # arguments (2) and failed loads (1), and --help.
 set -u
 viewer="$1"; src="$2"
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail=0
-expect() {  # expect STATUS DESCRIPTION -- command...
-  local want="$1" what="$2"; shift 3
-  "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" != "$want" ]; then echo "FAIL: $what: exit $got, expected $want"; cat "$tmp/err"; fail=1; fi
-}
+source "$(dirname "$0")/expect.sh"
 expect 0 "--help" -- "$viewer" --help
 grep -q -- "--palette" "$tmp/out" || { echo "FAIL: --help does not list --palette"; fail=1; }
 

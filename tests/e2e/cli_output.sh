@@ -4,13 +4,7 @@
 # cli.sh so the two run side by side).
 set -u
 viewer="$1"; src="$2"
-tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fail=0
-expect() {  # expect STATUS DESCRIPTION -- command...
-  local want="$1" what="$2"; shift 3
-  "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
-  if [ "$got" != "$want" ]; then echo "FAIL: $what: exit $got, expected $want"; cat "$tmp/err"; fail=1; fi
-}
+source "$(dirname "$0")/expect.sh"
 expect 0 "plain" -- "$viewer" --headless --size 96x96 --light 1,3,1 --screenshot "$tmp/plain.png"
 
 # Pattern scale, the palette maker and contact sheets.
