@@ -74,6 +74,9 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   Result<Style> technical = loadStyle(resolveStyle("technical"));
   ASSERT_TRUE(technical) << technical.error();
   ASSERT_TRUE(applyStyle(*technical, state, *r));
+  // Ground, shadows and a control palette travel with the look too.
+  state.settings.ground = state.settings.shadows = true;
+  ASSERT_TRUE(state.setControlPalette(ControlParameter::Shadow, test::sourcePath("palettes/stipple/stipple.palette"), *r));
   test::TempDir d;
   const std::string saved = d.write("saved.style", styleText(state, *r, "round trip"));
   ViewerState other;
@@ -89,13 +92,20 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   EXPECT_EQ(other.settings.lines.creases, state.settings.lines.creases);
   EXPECT_EQ(other.settings.lines.creaseAngle, state.settings.lines.creaseAngle);
   EXPECT_EQ(r->lighting().toneModel(), ToneModel::Gooch);
+  EXPECT_TRUE(other.settings.ground && other.settings.shadows);
+  EXPECT_FALSE(other.settings.occlusion);
+  EXPECT_EQ(std::filesystem::path(other.shadowPalette).filename(), "stipple.palette");
+  EXPECT_TRUE(other.occlusionPalette.empty());
+  EXPECT_TRUE(r->hasControlPalette(ControlParameter::Shadow));
   // Bad styles: the reason with file and line, and the look as it was.
   const std::string before = styleText(other, *r, "x");
   for (const auto& [text, line] : std::vector<std::pair<std::string, int>>{{"name A\nfrobnicate 3\n", 2},
                                                                            {"path sideways\n", 1},
                                                                            {"\nrange-scale nan\n", 2},
                                                                            {"lines silhouette,glow\n", 1},
-                                                                           {"pattern-scale 100\n", 1}}) {
+                                                                           {"pattern-scale 100\n", 1},
+                                                                           {"shadows maybe\n", 1},
+                                                                           {"name B\nshadow-palette\n", 2}}) {
     Result<Style> bad = loadStyle(d.write("bad.style", text));
     ASSERT_FALSE(bad) << text;
     EXPECT_NE(bad.error().find("bad.style line " + std::to_string(line)), std::string::npos) << bad.error();
@@ -104,6 +114,11 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   ASSERT_TRUE(missing);  // the file parses; its palette fails when applied
   EXPECT_FALSE(applyStyle(*missing, other, *r));
   EXPECT_EQ(styleText(other, *r, "x"), before);
+  Result<Style> brokenControl = loadStyle(d.write("control.style", "shadows on\nshadow-palette nowhere/none.palette\n"));
+  ASSERT_TRUE(brokenControl);
+  EXPECT_FALSE(applyStyle(*brokenControl, other, *r));
+  EXPECT_EQ(styleText(other, *r, "x"), before);
+  r->clearControlPalette(ControlParameter::Shadow);
 }
 
 }  // namespace
