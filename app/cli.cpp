@@ -68,7 +68,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--tam", o.tam, "--make-palette: draw a tonal art map with IMAGE as the stroke");
   app.add_option("--levels", o.levels, "--make-palette: palette entries, 2..256 (default 10)");
   app.add_option("--style", o.style,
-                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, technical, cel, stipple, woodcut) "
+                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated) "
                  "or FILE; options given beside it win");
   app.add_option("--palette-sheet", o.paletteSheet,
                  "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");

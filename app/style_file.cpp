@@ -80,6 +80,17 @@ Result<Style> loadStyle(const std::string& path) {
     } else if (key == "shadow-palette" || key == "occlusion-palette") {
       if (arg.empty()) return bad("needs a shipped palette's name, a path or none");
       (key == "shadow-palette" ? st.shadowPalette : st.occlusionPalette) = arg == "none" ? std::string() : resolvePalette(arg);
+    } else if (key == "light") {
+      std::stringstream ss(arg);
+      std::string t;
+      std::vector<float> v;
+      while (std::getline(ss, t, ',')) {
+        const auto x = number(trim(t));
+        if (!x) return bad("must be three finite numbers X,Y,Z");
+        v.push_back(*x);
+      }
+      if (v.size() != 3) return bad("must be three finite numbers X,Y,Z");
+      st.light = glm::vec3(v[0], v[1], v[2]);
     } else if (key == "ground" || key == "shadows" || key == "occlusion") {
       if (arg != "on" && arg != "off") return bad("must be on or off");
       (key == "ground" ? st.ground : key == "shadows" ? st.shadows : st.occlusion) = arg == "on";
@@ -214,6 +225,7 @@ Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
   if (st.ground) s.ground = *st.ground;
   if (st.shadows) s.shadows = *st.shadows;
   if (st.occlusion) s.occlusion = *st.occlusion;
+  if (st.light) state.light = *st.light;
   state.note("style " + st.name + " applied");
   return okStatus();
 }
@@ -250,6 +262,7 @@ std::string styleText(const ViewerState& state, Renderer& renderer, const std::s
   o << "orient " << orientName(s.orient) << "\n";
   o << "ground " << (s.ground ? "on" : "off") << "\nshadows " << (s.shadows ? "on" : "off") << "\nocclusion " << (s.occlusion ? "on" : "off") << "\n";
   auto control = [](const std::string& file) { return file.empty() ? std::string("none") : fs::absolute(file).lexically_normal().string(); };
+  o << "light " << state.light.x << "," << state.light.y << "," << state.light.z << "\n";
   o << "shadow-palette " << control(state.shadowPalette) << "\nocclusion-palette " << control(state.occlusionPalette) << "\n";
   o << "strokes " << (s.strokes.on ? "on" : "off") << "\nstroke-density " << s.strokes.density << "\nstroke-size " << s.strokes.length << "x"
     << s.strokes.width << "\n";

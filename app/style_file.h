@@ -13,7 +13,7 @@
 //   sketchy on|off           pattern screen|anchored|object   pattern-scale S   pattern-filter nearest|linear
 //   orient none|curvature|light|DEGREES
 //   strokes on|off   stroke-density D   stroke-size LxW
-//   ground on|off   shadows on|off   occlusion on|off
+//   ground on|off   shadows on|off   occlusion on|off   light X,Y,Z (model radii, as --light)
 //   shadow-palette NAME|PATH|none   occlusion-palette NAME|PATH|none   (control images)
 #pragma once
 
@@ -42,6 +42,7 @@ struct Style {
   std::optional<OrientSettings> orient;
   std::optional<StrokeSettings> strokes;  // strokes, stroke-density, stroke-size
   std::optional<bool> ground, shadows, occlusion;
+  std::optional<glm::vec3> light;  // scene space, model radii
   std::optional<std::string> shadowPalette, occlusionPalette;  // resolved paths; empty: none
 };
 

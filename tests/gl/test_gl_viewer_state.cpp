@@ -63,6 +63,8 @@ TEST_F(StyleFixture, EveryShippedStyleAppliesAndMatchesItsGolden) {
     const std::string name = std::filesystem::path(file).stem().string();
     test::expectGolden("style-" + name, test::renderImage(*r, test::testCamera(1.0f), state.settings, 160, 160), 0.005, 0.004);
     ASSERT_TRUE(r->lighting().setToneModel(ToneModel::OpenGL, r->lighting().toneParameters()));
+    r->clearControlPalette(ControlParameter::Shadow);
+    r->clearControlPalette(ControlParameter::Occlusion);
   }
 }
 
@@ -76,6 +78,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   ASSERT_TRUE(applyStyle(*technical, state, *r));
   // Ground, shadows and a control palette travel with the look too.
   state.settings.ground = state.settings.shadows = true;
+  state.light = glm::vec3(1.0f, 4.0f, -2.5f);
   ASSERT_TRUE(state.setControlPalette(ControlParameter::Shadow, test::sourcePath("palettes/stipple/stipple.palette"), *r));
   test::TempDir d;
   const std::string saved = d.write("saved.style", styleText(state, *r, "round trip"));
@@ -93,6 +96,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   EXPECT_EQ(other.settings.lines.creaseAngle, state.settings.lines.creaseAngle);
   EXPECT_EQ(r->lighting().toneModel(), ToneModel::Gooch);
   EXPECT_TRUE(other.settings.ground && other.settings.shadows);
+  EXPECT_EQ(other.light, state.light);
   EXPECT_FALSE(other.settings.occlusion);
   EXPECT_EQ(std::filesystem::path(other.shadowPalette).filename(), "stipple.palette");
   EXPECT_TRUE(other.occlusionPalette.empty());
@@ -105,6 +109,8 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
                                                                            {"lines silhouette,glow\n", 1},
                                                                            {"pattern-scale 100\n", 1},
                                                                            {"shadows maybe\n", 1},
+                                                                           {"light 1,2\n", 1},
+                                                                           {"light 1,nan,2\n", 1},
                                                                            {"name B\nshadow-palette\n", 2}}) {
     Result<Style> bad = loadStyle(d.write("bad.style", text));
     ASSERT_FALSE(bad) << text;
