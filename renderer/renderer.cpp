@@ -74,14 +74,6 @@ void Renderer::clearControlPalette(ControlParameter parameter) {
   (parameter == ControlParameter::Shadow ? shadowPalette_ : occlusionPalette_).reset();
 }
 
-std::vector<GpuPalette*> Renderer::extraPalettes() const {
-  std::vector<GpuPalette*> out;
-  for (const auto& [name, p] : materialPalettes_) out.push_back(p.get());
-  if (shadowPalette_) out.push_back(shadowPalette_.get());
-  if (occlusionPalette_) out.push_back(occlusionPalette_.get());
-  return out;
-}
-
 std::vector<std::string> Renderer::materialPaletteNames() const {
   std::vector<std::string> out;
   for (const auto& [name, palette] : materialPalettes_) out.push_back(name);
@@ -168,7 +160,7 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
     p.setFrameOffset(glm::vec2(frameOffset_));
   };
   if (palette_) place(*palette_);
-  for (GpuPalette* p : extraPalettes()) place(*p);
+  forEachExtraPalette(place);
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {
@@ -184,10 +176,10 @@ void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& vie
     palette_->setOrientation(s.orient, light, size);
     turned = palette_->oriented();
   }
-  for (GpuPalette* p : extraPalettes()) {
-    p->setOrientation(s.orient, light, size);
-    turned = turned || p->oriented();
-  }
+  forEachExtraPalette([&](GpuPalette& p) {
+    p.setOrientation(s.orient, light, size);
+    turned = turned || p.oriented();
+  });
   if (turned && s.orient.source == OrientSource::Curvature) ensureDirectionField();
 }
 
@@ -279,10 +271,8 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
   if (groups_.empty() || !s.materials) {
     if (s.materials) materials_.update(*mesh_, lighting_, stats_);
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
-    frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
-    frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
-    if (Status st = drawPathWithControls(frame, s.path); !st) return st;
+    if (Status st = drawPart(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
   // One draw of the path per palette, each over its part of the mesh; depth testing across
@@ -291,10 +281,8 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     g->materials.update(g->mesh, lighting_, stats_);
     const GpuPalette* palette = g->palette ? g->palette : palette_.get();
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
-    frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
     frame.occlusion = occlusionValues(s);
-    frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
-    if (Status st = drawPathWithControls(frame, s.path); !st) return st;
+    if (Status st = drawPart(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
 }
@@ -306,16 +294,16 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
   RenderSettings plain = s;
   plain.materials = false;
   FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
-  frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
   if (shadowsReady_ && s.groundShadowTexture) {
     if (Status st = groundShadows_.update(shadows_, ground_, sceneVersion_, programs_, emptyVao_, stats_); !st) return st;
     if (groundShadows_.ready()) frame.groundShadows = &groundShadows_;
   }
-  frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
-  return drawPathWithControls(frame, s.path);
+  return drawPart(frame, s.path);
 }
 
-Status Renderer::drawPathWithControls(FrameContext& frame, RenderPath path) {
+Status Renderer::drawPart(FrameContext& frame, RenderPath path) {
+  frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
+  frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
   if (Status st = paths_[pathIndex(path)]->draw(frame); !st) return st;
   if (!frame.settings.controlPalettes) return okStatus();
   frame.shadowPalette = shadowPalette_.get();

@@ -141,8 +141,9 @@ class Renderer {
   void clearViewport(const glm::ivec4& viewport);
   Status drawPath(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
                   gl::MeshOutput output);
-  // The path, then the control-image palettes over what it drew.
-  Status drawPathWithControls(FrameContext& frame, RenderPath path);
+  // One part of the scene (the mesh, a per-material part, the ground) with this frame's shadow
+  // maps and screen-space occlusion: the path, then the control-image palettes over it.
+  Status drawPart(FrameContext& frame, RenderPath path);
   // The ground plane with the path's own pass, after the model (--ground).
   Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
   // Splits the mesh into one part per palette when materials have palettes of their own.
@@ -162,8 +163,14 @@ class Renderer {
   GpuPalette* controlPalette(ControlParameter parameter) const {
     return parameter == ControlParameter::Shadow ? shadowPalette_.get() : occlusionPalette_.get();
   }
-  // Every palette loaded besides the main one: per-material, then control palettes.
-  std::vector<GpuPalette*> extraPalettes() const;
+  // Calls fn(GpuPalette&) for every palette loaded besides the main one: per-material, then
+  // control palettes (each frame gives them its pattern and orientation).
+  template <class Fn>
+  void forEachExtraPalette(Fn&& fn) const {
+    for (const auto& [name, p] : materialPalettes_) fn(*p);
+    if (shadowPalette_) fn(*shadowPalette_);
+    if (occlusionPalette_) fn(*occlusionPalette_);
+  }
   std::vector<std::unique_ptr<PaletteGroup>> groups_;
   bool groupsDirty_ = false;
 

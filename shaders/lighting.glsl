@@ -6,9 +6,9 @@
 // materials) they are the lights' own colours, multiplied here by the material the caller
 // passes (material.glsl) for the vertex or fragment. SHADOWS (with SHADOW_LAYERS) looks each
 // light up in its shadow map: a blocked light keeps its ambient term only, as OpenGL's would.
-// GROUND_SHADOW_MAP (the ground plane, per pixel) reads the lights' visibility from the ground's
-// shadow texture instead. CONTROL_SHADOW adds shadowShareAt: how much of the diffuse light reaching the surface the
-// shadows block (control-image palettes: passes/control_palette_pass.h).
+// GROUND_SHADOW_MAP (the ground plane, per pixel) reads the lights' visibility from the
+// ground's shadow texture instead. CONTROL_SHADOW adds shadowShareAt: how much of the diffuse
+// light reaching the surface the shadows block (control palettes: passes/control_palette_pass.h).
 
 #ifndef NUM_LIGHTS
 #define NUM_LIGHTS 0
@@ -71,7 +71,6 @@ uniform vec2 uToneWeights;  // alpha, beta: k_cool = k_blue + alpha k_d
 #endif
 
 const float kMaxFloat = 3.402823e38;
-
 
 // x^e with OpenGL's convention x^0 = 1, and 0 for x <= 0 otherwise (GLSL's pow is undefined there).
 float powGL(float x, float e) {

@@ -102,8 +102,9 @@ out vec4 fragColor;
 
 void main() {
 #ifdef CONTROL
-  // The parameter first: where it is 0 (most of the frame) nothing is lit or looked up. Below
-  // 1/512 a blend moves no 8-bit channel by half a step: skipped too.
+  // The parameter first: where it is 0 (most of the frame) nothing needs lighting or a lookup
+  // (a GPU skips them; llvmpipe's quads pay anyway: measured). Below 1/512 a blend moves no
+  // 8-bit channel by half a step: skipped too.
 #if defined(PATH_VERTEX)
   float control = vControl;
 #elif defined(CONTROL_SHADOW)

@@ -61,7 +61,6 @@ out float vControl;
 #endif
 #endif
 
-
 void main() {
   vec4 eye = uModelView * vec4(aPosition, 1.0);
   gl_Position = uProjection * eye;

@@ -23,11 +23,8 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   variant.groundShadowMap = f.groundShadows && perPixel && variant.shadowLayers > 0;
   variant.occlusion = !f.screenOcclusion && shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (palette) {
-    // Selections are the same turned or not: only colour output turns the lookups.
-    const bool colour = f.output == gl::MeshOutput::Colour;
-    variant.palette = palette->variant(f.settings.match);
-    if (!colour) variant.palette->orientBins = 0;
-    variant.stroke = colour ? palette->strokeSource() : gl::StrokeSource::None;
+    variant.palette = f.paletteVariant(palette);
+    variant.stroke = f.strokeSource(palette);
   }
   return variant;
 }
@@ -41,7 +38,7 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   } else {
     uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
   }
-  if (palette) palette->bind(p, f.output == gl::MeshOutput::Colour);
+  if (palette) f.bindPalette(p, palette);
   if (f.shadows) f.shadows->bind(p, f.camera.view);
   if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   if (variant.screenOcclusion) f.screenOcclusion->bind(p, f.viewport);

@@ -49,16 +49,21 @@ struct FrameContext {
   const GpuPalette* shadowPalette = nullptr;
   const GpuPalette* occlusionPalette = nullptr;
 
-  // The palette's program variant for this output; selections are the same turned or not, so
-  // they ignore the orientation.
-  gl::PaletteVariant paletteVariant() const {
-    gl::PaletteVariant v = palette->variant(settings.match);
+  // A palette's program variant for this output (the frame's palette, or another drawn in the
+  // same frame: a control palette); selections are the same turned or not, so they ignore the
+  // orientation.
+  gl::PaletteVariant paletteVariant(const GpuPalette* p = nullptr) const {
+    gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     return v;
   }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.
-  gl::StrokeSource strokeSource() const { return output == gl::MeshOutput::Colour ? palette->strokeSource() : gl::StrokeSource::None; }
-  void bindPalette(gl::ShaderProgram& program) const { palette->bind(program, output == gl::MeshOutput::Colour); }
+  gl::StrokeSource strokeSource(const GpuPalette* p = nullptr) const {
+    return output == gl::MeshOutput::Colour ? (p ? p : palette)->strokeSource() : gl::StrokeSource::None;
+  }
+  void bindPalette(gl::ShaderProgram& program, const GpuPalette* p = nullptr) const {
+    (p ? p : palette)->bind(program, output == gl::MeshOutput::Colour);
+  }
 
   // Whether this frame lights with the mesh's own materials.
   bool drawMaterials() const { return settings.materials && materials.active(); }

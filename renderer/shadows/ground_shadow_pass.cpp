@@ -10,13 +10,17 @@ namespace npr {
 
 Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsigned groundVersion, gl::ProgramCache& programs,
                                 const gl::VertexArray& emptyVao, FrameStats& stats) {
-  const std::vector<glm::vec4> keys = maps.lightKeys();
-  if (maps.layers() == 0 || keys.empty() || int(keys.size()) > kMaxLights || ground.positions.empty()) {
-    ready_ = false;
-    return okStatus();
-  }
-  if (ready_ && maps.generation() == mapsGeneration_ && groundVersion == groundVersion_) return okStatus();
+  // Every redraw of the maps counts a generation (a light gone or added included): nothing new,
+  // nothing to do, every frame the light stays.
+  if (maps.generation() == mapsGeneration_ && groundVersion == groundVersion_) return okStatus();
   ready_ = false;
+  auto settled = [&] {  // this generation is done with (a failure above it is tried again)
+    mapsGeneration_ = maps.generation();
+    groundVersion_ = groundVersion;
+    return okStatus();
+  };
+  const std::vector<glm::vec4> keys = maps.lightKeys();
+  if (maps.layers() == 0 || keys.empty() || int(keys.size()) > kMaxLights || ground.positions.empty()) return settled();
   glm::vec3 lo(ground.positions.front()), hi(lo);
   for (const glm::vec3& p : ground.positions) {
     lo = glm::min(lo, p);
@@ -52,10 +56,8 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
   ++stats.drawCalls;
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  mapsGeneration_ = maps.generation();
-  groundVersion_ = groundVersion;
   ready_ = true;
-  return okStatus();
+  return settled();
 }
 
 void GroundShadowPass::bind(gl::ShaderProgram& p) const {
