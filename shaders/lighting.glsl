@@ -128,9 +128,13 @@ float groundShadow(int i) { return texture(uGroundShadows, (vGroundXZ - uGroundS
 #endif
 
 #if defined(CONTROL_SHADOW) && defined(SHADOWS) && NUM_LIGHTS > 0
-// Each light's visibility as shadowShareAt found it, which shadeParts then reuses: the shadow
-// maps are read once per pixel (they are the expensive part on a software rasterizer).
+// Each light's visibility as shadowShareAt found it. Per fragment shadeParts reuses it, so the
+// shadow maps are read once per pixel (they are the expensive part on a software rasterizer).
+// Per vertex the lighting looks the maps up itself: it lights both sides of a two-sided
+// surface, and the share is asked for the front after it.
 float controlVisible[NUM_LIGHTS];
+#endif
+#if defined(CONTROL_SHADOW) && defined(SHADOWS) && NUM_LIGHTS > 0 && !defined(PER_VERTEX_LIGHTING)
 #define LIGHT_VISIBILITY(i, pos, n, ndl) controlVisible[i]
 #elif defined(SHADOWS)
 #define LIGHT_VISIBILITY(i, pos, n, ndl) SHADOW_LOOKUP(i, pos, n, ndl)
@@ -140,8 +144,8 @@ float controlVisible[NUM_LIGHTS];
 // The share of the diffuse light reaching the surface that shadows block: 0 lit (or facing
 // away from every light: attached shadow is the tone's business), 1 in full cast shadow; each
 // light weighted by its unshadowed diffuse term there (the lights' own colours, so the control
-// pass can ask before it lights). Call it before shadeParts at the same point: that reuses the
-// visibilities found here.
+// pass can ask before it lights). Per fragment, call it before shadeParts at the same point:
+// that reuses the visibilities found here.
 float shadowShareAt(vec3 pos, vec3 normal, bool backFacing) {
 #if defined(SHADOWS) && NUM_LIGHTS > 0 && !defined(LIGHTING_OFF)
   vec3 n = safeNormalize(normal);

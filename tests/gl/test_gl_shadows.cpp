@@ -5,8 +5,8 @@
 // whose entries agree with the CPU's). A flat plate lit at grazing angles shows no acne at any
 // zoom. Maps are redrawn only when a light moves relative to the model. Baked ambient occlusion is
 // lower in a concave corner than on convex ones, and darkens the frame there. Control-image
-// palettes (seed 003) fall where the ray-cast reference says the light is blocked, and weigh
-// the three palettes as a partition of unity in every path.
+// palettes (seed 003) fall where the ray-cast reference says the light is blocked, weigh the
+// three palettes as a partition of unity in every path, and light their pixels as the path does.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -424,6 +424,34 @@ TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
   r->clearControlPalette(ControlParameter::Shadow);
   r->clearControlPalette(ControlParameter::Occlusion);
   r->setMesh(&cube);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+}
+
+TEST_F(Shadows, AControlPaletteLikeTheMainOneChangesNothing) {
+  // Each control layer lights its pixels as the path does: a shadow palette equal to the main
+  // one, blended over it, leaves the frame as it was (within the blend's rounding), two-sided
+  // lighting included (the per-vertex path lights both sides). The ground's grid gives the
+  // per-vertex path vertices in the shadow.
+  ASSERT_TRUE(r->setPalette(test::greyRamp(16)));
+  light({1.0f, 1.0f, 0.3f, 0.0f});  // the cube's shadow across the ground's grid
+  for (int twoSided : {0, 1}) {
+    ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, twoSided));
+    for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth}) {
+      SCOPED_TRACE(testing::Message() << pathInfo(path).name << (twoSided ? ", two-sided" : ""));
+      RenderSettings s;
+      s.path = path;
+      s.shadows = s.ground = true;
+      r->clearControlPalette(ControlParameter::Shadow);
+      const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
+      ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, test::greyRamp(16)));
+      const ImageRGBA8 layered = test::renderImage(*r, cam, s, kSize, kSize);
+      int off = 0;
+      for (std::size_t i = 0; i < plain.pixels.size(); ++i) off += std::abs(int(plain.pixels[i]) - int(layered.pixels[i])) > 2;
+      EXPECT_EQ(off, 0) << "channels changed by the layer";
+    }
+  }
+  ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0));
+  r->clearControlPalette(ControlParameter::Shadow);
   ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
 }
 
