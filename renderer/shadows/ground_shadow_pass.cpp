@@ -35,11 +35,14 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
   glGetIntegerv(GL_VIEWPORT, viewport);
   if (target_.resize({kSize, kSize}, GL_RGBA8, GL_RGBA)) {
     ++stats.bufferUploads;
-    glBindTexture(GL_TEXTURE_2D, target_.colour());
+    sampled_ = gl::createTexture();
+    glBindTexture(GL_TEXTURE_2D, sampled_.id());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kSize, kSize);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     glBindTexture(GL_TEXTURE_2D, 0);
   }
   target_.bindAndClear();
@@ -54,6 +57,7 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
   glBindVertexArray(emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   ++stats.drawCalls;
+  glCopyImageSubData(target_.colour(), GL_TEXTURE_2D, 0, 0, 0, 0, sampled_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, kSize, kSize, 1);
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   ready_ = true;
@@ -61,7 +65,7 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
 }
 
 void GroundShadowPass::bind(gl::ShaderProgram& p) const {
-  gl::bindTexture(gl::TextureUnit::GroundShadows, GL_TEXTURE_2D, target_.colour());
+  gl::bindTexture(gl::TextureUnit::GroundShadows, GL_TEXTURE_2D, sampled_.id());
   p.set("uGroundShadows", gl::unitIndex(gl::TextureUnit::GroundShadows));
   // Model x, z -> the texture's coordinates: (xz - origin) * scale.
   const glm::vec2 extent = glm::max(glm::vec2(rect_.z - rect_.x, rect_.w - rect_.y), glm::vec2(1e-12f));

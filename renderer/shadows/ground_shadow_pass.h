@@ -33,7 +33,12 @@ class GroundShadowPass {
   void bind(gl::ShaderProgram& program) const;
 
  private:
-  gl::TextureTarget target_;
+  gl::TextureTarget target_;  // drawn into
+  // What the ground samples: a copy of target_'s colour made after each redraw. On llvmpipe the
+  // ground's draw, sampling target_ itself, waited every frame for everything drawn before it
+  // (render() blocked 14 ms per bunny frame with shadows and the ground: bench_frames --shadows
+  // --static-light, CPU ms); sampling a texture that never was a render target does not wait.
+  gl::Texture sampled_;
   glm::vec4 rect_{0.0f};  // x0, z0, x1, z1 of the ground's square, model space
   unsigned mapsGeneration_ = ~0u, groundVersion_ = ~0u;
   bool ready_ = false;
