@@ -25,9 +25,13 @@ bool TextureTarget::resize(const glm::ivec2& size, GLint internalFormat, GLenum 
   return true;
 }
 
-void TextureTarget::bindAndClear() const {
+void TextureTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glViewport(0, 0, size_.x, size_.y);
+}
+
+void TextureTarget::bindAndClear() const {
+  bind();
   glClearColor(0, 0, 0, 0);
   apply(pass::kClearTarget);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -18,6 +18,8 @@ class TextureTarget {
   bool resize(const glm::ivec2& size, GLint internalFormat, GLenum format);
   // Binds for drawing over the whole target and clears colour (to 0) and depth.
   void bindAndClear() const;
+  // Binds for drawing over the whole target, clearing nothing.
+  void bind() const;
   GLuint colour() const { return colour_.id(); }
   GLuint depth() const { return depth_.id(); }
   glm::ivec2 size() const { return size_; }

@@ -29,14 +29,24 @@ Status drawStrokeAngles(FrameContext& f) {
   return drawMesh(f, variant, false);
 }
 
-Status SurfaceBufferPass::draw(FrameContext& f) {
+Status SurfaceBufferPass::draw(FrameContext& f, const glm::ivec4& meshRect) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const glm::ivec4& vp = f.viewport;
   const bool angles = content_ == Content::StrokeAngles;
   // Pattern coordinates grow with zoom (texels per object unit): full floats.
   if (target_.resize({vp.z, vp.w}, angles ? GL_RG16F : GL_RGBA32F, angles ? GL_RG : GL_RGBA)) ++f.stats.bufferUploads;
-  target_.bindAndClear();
+  target_.bind();
+  const glm::ivec4 r = glm::clamp(meshRect, glm::ivec4(0), glm::ivec4(vp.z, vp.w, vp.z, vp.w));
+  if (r.z <= r.x || r.w <= r.y) {  // nothing of the mesh on screen: nothing to read
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(vp.x, vp.y, vp.z, vp.w);
+    return okStatus();
+  }
+  gl::apply(gl::pass::kClearViewport);
+  glScissor(r.x, r.y, r.z - r.x, r.w - r.y);
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
   Status st = okStatus();
   if (angles) {
     st = drawStrokeAngles(f);
@@ -50,6 +60,7 @@ Status SurfaceBufferPass::draw(FrameContext& f) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
   glViewport(vp.x, vp.y, vp.z, vp.w);
+  glScissor(vp.x, vp.y, vp.z, vp.w);
   return st;
 }
 

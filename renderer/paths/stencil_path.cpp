@@ -23,11 +23,19 @@ Status StencilPath::draw(FrameContext& f) {
       f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->filtered(),
                                      f.palette->orientBins(), angleBuffer});
   if (!layerQuad) return Error{layerQuad.error()};
+  // Where the mesh is on screen: the buckets' rectangles together (the whole viewport when
+  // they are not computed).
+  glm::ivec4 meshRect(0, 0, f.viewport.z, f.viewport.w);
+  if (s.stencilScissor) {
+    meshRect = glm::ivec4(f.viewport.z, f.viewport.w, 0, 0);
+    for (const glm::ivec4& b : f.triangles.shading().bucketBounds)
+      if (b.z > b.x && b.w > b.y) meshRect = glm::ivec4(glm::min(glm::ivec2(meshRect), glm::ivec2(b)), glm::max(glm::ivec2(meshRect.z, meshRect.w), glm::ivec2(b.z, b.w)));
+  }
   if (angleBuffer)
-    if (Status st = strokeAngles_.draw(f); !st) return st;
+    if (Status st = strokeAngles_.draw(f, meshRect); !st) return st;
   const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
   if (objectPattern)
-    if (Status st = patternCoordinates_.draw(f); !st) return st;
+    if (Status st = patternCoordinates_.draw(f, meshRect); !st) return st;
 
   (*mask)->use();
   setMeshTransform(**mask, f.camera);
