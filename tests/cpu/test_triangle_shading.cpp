@@ -140,6 +140,79 @@ INSTANTIATE_TEST_SUITE_P(
                     Scene{"two attenuated point lights (general loop)", 2, 2, true, true, MatchMode::Intensity}),
     [](const testing::TestParamInfo<Scene>& info) { return "Scene" + std::to_string(info.index); });
 
+// A material per face, in runs of every length from one face up (the loop takes the faces of
+// a run together) and with a colour per face: every triangle's entry is what the
+// double-precision model gives with its own material and colour.
+TEST(TriangleShadingMaterials, EachFaceLitWithItsMaterialAndColour) {
+  const Mesh mesh = torus(60, 40);
+  const size_t nt = mesh.triangleCount();
+  for (bool point : {false, true}) {
+    LightingState l;
+    const float white[4] = {0.9f, 0.85f, 0.8f, 1}, pos[4] = {1.2f, 1.4f, 2.0f, point ? 1.0f : 0.0f};
+    ASSERT_TRUE(l.Enable(GL_LIGHT0));
+    ASSERT_TRUE(l.Lightfv(GL_LIGHT0, GL_DIFFUSE, white));
+    ASSERT_TRUE(l.Lightfv(GL_LIGHT0, GL_SPECULAR, white));
+    ASSERT_TRUE(l.Lightfv(GL_LIGHT0, GL_POSITION, pos));
+    FaceMaterials fm;
+    for (int m = 0; m < 5; ++m) {
+      Material mat;
+      mat.diffuse = glm::vec4(0.3f + 0.15f * float(m), 0.9f - 0.12f * float(m), 0.5f, 1.0f);
+      mat.ambient = mat.diffuse * 0.25f;
+      mat.specular = glm::vec4(glm::vec3(m % 2 ? 0.5f : 0.0f), 1.0f);
+      mat.shininess = 10.0f + 20.0f * float(m);
+      mat.emission = glm::vec4(glm::vec3(m == 3 ? 0.1f : 0.0f), 1.0f);
+      fm.materials.push_back(mat);
+    }
+    // Runs of 1, 2, 3, ... faces, cycling through the materials; colours vary per face.
+    std::vector<std::uint16_t> material(nt);
+    std::vector<glm::u8vec4> colour(nt);
+    for (size_t i = 0, run = 1, left = 1, m = 0; i < nt; ++i) {
+      material[i] = std::uint16_t(m);
+      colour[i] = glm::u8vec4(255 - (i * 7) % 160, 255 - (i * 13) % 120, 200 + (i % 56), 255);
+      if (--left == 0) {
+        m = (m + 1) % fm.materials.size();
+        left = ++run % 40 + 1;
+      }
+    }
+    fm.faceMaterial = material.data();
+    for (bool scaled : {false, true}) {
+      fm.faceScale = scaled ? colour.data() : nullptr;
+      for (MatchMode mode : {MatchMode::Intensity, MatchMode::Colors}) {
+        auto matcher = PaletteMatcher::create(paletteFor(mode), mode, 1.0f);
+        ASSERT_TRUE(matcher) << matcher.error();
+        const glm::mat4 view = glm::lookAt(glm::vec3(1.5f, 1.0f, 2.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+        TriangleShadingOptions opt;
+        opt.threads = 2;
+        TriangleShading out;
+        shadeTriangles(mesh, l, view, *matcher, opt, out, &fm);
+        ASSERT_EQ(out.entry.size(), nt);
+        std::vector<PreparedLighting<double>> ref;
+        for (const Material& m : fm.materials) ref.push_back(prepareLighting<double>(l.withMaterial(m)));
+        const glm::dmat3 normalMatrix = glm::dmat3(glm::transpose(glm::inverse(glm::mat3(view))));
+        size_t nearBoundary = 0;
+        std::vector<int> seen(static_cast<size_t>(matcher->size()), 0);
+        for (size_t i = 0; i < nt; ++i) {
+          const glm::dvec3 eyePos = glm::dvec3(view * glm::vec4(mesh.faceCentroids[i], 1.0f));
+          const glm::dvec3 scale = scaled ? glm::dvec3(colour[i]) / 255.0 : glm::dvec3(1.0);
+          const glm::dvec3 c = shade(ref[material[i]], eyePos, normalMatrix * glm::dvec3(mesh.faceNormals[i]), false, scale);
+          const int want = matcher->match(glm::vec3(c)), got = out.entry[i];
+          seen[size_t(got)] = 1;
+          if (got == want) continue;
+          const glm::vec3 lo = glm::vec3(c) - 2e-3f, hi = glm::vec3(c) + 2e-3f;
+          const bool boundary = matcher->match(glm::clamp(lo, 0.0f, 1.0f)) == got || matcher->match(glm::clamp(hi, 0.0f, 1.0f)) == got;
+          ASSERT_TRUE(boundary) << "triangle " << i << " (material " << material[i] << (scaled ? ", coloured" : "") << (point ? ", point light" : "")
+                                << ") got entry " << got << ", the model says " << want;
+          ++nearBoundary;
+        }
+        EXPECT_LT(double(nearBoundary), 0.002 * double(nt));
+        int used = 0;
+        for (int u : seen) used += u;
+        EXPECT_GE(used, 5);
+      }
+    }
+  }
+}
+
 // Huge and opposite light colours (inf - inf, inf x 0 in the sums) must still give an entry of
 // the palette: the loops clamp NaN to 0 before the lookup table is indexed.
 TEST(TriangleShadingExtremes, HugeAndOppositeColoursStayInThePalette) {
