@@ -3,6 +3,8 @@
 //  - slide: how far the pattern moves relative to the surface under it, in pixels per frame,
 //    over covered pixels (a surface point's screen motion minus the motion of the pattern
 //    texel under it, from the geometry and the pattern's frame; independent of the shader);
+//    for `anchored` also the least slide any one similarity could have each frame (the rest
+//    is parallax: no 2D similarity follows it);
 //  - tone: the model's mean luminance against `screen`'s at each frame, in palette steps
 //    (the mean luminance difference between neighbouring entries), worst over the script;
 //  - contrast: the standard deviation of luminance over the model, first and last frame;
@@ -38,6 +40,7 @@ float luminance(const std::uint8_t* p) { return (0.2126f * p[0] + 0.7152f * p[1]
 
 struct Run {
   double slide = 0.0;   // mean over frames of the mean over covered pixels
+  double floor = 0.0;   // the same for the best similarity each frame (test::leastSimilaritySlide)
   double anisotropy = 1.0, scaleSpread = 1.0;  // flatness on screen, first frame (object space)
   std::vector<float> meanTone, contrast;
   double fitMs = 0.0;
@@ -151,8 +154,10 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     // loop below renders `next` again as frame f + 1 (a zero-motion fit, frame unchanged).
     out.slide += test::patternSlide(geo, m, next, space == PatternSpace::Anchored ? &frameNow : nullptr,
                                     space == PatternSpace::Anchored ? &frameNext : nullptr);
+    if (space == PatternSpace::Anchored) out.floor += test::leastSimilaritySlide(geo, m, next, 4);
   }
   out.slide /= frames;
+  out.floor /= frames;
   if (!fitMs.empty()) {
     std::sort(fitMs.begin(), fitMs.end());
     out.fitMs = fitMs[fitMs.size() / 2];
@@ -203,7 +208,9 @@ int main(int argc, char** argv) {
           worst = std::max(worst, std::fabs(run->meanTone[f] - screen.meanTone[f]) / step);
         // The object-space pattern is a function of the surface point: it does not slide (its
         // octave and axis dissolves change which marks show, not where they sit).
-        const std::string slide = run == &object ? "0 (glued)" : std::to_string(run->slide).substr(0, 5);
+        std::string slide = run == &object ? "0 (glued)" : std::to_string(run->slide).substr(0, 5);
+        // Anchored: and the least any similarity could slide (what is left is parallax).
+        if (run == &anchored) slide += " (least " + std::to_string(run->floor).substr(0, 5) + ")";
         char flat[48];
         std::snprintf(flat, sizeof flat, "%.2f / %.2f", run->anisotropy, run->scaleSpread);
         std::printf("| %s | %s | %s | %s | %.2f | %.3f -> %.3f | %s | %s | %s |\n", scene.name, sc.name,

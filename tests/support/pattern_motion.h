@@ -16,4 +16,13 @@ namespace npr::test {
 double patternSlide(const ImageRGBA32F& eyePositions, const CameraMatrices& cameraNow, const CameraMatrices& cameraNext,
                     const PatternFrame* now, const PatternFrame* next, int step = 2);
 
+// The least slide any 2D similarity can have between the two frames: the similarity (rotation,
+// uniform scale, translation, from every covered pixel's surface point) whose mean slide over the
+// covered pixels is smallest, found by iteratively reweighted least squares (the mean of the
+// residuals' lengths is convex in the similarity's four parameters, so it converges to the
+// minimum). A floor for the anchored pattern, whatever samples and weights it fits with: what
+// is left is parallax, parts of the surface moving unlike any one similarity.
+double leastSimilaritySlide(const ImageRGBA32F& eyePositions, const CameraMatrices& cameraNow, const CameraMatrices& cameraNext,
+                            int step = 2);
+
 }  // namespace npr::test
