@@ -13,6 +13,7 @@ layout(location = 1) in vec3 aNormal;
 uniform mat4 uModelView;
 uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
+uniform mat4 uModelViewProjection;  // uProjection * uModelView
 
 invariant gl_Position;
 
@@ -70,10 +71,11 @@ void main() {
   vGroundXZ = aPosition.xz;
 #endif
 #if defined(ORIENT_FIELD)
-  // a tangent turns with the modelview, not the normal matrix
-  vStrokeDirection = screenDirection(uProjection, eye.xyz, mat3(uModelView) * aDirection);
+  // A tangent turns with the modelview, not the normal matrix; w = 0 takes it to clip space
+  // as a direction, in one product with the projection.
+  vStrokeDirection = screenDirectionClip(gl_Position, uModelViewProjection * vec4(aDirection, 0.0));
 #elif defined(ORIENT_LIGHT)
-  vStrokeDirection = screenDirection(uProjection, eye.xyz, lightAcrossSurface(eye.xyz, vNormal));
+  vStrokeDirection = screenDirectionClip(gl_Position, uProjection * vec4(lightAcrossSurface(eye.xyz, vNormal), 0.0));
 #endif
 #if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)
 #ifdef VERTEX_COLOURS

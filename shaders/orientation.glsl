@@ -43,17 +43,18 @@ bool orientSteps(float entryAngle, float frameTurn, out int b0, out int b1, out 
 
 #if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
 uniform vec2 uViewportSize;
-// The unit screen direction of tangent `d` at eye-space point `p` (the derivative of the
-// projection), or zero where d points along the view ray (or is zero) and has no direction on
-// screen. Computed per vertex and interpolated: two components to interpolate instead of the
-// six a per-pixel projection would need (position and direction), which on a CPU rasterizer
-// is most of the cost on large meshes.
-vec2 screenDirection(mat4 projection, vec3 p, vec3 d) {
-  vec4 c = projection * vec4(p, 1.0), dc = projection * vec4(d, 0.0);
+// The unit screen direction of a tangent at a point, from the point's clip position `c` and
+// the tangent's `dc` (projected with w = 0): the derivative of the projection, or zero where the
+// tangent points along the view ray (or is zero) and has no direction on screen. Computed per
+// vertex and interpolated: two components to interpolate instead of the six a per-pixel
+// projection would need (position and direction), which on a CPU rasterizer is most of the cost
+// on large meshes; the vertex's own gl_Position is `c`.
+vec2 screenDirectionClip(vec4 c, vec4 dc) {
   vec2 s = (dc.xy * c.w - c.xy * dc.w) * uViewportSize;
   vec2 scale = (abs(dc.xy * c.w) + abs(c.xy * dc.w)) * uViewportSize;
   return dot(s, s) > 1e-6 * dot(scale, scale) ? normalize(s) : vec2(0.0);
 }
+
 // This pixel's stroke angle from the interpolated direction.
 void setStrokeFromDirection(vec2 d) {
   strokeValid = dot(d, d) > 1e-6;

@@ -134,6 +134,8 @@ void setMeshTransform(gl::ShaderProgram& program, const CameraMatrices& camera) 
   program.set("uModelView", modelView);
   program.set("uProjection", camera.projection);
   program.set("uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(modelView))));
+  // Directions to clip space in one product per vertex (the hatching field, mesh.vert).
+  program.set("uModelViewProjection", camera.projection * modelView);
 }
 
 }  // namespace npr
