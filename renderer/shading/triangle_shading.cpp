@@ -186,7 +186,8 @@ void shadeSimple(const SimpleLighting& light, const PaletteMatcher::UnitLookup l
 // The same loop with a material per triangle, run by run: faces of one material come in runs
 // (an OBJ's usemtl groups), and each run takes the one-material loop with that material's
 // products in registers. Reading them from the triangle's row of the table instead cost 16
-// materials by region 1.26-1.37x the one-material loop (bench_shading, Materials).
+// materials by region 1.28-1.49x the one-material loop, against 1.14-1.18x so (bench_shading,
+// Materials, the same runs).
 template <int kLights, bool kSpecular, bool kPositional>
 void shadeMaterialLoop(const SimpleLighting* table, const std::uint16_t* __restrict material, const glm::u8vec4* __restrict scale,
                        const PaletteMatcher::UnitLookup lookup, const glm::vec3* __restrict centroids,
