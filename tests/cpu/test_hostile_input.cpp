@@ -202,6 +202,36 @@ TEST(HostileInput, LargeImagesAreReducedWhileReadKeepingTheTone) {
   }
 }
 
+TEST(HostileInput, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+  // libpng allocates a chunk's declared length before reading it: the fuzzer's file of 316
+  // bytes made it allocate 1.8 GB. The chunks are checked against the file first.
+  const std::string found = std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/png-chunk-longer-than-the-file.png";
+  auto size = readImageSize(found);
+  ASSERT_FALSE(size);
+  EXPECT_TRUE(contains(size.error(), "corrupt PNG: chunk")) << size.error();
+  // A valid PNG with its image data's length field raised.
+  TempDir d;
+  const std::string path = d.path().string() + "/long-chunk.png";
+  ASSERT_TRUE(writeImage(path, ImageRGBA8{8, 8, std::vector<std::uint8_t>(8 * 8 * 4, 200)}));
+  std::string bytes;
+  {
+    std::ifstream f(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(f), {});
+  }
+  ASSERT_TRUE(loadImage(path, {8, 8}));
+  const std::size_t idat = bytes.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  bytes[idat - 4] = char(0x6c);
+  {
+    std::ofstream f(path, std::ios::binary);
+    f << bytes;
+  }
+  auto img = loadImage(path, {8, 8});
+  ASSERT_FALSE(img);
+  EXPECT_TRUE(contains(img.error(), "chunk 'IDAT' at byte " + std::to_string(idat - 4))) << img.error();
+  EXPECT_TRUE(contains(img.error(), "long-chunk.png")) << img.error();
+}
+
 TEST(HostileInput, PaletteDeclaringTooManyPixelsIsRefusedBeforeDecoding) {
   TempDir d;
   // A 16384 x 16384 grey PNG of zeros is about 260 KB; five of them declare 1.3 gigapixels.
