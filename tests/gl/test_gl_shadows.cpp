@@ -50,13 +50,13 @@ int entryAt(const ImageRGBA8& entries, glm::ivec2 p) {
   return entries.pixels[(size_t(p.y) * entries.width + size_t(p.x)) * 4];
 }
 
-// A cube floating above a plate, both in the model.
-Mesh floatingCubeOverPlate() {
+// `m` moved by `place` over a square plate at y = -0.6, both in one model.
+template <class Place>
+Mesh overPlate(const Mesh& m, Place place) {
   std::vector<Triangle> scene;
-  const Mesh c = unitCube();
-  for (std::size_t t = 0; t < c.triangleCount(); ++t) {
+  for (std::size_t t = 0; t < m.triangleCount(); ++t) {
     Triangle tri;
-    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = c.positions[c.indices[t * 3 + size_t(k)]] * 0.6f + glm::vec3(0.0f, 0.2f, 0.0f);
+    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = place(m.positions[m.indices[t * 3 + size_t(k)]]);
     scene.push_back(tri);
   }
   Triangle a, b;
@@ -67,23 +67,16 @@ Mesh floatingCubeOverPlate() {
   return meshFromTriangles(scene);
 }
 
-// A torus tilted 30 degrees over the same plate, both in the model: it shadows the plate and,
-// where the light is low, its own far side.
+// A cube floating above the plate.
+Mesh floatingCubeOverPlate() {
+  return overPlate(unitCube(), [](const glm::vec3& p) { return p * 0.6f + glm::vec3(0.0f, 0.2f, 0.0f); });
+}
+
+// A torus tilted 30 degrees over the plate: it shadows the plate and, where the light is low,
+// its own far side.
 Mesh tiltedTorusOverPlate() {
-  std::vector<Triangle> scene;
-  const Mesh t = torus(96, 32);
   const glm::mat3 tilt = glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(30.0f), glm::vec3(1.0f, 0.0f, 0.0f)));
-  for (std::size_t f = 0; f < t.triangleCount(); ++f) {
-    Triangle tri;
-    for (int k = 0; k < 3; ++k) tri.v[size_t(k)] = tilt * (t.positions[t.indices[f * 3 + size_t(k)]] * 0.7f) + glm::vec3(0.0f, 0.15f, 0.0f);
-    scene.push_back(tri);
-  }
-  Triangle a, b;
-  a.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(-1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, 1.5f)};
-  b.v = {glm::vec3(-1.5f, -0.6f, -1.5f), glm::vec3(1.5f, -0.6f, 1.5f), glm::vec3(1.5f, -0.6f, -1.5f)};
-  scene.push_back(a);
-  scene.push_back(b);
-  return meshFromTriangles(scene);
+  return overPlate(torus(96, 32), [&](const glm::vec3& p) { return tilt * (p * 0.7f) + glm::vec3(0.0f, 0.15f, 0.0f); });
 }
 
 // One solid entry of `colour` (8-bit values): every lit colour matches it.
