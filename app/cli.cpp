@@ -108,7 +108,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
   app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
-  app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: full-screen quads for every bucket (the original's cost)");
+  app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: mask and full-screen quads bucket by bucket, for every bucket (the original's cost)");
   app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image,hardware,rim");
   app.add_option("--outline", outlineMethod, "Hardware outlines (--lines hardware) from back faces: fatten (even widths), offset or edges");
   app.add_option("--outline-offset", outlineOffset, "--outline offset: back faces pulled this fraction of their depth towards the eye (0..0.2, default 0.005)");

@@ -46,7 +46,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (o.occlusionStrength) state.settings.occlusionStrength = *o.occlusionStrength;
   if (o.occlusionMethod) state.settings.occlusionMethod = *o.occlusionMethod;
   state.settings.triangleLighting = o.triangleLighting;
-  if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = false;
+  if (o.naiveStencil) state.settings.stencilScissor = state.settings.stencilSkipEmpty = state.settings.stencilMasksFirst = false;
   if (!o.bands.empty()) state.settings.bands = o.bands;
   StrokeSettings& strokes = state.settings.strokes;
   if (o.strokes) strokes.on = true;

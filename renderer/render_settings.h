@@ -152,6 +152,10 @@ struct RenderSettings {
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
+  // Mark every bucket's pixels (the stencil holding the bucket's number) before any quad is
+  // drawn: each pixel then gets the quads of the bucket it shows only, and the masks can write
+  // the surface buffers as they mark. Off: the original's mask, quad, quad per bucket.
+  bool stencilMasksFirst = true;
   LineSettings lines;
   StrokeSettings strokes;
 };

@@ -1,5 +1,7 @@
 // Fragment stage of every mesh pass; one PATH_* define selects what it does:
-//  PATH_MASK       stencil path: depth and stencil only
+//  PATH_MASK       stencil path: depth and stencil, and with MASK_STROKE_ANGLE or
+//                  MASK_PATTERN_COORDINATE what PATH_STROKE_ANGLE or PATH_PATTERN_COORDINATE
+//                  write, at outputs 1 and 2 (passes/surface_buffer_pass.h)
 //  PATH_TRIANGLE   the CPU's per-triangle choice, one draw per palette entry
 //  PATH_VERTEX     lit per vertex, matched per pixel
 //  PATH_PIXEL      lit and matched per pixel
@@ -25,8 +27,8 @@ in vec3 vNormal;
 #if defined(PATH_PIXEL) || defined(PATH_SMOOTH) || defined(PATH_PHONG) || defined(PATH_LIT_TEXTURED)
 #include "lighting.glsl"
 #endif
-#if !defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL) && \
-    !defined(PATH_STROKE_ANGLE)
+#if (!defined(PATH_MASK) && !defined(PATH_PHONG) && !defined(PATH_GOURAUD) && !defined(PATH_EYE_POSITION) && !defined(PATH_EYE_NORMAL) && \
+     !defined(PATH_STROKE_ANGLE)) || defined(MASK_PATTERN_COORDINATE)
 #include "palette.glsl"
 #endif
 
@@ -90,7 +92,13 @@ uniform sampler2DArray uMaterialMaps;  // diffuse maps, mipmapped, repeating
 #endif
 #endif
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+#ifdef MASK_STROKE_ANGLE
+layout(location = 1) out vec4 maskStrokeAngle;
+#endif
+#ifdef MASK_PATTERN_COORDINATE
+layout(location = 2) out vec4 maskPatternCoordinate;
+#endif
 
 #if defined(OUTPUT_ENTRY)
 #define SHOW_ENTRY(e) vec4(float(e) / 255.0, 0.0, 0.0, 1.0)
@@ -126,6 +134,12 @@ void main() {
   fragColor = vec4(mappedCoordinate(), 1.0);
 #elif defined(PATH_MASK)
   fragColor = vec4(0.0);
+#ifdef MASK_STROKE_ANGLE
+  maskStrokeAngle = vec4(strokeAngle, strokeValid ? 1.0 : 0.0, 0.0, 1.0);
+#endif
+#ifdef MASK_PATTERN_COORDINATE
+  maskPatternCoordinate = vec4(mappedCoordinate(), 1.0);
+#endif
 #elif defined(PATH_EYE_POSITION)
   fragColor = vec4(vPosition, gl_FrontFacing ? 1.0 : -1.0);
 #elif defined(PATH_EYE_NORMAL)

@@ -77,6 +77,8 @@ void drawOverlay(Viewer& v) {
     ImGui::Checkbox("scissor buckets", &s.settings.stencilScissor);
     ImGui::SameLine();
     ImGui::Checkbox("skip empty", &s.settings.stencilSkipEmpty);
+    ImGui::SameLine();
+    ImGui::Checkbox("masks first", &s.settings.stencilMasksFirst);
   }
   int pattern = static_cast<int>(s.settings.pattern);
   if (ImGui::Combo("pattern (T)", &pattern, "screen\0anchored\0object\0")) {

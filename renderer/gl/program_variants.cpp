@@ -58,6 +58,10 @@ struct SourceOf {
     if (m.materials && m.vertexColours) s.defines.push_back("VERTEX_COLOURS");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
+    if (m.shading == MeshShading::Mask && (m.stroke == StrokeSource::Field || m.stroke == StrokeSource::Light))
+      s.defines.push_back("MASK_STROKE_ANGLE");
+    if (m.shading == MeshShading::Mask && m.palette && m.palette->pattern == PatternMapping::Object)
+      s.defines.push_back("MASK_PATTERN_COORDINATE");
     if (m.stroke == StrokeSource::Field) s.defines.push_back("ORIENT_FIELD");
     if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");

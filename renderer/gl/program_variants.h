@@ -37,7 +37,8 @@ struct PaletteVariant {
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
 enum class MeshShading : std::uint8_t {
-  Mask,         // depth and stencil only (the stencil path's mask)
+  Mask,         // depth and stencil (the stencil path's mask); with a stroke source from the
+                // field or the light, or a palette in object space, also the surface buffers
   Triangle,     // the CPU's per-triangle entry, a uniform per bucket
   Vertex,       // lit per vertex, matched per pixel
   Pixel,        // lit and matched per pixel

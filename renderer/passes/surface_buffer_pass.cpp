@@ -29,13 +29,30 @@ Status drawStrokeAngles(FrameContext& f) {
   return drawMesh(f, variant, false);
 }
 
+bool SurfaceBufferPass::resize(const glm::ivec2& size, FrameStats& stats) {
+  const bool angles = content_ == Content::StrokeAngles;
+  // Pattern coordinates grow with zoom (texels per object unit): full floats.
+  if (!target_.resize(size, angles ? GL_RG16F : GL_RGBA32F, angles ? GL_RG : GL_RGBA)) return false;
+  ++stats.bufferUploads;
+  return true;
+}
+
+GLuint SurfaceBufferPass::output(const glm::ivec4& viewport, FrameStats& stats) {
+  GLint target = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+  if (resize({viewport.x + viewport.z, viewport.y + viewport.w}, stats)) {  // resizing binds the target's own
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  }
+  return target_.colour();
+}
+
 Status SurfaceBufferPass::draw(FrameContext& f, const glm::ivec4& meshRect) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   const glm::ivec4& vp = f.viewport;
   const bool angles = content_ == Content::StrokeAngles;
-  // Pattern coordinates grow with zoom (texels per object unit): full floats.
-  if (target_.resize({vp.z, vp.w}, angles ? GL_RG16F : GL_RGBA32F, angles ? GL_RG : GL_RGBA)) ++f.stats.bufferUploads;
+  resize({vp.z, vp.w}, f.stats);
   target_.bind();
   const glm::ivec4 r = glm::clamp(meshRect, glm::ivec4(0), glm::ivec4(vp.z, vp.w, vp.z, vp.w));
   if (r.z <= r.x || r.w <= r.y) {  // nothing of the mesh on screen: nothing to read
@@ -64,12 +81,12 @@ Status SurfaceBufferPass::draw(FrameContext& f, const glm::ivec4& meshRect) {
   return st;
 }
 
-void SurfaceBufferPass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {
+void SurfaceBufferPass::bind(gl::ShaderProgram& p, const glm::ivec2& origin) const {
   const bool angles = content_ == Content::StrokeAngles;
   const gl::TextureUnit unit = angles ? gl::TextureUnit::StrokeAngles : gl::TextureUnit::PatternCoordinates;
   gl::bindTexture(unit, GL_TEXTURE_2D, target_.colour());
   p.set(angles ? "uStrokeAngles" : "uPatternCoordinates", gl::unitIndex(unit));
-  p.set("uViewportOrigin", glm::ivec2(viewport.x, viewport.y));
+  p.set("uViewportOrigin", origin);
 }
 
 }  // namespace npr

@@ -1,9 +1,11 @@
 // The stencil path's per-pixel buffers: its layer quads cover the screen and know nothing of
-// the surface under a pixel, so what they need of it is drawn first, the mesh once more into a
-// texture of the viewport's size: each pixel's stroke angle on screen and whether it has one
-// (hatching orientation along the curvature or the light), or its object-space pattern
-// coordinate and mip level (--pattern object): what the shaded paths compute in place. One
-// extra geometry pass each, with its own depth buffer, drawn only when a frame needs it.
+// the surface under a pixel, so what they need of it is written before they are drawn: each
+// pixel's stroke angle on screen and whether it has one (hatching orientation along the
+// curvature or the light), or its object-space pattern coordinate and mip level (--pattern
+// object): what the shaded paths compute in place. The stencil path's masks write them as
+// they mark (outputs() below, gl/shared_depth_framebuffer.h); where they cannot (the window's
+// own framebuffer, the per-bucket order), draw() draws them in an extra geometry pass each,
+// with its own depth buffer, only when a frame needs them.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -28,10 +30,16 @@ class SurfaceBufferPass {
   // is never cleared: the quads read only pixels their mask marked, which the mesh covers, so
   // the pass has written them (clearing the float buffer was 3 of the bunny's 7 ms here).
   [[nodiscard]] Status draw(FrameContext& f, const glm::ivec4& meshRect);
-  // Binds the buffer for a layer quad compiled with ORIENT_BUFFER or PATTERN_OBJECT_BUFFER.
-  void bind(gl::ShaderProgram& program, const glm::ivec4& viewport) const;
+  // The buffer's texture sized for the whole framebuffer up to the viewport's far corner, for
+  // a mask pass to write at its pixels' own coordinates (allocates only on a size change).
+  GLuint output(const glm::ivec4& viewport, FrameStats& stats);
+  // Binds the buffer for a layer quad compiled with ORIENT_BUFFER or PATTERN_OBJECT_BUFFER;
+  // `origin` is the framebuffer pixel its texel (0, 0) holds: the viewport's corner after
+  // draw(), (0, 0) after output().
+  void bind(gl::ShaderProgram& program, const glm::ivec2& origin) const;
 
  private:
+  bool resize(const glm::ivec2& size, FrameStats& stats);
   Content content_;
   gl::TextureTarget target_;
 };

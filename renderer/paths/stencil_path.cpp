@@ -1,9 +1,18 @@
 // The original stencil-bucket algorithm (see stencil_path.h).
 #include "renderer/paths/stencil_path.h"
 
+#include <algorithm>
+
 #include "renderer/gl/pass_state.h"
 
 namespace npr {
+namespace {
+
+// Stencil values a bucket can be marked with when every mask is drawn first: 1 to 255 (0 is
+// unmarked); a palette with more non-empty buckets is drawn in runs of this many.
+constexpr int kMarksPerRun = 255;
+
+}  // namespace
 
 Status StencilPath::draw(FrameContext& f) {
   if (f.output != gl::MeshOutput::Colour) return selection_.draw(f);
@@ -11,80 +20,131 @@ Status StencilPath::draw(FrameContext& f) {
   if (Status st = updateTriangleShading(f); !st) return st;
   if (s.stencilScissor) f.triangles.updateBounds(f.camera.projection * f.camera.view, {f.viewport.z, f.viewport.w}, f.stats);
 
-  gl::MeshProgram maskVariant;
-  maskVariant.shading = gl::MeshShading::Mask;
-  Result<gl::ShaderProgram*> mask = f.program(maskVariant);
-  if (!mask) return Error{mask.error()};
-  Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
-  if (!bgQuad) return Error{bgQuad.error()};
   const gl::StrokeSource stroke = f.strokeSource();
   const bool angleBuffer = stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light;
+  const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
+  Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
+  if (!bgQuad) return Error{bgQuad.error()};
   Result<gl::ShaderProgram*> layerQuad =
       f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->filtered(),
-                                     f.palette->orientBins(), angleBuffer});
+                                f.palette->orientBins(), angleBuffer});
   if (!layerQuad) return Error{layerQuad.error()};
+
+  // The surface buffers from the masks themselves, when every mask is drawn first and the
+  // bound framebuffer's depth-stencil can be shared; else from passes of their own.
+  const bool buffers = angleBuffer || objectPattern;
+  bool buffersFromMasks = false;
+  const glm::ivec4& vp = f.viewport;
+  if (buffers && s.stencilMasksFirst) {
+    const GLuint angles = angleBuffer ? strokeAngles_.output(vp, f.stats) : 0;
+    const GLuint coordinates = objectPattern ? patternCoordinates_.output(vp, f.stats) : 0;
+    buffersFromMasks = maskTarget_.bind({angles, coordinates});
+    if (buffersFromMasks) maskTarget_.restore();
+  }
+  gl::MeshProgram maskVariant;
+  maskVariant.shading = gl::MeshShading::Mask;
+  if (buffersFromMasks) {
+    maskVariant.stroke = angleBuffer ? stroke : gl::StrokeSource::None;
+    if (objectPattern) {
+      maskVariant.palette = f.palette->variant(s.match);
+      maskVariant.palette->orientBins = 0;
+      maskVariant.palette->filtered = false;
+    }
+  }
+  Result<gl::ShaderProgram*> mask = f.program(maskVariant);
+  if (!mask) return Error{mask.error()};
+
   // Where the mesh is on screen: the buckets' rectangles together (the whole viewport when
   // they are not computed).
-  glm::ivec4 meshRect(0, 0, f.viewport.z, f.viewport.w);
+  glm::ivec4 meshRect(0, 0, vp.z, vp.w);
   if (s.stencilScissor) {
-    meshRect = glm::ivec4(f.viewport.z, f.viewport.w, 0, 0);
+    meshRect = glm::ivec4(vp.z, vp.w, 0, 0);
     for (const glm::ivec4& b : f.triangles.shading().bucketBounds)
       if (b.z > b.x && b.w > b.y) meshRect = glm::ivec4(glm::min(glm::ivec2(meshRect), glm::ivec2(b)), glm::max(glm::ivec2(meshRect.z, meshRect.w), glm::ivec2(b.z, b.w)));
   }
-  if (angleBuffer)
-    if (Status st = strokeAngles_.draw(f, meshRect); !st) return st;
-  const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
-  if (objectPattern)
-    if (Status st = patternCoordinates_.draw(f, meshRect); !st) return st;
+  if (!buffersFromMasks) {
+    if (angleBuffer)
+      if (Status st = strokeAngles_.draw(f, meshRect); !st) return st;
+    if (objectPattern)
+      if (Status st = patternCoordinates_.draw(f, meshRect); !st) return st;
+  }
 
   (*mask)->use();
   setMeshTransform(**mask, f.camera);
+  if (buffersFromMasks && objectPattern) f.palette->bindPattern(**mask);
+  if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask);
   (*bgQuad)->use();
   f.palette->bindBackground(**bgQuad);
   (*layerQuad)->use();
   f.palette->bindLayers(**layerQuad);
   f.palette->bindPattern(**layerQuad);
-  if (objectPattern) patternCoordinates_.bind(**layerQuad, f.viewport);
+  const glm::ivec2 bufferOrigin = buffersFromMasks ? glm::ivec2(0) : glm::ivec2(vp.x, vp.y);
+  if (objectPattern) patternCoordinates_.bind(**layerQuad, bufferOrigin);
   if (stroke != gl::StrokeSource::None) {
     f.palette->bindOrientation(**layerQuad);
-    if (angleBuffer) strokeAngles_.bind(**layerQuad, f.viewport);
+    if (angleBuffer) strokeAngles_.bind(**layerQuad, bufferOrigin);
     else f.palette->bindStrokeSource(**layerQuad);
   }
 
-  const glm::ivec4& vp = f.viewport;
-  for (int k = 0; k < f.palette->size(); ++k) {
-    const std::uint32_t count = f.triangles.bucketCount(k);
-    if (count == 0 && s.stencilSkipEmpty) continue;
+  // (1) the bucket's triangles mark the pixels where they are visible so far with `mark`
+  auto drawMask = [&](int k, std::uint32_t count, int mark) {
+    gl::PassState state = gl::pass::kStencilMask;
+    state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
+    gl::apply(state);
+    glStencilFunc(GL_ALWAYS, mark, 0xFF);
+    (*mask)->use();
+    f.gpuMesh.bindIndices(f.triangles.bucketIndices());
+    f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
+    ++f.stats.drawCalls;
+  };
+  // (2) the background under the pixels marked `mark`, (3) the palette layer blended over it,
+  // clearing the mark as it is drawn
+  auto drawQuads = [&](int k, std::uint32_t count, int mark) {
     glm::ivec4 rect = vp;
     if (s.stencilScissor) {
       const glm::ivec4& b = f.triangles.shading().bucketBounds[static_cast<size_t>(k)];
       rect = glm::ivec4(vp.x + b.x, vp.y + b.y, b.z - b.x, b.w - b.y);
-      // Entirely off screen: its triangles still write depth that later buckets test against.
-      if (count > 0 && (rect.z <= 0 || rect.w <= 0)) rect = glm::ivec4(vp.x, vp.y, 0, 0);
+      if (count > 0 && (rect.z <= 0 || rect.w <= 0)) return;  // entirely off screen
     }
-    // (1) mark the pixels where this bucket's triangles are visible so far
-    gl::apply(gl::pass::kStencilMask);
-    (*mask)->use();
-    f.gpuMesh.bindIndices(f.triangles.bucketIndices());
-    if (count > 0) {
-      f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
-      ++f.stats.drawCalls;
-    }
-    if (rect.z <= 0 || rect.w <= 0) continue;
+    if (rect.z <= 0 || rect.w <= 0) return;
     glScissor(rect.x, rect.y, rect.z, rect.w);
     glBindVertexArray(f.emptyVao.id());
-    // (2) the background under the marked pixels
     gl::apply(gl::pass::kStencilBackground);
+    glStencilFunc(GL_EQUAL, mark, 0xFF);
     (*bgQuad)->use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    // (3) the palette layer blended over it; the stencil mark is cleared as it is drawn
     gl::apply(gl::pass::kStencilLayer);
+    glStencilFunc(GL_EQUAL, mark, 0xFF);
     (*layerQuad)->use();
     (*layerQuad)->set("uLayer", k);
     (*layerQuad)->set("uLayerSize", f.palette->layerSize(k));
     if (stroke != gl::StrokeSource::None) (*layerQuad)->set("uLayerAngle", f.palette->entryAngle(k));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     f.stats.drawCalls += 2;
+  };
+
+  std::vector<int> drawn;  // the buckets drawn, in palette order
+  for (int k = 0; k < f.palette->size(); ++k)
+    if (f.triangles.bucketCount(k) > 0 || !s.stencilSkipEmpty) drawn.push_back(k);
+  if (!s.stencilMasksFirst) {
+    for (int k : drawn) {
+      const std::uint32_t count = f.triangles.bucketCount(k);
+      if (count > 0) drawMask(k, count, 1);
+      drawQuads(k, count, 1);
+    }
+  } else {
+    // Later buckets' triangles overwrite earlier marks where nearer, so each pixel ends marked
+    // with the bucket it shows, and gets only that bucket's quads: the same picture.
+    for (std::size_t first = 0; first < drawn.size(); first += kMarksPerRun) {
+      const std::size_t last = std::min(drawn.size(), first + kMarksPerRun);
+      if (buffersFromMasks && !maskTarget_.bind({angleBuffer ? strokeAngles_.output(vp, f.stats) : 0,
+                                                 objectPattern ? patternCoordinates_.output(vp, f.stats) : 0}))
+        return Error{"the stencil path's mask framebuffer could not be bound again"};
+      for (std::size_t i = first; i < last; ++i)
+        if (const std::uint32_t count = f.triangles.bucketCount(drawn[i]); count > 0) drawMask(drawn[i], count, int(i - first) + 1);
+      if (buffersFromMasks) maskTarget_.restore();
+      for (std::size_t i = first; i < last; ++i) drawQuads(drawn[i], f.triangles.bucketCount(drawn[i]), int(i - first) + 1);
+    }
   }
   glScissor(vp.x, vp.y, vp.z, vp.w);
   return okStatus();

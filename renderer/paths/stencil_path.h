@@ -3,16 +3,20 @@
 // (1) its triangles mark the pixels where they are visible in the stencil (colour writes
 // off, depth on), (2) a background quad and (3) the palette layer, alpha-blended, are drawn
 // where marked, clearing the mark. Two savings over the original, each a setting: quads
-// scissored to the bucket's screen rectangle, and empty buckets skipped. With hatching
-// orientation the layer quads turn their lookups per pixel, by angles drawn first into a
-// buffer (passes/surface_buffer_pass.h) unless the angle is fixed; with the object-space
-// pattern they read its coordinates from another such buffer.
+// scissored to the bucket's screen rectangle, and empty buckets skipped. A third, also a
+// setting: every bucket's mask drawn first, the stencil holding the bucket's number, then
+// every bucket's quads, each pixel getting only the quads of the bucket it shows. With
+// hatching orientation the layer quads turn their lookups per pixel, by angles from a buffer
+// (passes/surface_buffer_pass.h) unless the angle is fixed; with the object-space pattern
+// they read its coordinates from another such buffer. The masks write both as they mark when
+// they are drawn first into a framebuffer whose depth-stencil can be shared.
 //
 // Selection outputs (tests, the benchmark) come from the triangle path: the stencil path has
 // no per-pixel program that could write an entry, and its entries are the triangle path's by
 // construction (a GL test asserts the two images are equal).
 #pragma once
 
+#include "renderer/gl/shared_depth_framebuffer.h"
 #include "renderer/paths/render_pass.h"
 #include "renderer/passes/surface_buffer_pass.h"
 #include "renderer/paths/triangle_path.h"
@@ -27,6 +31,7 @@ class StencilPath : public RenderPass {
   TrianglePath selection_;
   SurfaceBufferPass strokeAngles_{SurfaceBufferPass::Content::StrokeAngles};
   SurfaceBufferPass patternCoordinates_{SurfaceBufferPass::Content::PatternCoordinates};
+  gl::SharedDepthFramebuffer maskTarget_;
 };
 
 }  // namespace npr

@@ -87,11 +87,106 @@ TEST_F(Fixture, NaiveStencilDrawsTheSameImage) {
   const CameraMatrices cam = testCamera(1.0f);
   const ImageRGBA8 bounded = renderImage(*r, cam, s, 256, 256);
   const int boundedDraws = r->stats().drawCalls;
-  s.stencilScissor = s.stencilSkipEmpty = false;
+  s.stencilScissor = s.stencilSkipEmpty = s.stencilMasksFirst = false;
   const ImageRGBA8 naive = renderImage(*r, cam, s, 256, 256);
   EXPECT_EQ(countDiffering(bounded, naive), 0);
   EXPECT_GE(r->stats().drawCalls, boundedDraws);
   EXPECT_EQ(r->stats().drawCalls, 1 + 30 * 2 + r->stats().nonEmptyBuckets);  // background, 2 quads each, masks
+}
+
+// A framebuffer of the test's own, its depth and stencil in a renderbuffer, a 2D texture, or
+// one layer of an array texture (which the stencil path's masks cannot share).
+enum class DepthStencilKind { Renderbuffer, Texture, ArrayLayer };
+
+ImageRGBA8 renderWithDepthStencil(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h, DepthStencilKind kind) {
+  GLuint fbo = 0, colour = 0, depth = 0;
+  glGenFramebuffers(1, &fbo);
+  glGenTextures(1, &colour);
+  glBindTexture(GL_TEXTURE_2D, colour);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+  if (kind == DepthStencilKind::Renderbuffer) {
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth);
+  } else if (kind == DepthStencilKind::Texture) {
+    glGenTextures(1, &depth);
+    glBindTexture(GL_TEXTURE_2D, depth);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH24_STENCIL8, w, h);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+  } else {
+    glGenTextures(1, &depth);
+    glBindTexture(GL_TEXTURE_2D_ARRAY, depth);
+    glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, GL_DEPTH24_STENCIL8, w, h, 2);
+    glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, depth, 0, 1);
+  }
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  EXPECT_TRUE(r.render(cam, s, {0, 0, w, h}));
+  ImageRGBA8 img = readFramebufferRGBA8(0, 0, w, h);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteTextures(1, &colour);
+  if (kind == DepthStencilKind::Renderbuffer) glDeleteRenderbuffers(1, &depth);
+  else glDeleteTextures(1, &depth);
+  return img;
+}
+
+// Every mask first, the masks writing the surface buffers (object-space pattern, strokes
+// along the curvature) as they mark, draws what the original order with a pass per buffer
+// draws, with one geometry pass fewer per buffer; where the target's depth-stencil cannot be
+// shared, the passes draw the buffers and the picture is the same. A 256-entry palette with
+// every bucket drawn needs two runs of stencil marks.
+TEST_F(Fixture, StencilMasksFirstWriteTheSurfaceBuffersAndDrawTheSameImage) {
+  auto mesh = loadMesh(sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(mesh);
+  r->setMesh(&*mesh);
+  const Palette hatch = shippedPalette("hatch");
+  Palette many;
+  many.name = "hatch256";
+  // Entries 0-199 as bright as white (no lit pixel is nearer to them than to entry 200), the
+  // others spread over the model's tones: the two runs' last marks are all on screen.
+  for (int i = 0; i < 256; ++i) {
+    PaletteEntry e = hatch.entries[std::size_t(i) % hatch.entries.size()];
+    e.intensity = i < 200 ? 3.0f : 2.4f - 2.1f * float(i - 200) / 55.0f;
+    e.average = glm::vec3(e.intensity / 3.0f);
+    many.entries.push_back(std::move(e));
+  }
+  const int w = 240, h = 200;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  struct Case {
+    const char* name;
+    bool object, curvature, everyBucket;
+    const Palette* palette;
+  };
+  for (const Case& c : {Case{"object", true, false, false, &hatch}, Case{"curvature", false, true, false, &hatch},
+                        Case{"both", true, true, false, &hatch}, Case{"both, 256 buckets", true, true, true, &many}}) {
+    ASSERT_TRUE(r->setPalette(*c.palette));
+    RenderSettings s;
+    s.path = RenderPath::Stencil;
+    if (c.object) s.pattern = PatternSpace::Object;
+    if (c.curvature) s.orient.source = OrientSource::Curvature;
+    if (c.everyBucket) s.stencilSkipEmpty = false;
+    const int buffers = int(c.object) + int(c.curvature);
+    if (c.everyBucket) {
+      std::set<int> shown;
+      const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
+      for (size_t i = 0; i < entries.pixels.size(); i += 4) shown.insert(entries.pixels[i]);
+      EXPECT_TRUE(shown.count(254) && shown.count(255)) << "the runs' last buckets are not on screen";
+    }
+    s.stencilMasksFirst = false;
+    const ImageRGBA8 original = renderWithDepthStencil(*r, cam, s, w, h, DepthStencilKind::Renderbuffer);
+    const int originalDraws = r->stats().drawCalls;
+    s.stencilMasksFirst = true;
+    for (DepthStencilKind kind : {DepthStencilKind::Renderbuffer, DepthStencilKind::Texture, DepthStencilKind::ArrayLayer}) {
+      const ImageRGBA8 img = renderWithDepthStencil(*r, cam, s, w, h, kind);
+      EXPECT_EQ(countDiffering(original, img), 0) << c.name << ", depth-stencil kind " << int(kind);
+      const int saved = kind == DepthStencilKind::ArrayLayer ? 0 : buffers;
+      EXPECT_EQ(r->stats().drawCalls, originalDraws - saved) << c.name << ", depth-stencil kind " << int(kind);
+    }
+    EXPECT_GT(countDiffering(original, renderImage(*r, cam, RenderSettings{}, w, h)), 1000) << c.name;  // the settings show
+  }
 }
 
 // The stencil path keeps its projected vertices while only the light moves and re-bounds the
