@@ -6,12 +6,23 @@
 #ifndef MATERIAL_GLSL
 #define MATERIAL_GLSL
 
-uniform usamplerBuffer uMaterialTable;
-
 struct SurfaceMaterial {
   vec3 ambient, diffuse, specular, emission;
   float shininess, map;
 };
+
+#ifdef MATERIAL_UNIFORM
+// One material per draw (the GPU-lit paths draw the mesh material by material): the table's
+// row as uniforms, unpacked on the CPU to the same values; nothing fetched per pixel.
+uniform vec3 uMaterialColours[4];  // ambient, diffuse, specular, emission
+uniform float uMaterialShininess;
+uniform float uMaterialMap;  // layer of the diffuse maps, -1: none
+SurfaceMaterial fetchMaterial(uint index) {
+  return SurfaceMaterial(uMaterialColours[0], uMaterialColours[1], uMaterialColours[2], uMaterialColours[3], uMaterialShininess,
+                         uMaterialMap);
+}
+#else
+uniform usamplerBuffer uMaterialTable;
 
 vec3 unpackColour(uint v) { return vec3(float(v & 255u), float((v >> 8) & 255u), float((v >> 16) & 255u)) / 255.0; }
 
@@ -21,5 +32,6 @@ SurfaceMaterial fetchMaterial(uint index) {
   return SurfaceMaterial(unpackColour(t.x), unpackColour(t.y), unpackColour(t.z), unpackColour(t.w), shininess,
                          float(t.x >> 24) - 1.0);
 }
+#endif
 
 #endif

@@ -85,9 +85,13 @@ uniform int uEntry;  // drawn bucket by bucket
 #ifdef VERTEX_COLOURS
 in vec3 vColour;
 #endif
-in vec2 vTexcoord;
+#ifdef MATERIAL_UNIFORM
+#define vMaterial 0u
+#else
 flat in uint vMaterial;
+#endif
 #ifdef MATERIAL_MAPS
+in vec2 vTexcoord;
 uniform sampler2DArray uMaterialMaps;  // diffuse maps, mipmapped, repeating
 #endif
 #endif

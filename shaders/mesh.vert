@@ -30,8 +30,12 @@ layout(location = 5) in vec3 aMapAverage;  // the diffuse map around this vertex
 #ifdef VERTEX_COLOURS
 out vec3 vColour;
 #endif
+#ifdef MATERIAL_MAPS
 out vec2 vTexcoord;
+#endif
+#ifndef MATERIAL_UNIFORM
 flat out uint vMaterial;
+#endif
 #endif
 #endif
 
@@ -81,8 +85,12 @@ void main() {
 #ifdef VERTEX_COLOURS
   vColour = aColour;
 #endif
+#ifdef MATERIAL_MAPS
   vTexcoord = aTexcoord;
+#endif
+#ifndef MATERIAL_UNIFORM
   vMaterial = aMaterial;
+#endif
 #endif
 #ifdef OCCLUSION
   vOcclusion = mix(1.0, clamp(aOcclusion, 0.0, 1.0), uOcclusionStrength);

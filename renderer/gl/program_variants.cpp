@@ -56,6 +56,7 @@ struct SourceOf {
     if (m.materials) s.defines.push_back("MATERIALS");
     if (m.materials && m.materialMaps) s.defines.push_back("MATERIAL_MAPS");
     if (m.materials && m.vertexColours) s.defines.push_back("VERTEX_COLOURS");
+    if (m.materials && m.materialUniform) s.defines.push_back("MATERIAL_UNIFORM");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
     if (m.shading == MeshShading::Mask && (m.stroke == StrokeSource::Field || m.stroke == StrokeSource::Light))

@@ -68,6 +68,7 @@ struct MeshProgram {
   bool materials = false;     // the mesh's own materials, colours and maps (GPU-lit shadings)
   bool materialMaps = false;  // ... some of which have a diffuse map
   bool vertexColours = false; // ... and the mesh has vertex colours
+  bool materialUniform = false;  // ... one material per draw, from uniforms (else the table)
   StrokeSource stroke = StrokeSource::None;
   int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
   bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)

@@ -105,6 +105,21 @@ void GpuMaterials::update(const Mesh& mesh, const LightingState& lighting, Frame
   ++stats.bufferUploads;
 }
 
+bool GpuMaterials::mapped(std::size_t material) const { return material < rows_.size() && (rows_[material].x >> 24) > 0; }
+
+void GpuMaterials::setMaterial(gl::ShaderProgram& p, std::size_t material) const {
+  const glm::uvec4 row = material < rows_.size() ? rows_[material] : (rows_.empty() ? glm::uvec4(0) : rows_[0]);
+  // As shaders/material.glsl unpacks a row.
+  auto colour = [](std::uint32_t v) { return glm::vec3(float(v & 255u), float((v >> 8) & 255u), float((v >> 16) & 255u)) / 255.0f; };
+  const glm::vec3 colours[4] = {colour(row.x), colour(row.y), colour(row.z), colour(row.w)};
+  p.set("uMaterialColours[0]", colours[0]);
+  p.set("uMaterialColours[1]", colours[1]);
+  p.set("uMaterialColours[2]", colours[2]);
+  p.set("uMaterialColours[3]", colours[3]);
+  p.set("uMaterialShininess", float(((row.y >> 24) << 8) | (row.z >> 24)) / 512.0f);
+  p.set("uMaterialMap", float(row.x >> 24) - 1.0f);
+}
+
 void GpuMaterials::bind(gl::ShaderProgram& p) const {
   gl::bindTexture(gl::TextureUnit::MaterialTable, GL_TEXTURE_BUFFER, table_.id());
   p.set("uMaterialTable", gl::unitIndex(gl::TextureUnit::MaterialTable));

@@ -30,6 +30,11 @@ class GpuMaterials {
   void update(const Mesh& mesh, const LightingState& lighting, FrameStats& stats);
   // Binds the table and the maps and points the program's samplers at them.
   void bind(gl::ShaderProgram& program) const;
+  // For a program drawing one material (MATERIAL_UNIFORM): its table row as uniforms, the
+  // same values the table gives.
+  void setMaterial(gl::ShaderProgram& program, std::size_t material) const;
+  // Whether `material`'s row names a diffuse map.
+  bool mapped(std::size_t material) const;
 
  private:
   bool active_ = false;

@@ -1,6 +1,8 @@
 // Mesh upload and drawing (see gpu_mesh.h).
 #include "renderer/mesh/gpu_mesh.h"
 
+#include <algorithm>
+
 namespace npr {
 namespace {
 
@@ -17,6 +19,32 @@ void floatAttribute(GLuint location, const gl::Buffer& buffer, int components) {
   glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, components * static_cast<GLsizei>(sizeof(float)), nullptr);
 }
 
+// The mesh's triangles grouped by material, each group in the mesh's order (a counting sort),
+// and the groups.
+std::vector<std::uint32_t> groupedByMaterial(const Mesh& mesh, std::vector<MaterialRun>& runs) {
+  const std::size_t n = mesh.triangleCount();
+  runs.clear();
+  if (mesh.faceMaterials.size() != n) {
+    runs.push_back({0, 0, static_cast<std::uint32_t>(n)});
+    return mesh.indices;
+  }
+  std::vector<std::uint32_t> count(std::size_t(*std::max_element(mesh.faceMaterials.begin(), mesh.faceMaterials.end())) + 1, 0);
+  for (std::uint16_t m : mesh.faceMaterials) ++count[m];
+  std::vector<std::uint32_t> next(count.size(), 0);
+  std::uint32_t first = 0;
+  for (std::size_t m = 0; m < count.size(); ++m) {
+    next[m] = first;
+    if (count[m] > 0) runs.push_back({static_cast<std::uint16_t>(m), first, count[m]});
+    first += count[m];
+  }
+  std::vector<std::uint32_t> indices(mesh.indices.size());
+  for (std::size_t f = 0; f < n; ++f) {
+    const std::size_t to = std::size_t(next[mesh.faceMaterials[f]]++) * 3;
+    for (std::size_t k = 0; k < 3; ++k) indices[to + k] = mesh.indices[f * 3 + k];
+  }
+  return indices;
+}
+
 }  // namespace
 
 void GpuMesh::clear() {
@@ -30,9 +58,11 @@ void GpuMesh::clear() {
   mapAverages_.reset();
   directions_.reset();
   occlusion_.reset();
+  runs_.clear();
   triangleCount_ = 0;
   vertexCount_ = 0;
 }
+
 
 void GpuMesh::upload(const Mesh& mesh) {
   clear();
@@ -41,7 +71,12 @@ void GpuMesh::upload(const Mesh& mesh) {
   vertexCount_ = mesh.positions.size();
   positions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   normals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
-  indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  if (mesh.hasAppearance()) {
+    const std::vector<std::uint32_t> grouped = groupedByMaterial(mesh, runs_);
+    indices_ = staticBuffer(grouped.data(), grouped.size() * sizeof(std::uint32_t));
+  } else {
+    indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  }
   vao_ = gl::createVertexArray();
   glBindVertexArray(vao_.id());
   floatAttribute(0, positions_, 3);
@@ -116,6 +151,11 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
 void GpuMesh::drawAll() const {
   bindIndices(indices_);
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+}
+
+void GpuMesh::drawRun(const MaterialRun& run) const {
+  bindIndices(indices_);
+  drawTriangles(run.first, run.count);
 }
 
 void GpuMesh::bindIndices(const gl::Buffer& indices) const {

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "renderer/core/camera.h"
 #include "renderer/gl/gl_handle.h"
@@ -14,6 +15,12 @@
 #include "renderer/mesh/mesh.h"
 
 namespace npr {
+
+// Triangles `first` to `first + count` of a mesh's own index buffer, all of `material`.
+struct MaterialRun {
+  std::uint16_t material = 0;
+  std::uint32_t first = 0, count = 0;
+};
 
 class GpuMesh {
  public:
@@ -32,6 +39,12 @@ class GpuMesh {
 
   // Binds the vertex array with the mesh's own indices and draws every triangle.
   void drawAll() const;
+  // With an appearance, the mesh's triangles are uploaded grouped by material (in their order
+  // within each), so the GPU-lit paths can draw each material with its own uniforms and
+  // program: these are the groups (one, of material 0, for vertex colours alone); else none.
+  const std::vector<MaterialRun>& materialRuns() const { return runs_; }
+  // Binds the vertex array with the mesh's own indices and draws one run.
+  void drawRun(const MaterialRun& run) const;
   // Binds the vertex array with `indices` (3 per triangle, over this mesh's vertices).
   void bindIndices(const gl::Buffer& indices) const;
   // Draws `count` triangles from triangle `first` of the bound index buffer.
@@ -41,6 +54,7 @@ class GpuMesh {
   gl::VertexArray vao_;
   void uploadAppearance(const Mesh& mesh);
   gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_, occlusion_;
+  std::vector<MaterialRun> runs_;
   std::size_t vertexCount_ = 0;
   std::size_t triangleCount_ = 0;
 };

@@ -4,6 +4,7 @@
 // different entries in MATCH_COLORS; assimp's textured spider renders in colour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -26,7 +27,9 @@ using Fixture = test::RendererFixture;
 
 // An icosphere whose faces with x < 0 use material "red" and the others "blue", with a
 // glossy red and a dull blue (ambient = diffuse, as exporters write).
-Mesh twoMaterialSphere(const test::TempDir& dir) {
+Mesh twoMaterialSphere(const test::TempDir& dir,
+                       const std::string& mtl = "newmtl red\nKa 0.8 0.1 0.1\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNs 40\n"
+                                                "newmtl blue\nKa 0.1 0.2 0.7\nKd 0.1 0.2 0.7\nKs 0 0 0\nillum 1\n") {
   const Mesh s = test::icosphere(3);
   std::ostringstream obj;
   obj << "mtllib two.mtl\n";
@@ -35,9 +38,7 @@ Mesh twoMaterialSphere(const test::TempDir& dir) {
     obj << (s.faceCentroids[t].x < 0.0f ? "usemtl red\n" : "usemtl blue\n");
     obj << "f " << s.indices[t * 3] + 1 << " " << s.indices[t * 3 + 1] + 1 << " " << s.indices[t * 3 + 2] + 1 << "\n";
   }
-  dir.write("two.mtl",
-            "newmtl red\nKa 0.8 0.1 0.1\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNs 40\n"
-            "newmtl blue\nKa 0.1 0.2 0.7\nKd 0.1 0.2 0.7\nKs 0 0 0\nillum 1\n");
+  dir.write("two.mtl", mtl);
   auto m = loadMesh(dir.write("two.obj", obj.str()));
   EXPECT_TRUE(m) << m.error();
   return m ? std::move(*m) : Mesh{};
@@ -77,6 +78,50 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
     EXPECT_GT(red, 300);
     EXPECT_GT(blue, 300);
     EXPECT_GE(exact, sampled * 95 / 100) << exact << " of " << sampled << " exact";
+  }
+}
+
+// Each material's every term reaches the per-pixel lighting (the GPU-lit paths draw material
+// by material, each from uniforms): ambient, diffuse, specular and emission all different, in
+// the reference render, against the CPU model at each sampled pixel.
+TEST_F(Fixture, ReferenceLightsEachMaterialWithEachOfItsColours) {
+  test::TempDir dir;
+  const Mesh mesh = twoMaterialSphere(dir,
+                                      "newmtl red\nKa 0.9 0.1 0.1\nKd 0.1 0.7 0.1\nKs 0.4 0.4 0.6\nNs 30\nKe 0.05 0.05 0.3\n"
+                                      "newmtl blue\nKa 0.1 0.1 0.9\nKd 0.6 0.2 0.1\nKs 0.5 0.5 0.3\nNs 8\nKe 0.2 0 0\n");
+  ASSERT_EQ(mesh.materials.size(), 3u);
+  r->setMesh(&mesh);
+  const float ambient[4] = {0.3f, 0.3f, 0.3f, 1.0f};
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_AMBIENT, ambient));
+  const int w = 320, h = 240;
+  const CameraMatrices cam = testCamera(float(w) / h);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
+  const glm::mat4 toObject = glm::inverse(cam.view);
+  const std::vector<Material> mats = glMaterials(mesh, r->lighting());
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
+  int sampled[2] = {0, 0}, close[2] = {0, 0};
+  float worst[2] = {0.0f, 0.0f};
+  for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
+    if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
+    const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
+    const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
+    const float x = glm::vec3(toObject * glm::vec4(p, 1.0f)).x;
+    if (std::fabs(x) < 0.2f) continue;  // faces are split by their centroids: a band about the seam has both
+    const int k = x < 0.0f ? 0 : 1;
+    const glm::vec3 lit = glm::clamp(shade(prepareLighting<float>(r->lighting().withMaterial(mats[std::size_t(k) + 1])), p, n, pos.pixels[i * 4 + 3] < 0.0f), 0.0f, 1.0f);
+    const glm::vec3 got = glm::vec3(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]) / 255.0f;
+    ++sampled[k];
+    close[k] += glm::all(glm::lessThanEqual(glm::abs(got - lit), glm::vec3(3.0f / 255.0f)));
+    const glm::vec3 e = glm::abs(got - lit);
+    worst[k] = std::max({worst[k], e.r, e.g, e.b});
+  }
+  for (int k : {0, 1}) {
+    EXPECT_GT(sampled[k], 300) << (k ? "blue" : "red");
+    EXPECT_GE(close[k], sampled[k] * 97 / 100) << (k ? "blue" : "red") << ": " << close[k] << " of " << sampled[k] << " within 3/255";
+    EXPECT_LE(worst[k] * 255.0f, 8.0f) << (k ? "blue" : "red");  // a highlight of the wrong size misses by more
   }
 }
 
