@@ -44,6 +44,33 @@ Mesh twoMaterialSphere(const test::TempDir& dir,
   return m ? std::move(*m) : Mesh{};
 }
 
+// Every fifth pixel the mesh covers seen through `cam`, with what the CPU lighting model
+// needs to light it with `materials[1]` (red, x < 0) or `materials[2]` (blue), away from the
+// band about the seam where faces of both meet (faces are split by their centroids).
+struct SurfacePixel {
+  std::size_t index;
+  int side;  // 0 red, 1 blue
+  glm::vec3 lit;
+};
+std::vector<SurfacePixel> litSurfacePixels(Renderer& r, const CameraMatrices& cam, int w, int h, const std::vector<Material>& materials,
+                                           float seam) {
+  const ImageRGBA32F pos = test::renderGeometry(r, cam, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(r, cam, GeometryOutput::EyeNormal, w, h);
+  const glm::mat4 toObject = glm::inverse(cam.view);
+  std::vector<SurfacePixel> out;
+  for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
+    if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
+    const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
+    const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
+    const float x = glm::vec3(toObject * glm::vec4(p, 1.0f)).x;
+    if (std::fabs(x) < seam) continue;
+    const int side = x < 0.0f ? 0 : 1;
+    const Material& mat = materials[std::size_t(side) + 1];
+    out.push_back({i, side, shade(prepareLighting<float>(r.lighting().withMaterial(mat)), p, n, pos.pixels[i * 4 + 3] < 0.0f)});
+  }
+  return out;
+}
+
 TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
@@ -52,9 +79,6 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
   ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
-  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
-  const glm::mat4 toObject = glm::inverse(cam.view);
   const std::vector<Material> mats = glMaterials(mesh, r->lighting());
   {
     RenderSettings s;
@@ -63,17 +87,10 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
     const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
     const PaletteMatcher& m = *r->matcher();
     int sampled = 0, exact = 0, red = 0, blue = 0;
-    for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
-      if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
-      const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
-      const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
-      const float x = glm::vec3(toObject * glm::vec4(p, 1.0f)).x;
-      if (std::fabs(x) < 0.05f) continue;  // the seam between the materials
-      const Material& mat = mats[x < 0.0f ? 1 : 2];
-      (x < 0.0f ? red : blue)++;
-      const glm::vec3 lit = shade(prepareLighting<float>(r->lighting().withMaterial(mat)), p, n, pos.pixels[i * 4 + 3] < 0.0f);
+    for (const SurfacePixel& px : litSurfacePixels(*r, cam, w, h, mats, 0.05f)) {
+      (px.side == 0 ? red : blue)++;
       ++sampled;
-      exact += entries.pixels[i * 4] == m.match(lit);
+      exact += entries.pixels[px.index * 4] == m.match(px.lit);
     }
     EXPECT_GT(red, 300);
     EXPECT_GT(blue, 300);
@@ -95,28 +112,18 @@ TEST_F(Fixture, ReferenceLightsEachMaterialWithEachOfItsColours) {
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_AMBIENT, ambient));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
-  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
-  const glm::mat4 toObject = glm::inverse(cam.view);
   const std::vector<Material> mats = glMaterials(mesh, r->lighting());
   RenderSettings s;
   s.path = RenderPath::Reference;
   const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
   int sampled[2] = {0, 0}, close[2] = {0, 0};
   float worst[2] = {0.0f, 0.0f};
-  for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
-    if (nrm.pixels[i * 4 + 3] < 0.5f) continue;
-    const glm::vec3 p(pos.pixels[i * 4], pos.pixels[i * 4 + 1], pos.pixels[i * 4 + 2]);
-    const glm::vec3 n(nrm.pixels[i * 4], nrm.pixels[i * 4 + 1], nrm.pixels[i * 4 + 2]);
-    const float x = glm::vec3(toObject * glm::vec4(p, 1.0f)).x;
-    if (std::fabs(x) < 0.2f) continue;  // faces are split by their centroids: a band about the seam has both
-    const int k = x < 0.0f ? 0 : 1;
-    const glm::vec3 lit = glm::clamp(shade(prepareLighting<float>(r->lighting().withMaterial(mats[std::size_t(k) + 1])), p, n, pos.pixels[i * 4 + 3] < 0.0f), 0.0f, 1.0f);
-    const glm::vec3 got = glm::vec3(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]) / 255.0f;
-    ++sampled[k];
-    close[k] += glm::all(glm::lessThanEqual(glm::abs(got - lit), glm::vec3(3.0f / 255.0f)));
-    const glm::vec3 e = glm::abs(got - lit);
-    worst[k] = std::max({worst[k], e.r, e.g, e.b});
+  for (const SurfacePixel& px : litSurfacePixels(*r, cam, w, h, mats, 0.2f)) {
+    const std::size_t i = px.index;
+    const glm::vec3 e = glm::abs(glm::vec3(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]) / 255.0f - glm::clamp(px.lit, 0.0f, 1.0f));
+    ++sampled[px.side];
+    close[px.side] += glm::all(glm::lessThanEqual(e, glm::vec3(3.0f / 255.0f)));
+    worst[px.side] = std::max({worst[px.side], e.r, e.g, e.b});
   }
   for (int k : {0, 1}) {
     EXPECT_GT(sampled[k], 300) << (k ? "blue" : "red");
