@@ -42,37 +42,42 @@ bool SharedDepthFramebuffer::bind(const std::array<GLuint, kOutputs>& outputs) {
   if (samples > 0) return false;
   const Attached depth = attachedAt(GL_DEPTH_ATTACHMENT), stencil = attachedAt(GL_STENCIL_ATTACHMENT);
   if (!stencil.usable || (depth.type != GL_NONE && !depth.usable)) return false;
-  const Image d{depth.type, depth.name}, s{stencil.type, stencil.name};
   if (!fbo_.id()) {
     GLuint n = 0;
     glCreateFramebuffers(1, &n);
     fbo_ = Framebuffer(n);
     const GLenum buffers[kOutputs + 1] = {GL_NONE, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
     glNamedFramebufferDrawBuffers(fbo_.id(), kOutputs + 1, buffers);
-    complete_ = false;
   }
-  if (!(d == depth_) || !(s == stencil_) || outputs != outputs_ || !complete_) {
-    // One image for both (the usual packed format) is attached once, as such.
-    if (d == s) {
-      attach(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, s.type, s.name);
-    } else {
-      glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
-      if (d.type != GL_NONE) attach(fbo_.id(), GL_DEPTH_ATTACHMENT, d.type, d.name);
-      attach(fbo_.id(), GL_STENCIL_ATTACHMENT, s.type, s.name);
-    }
+  // Attached afresh each time and detached by restore(): a name the caller deleted and had
+  // given again would otherwise leave us drawing into the old image, and holding it alive.
+  if (depth.type == stencil.type && depth.name == stencil.name) {  // one packed image
+    attach(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, stencil.type, stencil.name);
+  } else {
+    if (depth.type != GL_NONE) attach(fbo_.id(), GL_DEPTH_ATTACHMENT, depth.type, depth.name);
+    attach(fbo_.id(), GL_STENCIL_ATTACHMENT, stencil.type, stencil.name);
+  }
+  if (outputs != outputs_) {
     for (int i = 0; i < kOutputs; ++i)
       glNamedFramebufferTexture(fbo_.id(), GLenum(GL_COLOR_ATTACHMENT1 + i), outputs[static_cast<std::size_t>(i)], 0);
-    depth_ = d;
-    stencil_ = s;
     outputs_ = outputs;
-    complete_ = glCheckNamedFramebufferStatus(fbo_.id(), GL_DRAW_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
   }
-  if (!complete_) return false;
+  if (glCheckNamedFramebufferStatus(fbo_.id(), GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    detachDepthStencil();
+    return false;
+  }
   caller_ = caller;
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_.id());
   return true;
 }
 
-void SharedDepthFramebuffer::restore() const { glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller_)); }
+void SharedDepthFramebuffer::restore() const {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(caller_));
+  detachDepthStencil();
+}
+
+void SharedDepthFramebuffer::detachDepthStencil() const {
+  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);  // both
+}
 
 }  // namespace npr::gl

@@ -23,19 +23,15 @@ class SharedDepthFramebuffer {
   // framebuffer is the default one, multisampled, has no stencil, or holds its depth or
   // stencil in anything but one level of a 2D texture or a renderbuffer.
   bool bind(const std::array<GLuint, kOutputs>& outputs);
-  // Binds back the framebuffer that was bound when bind() succeeded.
+  // Binds back the framebuffer that was bound when bind() succeeded, and lets go of its
+  // depth and stencil images.
   void restore() const;
 
  private:
-  struct Image {
-    GLint type = GL_NONE, name = 0;
-    bool operator==(const Image& o) const { return type == o.type && name == o.name; }
-  };
+  void detachDepthStencil() const;
   Framebuffer fbo_;
   GLint caller_ = 0;
-  Image depth_, stencil_;
   std::array<GLuint, kOutputs> outputs_{};
-  bool complete_ = false;
 };
 
 }  // namespace npr::gl

@@ -63,7 +63,6 @@ void GpuMesh::clear() {
   vertexCount_ = 0;
 }
 
-
 void GpuMesh::upload(const Mesh& mesh) {
   clear();
   if (mesh.indices.empty()) return;
