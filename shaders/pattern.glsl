@@ -74,7 +74,14 @@ uniform float uPixelSize;     // object units per pixel at eye depth 1
 uniform float uPatternScale;  // pixels per texel
 vec3 mappedCoordinate() {
   // Only axes within 0.15 of the nearest share: elsewhere one projection, unbroken.
+#ifdef PATTERN_FACE_NORMAL
+  // Passes that light per triangle or per vertex have no other use for the normal: the face's
+  // own, from the position's screen derivatives, spares interpolating three values per vertex
+  // (on the 871K mesh, most of what the object pattern cost them).
+  vec3 n = abs(mat3(uEyeToObject) * cross(dFdx(vPosition), dFdy(vPosition)));
+#else
   vec3 n = abs(mat3(uEyeToObject) * vNormal);
+#endif
   n /= max(length(n), 1e-20);
   vec3 w = max(n - vec3(max(n.x, max(n.y, n.z)) - 0.15), 0.0);
   w /= max(w.x + w.y + w.z, 1e-20);

@@ -63,6 +63,10 @@ struct SourceOf {
       s.defines.push_back("MASK_STROKE_ANGLE");
     if (m.shading == MeshShading::Mask && m.palette && m.palette->pattern == PatternMapping::Object)
       s.defines.push_back("MASK_PATTERN_COORDINATE");
+    if (m.palette && m.palette->pattern == PatternMapping::Object &&
+        (m.shading == MeshShading::Mask || m.shading == MeshShading::PatternCoordinate || m.shading == MeshShading::Triangle ||
+         m.shading == MeshShading::Vertex))
+      s.defines.push_back("PATTERN_FACE_NORMAL");
     if (m.stroke == StrokeSource::Field) s.defines.push_back("ORIENT_FIELD");
     if (m.stroke == StrokeSource::Light) s.defines.push_back("ORIENT_LIGHT");
     if (m.stroke == StrokeSource::Fixed) s.defines.push_back("ORIENT_FIXED");

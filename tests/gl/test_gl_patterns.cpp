@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/gl_test_env.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "support/pattern_motion.h"
@@ -195,6 +197,34 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
       }
     }
   }
+}
+
+// The passes that light per triangle or per vertex place the object-space pattern by the
+// face's own normal (from the position's screen derivatives; the pixel path by the vertex
+// normals): on a tilted flat square, whose vertex normals are its face's, every path draws the
+// pixel path's picture (one entry: only where the pattern sits shows).
+TEST_F(Fixture, FaceNormalsPlaceTheObjectPatternAsVertexNormalsDoOnAFlatSquare) {
+  Mesh sq;
+  const glm::mat3 tilt = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(1, 0, 0)) * glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)));
+  for (const glm::vec3& p : test::square().positions) sq.positions.push_back(tilt * p);
+  sq.indices = {0, 1, 2, 0, 2, 3};
+  finalizeMesh(sq);
+  r->setMesh(&sq);
+  Palette one = test::shippedPalette("crosshatch");
+  one.entries = {one.entries[one.entries.size() / 2]};
+  ASSERT_TRUE(r->setPalette(one));
+  OrbitCamera cam(15.0f, 10.0f, 3.0f);
+  cam.frame(1.0f);
+  RenderSettings s;
+  s.pattern = PatternSpace::Object;
+  s.path = RenderPath::Pixel;
+  const ImageRGBA8 pixel = renderImage(*r, cam.matrices(1.0f), s, 160, 160);
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Stencil}) {
+    s.path = path;
+    EXPECT_EQ(test::countDiffering(pixel, renderImage(*r, cam.matrices(1.0f), s, 160, 160)), 0) << pathInfo(path).name;
+  }
+  s.pattern = PatternSpace::Screen;
+  EXPECT_GT(test::countDiffering(pixel, renderImage(*r, cam.matrices(1.0f), s, 160, 160)), 500);  // the pattern shows
 }
 
 TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
