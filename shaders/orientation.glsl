@@ -54,7 +54,6 @@ vec2 screenDirectionClip(vec4 c, vec4 dc) {
   vec2 scale = (abs(dc.xy * c.w) + abs(c.xy * dc.w)) * uViewportSize;
   return dot(s, s) > 1e-6 * dot(scale, scale) ? normalize(s) : vec2(0.0);
 }
-
 // This pixel's stroke angle from the interpolated direction.
 void setStrokeFromDirection(vec2 d) {
   strokeValid = dot(d, d) > 1e-6;

@@ -3,7 +3,7 @@
 // pixel's stroke angle on screen and whether it has one (hatching orientation along the
 // curvature or the light), or its object-space pattern coordinate and mip level (--pattern
 // object): what the shaded paths compute in place. The stencil path's masks write them as
-// they mark (outputs() below, gl/shared_depth_framebuffer.h); where they cannot (the window's
+// they mark (output() below, gl/shared_depth_framebuffer.h); where they cannot (the window's
 // own framebuffer, the per-bucket order), draw() draws them in an extra geometry pass each,
 // with its own depth buffer, only when a frame needs them.
 #pragma once

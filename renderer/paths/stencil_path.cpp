@@ -2,6 +2,7 @@
 #include "renderer/paths/stencil_path.h"
 
 #include <algorithm>
+#include <array>
 
 #include "renderer/gl/pass_state.h"
 
@@ -35,10 +36,10 @@ Status StencilPath::draw(FrameContext& f) {
   const bool buffers = angleBuffer || objectPattern;
   bool buffersFromMasks = false;
   const glm::ivec4& vp = f.viewport;
+  std::array<GLuint, gl::SharedDepthFramebuffer::kOutputs> maskOutputs{};
   if (buffers && s.stencilMasksFirst) {
-    const GLuint angles = angleBuffer ? strokeAngles_.output(vp, f.stats) : 0;
-    const GLuint coordinates = objectPattern ? patternCoordinates_.output(vp, f.stats) : 0;
-    buffersFromMasks = maskTarget_.bind({angles, coordinates});
+    maskOutputs = {angleBuffer ? strokeAngles_.output(vp, f.stats) : 0, objectPattern ? patternCoordinates_.output(vp, f.stats) : 0};
+    buffersFromMasks = maskTarget_.bind(maskOutputs);
     if (buffersFromMasks) maskTarget_.restore();
   }
   gl::MeshProgram maskVariant;
@@ -137,9 +138,7 @@ Status StencilPath::draw(FrameContext& f) {
     // with the bucket it shows, and gets only that bucket's quads: the same picture.
     for (std::size_t first = 0; first < drawn.size(); first += kMarksPerRun) {
       const std::size_t last = std::min(drawn.size(), first + kMarksPerRun);
-      if (buffersFromMasks && !maskTarget_.bind({angleBuffer ? strokeAngles_.output(vp, f.stats) : 0,
-                                                 objectPattern ? patternCoordinates_.output(vp, f.stats) : 0}))
-        return Error{"the stencil path's mask framebuffer could not be bound again"};
+      if (buffersFromMasks && !maskTarget_.bind(maskOutputs)) return Error{"the stencil path's mask framebuffer could not be bound again"};
       for (std::size_t i = first; i < last; ++i)
         if (const std::uint32_t count = f.triangles.bucketCount(drawn[i]); count > 0) drawMask(drawn[i], count, int(i - first) + 1);
       if (buffersFromMasks) maskTarget_.restore();
