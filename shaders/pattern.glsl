@@ -1,9 +1,11 @@
 // Where a pixel reads the palette when the pattern is mapped (palette.glsl and the stencil
-// path's layer quad): PATTERN_OBJECT, the surface's own position (below); PATTERN_ANCHORED, the anchored pattern's frame that follows the object,
-// with two octaves cross-faded so marks keep their size on screen under zoom; PATTERN_SCALED,
-// a fixed pattern scale (texels of S pixels). uPatternMatrix maps window pixels (relative to
-// uPatternOrigin) to pattern texels of the coarser octave, whose marks are S 2^uPatternOctave
-// pixels wide; the finer octave is twice as dense and read one mip level down, so a palette
+// path's layer quad): PATTERN_OBJECT, the surface's own position (below); PATTERN_ANCHORED, the
+// anchored pattern's frame that follows the object while a zoom dissolves two octaves so marks
+// keep their size on screen; PATTERN_SCALED, a fixed pattern scale (texels of S pixels), which
+// is also the anchored frame while one octave shows alone (most frames: GpuPalette::bindPattern).
+// uPatternMatrix maps window pixels (relative to uPatternOrigin) to pattern texels of the
+// coarser octave, whose marks are S 2^fract(log2 scale) pixels wide; the finer octave is twice
+// as dense and read one mip level down, so a palette
 // with its own levels (a tonal art map) keeps its strokes' width and its tone. Both octaves'
 // levels come from the CPU (uPatternLod): a similarity has one scale over the whole frame, so
 // no per-pixel derivative is needed.
@@ -21,7 +23,7 @@ vec2 framePixel() { return gl_FragCoord.xy + uFrameOffset; }
 
 uniform vec4 uPatternMatrix;  // column-major 2x2: (m00, m10, m01, m11)
 uniform vec2 uPatternOrigin;
-uniform float uPatternOctave;  // fract(log2 scale)
+uniform float uPatternFade;    // how far the dissolve to the fine octave has gone, 0..1
 uniform vec2 uPatternLod;      // the mip level of the coarse and the fine octave
 
 vec2 patternCoordinate() {
@@ -103,7 +105,7 @@ vec3 mappedCoordinate() {
   vec2 u = patternCoordinate();
 #ifdef PATTERN_ANCHORED
   float threshold = (float(patternHash(ivec2(floor(2.0 * u))) & 0xffffu) + 0.5) / 65536.0;
-  return uPatternOctave > threshold ? vec3(2.0 * u, uPatternLod.y) : vec3(u, uPatternLod.x);
+  return uPatternFade > threshold ? vec3(2.0 * u, uPatternLod.y) : vec3(u, uPatternLod.x);
 #else
   return vec3(u, uPatternLod.x);
 #endif

@@ -196,9 +196,31 @@ void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
   prog.set("uFrameTurn", pattern_ ? pattern_->rotation : 0.0f);
 }
 
+namespace {
+// The anchored pattern's octave split: fract(log2 scale) and how far the dissolve from the
+// coarse octave to the fine one has gone. The dissolve runs over the middle half of the octave
+// only: in the outer quarters one octave shows alone (marks within 2^0.25 of the pattern
+// scale), which costs a screen pattern's single lookup and no hash, so an orbiting or panning
+// camera, whose scale stays near 1, never pays for it; zooms pay while they cross the middle.
+struct OctaveSplit {
+  float octave = 0.0f, fade = 0.0f;
+};
+constexpr float kFadeBegin = 0.25f, kFadeEnd = 0.75f;
+OctaveSplit octaveSplit(const std::optional<PatternFrame>& frame) {
+  if (!frame) return {};
+  const float l = std::log2(frame->scale);
+  const float octave = l - std::floor(l);
+  return {octave, std::clamp((octave - kFadeBegin) / (kFadeEnd - kFadeBegin), 0.0f, 1.0f)};
+}
+}  // namespace
+
 gl::PatternMapping GpuPalette::patternMapping() const {
   if (objectPattern_) return gl::PatternMapping::Object;
-  if (pattern_) return gl::PatternMapping::Anchored;
+  if (pattern_) {
+    const float fade = octaveSplit(pattern_).fade;
+    // One octave alone is a fixed scale through the frame (bindPattern folds it in).
+    return fade > 0.0f && fade < 1.0f ? gl::PatternMapping::Anchored : gl::PatternMapping::Scaled;
+  }
   return patternScale_ != 1.0f ? gl::PatternMapping::Scaled : gl::PatternMapping::Screen;
 }
 
@@ -210,16 +232,16 @@ int GpuPalette::lodFor(float texelsPerPixel) const {
 void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   if (patternMapping() == gl::PatternMapping::Screen) return;
   // A fixed scale is the identity frame; the anchored frame's scale is split into octaves (the
-  // coarse layer's marks are S 2^octave pixels wide; only PATTERN_ANCHORED reads the fine one).
+  // coarse layer's marks are S 2^octave pixels wide; only PATTERN_ANCHORED reads the fine one,
+  // and where the dissolve is complete the fine octave is drawn alone, as the coarse one).
   const PatternFrame frame = pattern_.value_or(PatternFrame{});
-  const float l = std::log2(frame.scale);
-  const float octave = pattern_ ? l - std::floor(l) : 0.0f;
-  const float markSize = patternScale_ * std::exp2(octave);
+  const OctaveSplit split = octaveSplit(pattern_);
+  const float markSize = patternScale_ * std::exp2(split.fade >= 1.0f ? split.octave - 1.0f : split.octave);
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x - origin) / markSize, column-major.
   prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
   prog.set("uPatternOrigin", frame.translation);
-  prog.set("uPatternOctave", octave);
+  prog.set("uPatternFade", split.fade);
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
   if (objectPattern_) {
     // Octaves are chosen per pixel from its depth (pattern.glsl); the coarse one's texels are

@@ -1,6 +1,7 @@
 // GL tier: pattern spaces. A camera-facing square panned by whole pixels: with `anchored` its
 // pattern moves with it, pixel for pixel; with `screen` the pattern stays where it was on the
-// screen. Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
+// screen. Under zoom the anchored pattern's octaves are dissolved only mid-octave and the tone
+// holds. Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
 // similarity fit recovers known motions; a view jump restarts the frame.
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_env.h"
+#include "renderer/palette/gpu_palette.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "support/pattern_motion.h"
 #include "support/test_util.h"
@@ -225,6 +227,94 @@ TEST_F(Fixture, FaceNormalsPlaceTheObjectPatternAsVertexNormalsDoOnAFlatSquare) 
   }
   s.pattern = PatternSpace::Screen;
   EXPECT_GT(test::countDiffering(pixel, renderImage(*r, cam.matrices(1.0f), s, 160, 160)), 500);  // the pattern shows
+}
+
+// The anchored pattern under zoom: the two octaves are dissolved only over the middle half of
+// each octave of the frame's scale; in the outer quarters one octave shows alone, drawn as a
+// fixed scale (no hash, one lookup: what an orbit or a pan pays). Crossing the band's edges
+// changes the picture no more than a zoom step inside it does (the fine octave alone at 3/4 is
+// what the dissolve has reached there; at the wrap it is the next octave's coarse one), and the tone stays that of the screen's pattern.
+TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone) {
+  const Palette crosshatch = test::shippedPalette("crosshatch");
+  auto gpu = GpuPalette::upload(crosshatch);
+  ASSERT_TRUE(gpu);
+  for (float octave : {0.0f, 0.2f, 0.3f, 0.5f, 0.7f, 0.8f, 0.95f, 1.1f, 1.5f, -0.1f, -0.5f}) {
+    PatternFrame f;
+    f.scale = std::exp2(octave);
+    (*gpu)->setPatternFrame(f);
+    const float o = octave - std::floor(octave);
+    const bool dissolving = o > 0.25f && o < 0.75f;
+    EXPECT_EQ((*gpu)->patternMapping(), dissolving ? gl::PatternMapping::Anchored : gl::PatternMapping::Scaled) << "octave " << octave;
+  }
+
+  const Mesh sq = test::square();
+  r->setMesh(&sq);
+  ASSERT_TRUE(r->setPalette(crosshatch));
+  const float head[4] = {0, 2, 1, 0};  // a raking light: a mid-tone hatching
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, head));
+  const int w = 160, h = 160;
+  RenderSettings anchored, screen;
+  anchored.path = screen.path = RenderPath::Pixel;
+  anchored.pattern = PatternSpace::Anchored;
+  // Zooms toward the square's centre to the scale 2^l: the fit of a facing square is exact, so
+  // the frame's scale is the zoom's (while enough samples stay in view).
+  OrbitCamera cam(0.0f, 0.0f, 3.0f);
+  float level = 0.0f;
+  auto zoomTo = [&](float l) {
+    cam.zoom(std::exp2(level - l), glm::vec2(0.0f), 1.0f);
+    level = l;
+    const ImageRGBA8 img = renderImage(*r, cam.matrices(1.0f), anchored, w, h);
+    EXPECT_NEAR(std::log2(r->patternTracker().frame().scale), l, 0.002f) << r->stats().patternSamples << " samples";
+    return img;
+  };
+
+  // Steps of 1/256 octave move the marks by at most 0.2 px here, so pixels change only near
+  // texel edges: about a fifth of them where one octave shows on both sides (1/8, 7/8); across an
+  // edge of the band drawn wrongly (the coarse octave where the fine one belongs) most would.
+  // (Inside the band (1/2) a step also moves the dissolve's hash cells: 0.6 change.)
+  cam.frame(0.7f);  // the square covers the view
+  r->resetPattern();
+  (void)zoomTo(0.0f);
+  const float d = 1.0f / 512.0f;
+  double plain = 0.0, worstEdge = 0.0;
+  for (float edge : {0.125f, 0.25f, 0.5f, 0.75f, 0.875f, 1.0f, 1.25f}) {
+    const ImageRGBA8 before = zoomTo(edge - d), after = zoomTo(edge + d);
+    const double changed = double(test::countDiffering(before, after)) / (w * h);
+    if (edge == 0.125f || edge == 0.875f) plain = std::max(plain, changed);  // one octave alone on both sides
+    else if (edge != 0.5f) worstEdge = std::max(worstEdge, changed);
+    std::printf("across 2^%.2f: %.3f of the pixels changed\n", edge, changed);
+  }
+  EXPECT_GT(plain, 0.02);
+  EXPECT_LT(worstEdge, 1.5 * plain);
+
+  // The tone over an 8x zoom, over the square, against the screen pattern's at each frame.
+  float step = 0.0f;  // one palette step in luminance
+  for (std::size_t k = 0; k + 1 < crosshatch.entries.size(); ++k)
+    step += std::fabs(glm::dot(crosshatch.entries[k].average - crosshatch.entries[k + 1].average, glm::vec3(0.2126f, 0.7152f, 0.0722f)));
+  step /= float(crosshatch.entries.size() - 1);
+  cam = OrbitCamera(0.0f, 0.0f, 3.0f);
+  cam.frame(6.0f);  // the square small in the view at first
+  r->resetPattern();
+  level = 0.0f;
+  double worstTone = 0.0;
+  for (float l = 0.0f; l <= 3.0f; l += 1.0f / 16.0f) {
+    const ImageRGBA8 img = zoomTo(l), flat = renderImage(*r, cam.matrices(1.0f), screen, w, h);
+    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(1.0f), GeometryOutput::EyeNormal, w, h);
+    double a = 0.0, b = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
+      if (cover.pixels[i * 4 + 3] < 0.5f) continue;
+      const glm::vec3 lum(0.2126f / 255.0f, 0.7152f / 255.0f, 0.0722f / 255.0f);
+      a += glm::dot(lum, glm::vec3(img.pixels[i * 4], img.pixels[i * 4 + 1], img.pixels[i * 4 + 2]));
+      b += glm::dot(lum, glm::vec3(flat.pixels[i * 4], flat.pixels[i * 4 + 1], flat.pixels[i * 4 + 2]));
+      ++n;
+    }
+    ASSERT_GT(n, 400) << "level " << l;
+    worstTone = std::max(worstTone, std::fabs(a - b) / n / step);
+  }
+  std::printf("tone over an 8x zoom: worst %.3f palette steps from the screen's\n", worstTone);
+  EXPECT_LT(worstTone, 0.25);
 }
 
 TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
