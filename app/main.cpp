@@ -8,6 +8,7 @@
 #include "app/headless/headless_run.h"
 #include "app/palette_tools.h"
 #include "app/window/window_viewer.h"
+#include "renderer/core/heap_policy.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_analysis.h"
@@ -19,6 +20,7 @@ extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 #endif
 
 int main(int argc, char** argv) {
+  npr::keepFreedHeapMemory();  // frame times without the heap trimmed every frame (heap_policy.h)
   const npr::ParseOutcome parsed = npr::parseCommandLine(argc, argv);
   if (!parsed.options) return parsed.exitCode;
   const npr::Options& o = *parsed.options;

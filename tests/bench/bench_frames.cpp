@@ -16,6 +16,7 @@
 
 #include "app/benchmark/interleaved_timing.h"
 #include "bench_common.h"
+#include "renderer/core/heap_policy.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -65,6 +66,7 @@ struct PathRow {
 }  // namespace
 
 int main(int argc, char** argv) {
+  npr::keepFreedHeapMemory();  // frame times without the heap trimmed every frame (heap_policy.h)
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
