@@ -2,9 +2,10 @@
 // its per-frame binning memory (about 2 MB for a bunny frame at 1280x720, far more on large
 // meshes) in blocks under glibc's mmap threshold, and frees it when the frame is rasterized;
 // glibc then trims the top of the heap back to the system, so every frame faults the same pages
-// in again and the kernel zeroes them. Keeping freed memory in the heap removes that: the
-// stencil path's bunny frame 13.3-14.3 ms -> 9.3-9.7 ms in the viewer, and the benchmarks'
-// interleaved rows no longer pay for the row before them (README, "Measuring").
+// in again and the kernel zeroes them. Keeping freed memory in the heap removes that: in the
+// viewer at 1280x720 the stencil path's bunny frame went from 15-17 ms to 11-12 ms and the
+// 871K torus through the vertex path from 179-188 ms to 92-93 ms, and the benchmarks'
+// interleaved rows no longer pay for the row before them (README, "Performance and accuracy").
 #pragma once
 
 namespace npr {
