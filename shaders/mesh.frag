@@ -135,14 +135,14 @@ void main() {
 #if defined(PATH_STROKE_ANGLE)
   fragColor = vec4(strokeAngle, strokeValid ? 1.0 : 0.0, 0.0, 1.0);
 #elif defined(PATH_PATTERN_COORDINATE)
-  fragColor = vec4(mappedCoordinate(), 1.0);
+  fragColor = vec4(packedObjectCoordinate(), 0.0, 1.0);
 #elif defined(PATH_MASK)
   fragColor = vec4(0.0);
 #ifdef MASK_STROKE_ANGLE
   maskStrokeAngle = vec4(strokeAngle, strokeValid ? 1.0 : 0.0, 0.0, 1.0);
 #endif
 #ifdef MASK_PATTERN_COORDINATE
-  maskPatternCoordinate = vec4(mappedCoordinate(), 1.0);
+  maskPatternCoordinate = vec4(packedObjectCoordinate(), 0.0, 1.0);
 #endif
 #elif defined(PATH_EYE_POSITION)
   fragColor = vec4(vPosition, gl_FrontFacing ? 1.0 : -1.0);

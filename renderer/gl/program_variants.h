@@ -49,7 +49,7 @@ enum class MeshShading : std::uint8_t {
   EyePosition,  // interpolated eye-space position (alpha -1 on back faces)
   EyeNormal,    // interpolated eye-space normal
   StrokeAngle,  // the hatching angle on screen and whether there is one (the stencil path's buffer)
-  PatternCoordinate,  // the object-space pattern's coordinate and level per pixel (the stencil path's buffer)
+  PatternCoordinate,  // the object-space pattern's coordinate and octave per pixel (the stencil path's buffer)
 };
 // Where a mesh pass takes each pixel's hatching angle from (orientation.glsl).
 enum class StrokeSource : std::uint8_t { None, Field, Light, Fixed };

@@ -31,8 +31,9 @@ Status drawStrokeAngles(FrameContext& f) {
 
 bool SurfaceBufferPass::resize(const glm::ivec2& size, FrameStats& stats) {
   const bool angles = content_ == Content::StrokeAngles;
-  // Pattern coordinates grow with zoom (texels per object unit): full floats.
-  if (!target_.resize(size, angles ? GL_RG16F : GL_RGBA32F, angles ? GL_RG : GL_RGBA)) return false;
+  // Pattern coordinates grow with zoom (texels per object unit): full floats, the octave packed
+  // into the first (shaders/pattern.glsl).
+  if (!target_.resize(size, angles ? GL_RG16F : GL_RG32F, GL_RG)) return false;
   ++stats.bufferUploads;
   return true;
 }
