@@ -133,7 +133,8 @@ void PatternTracker::sampleCloseUp(const View& now) {
     bool front = true;
     for (int k = 0; k < 3 && front; ++k) {
       const glm::vec4 c = now.mvp * glm::vec4(mesh_->positions[id[k]], 1.0f);
-      front = c.w > 1e-6f;
+      front = c.w > 1e-6f;  // a face crossing the eye's plane is left out
+      if (!front) break;
       const glm::vec2 p = lo + (glm::vec2(c) / c.w * 0.5f + 0.5f) * (hi - lo);
       bl = glm::min(bl, p);
       bh = glm::max(bh, p);
