@@ -5,10 +5,9 @@
 // is also the anchored frame while one octave shows alone (most frames: GpuPalette::bindPattern).
 // uPatternMatrix maps window pixels (relative to uPatternOrigin) to pattern texels of the
 // coarser octave, whose marks are S 2^fract(log2 scale) pixels wide; the finer octave is twice
-// as dense and read one mip level down, so a palette
-// with its own levels (a tonal art map) keeps its strokes' width and its tone. Both octaves'
-// levels come from the CPU (uPatternLod): a similarity has one scale over the whole frame, so
-// no per-pixel derivative is needed.
+// as dense and read one mip level down, so a palette with its own levels (a tonal art map)
+// keeps its strokes' width and its tone. Both octaves' levels come from the CPU (uPatternLod):
+// a similarity has one scale over the whole frame, so no per-pixel derivative is needed.
 #ifndef PATTERN_GLSL
 #define PATTERN_GLSL
 
@@ -65,8 +64,8 @@ uint patternHash(ivec2 p) {
 // The stencil path's quads read the result from a buffer its mask pass drew
 // (PATTERN_OBJECT_BUFFER).
 // The buffer holds (u, v) in two floats, and which octave the pixel shows in the lowest bit of
-// u's mantissa (a change of one unit in the last place: under a millionth of a texel per texel
-// of coordinate): 8 bytes a pixel instead of 16, which the masks write for every fragment that
+// u's mantissa (one unit in the last place: about a ten-millionth of the coordinate, far below
+// a texel): 8 bytes a pixel instead of 16, which the masks write for every fragment that
 // passes the depth test and the quads read for every pixel (bunny, object / screen, stencil,
 // six alternated runs: median 1.37x -> 1.35x; the machine's noise is about as large).
 #ifdef PATTERN_OBJECT_BUFFER

@@ -200,7 +200,7 @@ namespace {
 // The anchored pattern's octave split: fract(log2 scale) and how far the dissolve from the
 // coarse octave to the fine one has gone. The dissolve runs over the middle half of the octave
 // only: in the outer quarters one octave shows alone (marks within 2^0.25 of the pattern
-// scale), which costs a screen pattern's single lookup and no hash, so an orbiting or panning
+// scale), which costs a scaled pattern's single lookup and no hash, so an orbiting or panning
 // camera, whose scale stays near 1, never pays for it; zooms pay while they cross the middle.
 struct OctaveSplit {
   float octave = 0.0f, fade = 0.0f;

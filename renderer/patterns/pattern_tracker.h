@@ -5,10 +5,10 @@
 // screen positions to their current ones (weighted least squares) is accumulated into the
 // pattern's frame, which the shaders apply to each pixel before the palette lookup
 // (palette.glsl, quad.frag). CPU cost: a few hundred points per frame, whatever the mesh.
-// A close-up leaves few of those points in view (the bunny at 15x had none), so then points
-// are drawn afresh from what the view shows and tracked instead, until the fixed ones suffice
-// again; drawing them scans at most kScanFaces faces (0.2 ms on the bunny, 1.3-1.7 ms on the
-// 871K torus, on the frames that draw them).
+// A close-up leaves few of those points in view (a square zoomed into had none at 34x), so
+// then points are drawn afresh from what the view shows and tracked instead, until the fixed
+// ones suffice again; drawing them scans at most kScanFaces faces (0.2 ms on the bunny,
+// 1.3-1.7 ms on the 871K torus, on the frames that draw them).
 #pragma once
 
 #include <cstddef>
