@@ -10,6 +10,20 @@
 #include "renderer/core/elapsed.h"
 
 namespace npr {
+namespace {
+
+// How a surface point faces the eye: n.v (its foreshortening) and its distance squared. Its
+// area times nv / d2 is the screen area it covers, up to the projection's constant.
+struct Facing {
+  float nv, d2;
+};
+Facing facing(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& eye) {
+  const glm::vec3 toEye = eye - position;
+  const float d2 = glm::dot(toEye, toEye);
+  return {glm::dot(normal, toEye) / std::sqrt(std::max(d2, 1e-24f)), d2};
+}
+
+}  // namespace
 
 PatternFrame fitSimilarity(const std::vector<glm::vec2>& from, const std::vector<glm::vec2>& to, const std::vector<float>& w,
                            bool followRotation) {
@@ -101,11 +115,9 @@ void PatternTracker::gather(const std::vector<Sample>& samples, const View& befo
     if (!before.project(s.position, s.normal, a) || !now.project(s.position, s.normal, b)) continue;
     out.from.push_back(a);
     out.to.push_back(b);
-    // Weighted by the pixels it stands for: its area, foreshortened (n.v), over distance squared.
-    const glm::vec3 toEye = now.eye - s.position;
-    const float d2 = glm::dot(toEye, toEye);
-    const float nv = glm::dot(s.normal, toEye) / std::sqrt(std::max(d2, 1e-24f));
-    out.weights.push_back(s.area * nv / std::max(d2, 1e-12f));
+    // Weighted by the pixels it stands for.
+    const Facing v = facing(s.position, s.normal, now.eye);
+    out.weights.push_back(s.area * v.nv / std::max(v.d2, 1e-12f));
   }
 }
 
@@ -169,11 +181,9 @@ void PatternTracker::sampleCloseUp(const View& now) {
     const glm::dvec3 p = o + d * (glm::dot(n, a - o) / dn);
     if (glm::dot(glm::cross(b - a, p - a), n) < 0.0 || glm::dot(glm::cross(e - b, p - b), n) < 0.0 || glm::dot(glm::cross(a - e, p - e), n) < 0.0) continue;
     const glm::vec3 position(p);
-    const glm::vec3 toEye = now.eye - position;
-    const float d2 = glm::dot(toEye, toEye);
-    const float nv = glm::dot(glm::vec3(n), toEye) / std::sqrt(std::max(d2, 1e-24f));
-    if (!std::isfinite(d2) || !(nv > 0.05f)) continue;
-    closeUp_.push_back({position, glm::vec3(n), d2 / nv});
+    const Facing v = facing(position, glm::vec3(n), now.eye);
+    if (!std::isfinite(v.d2) || !(v.nv > 0.05f)) continue;
+    closeUp_.push_back({position, glm::vec3(n), v.d2 / v.nv});
   }
 }
 
