@@ -27,7 +27,7 @@ uniform ivec2 uLayerSize0;
 uniform sampler2D uBackground;
 uniform ivec2 uBackgroundSize;
 uniform float uBackgroundScale;  // texels per pixel: 1 / pattern scale
-vec3 backgroundColour() { return texelFetch(uBackground, ivec2(framePixel() * uBackgroundScale) % uBackgroundSize, 0).rgb; }
+vec3 backgroundColour() { return texelFetch(uBackground, wrapTexel(framePixel() * uBackgroundScale, uBackgroundSize), 0).rgb; }
 #else
 uniform vec3 uBackgroundColour;
 vec3 backgroundColour() { return uBackgroundColour; }
@@ -65,7 +65,7 @@ vec3 paletteColour(int entry) {
 vec3 paletteColour(int entry) { return composite(layerTexel(paletteCoordinate(), entry)); }
 #else
 vec3 paletteColour(int entry) {
-  ivec2 p = ivec2(framePixel()) % LAYER_SIZE(entry);
+  ivec2 p = wrapTexel(framePixel(), LAYER_SIZE(entry));
   return composite(texelFetch(uPalette, ivec3(p, entry), 0));
 }
 #endif

@@ -13,7 +13,7 @@ uniform vec3 uBackgroundColour;
 #endif
 void main() {
 #ifdef BACKGROUND_IMAGE
-  fragColor = vec4(texelFetch(uBackground, ivec2(framePixel() * uBackgroundScale) % uBackgroundSize, 0).rgb, 1.0);
+  fragColor = vec4(texelFetch(uBackground, wrapTexel(framePixel() * uBackgroundScale, uBackgroundSize), 0).rgb, 1.0);
 #else
   fragColor = vec4(uBackgroundColour, 1.0);
 #endif
