@@ -24,7 +24,8 @@ vec2 turnedCoordinate(vec2 u, int b) {
 
 // The two steps to blend (weight w of b1) for an entry whose strokes run at `entryAngle` in
 // its texture (radians; below -10: no dominant direction), the texture's frame itself turned by
-// `frameTurn` on screen (the anchored pattern's rotation). False: sample unturned.
+// `frameTurn` on screen (the anchored pattern's rotation). False: sample unturned (the steps
+// are then both 0, no turn, so a caller may draw the two lookups regardless).
 bool orientSteps(float entryAngle, float frameTurn, out int b0, out int b1, out float w) {
   b0 = 0;
   b1 = 0;

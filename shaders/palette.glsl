@@ -9,7 +9,8 @@
 // With ORIENTED each entry's lookup is turned so its strokes follow the pixel's stroke angle
 // (orientation.glsl; the pass sets the angle before matching).
 // Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
-// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED and ORIENT_BINS.
+// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED, ORIENT_BINS and
+// ENTRY_ANGLE_SHARED.
 
 uniform sampler2DArray uPalette;
 #ifdef LAYER_SIZES_DIFFER
@@ -52,15 +53,38 @@ vec4 layerTexel(vec3 c, int entry) { return texelFetch(uPalette, ivec3(wrapTexel
 
 #ifdef ORIENTED
 #include "orientation.glsl"
-uniform float uEntryAngle[PALETTE_SIZE];  // each entry's stroke direction (radians; < -10: none)
-uniform float uFrameTurn;                 // the anchored pattern's rotation on screen
+uniform float uFrameTurn;  // the anchored pattern's rotation on screen
+// Branch-free: llvmpipe runs both sides of a branch that differs across its pixels, and an
+// unturned lookup is the turned one with step 0 (no turn) and weight 0.
+#ifdef ENTRY_ANGLE_SHARED
+// Every turned entry's strokes run at one angle, so the turn and the two turned coordinates
+// do not depend on which entry the pixel matched: found once per pixel (once for both of the
+// smooth path's entries), and an entry with no stroke direction takes the unturned coordinate.
+uniform float uSharedEntryAngle;
+uniform int uTurnedEntries[(PALETTE_SIZE + 31) / 32];  // bit k % 32 of word k / 32: entry k is turned
+bool entryTurned(int entry) { return ((uTurnedEntries[entry >> 5] >> (entry & 31)) & 1) != 0; }
 vec3 paletteColour(int entry) {
   vec3 c = paletteCoordinate();
   int b0, b1;
   float w;
-  if (!orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w)) return composite(layerTexel(c, entry));
+  orientSteps(uSharedEntryAngle, uFrameTurn, b0, b1, w);
+  vec2 c0 = turnedCoordinate(c.xy, b0), c1 = turnedCoordinate(c.xy, b1);
+  if (!entryTurned(entry)) {
+    c0 = c1 = c.xy;
+    w = 0.0;
+  }
+  return composite(mix(layerTexel(vec3(c0, c.z), entry), layerTexel(vec3(c1, c.z), entry), w));
+}
+#else
+uniform float uEntryAngle[PALETTE_SIZE];  // each entry's stroke direction (radians; < -10: none)
+vec3 paletteColour(int entry) {
+  vec3 c = paletteCoordinate();
+  int b0, b1;
+  float w;
+  orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w);
   return composite(mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z), entry), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z), entry), w));
 }
+#endif
 #elif defined(PATTERN_MAPPED)
 vec3 paletteColour(int entry) { return composite(layerTexel(paletteCoordinate(), entry)); }
 #else

@@ -23,6 +23,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   if (p.orientBins > 0) {
     d.push_back("ORIENTED");
     d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
+    if (p.entryAngleShared) d.push_back("ENTRY_ANGLE_SHARED");
   }
   d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
   d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));

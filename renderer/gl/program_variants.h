@@ -32,7 +32,8 @@ struct PaletteVariant {
   PatternMapping pattern = PatternMapping::Screen;
   bool filtered = false;         // mapped patterns filtered bilinearly in linear light (pattern.glsl)
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins); }
+  bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
+  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins, entryAngleShared); }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).

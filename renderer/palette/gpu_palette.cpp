@@ -11,6 +11,7 @@
 #include "renderer/gl/texture_units.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_mipmaps.h"
+#include "renderer/palette/palette_orientation.h"
 
 namespace npr {
 namespace {
@@ -49,6 +50,14 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
     gp->entryAngles_.push_back(e.orientation.oriented() ? float(e.orientation.degrees * M_PI / 180.0) : -100.0f);
     gp->anyOriented_ |= e.orientation.oriented();
     gp->sizesDiffer_ |= gp->layerSizes_.back() != gp->layerSizes_.front();
+  }
+  std::vector<TextureOrientation> orientations;
+  for (const auto& e : p.entries) orientations.push_back(e.orientation);
+  if (const std::optional<float> shared = sharedStrokeDegrees(orientations)) {
+    gp->sharedAngle_ = float(*shared * M_PI / 180.0);
+    gp->turnedEntryBits_.assign(size_t(n + 31) / 32, 0);
+    for (int k = 0; k < n; ++k)
+      if (p.entries[size_t(k)].orientation.oriented()) gp->turnedEntryBits_[size_t(k) / 32] |= int(1u << (k % 32));
   }
   if (w > maxSize || h > maxSize)
     return Error{"palette texture " + std::to_string(w) + "x" + std::to_string(h) + " exceeds this GPU's limit " + std::to_string(maxSize)};
@@ -152,6 +161,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.pattern = patternMapping();
   v.filtered = filtered();
   v.orientBins = orientBins();
+  v.entryAngleShared = v.orientBins > 0 && sharedAngle_.has_value();
   return v;
 }
 
@@ -279,7 +289,12 @@ void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
   bindBackground(prog);
   bindPattern(prog);
   if (turned && oriented()) {
-    prog.setArray("uEntryAngle", entryAngles_.data(), size());
+    if (sharedAngle_) {
+      prog.set("uSharedEntryAngle", *sharedAngle_);
+      prog.setArray("uTurnedEntries", turnedEntryBits_.data(), int(turnedEntryBits_.size()));
+    } else {
+      prog.setArray("uEntryAngle", entryAngles_.data(), size());
+    }
     bindOrientation(prog);
     bindStrokeSource(prog);
   }

@@ -90,6 +90,7 @@ class GpuPalette {
     v.pattern = gl::PatternMapping::Screen;
     v.filtered = false;
     v.orientBins = 0;
+    v.entryAngleShared = false;
     return v;
   }
   // The stroke source's uniforms (orientation.glsl): fixed angle, light, viewport size.
@@ -137,6 +138,10 @@ class GpuPalette {
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;
+  // Set when every oriented entry has one stroke angle (sharedStrokeDegrees): that angle in
+  // radians, and which entries are turned, one bit each (palette.glsl's uTurnedEntries).
+  std::optional<float> sharedAngle_;
+  std::vector<int> turnedEntryBits_;
   OrientSettings orient_;
   glm::vec4 orientLight_{0, 0, 1, 0};
   glm::vec2 viewportSize_{1.0f};

@@ -78,4 +78,23 @@ TextureOrientation textureOrientation(const ImageRGBA8& img, const glm::vec3& bg
   return out;
 }
 
+std::optional<float> sharedStrokeDegrees(const std::vector<TextureOrientation>& entries) {
+  constexpr double kRadians = M_PI / 180.0;
+  double c = 0.0, s = 0.0;
+  for (const TextureOrientation& e : entries)
+    if (e.oriented()) {
+      c += std::cos(2.0 * kRadians * e.degrees);
+      s += std::sin(2.0 * kRadians * e.degrees);
+    }
+  if (c * c + s * s < 1e-12) return std::nullopt;  // none oriented, or opposed so they cancel
+  double mean = 0.5 * std::atan2(s, c) / kRadians;
+  if (mean < 0.0) mean += 180.0;
+  for (const TextureOrientation& e : entries) {
+    if (!e.oriented()) continue;
+    const double d = std::fmod(std::fabs(double(e.degrees) - mean), 180.0);
+    if (std::min(d, 180.0 - d) > kSharedStrokeTolerance) return std::nullopt;
+  }
+  return float(mean >= 180.0 ? mean - 180.0 : mean);
+}
+
 }  // namespace npr

@@ -9,6 +9,9 @@
 // Stipple and blank textures have no peak and are left unrotated.
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "renderer/core/image.h"
@@ -29,5 +32,13 @@ struct TextureOrientation {
 // `img` as shown over a background of colour `background` (encoded): alpha composited,
 // luminance, tiled (gradients wrap around the edges, as the texture repeats on screen).
 TextureOrientation textureOrientation(const ImageRGBA8& img, const glm::vec3& background);
+
+// The one stroke direction (degrees, [0, 180)) a palette's oriented entries share, each within
+// kSharedStrokeTolerance degrees of it (the analysis' own accuracy on line textures): their
+// mean, taken on doubled angles so that 179 and 1 agree. Nullopt when they differ or none is
+// oriented. Turning every oriented entry by one angle lets the shader compute the turn once
+// per pixel, before it knows the entry (palette.glsl).
+constexpr float kSharedStrokeTolerance = 2.0f;
+std::optional<float> sharedStrokeDegrees(const std::vector<TextureOrientation>& entries);
 
 }  // namespace npr

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
@@ -218,6 +219,21 @@ TEST(PaletteOrientation, StippleAndBlankAreLeftUnrotated) {
   for (std::size_t i = 3; i < clear.pixels.size(); i += 4) clear.pixels[i] = 0;
   EXPECT_FALSE(textureOrientation(clear, glm::vec3(1.0f)).oriented());
   EXPECT_EQ(textureOrientation(ImageRGBA8{}, glm::vec3(1.0f)).strength, 0.0f);
+}
+
+TEST(PaletteOrientation, SharedStrokeDirectionOnlyWhereEveryOrientedEntryAgrees) {
+  auto entry = [](float degrees, float strength = 0.9f) { return TextureOrientation{degrees, strength}; };
+  const TextureOrientation none = entry(0.0f, 0.1f);
+  // 179.5 and 0.5 are one direction: the mean sits across the wrap, not at 90.
+  const std::optional<float> wrap = sharedStrokeDegrees({none, entry(179.5f), entry(0.5f), none});
+  ASSERT_TRUE(wrap.has_value());
+  EXPECT_NEAR(std::min(*wrap, 180.0f - *wrap), 0.0f, 1e-3f);
+  const std::optional<float> close = sharedStrokeDegrees({entry(44.0f), entry(46.0f)});
+  ASSERT_TRUE(close.has_value());
+  EXPECT_NEAR(*close, 45.0f, 1e-3f);
+  EXPECT_FALSE(sharedStrokeDegrees({entry(40.0f), entry(46.0f)}).has_value());  // 3 degrees from their mean
+  EXPECT_FALSE(sharedStrokeDegrees({entry(0.0f), entry(90.0f)}).has_value());   // cancel on doubled angles
+  EXPECT_FALSE(sharedStrokeDegrees({none, none}).has_value());
 }
 
 }  // namespace

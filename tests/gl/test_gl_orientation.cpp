@@ -5,11 +5,13 @@
 // is the same turned or not; the direction field is computed once per mesh.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gl/gl_test_env.h"
 #include "renderer/core/image_io.h"
 #include "renderer/mesh/mesh_generators.h"
+#include "renderer/palette/palette_orientation.h"
 #include "support/stroke_alignment.h"
 #include "support/test_util.h"
 
@@ -135,6 +137,93 @@ TEST_F(Orientation, SelectionIsTheSameTurnedOrNot) {
                                    test::renderEntries(*r, camera(), curvature, kSize, kSize)),
               0)
         << pathInfo(path).name;
+  }
+}
+
+// The hatch palette with every second stroked entry mirrored across its diagonal, so that its
+// strokes run at 90 degrees instead of 0: the entries no longer share one angle.
+Palette hatchAtTwoAngles(std::vector<int>& mirrored) {
+  Palette p = test::shippedPalette("hatch");
+  for (std::size_t k = 0; k < p.entries.size(); ++k) {
+    PaletteEntry& e = p.entries[k];
+    if (!e.orientation.oriented() || k % 2 == 0) continue;
+    const ImageRGBA8 src = e.image;
+    for (int y = 0; y < src.height; ++y)
+      for (int x = 0; x < src.width; ++x)
+        for (int c = 0; c < 4; ++c) e.image.pixels[(size_t(y) * src.width + x) * 4 + c] = src.pixels[(size_t(x) * src.width + y) * 4 + c];
+    e.mips.clear();
+    e.orientation = textureOrientation(e.image, p.backgroundColour);
+    mirrored.push_back(int(k));
+  }
+  return p;
+}
+
+// `wanted` kept only where `entries` (renderEntries' image) shows one of `keep`.
+ImageRGBA32F onlyEntries(ImageRGBA32F wanted, const ImageRGBA8& entries, const std::vector<int>& keep) {
+  for (std::size_t i = 0; i < wanted.pixels.size() / 4; ++i)
+    if (std::find(keep.begin(), keep.end(), int(entries.pixels[i * 4])) == keep.end()) wanted.pixels[i * 4 + 1] = 0.0f;
+  return wanted;
+}
+
+TEST_F(Orientation, EntriesWithDifferentStrokeAnglesAreEachTurnedByTheirOwn) {
+  std::vector<int> mirrored;
+  const Palette p = hatchAtTwoAngles(mirrored);
+  ASSERT_GE(mirrored.size(), 2u);
+  std::vector<TextureOrientation> angles;
+  for (const PaletteEntry& e : p.entries) angles.push_back(e.orientation);
+  ASSERT_FALSE(sharedStrokeDegrees(angles).has_value());  // the per-entry form is the one drawn
+  ASSERT_TRUE(r->setPalette(p));
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings s;
+    s.path = path;
+    s.orient.source = OrientSource::Curvature;
+    const ImageRGBA8 img = test::renderImage(*r, camera(), s, kSize, kSize);
+    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), s, kSize, kSize);
+    RenderSettings entriesOf = s;
+    entriesOf.path = path == RenderPath::Stencil ? RenderPath::Triangle : path;  // the same per-triangle choice
+    const ImageRGBA32F mirroredOnly = onlyEntries(wanted, test::renderEntries(*r, camera(), entriesOf, kSize, kSize), mirrored);
+    const test::Alignment a = test::strokeAlignment(img, mirroredOnly);
+    EXPECT_GT(a.pixels, 2000u);
+    EXPECT_LE(a.medianDegrees, 10.0);
+  }
+}
+
+TEST_F(Orientation, EntriesWithoutAStrokeDirectionStayUnturnedBesideTurnedOnes) {
+  // Crosshatch: its single-family entries share one angle (the per-pixel turn is found once),
+  // its dense ones have no dominant direction and must be drawn as they are.
+  const Palette p = test::shippedPalette("crosshatch");
+  std::vector<TextureOrientation> angles;
+  std::vector<int> unturned;
+  for (std::size_t k = 0; k < p.entries.size(); ++k) {
+    angles.push_back(p.entries[k].orientation);
+    if (!p.entries[k].orientation.oriented()) unturned.push_back(int(k));
+  }
+  ASSERT_TRUE(sharedStrokeDegrees(angles).has_value());
+  ASSERT_TRUE(r->setPalette(p));
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth, RenderPath::Triangle}) {
+    SCOPED_TRACE(pathInfo(path).name);
+    RenderSettings none, curvature;
+    none.path = curvature.path = path;
+    curvature.orient.source = OrientSource::Curvature;
+    RenderSettings entriesOf = none;
+    entriesOf.path = path == RenderPath::Smooth ? RenderPath::Pixel : path;
+    const ImageRGBA8 entries = test::renderEntries(*r, camera(), entriesOf, kSize, kSize);
+    const ImageRGBA8 a = test::renderImage(*r, camera(), none, kSize, kSize);
+    const ImageRGBA8 b = test::renderImage(*r, camera(), curvature, kSize, kSize);
+    std::size_t same[2] = {0, 0}, count[2] = {0, 0};  // [0]: unturned entries, [1]: turned
+    for (std::size_t i = 0; i < entries.pixels.size() / 4; ++i) {
+      if (entries.pixels[i * 4 + 3] == 0) continue;  // background
+      const bool turned = std::find(unturned.begin(), unturned.end(), int(entries.pixels[i * 4])) == unturned.end();
+      ++count[turned];
+      same[turned] += std::equal(&a.pixels[i * 4], &a.pixels[i * 4 + 3], &b.pixels[i * 4]);
+    }
+    ASSERT_GT(count[0], 1000u);
+    ASSERT_GT(count[1], 1000u);
+    if (path != RenderPath::Smooth) {
+      EXPECT_EQ(same[0], count[0]);  // smooth: blends with turned neighbours
+    }
+    EXPECT_LT(double(same[1]), 0.7 * double(count[1]));
   }
 }
 
