@@ -59,8 +59,9 @@ void main() {
   vec3 c = layerCoordinate();
   int b0, b1;
   float w;
-  if (!orientSteps(uLayerAngle, uFrameTurn, b0, b1, w)) fragColor = layerTexel(c);
-  else fragColor = mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z)), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z)), w);
+  // Branch-free, as palette.glsl's: where no stroke angle is set the steps are 0 (no turn).
+  orientSteps(uLayerAngle, uFrameTurn, b0, b1, w);
+  fragColor = mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z)), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z)), w);
 }
 #else
 void main() { fragColor = layerTexel(layerCoordinate()); }

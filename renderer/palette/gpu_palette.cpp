@@ -55,6 +55,9 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   for (const auto& e : p.entries) orientations.push_back(e.orientation);
   if (const std::optional<float> shared = sharedStrokeDegrees(orientations)) {
     gp->sharedAngle_ = float(*shared * M_PI / 180.0);
+    // Every path turns by the same angle, the stencil path's per-layer quads included.
+    for (float& a : gp->entryAngles_)
+      if (a > -10.0f) a = *gp->sharedAngle_;
     gp->turnedEntryBits_.assign(size_t(n + 31) / 32, 0);
     for (int k = 0; k < n; ++k)
       if (p.entries[size_t(k)].orientation.oriented()) gp->turnedEntryBits_[size_t(k) / 32] |= int(1u << (k % 32));

@@ -30,6 +30,14 @@ Status StencilPath::draw(FrameContext& f) {
       f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->filtered(),
                                 f.palette->orientBins(), angleBuffer});
   if (!layerQuad) return Error{layerQuad.error()};
+  // Layers with no stroke direction are drawn unturned, by the same quad without orientation:
+  // one lookup instead of two and no read of the angle buffer.
+  Result<gl::ShaderProgram*> plainQuad = layerQuad;
+  if (stroke != gl::StrokeSource::None) {
+    plainQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(),
+                                          f.palette->filtered(), 0, false});
+    if (!plainQuad) return Error{plainQuad.error()};
+  }
 
   // The surface buffers from the masks themselves, when every mask is drawn first and the
   // bound framebuffer's depth-stencil can be shared; else from passes of their own.
@@ -76,11 +84,13 @@ Status StencilPath::draw(FrameContext& f) {
   if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask);
   (*bgQuad)->use();
   f.palette->bindBackground(**bgQuad);
-  (*layerQuad)->use();
-  f.palette->bindLayers(**layerQuad);
-  f.palette->bindPattern(**layerQuad);
   const glm::ivec2 bufferOrigin = buffersFromMasks ? glm::ivec2(0) : glm::ivec2(vp.x, vp.y);
-  if (objectPattern) patternCoordinates_.bind(**layerQuad, bufferOrigin);
+  for (gl::ShaderProgram* quad : {*plainQuad, *layerQuad}) {
+    quad->use();
+    f.palette->bindLayers(*quad);
+    f.palette->bindPattern(*quad);
+    if (objectPattern) patternCoordinates_.bind(*quad, bufferOrigin);
+  }
   if (stroke != gl::StrokeSource::None) {
     f.palette->bindOrientation(**layerQuad);
     if (angleBuffer) strokeAngles_.bind(**layerQuad, bufferOrigin);
@@ -116,10 +126,12 @@ Status StencilPath::draw(FrameContext& f) {
     glDrawArrays(GL_TRIANGLES, 0, 3);
     gl::apply(gl::pass::kStencilLayer);
     glStencilFunc(GL_EQUAL, mark, 0xFF);
-    (*layerQuad)->use();
-    (*layerQuad)->set("uLayer", k);
-    (*layerQuad)->set("uLayerSize", f.palette->layerSize(k));
-    if (stroke != gl::StrokeSource::None) (*layerQuad)->set("uLayerAngle", f.palette->entryAngle(k));
+    const bool turned = stroke != gl::StrokeSource::None && f.palette->entryAngle(k) > -10.0f;
+    gl::ShaderProgram& quad = turned ? **layerQuad : **plainQuad;
+    quad.use();
+    quad.set("uLayer", k);
+    quad.set("uLayerSize", f.palette->layerSize(k));
+    if (turned) quad.set("uLayerAngle", f.palette->entryAngle(k));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     f.stats.drawCalls += 2;
   };
