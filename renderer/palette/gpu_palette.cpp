@@ -251,9 +251,10 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   const OctaveSplit split = octaveSplit(pattern_);
   const float markSize = patternScale_ * std::exp2(split.fade >= 1.0f ? split.octave - 1.0f : split.octave);
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
-  // u = R(-rotation) (x - origin) / markSize, column-major.
-  prog.set("uPatternMatrix", glm::vec4(c, -s, s, c) / markSize);
-  prog.set("uPatternOrigin", frame.translation);
+  // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
+  const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
+  prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
+  prog.set("uPatternOffset", m * (frameOffset_ - frame.translation));
   prog.set("uPatternFade", split.fade);
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
   if (objectPattern_) {

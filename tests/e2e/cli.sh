@@ -155,6 +155,13 @@ for p in pixel stencil; do
   oiiotool "$tmp/one-$p.png" "$tmp/tiled-$p.png" --fail 0.02 --failpercent 0.1 --diff > "$tmp/diff" \
     || { echo "FAIL: $p: the tiled poster differs from one frame: $(grep -E 'Mean|pixels' "$tmp/diff" | head -2)"; fail=1; }
 done
+# A mapped pattern (scaled, through the anchored frame) continues across the seams too.
+for p in pixel stencil; do
+  expect 0 "one frame, mapped pattern ($p)" -- "$viewer" --headless --size 320x240 --path $p --pattern anchored --pattern-scale 1.5 --screenshot "$tmp/one-mapped-$p.png"
+  expect 0 "2x2 tiles, mapped pattern ($p)" -- "$viewer" --headless --size 320x240 --path $p --pattern anchored --pattern-scale 1.5 --tile 160 --screenshot "$tmp/tiled-mapped-$p.png"
+  oiiotool "$tmp/one-mapped-$p.png" "$tmp/tiled-mapped-$p.png" --fail 0.02 --failpercent 0.1 --diff > "$tmp/diff" \
+    || { echo "FAIL: $p: the tiled poster's mapped pattern differs from one frame: $(grep -E 'Mean|pixels' "$tmp/diff" | head -2)"; fail=1; }
+done
 expect 0 "a poster wider than the GL allows" -- "$viewer" --headless --size 17000x200 --camera 30,20,0.6 --screenshot "$tmp/poster.png"
 oiiotool --info "$tmp/poster.png" | grep -q "17000 x  200" || { echo "FAIL: poster size: $(oiiotool --info "$tmp/poster.png")"; fail=1; }
 expect 1 "a tiled poster with frames" -- "$viewer" --headless --size 320x240 --tile 160 --frames 3 --screenshot "$tmp/x.png"
