@@ -44,16 +44,28 @@ struct Orientation : Fixture {
     r->setMesh(&mesh);
   }
   CameraMatrices camera() const { return test::testCamera(1.0f, 0.0f, 10.0f); }
+  // What `path` draws with strokes along the curvature, and the stroke angles it wanted.
+  struct Turned {
+    RenderSettings settings;
+    ImageRGBA8 image;
+    ImageRGBA32F wanted;
+  };
+  Turned renderTurned(RenderPath path) {
+    Turned t;
+    t.settings.path = path;
+    t.settings.orient.source = OrientSource::Curvature;
+    t.image = test::renderImage(*r, camera(), t.settings, kSize, kSize);
+    t.wanted = test::renderStrokeAngles(*r, camera(), t.settings, kSize, kSize);
+    return t;
+  }
 };
 
 TEST_F(Orientation, CylinderStrokesFollowTheCurvatureInEveryPath) {
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth, RenderPath::Triangle, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
-    RenderSettings s;
-    s.path = path;
-    s.orient.source = OrientSource::Curvature;
-    const ImageRGBA8 img = test::renderImage(*r, camera(), s, kSize, kSize);
-    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), s, kSize, kSize);
+    const Turned t = renderTurned(path);
+    const ImageRGBA8& img = t.image;
+    const ImageRGBA32F& wanted = t.wanted;
     const test::Alignment along = test::strokeAlignment(img, wanted);
     const test::Alignment texture = test::strokeAlignment(img, constantAngle(wanted, 0.0f));
     EXPECT_GT(along.pixels, 8000u);
@@ -175,15 +187,11 @@ TEST_F(Orientation, EntriesWithDifferentStrokeAnglesAreEachTurnedByTheirOwn) {
   ASSERT_TRUE(r->setPalette(p));
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
-    RenderSettings s;
-    s.path = path;
-    s.orient.source = OrientSource::Curvature;
-    const ImageRGBA8 img = test::renderImage(*r, camera(), s, kSize, kSize);
-    const ImageRGBA32F wanted = test::renderStrokeAngles(*r, camera(), s, kSize, kSize);
-    RenderSettings entriesOf = s;
+    const Turned t = renderTurned(path);
+    RenderSettings entriesOf = t.settings;
     entriesOf.path = path == RenderPath::Stencil ? RenderPath::Triangle : path;  // the same per-triangle choice
-    const ImageRGBA32F mirroredOnly = onlyEntries(wanted, test::renderEntries(*r, camera(), entriesOf, kSize, kSize), mirrored);
-    const test::Alignment a = test::strokeAlignment(img, mirroredOnly);
+    const ImageRGBA32F mirroredOnly = onlyEntries(t.wanted, test::renderEntries(*r, camera(), entriesOf, kSize, kSize), mirrored);
+    const test::Alignment a = test::strokeAlignment(t.image, mirroredOnly);
     EXPECT_GT(a.pixels, 2000u);
     EXPECT_LE(a.medianDegrees, 10.0);
   }
