@@ -43,7 +43,9 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   if (n > maxLayers) return Error{"palette has " + std::to_string(n) + " entries; this GPU holds " + std::to_string(maxLayers) + " layers"};
   std::unique_ptr<GpuPalette> gp(new GpuPalette());
   int w = 1, h = 1;
+  std::vector<TextureOrientation> orientations;
   for (const auto& e : p.entries) {
+    orientations.push_back(e.orientation);
     w = std::max(w, e.image.width);
     h = std::max(h, e.image.height);
     gp->layerSizes_.push_back({e.image.width, e.image.height});
@@ -51,8 +53,6 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
     gp->anyOriented_ |= e.orientation.oriented();
     gp->sizesDiffer_ |= gp->layerSizes_.back() != gp->layerSizes_.front();
   }
-  std::vector<TextureOrientation> orientations;
-  for (const auto& e : p.entries) orientations.push_back(e.orientation);
   if (const std::optional<float> shared = sharedStrokeDegrees(orientations)) {
     gp->sharedAngle_ = float(*shared * M_PI / 180.0);
     // Every path turns by the same angle, the stencil path's per-layer quads included.
@@ -60,7 +60,7 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
       if (a > -10.0f) a = *gp->sharedAngle_;
     gp->turnedEntryBits_.assign(size_t(n + 31) / 32, 0);
     for (int k = 0; k < n; ++k)
-      if (p.entries[size_t(k)].orientation.oriented()) gp->turnedEntryBits_[size_t(k) / 32] |= int(1u << (k % 32));
+      if (orientations[size_t(k)].oriented()) gp->turnedEntryBits_[size_t(k) / 32] |= int(1u << (k % 32));
   }
   if (w > maxSize || h > maxSize)
     return Error{"palette texture " + std::to_string(w) + "x" + std::to_string(h) + " exceeds this GPU's limit " + std::to_string(maxSize)};

@@ -26,16 +26,18 @@ Status StencilPath::draw(FrameContext& f) {
   const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
   Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
   if (!bgQuad) return Error{bgQuad.error()};
-  Result<gl::ShaderProgram*> layerQuad =
-      f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(), f.palette->filtered(),
-                                f.palette->orientBins(), angleBuffer});
+  const gl::QuadProgram layerVariant{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(),
+                                     f.palette->filtered(), f.palette->orientBins(), angleBuffer};
+  Result<gl::ShaderProgram*> layerQuad = f.program(layerVariant);
   if (!layerQuad) return Error{layerQuad.error()};
   // Layers with no stroke direction are drawn unturned, by the same quad without orientation:
   // one lookup instead of two and no read of the angle buffer.
   Result<gl::ShaderProgram*> plainQuad = layerQuad;
   if (stroke != gl::StrokeSource::None) {
-    plainQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(),
-                                          f.palette->filtered(), 0, false});
+    gl::QuadProgram plainVariant = layerVariant;
+    plainVariant.orientBins = 0;
+    plainVariant.orientBuffer = false;
+    plainQuad = f.program(plainVariant);
     if (!plainQuad) return Error{plainQuad.error()};
   }
 
@@ -85,12 +87,14 @@ Status StencilPath::draw(FrameContext& f) {
   (*bgQuad)->use();
   f.palette->bindBackground(**bgQuad);
   const glm::ivec2 bufferOrigin = buffersFromMasks ? glm::ivec2(0) : glm::ivec2(vp.x, vp.y);
-  for (gl::ShaderProgram* quad : {*plainQuad, *layerQuad}) {
-    quad->use();
-    f.palette->bindLayers(*quad);
-    f.palette->bindPattern(*quad);
-    if (objectPattern) patternCoordinates_.bind(*quad, bufferOrigin);
-  }
+  auto bindLayerQuad = [&](gl::ShaderProgram& quad) {
+    quad.use();
+    f.palette->bindLayers(quad);
+    f.palette->bindPattern(quad);
+    if (objectPattern) patternCoordinates_.bind(quad, bufferOrigin);
+  };
+  if (*plainQuad != *layerQuad) bindLayerQuad(**plainQuad);
+  bindLayerQuad(**layerQuad);  // last: still in use for the orientation's uniforms below
   if (stroke != gl::StrokeSource::None) {
     f.palette->bindOrientation(**layerQuad);
     if (angleBuffer) strokeAngles_.bind(**layerQuad, bufferOrigin);
