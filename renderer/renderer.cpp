@@ -157,7 +157,7 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   auto place = [&](GpuPalette& p) {
     p.setPatternFrame(frame, scale, s.patternLinearFilter);
     p.setObjectPattern(s.pattern == PatternSpace::Object, pixelSize, eyeToObject);
-    p.setFrameOffset(glm::vec2(frameOffset_));
+    p.setPlacement(glm::vec2(frameOffset_), viewport);
   };
   if (palette_) place(*palette_);
   forEachExtraPalette(place);

@@ -47,6 +47,8 @@ layout(location = 6) in vec3 aDirection;  // the hatching direction field (zero:
 out vec2 vStrokeDirection;  // unit, on screen; zero: none
 #endif
 
+#include "pattern_vertex.glsl"
+
 #ifdef GROUND_SHADOW_MAP
 out vec2 vGroundXZ;  // where the ground's shadow texture is read (lighting.glsl)
 #endif
@@ -69,6 +71,7 @@ out float vControl;
 void main() {
   vec4 eye = uModelView * vec4(aPosition, 1.0);
   gl_Position = uProjection * eye;
+  setPatternCoordinate(gl_Position);
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
 #ifdef GROUND_SHADOW_MAP

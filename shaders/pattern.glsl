@@ -28,10 +28,17 @@ uniform vec2 uPatternLod;     // the mip level of the coarse and the fine octave
 // M (framePixel() - origin), its constant part folded on the CPU: four multiply-adds a pixel
 // instead of ten operations. In a shader as short as a path that reads one texel per pixel each
 // operation shows (bunny, 1920x1080, anchored / screen, vertex path: 1.08-1.10x -> 1.05-1.07x).
+// Stages whose vertex stage interpolates it (PATTERN_FROM_VERTEX: pattern_vertex.glsl) read it
+// instead: far cheaper per pixel.
+#if defined(PATTERN_FROM_VERTEX) && (defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED))
+in vec2 vPatternCoordinate;
+vec2 patternCoordinate() { return vPatternCoordinate * gl_FragCoord.w; }
+#else
 vec2 patternCoordinate() {
   vec2 p = gl_FragCoord.xy;
   return vec2(uPatternMatrix.x * p.x + (uPatternMatrix.z * p.y + uPatternOffset.x), uPatternMatrix.y * p.x + (uPatternMatrix.w * p.y + uPatternOffset.y));
 }
+#endif
 
 // Tiling in float (llvmpipe divides integers one lane at a time); min() guards the rounding
 // at the tile's far edge.

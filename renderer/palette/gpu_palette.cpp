@@ -253,8 +253,15 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
   const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
+  const glm::vec2 offset = m * (frameOffset_ - frame.translation);
   prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
-  prog.set("uPatternOffset", m * (frameOffset_ - frame.translation));
+  prog.set("uPatternOffset", offset);
+  // The same from clip positions (pattern_vertex.glsl): a pixel is S/2 (clip / w + 1) + O for
+  // the viewport's size S and corner O, so u w = M S/2 clip.xy + (M (S/2 + O) + offset) w.
+  const glm::vec2 half = glm::vec2(viewport_.z, viewport_.w) * 0.5f;
+  const glm::mat2 clip = m * glm::mat2(half.x, 0.0f, 0.0f, half.y);
+  prog.set("uPatternClipMatrix", glm::vec4(clip[0], clip[1]));
+  prog.set("uPatternClipOffset", m * (half + glm::vec2(viewport_.x, viewport_.y)) + offset);
   prog.set("uPatternFade", split.fade);
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
   if (objectPattern_) {

@@ -59,8 +59,12 @@ class GpuPalette {
     eyeToObject_ = eyeToObject;
   }
   // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
-  // continue across tiles.
-  void setFrameOffset(const glm::vec2& offset) { frameOffset_ = offset; }
+  // continue across tiles, and the viewport the frames are drawn in (x, y, width, height), so
+  // vertex stages can place the pattern from clip positions.
+  void setPlacement(const glm::vec2& frameOffset, const glm::ivec4& viewport) {
+    frameOffset_ = frameOffset;
+    viewport_ = viewport;
+  }
   gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
   // Mapped lookups filter bilinearly in linear light (asked for, and the layers share a size).
@@ -135,6 +139,7 @@ class GpuPalette {
   float pixelSize_ = 1.0f;
   glm::mat4 eyeToObject_{1.0f};
   glm::vec2 frameOffset_{0.0f};
+  glm::ivec4 viewport_{0, 0, 1, 1};
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;
