@@ -105,6 +105,8 @@ class Renderer {
   // The feature lines the frame shows for this camera (object space), for vector export.
   std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings) { return lines_.lines(camera, settings.lines); }
   const PatternTracker& patternTracker() const { return patterns_; }
+  // The main palette as the last frame drew it (null before one is set).
+  const GpuPalette* palette() const { return palette_.get(); }
   // The ambient occlusion bake of the current mesh: started the first time a frame asks for
   // occlusion, run for at most `occlusionBudgetMs` per frame (0: to the end in one frame, as
   // headless runs and tests want), uploaded when done. Null before it starts.

@@ -21,7 +21,6 @@
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
 // shadows block, or 1 - the occlusion factor; pixels where it is 0 are left alone.
 
-#define PATTERN_FROM_VERTEX  // mesh.vert hands on the mapped pattern's coordinate
 in vec3 vPosition;  // eye space (the object-space pattern reads them too: pattern.glsl)
 in vec3 vNormal;
 

@@ -1,7 +1,6 @@
 // Full-screen passes: the background (QUAD_BACKGROUND) and one palette layer (QUAD_LAYER,
 // alpha-blended by the fixed-function blender as in the original stencil algorithm).
 out vec4 fragColor;
-#define PATTERN_FROM_VERTEX  // fullscreen.vert hands on the mapped pattern's coordinate
 #include "pattern.glsl"
 
 #ifdef QUAD_BACKGROUND

@@ -64,6 +64,17 @@ void OrbitCamera::reset() {
   setYawPitchDistance(homeYaw_, homePitch_, homeDistance_);
 }
 
+float projectedSphereArea(const CameraMatrices& camera, float radius, const glm::ivec4& viewport) {
+  const float full = float(std::max(viewport.z, 0)) * float(std::max(viewport.w, 0));
+  // The clip w of the centre is its distance along the view for a perspective projection and 1
+  // for an orthographic one; the disc's radius in pixels is P[1][1] r / w of the half height.
+  const float w = (camera.projection * camera.view * glm::vec4(0, 0, 0, 1)).w;
+  if (!(w > radius) || !std::isfinite(w)) return full;
+  const float r = radius * std::abs(camera.projection[1][1]) * 0.5f * float(viewport.w) / w;
+  const float disc = 3.14159265f * r * r;
+  return std::isfinite(disc) ? std::min(disc, full) : full;
+}
+
 CameraMatrices OrbitCamera::matrices(float aspect) const {
   CameraMatrices m;
   if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;

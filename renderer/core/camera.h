@@ -51,4 +51,10 @@ class OrbitCamera {
   float homeYaw_ = 0.0f, homePitch_ = 0.0f, homeDistance_ = 3.0f;
 };
 
+// Pixels of `viewport` the disc of a sphere of `radius` about the model's origin covers on
+// screen (clipped to the viewport's area; the whole viewport when the eye is inside it or the
+// projection is degenerate): a bound on what the model covers, for choosing per-vertex or
+// per-pixel work by how many pixels a triangle spans.
+float projectedSphereArea(const CameraMatrices& camera, float radius, const glm::ivec4& viewport);
+
 }  // namespace npr

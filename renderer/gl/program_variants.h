@@ -33,7 +33,10 @@ struct PaletteVariant {
   bool filtered = false;         // mapped patterns filtered bilinearly in linear light (pattern.glsl)
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
   bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
-  auto key() const { return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins, entryAngleShared); }
+  bool patternPerVertex = false;  // an anchored or scaled pattern's coordinate interpolated from the vertices
+  auto key() const {
+    return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins, entryAngleShared, patternPerVertex);
+  }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).

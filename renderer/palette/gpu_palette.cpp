@@ -165,6 +165,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.filtered = filtered();
   v.orientBins = orientBins();
   v.entryAngleShared = v.orientBins > 0 && sharedAngle_.has_value();
+  v.patternPerVertex = patternPerVertex_ && (v.pattern == gl::PatternMapping::Anchored || v.pattern == gl::PatternMapping::Scaled);
   return v;
 }
 

@@ -59,11 +59,13 @@ class GpuPalette {
     eyeToObject_ = eyeToObject;
   }
   // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
-  // continue across tiles, and the viewport the frames are drawn in (x, y, width, height), so
-  // vertex stages can place the pattern from clip positions.
-  void setPlacement(const glm::vec2& frameOffset, const glm::ivec4& viewport) {
+  // continue across tiles; the viewport the frames are drawn in (x, y, width, height), so
+  // vertex stages can place the pattern from clip positions; and whether mesh passes do
+  // (pattern_vertex.glsl: where triangles span a few pixels or more) or each pixel does.
+  void setPlacement(const glm::vec2& frameOffset, const glm::ivec4& viewport, bool perVertex) {
     frameOffset_ = frameOffset;
     viewport_ = viewport;
+    patternPerVertex_ = perVertex;
   }
   gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
@@ -95,6 +97,7 @@ class GpuPalette {
     v.filtered = false;
     v.orientBins = 0;
     v.entryAngleShared = false;
+    v.patternPerVertex = false;
     return v;
   }
   // The stroke source's uniforms (orientation.glsl): fixed angle, light, viewport size.
@@ -140,6 +143,7 @@ class GpuPalette {
   glm::mat4 eyeToObject_{1.0f};
   glm::vec2 frameOffset_{0.0f};
   glm::ivec4 viewport_{0, 0, 1, 1};
+  bool patternPerVertex_ = false;
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;

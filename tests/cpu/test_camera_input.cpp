@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <filesystem>
 
 #include "app/camera_animation.h"
@@ -72,6 +73,25 @@ TEST(Camera, FramesTinyAndHugeModels) {
   OrbitCamera bad;
   bad.frame(std::nanf(""));
   EXPECT_TRUE(std::isfinite(bad.distance()));
+}
+
+// What chooses per-vertex or per-pixel pattern placement: a unit sphere 10 units down a 90
+// degree view spans 10 pixels of a 200-pixel-high viewport's radius; orthographic views use w
+// = 1; the eye inside the sphere, or a disc larger than the viewport, gives the viewport's area.
+TEST(Camera, ProjectedSphereAreaIsTheDiscWithinTheViewport) {
+  CameraMatrices m;
+  m.view = glm::lookAt(glm::vec3(0, 0, 10), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  m.projection = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
+  EXPECT_NEAR(projectedSphereArea(m, 1.0f, {0, 0, 200, 200}), 3.14159265f * 100.0f, 0.05f);
+  EXPECT_NEAR(projectedSphereArea(m, 1.0f, {50, 30, 300, 200}), 3.14159265f * 100.0f, 0.05f);  // the corner does not matter
+  EXPECT_FLOAT_EQ(projectedSphereArea(m, 20.0f, {0, 0, 200, 200}), 40000.0f);                   // the eye inside
+  EXPECT_NEAR(projectedSphereArea(m, 9.0f, {0, 0, 200, 200}), 3.14159265f * 8100.0f, 1.0f);    // a disc within
+  m.projection = glm::perspective(glm::radians(30.0f), 1.0f, 0.1f, 100.0f);
+  EXPECT_FLOAT_EQ(projectedSphereArea(m, 4.0f, {0, 0, 200, 200}), 40000.0f);                    // a disc past the edges
+  m.projection = glm::ortho(-4.0f, 4.0f, -4.0f, 4.0f, 0.1f, 100.0f);
+  EXPECT_NEAR(projectedSphereArea(m, 0.5f, {0, 0, 200, 200}), 3.14159265f * 12.5f * 12.5f, 0.05f);
+  m.projection = glm::mat4(0.0f);  // degenerate: no w
+  EXPECT_FLOAT_EQ(projectedSphereArea(m, 1.0f, {0, 0, 200, 100}), 20000.0f);
 }
 
 TEST(Camera, ResetReturnsHome) {

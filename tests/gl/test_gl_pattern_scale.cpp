@@ -79,40 +79,44 @@ TEST_F(Fixture, HalfScaleShowsTheNextMipLevelTexelForPixel) {
 // A view drawn into part of the framebuffer (the viewer's split view draws two side by side):
 // a scaled pattern still tiles from the window's corner, so the mesh passes, which place it from
 // clip positions (pattern_vertex.glsl), must add the viewport's corner. Checked texel for pixel
-// at half scale (level 1, one texel a pixel) and at scale 2 (level 0, one texel per 2x2 pixels).
+// at half scale (level 1, one texel a pixel) and at scale 2 (level 0, one texel per 2x2 pixels),
+// on a square of two triangles (placed per vertex) and of 45,000 (under a pixel each: per pixel).
 TEST_F(Fixture, ScaledPatternTilesFromTheWindowCornerInAViewportAwayFromIt) {
-  const Mesh sq = test::square();
-  r->setMesh(&sq);
-  const Palette p = noisePalette();
-  ASSERT_TRUE(r->setPalette(p));
-  const int ox = 37, oy = 21, w = 160, h = 120, fw = ox + w + 5, fh = oy + h + 9;
-  OrbitCamera cam(0.0f, 0.0f, 3.0f);
-  cam.frame(0.5f);
-  auto target = OffscreenTarget::create(fw, fh);
-  ASSERT_TRUE(target) << target.error();
-  for (RenderPath path : {RenderPath::Pixel, RenderPath::Triangle, RenderPath::Stencil})
-    for (float scale : {0.5f, 2.0f}) {
-      RenderSettings s;
-      s.path = path;
-      s.patternScale = scale;
-      target->bind();
-      ASSERT_TRUE(r->render(cam.matrices(float(w) / h), s, {ox, oy, w, h}));
-      const ImageRGBA8 img = target->readRGBA8();
-      const ImageRGBA8& level = scale < 1.0f ? p.entries[0].mips[0] : p.entries[0].image;
-      const int n = level.width;
-      int same = 0, total = 0;
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-          const int wx = ox + x, wy = oy + y;  // window pixel, GL rows (bottom first)
-          const int gx = (scale < 1.0f ? wx : wx / 2) % n, gy = (scale < 1.0f ? wy : wy / 2) % n;
-          const std::uint8_t* a = &img.pixels[(size_t(fh - 1 - wy) * size_t(fw) + size_t(wx)) * 4];
-          const std::uint8_t* b = &level.pixels[(size_t(n - 1 - gy) * size_t(n) + size_t(gx)) * 4];
-          ++total;
-          same += std::abs(a[0] - b[0]) <= 1 && std::abs(a[1] - b[1]) <= 1 && std::abs(a[2] - b[2]) <= 1;
-        }
-      EXPECT_GT(same, total * 99 / 100) << pathInfo(path).name << " at scale " << scale << ": " << same << " of " << total
-                                        << " pixels show the window pixel's texel";
-    }
+  for (int cells : {1, 150}) {
+    const Mesh sq = test::square(cells);
+    r->setMesh(&sq);
+    const Palette p = noisePalette();
+    ASSERT_TRUE(r->setPalette(p));
+    const int ox = 37, oy = 21, w = 160, h = 120, fw = ox + w + 5, fh = oy + h + 9;
+    OrbitCamera cam(0.0f, 0.0f, 3.0f);
+    cam.frame(0.5f);
+    auto target = OffscreenTarget::create(fw, fh);
+    ASSERT_TRUE(target) << target.error();
+    for (RenderPath path : {RenderPath::Pixel, RenderPath::Triangle, RenderPath::Stencil})
+      for (float scale : {0.5f, 2.0f}) {
+        RenderSettings s;
+        s.path = path;
+        s.patternScale = scale;
+        target->bind();
+        ASSERT_TRUE(r->render(cam.matrices(float(w) / h), s, {ox, oy, w, h}));
+        EXPECT_EQ(r->palette()->variant(MatchMode::Intensity).patternPerVertex, cells == 1) << cells << " cells";
+        const ImageRGBA8 img = target->readRGBA8();
+        const ImageRGBA8& level = scale < 1.0f ? p.entries[0].mips[0] : p.entries[0].image;
+        const int n = level.width;
+        int same = 0, total = 0;
+        for (int y = 0; y < h; ++y)
+          for (int x = 0; x < w; ++x) {
+            const int wx = ox + x, wy = oy + y;  // window pixel, GL rows (bottom first)
+            const int gx = (scale < 1.0f ? wx : wx / 2) % n, gy = (scale < 1.0f ? wy : wy / 2) % n;
+            const std::uint8_t* a = &img.pixels[(size_t(fh - 1 - wy) * size_t(fw) + size_t(wx)) * 4];
+            const std::uint8_t* b = &level.pixels[(size_t(n - 1 - gy) * size_t(n) + size_t(gx)) * 4];
+            ++total;
+            same += std::abs(a[0] - b[0]) <= 1 && std::abs(a[1] - b[1]) <= 1 && std::abs(a[2] - b[2]) <= 1;
+          }
+        EXPECT_GT(same, total * 99 / 100) << cells << " cells, " << pathInfo(path).name << " at scale " << scale << ": " << same << " of "
+                                          << total << " pixels show the window pixel's texel";
+      }
+  }
 }
 
 // Mean linear luminance of an image.

@@ -28,10 +28,15 @@ std::string TempDir::write(const std::string& name, const std::string& content) 
   return p.string();
 }
 
-Mesh square() {
+Mesh square(int n) {
   Mesh m;
-  m.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
-  m.indices = {0, 1, 2, 0, 2, 3};
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.emplace_back(2.0f * float(i) / float(n) - 1.0f, 2.0f * float(j) / float(n) - 1.0f, 0.0f);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = std::uint32_t(j * (n + 1) + i), b = a + 1, c = a + std::uint32_t(n) + 2, d = a + std::uint32_t(n) + 1;
+      for (std::uint32_t v : {a, b, c, a, c, d}) m.indices.push_back(v);
+    }
   finalizeMesh(m);
   return m;
 }

@@ -30,7 +30,7 @@ using npr::icosphere;
 using npr::torus;
 // Writes a mesh as OBJ (what the loader benchmark and large-mesh tests read).
 void writeObj(const Mesh& m, const std::string& path);
-// A 2 x 2 square in the z = 0 plane facing +z (two triangles).
-Mesh square();
+// A 2 x 2 square in the z = 0 plane facing +z, of n x n cells (two triangles each).
+Mesh square(int n = 1);
 
 }  // namespace npr::test
