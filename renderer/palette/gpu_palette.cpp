@@ -211,6 +211,7 @@ void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
 }
 
 namespace {
+constexpr float kTexelShift = 0.0371f;
 // The anchored pattern's octave split: fract(log2 scale) and how far the dissolve from the
 // coarse octave to the fine one has gone. The dissolve runs over the middle half of the octave
 // only: in the outer quarters one octave shows alone (marks within 2^0.25 of the pattern
@@ -254,7 +255,11 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
   const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
-  const glm::vec2 offset = m * (frameOffset_ - frame.translation);
+  // Shifted by a fixed fraction of a texel: at a rational scale pixel centres otherwise land
+  // exactly on texel edges (at 1.5 every third column), where any rounding picks either texel
+  // and a poster's tiles, whose pixels are mapped from other offsets, could differ from one
+  // frame. 0.0371 lies off the multiples of 1 / 2a that scales a / b put centres at, for a < 27.
+  const glm::vec2 offset = m * (frameOffset_ - frame.translation) + glm::vec2(kTexelShift);
   prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
   prog.set("uPatternOffset", offset);
   // The same from clip positions (pattern_vertex.glsl): a pixel is S/2 (clip / w + 1) + O for

@@ -206,10 +206,9 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
 // normals): on a tilted flat square, whose vertex normals are its face's, every path draws the
 // pixel path's picture (one entry: only where the pattern sits shows).
 TEST_F(Fixture, FaceNormalsPlaceTheObjectPatternAsVertexNormalsDoOnAFlatSquare) {
-  Mesh sq;
+  Mesh sq = test::square();
   const glm::mat3 tilt = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(1, 0, 0)) * glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)));
-  for (const glm::vec3& p : test::square().positions) sq.positions.push_back(tilt * p);
-  sq.indices = {0, 1, 2, 0, 2, 3};
+  for (glm::vec3& p : sq.positions) p = tilt * p;
   finalizeMesh(sq);
   r->setMesh(&sq);
   Palette one = test::shippedPalette("crosshatch");
