@@ -255,11 +255,12 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
   const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
-  // Shifted by a fixed fraction of a texel: at a rational scale pixel centres otherwise land
-  // exactly on texel edges (at 1.5 every third column), where any rounding picks either texel
-  // and a poster's tiles, whose pixels are mapped from other offsets, could differ from one
-  // frame. 0.0371 lies off the multiples of 1 / 2a that scales a / b put centres at, for a < 27.
-  const glm::vec2 offset = m * (frameOffset_ - frame.translation) + glm::vec2(kTexelShift);
+  // Nearest lookups shifted by a fixed fraction of a texel: at a rational scale pixel centres
+  // otherwise land exactly on texel edges (at 1.5 every third column), where any rounding picks
+  // either texel and a poster's tiles, whose pixels are mapped from other offsets, could differ
+  // from one frame. 0.0371 lies off the multiples of 1 / 2a that scales a / b put centres at, for
+  // a < 27. Filtered lookups change continuously there: unshifted, texel centres stay exact.
+  const glm::vec2 offset = m * (frameOffset_ - frame.translation) + glm::vec2(filtered() ? 0.0f : kTexelShift);
   prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
   prog.set("uPatternOffset", offset);
   // The same from clip positions (pattern_vertex.glsl): a pixel is S/2 (clip / w + 1) + O for
