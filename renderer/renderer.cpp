@@ -20,7 +20,7 @@ namespace {
 // Screen pixels per front-facing triangle (the model's bounding disc over half its triangles)
 // from which mapped patterns are placed per vertex. Framed at 1280x720, triangle path, anchored,
 // orbiting, per vertex against per pixel: icosphere-7 (2.0 pixels) 4-9% faster, torus-500k (1.3)
-// even, the 871K torus (0.75) about 5% slower, the bunny (178) 6-10% faster.
+// 0-5% slower; in bench_frames the 871K torus (0.75) 5-10% slower, the bunny (178) 7-9% faster.
 constexpr float kPatternPerVertexPixels = 1.5f;
 }  // namespace
 
