@@ -179,21 +179,20 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   forEachExtraPalette(place);
 }
 
-void Renderer::prepareOrientation(const RenderSettings& s, const glm::ivec4& viewport) {
+void Renderer::prepareOrientation(const RenderSettings& s) {
   glm::vec4 light(0, 0, 1, 0);
   for (int i = 0; i < kMaxLights; ++i)
     if (lighting_.light(i).enabled) {
       light = lighting_.light(i).position;
       break;
     }
-  const glm::vec2 size(viewport.z, viewport.w);
   bool turned = false;
   if (palette_) {
-    palette_->setOrientation(s.orient, light, size);
+    palette_->setOrientation(s.orient, light);
     turned = palette_->oriented();
   }
   forEachExtraPalette([&](GpuPalette& p) {
-    p.setOrientation(s.orient, light, size);
+    p.setOrientation(s.orient, light);
     turned = turned || p.oriented();
   });
   if (turned && s.orient.source == OrientSource::Curvature) ensureDirectionField();
@@ -334,7 +333,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
   preparePattern(camera, s, viewport);
-  prepareOrientation(s, viewport);
+  prepareOrientation(s);
   Status shadowStatus = prepareShadows(camera, s);
   if (shadowStatus) shadowStatus = prepareOcclusion(s);
   timer_.begin();
@@ -375,7 +374,7 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
   preparePattern(camera, s, viewport);
-  prepareOrientation(s, viewport);
+  prepareOrientation(s);
   clearViewport(viewport);
   FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_};
   const Status result = palette_->oriented() ? drawStrokeAngles(frame) : okStatus();

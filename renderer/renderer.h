@@ -189,11 +189,13 @@ class Renderer {
   std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
   LinePass lines_;
   PatternTracker patterns_;
-  // Gives every palette this frame's pattern frame (anchored) or none (screen).
+  // Gives every palette this frame's pattern frame (anchored) or none (screen) and where it is
+  // drawn (the viewport, a poster tile's offset, per-vertex or per-pixel placement); the
+  // orientation's screen directions use the same viewport, so it runs before prepareOrientation.
   void preparePattern(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
   // Gives every palette this frame's hatching orientation; computes the direction field when
   // a palette turns along the curvature and the mesh has none yet.
-  void prepareOrientation(const RenderSettings& settings, const glm::ivec4& viewport);
+  void prepareOrientation(const RenderSettings& settings);
   std::optional<DirectionField> field_;
   // Computes the direction field of the current mesh if it has none yet (and uploads it).
   void ensureDirectionField();

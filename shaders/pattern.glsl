@@ -30,7 +30,7 @@ uniform vec2 uPatternLod;     // the mip level of the coarse and the fine octave
 // operation shows (bunny, 1920x1080, anchored / screen, vertex path: 1.08-1.10x -> 1.05-1.07x).
 // Stages whose vertex stage interpolates it (PATTERN_FROM_VERTEX: pattern_vertex.glsl) read it
 // instead: far cheaper per pixel.
-#if defined(PATTERN_FROM_VERTEX) && (defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED))
+#ifdef PATTERN_FROM_VERTEX
 in vec2 vPatternCoordinate;
 vec2 patternCoordinate() { return vPatternCoordinate * gl_FragCoord.w; }
 #else

@@ -8,7 +8,7 @@
 // the stencil path's full-screen layer quads always interpolate.
 #ifndef PATTERN_VERTEX_GLSL
 #define PATTERN_VERTEX_GLSL
-#if defined(PATTERN_FROM_VERTEX) && (defined(PATTERN_ANCHORED) || defined(PATTERN_SCALED))
+#ifdef PATTERN_FROM_VERTEX  // only with PATTERN_ANCHORED or PATTERN_SCALED
 uniform vec4 uPatternClipMatrix;  // column-major 2x2: clip (x, y) to pattern texels times w
 uniform vec2 uPatternClipOffset;  // clip w to pattern texels times w
 out vec2 vPatternCoordinate;      // pattern texels times clip w

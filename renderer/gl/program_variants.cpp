@@ -20,7 +20,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
   if (p.pattern != PatternMapping::Screen) d.push_back(patternDefine(p.pattern));
   if (p.filtered) d.push_back("PATTERN_FILTERED");
-  if (p.patternPerVertex && (p.pattern == PatternMapping::Anchored || p.pattern == PatternMapping::Scaled)) d.push_back("PATTERN_FROM_VERTEX");
+  if (p.patternPerVertex && mapsScreenPosition(p.pattern)) d.push_back("PATTERN_FROM_VERTEX");
   if (p.orientBins > 0) {
     d.push_back("ORIENTED");
     d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
@@ -89,7 +89,7 @@ struct SourceOf {
     if (q.backgroundImage) s.defines.push_back("BACKGROUND_IMAGE");
     if (q.pattern != PatternMapping::Screen) s.defines.push_back(patternDefine(q.pattern));
     // Three vertices for the whole screen: interpolating the pattern's coordinate always pays.
-    if (q.pattern == PatternMapping::Anchored || q.pattern == PatternMapping::Scaled) s.defines.push_back("PATTERN_FROM_VERTEX");
+    if (mapsScreenPosition(q.pattern)) s.defines.push_back("PATTERN_FROM_VERTEX");
     // Full-screen quads know nothing of the surface: they read the object-space pattern's
     // coordinates from the buffer the stencil path drew.
     if (q.pattern == PatternMapping::Object) s.defines.push_back("PATTERN_OBJECT_BUFFER");

@@ -21,6 +21,8 @@ namespace npr::gl {
 // through a fixed scale (--pattern-scale), through the anchored pattern's frame, or from the
 // surface's object-space position (triplanar; full-screen quads read it from a buffer).
 enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored, Object };
+// Mappings of the screen position (a similarity): the vertex stage can hand their coordinate on.
+inline bool mapsScreenPosition(PatternMapping m) { return m == PatternMapping::Scaled || m == PatternMapping::Anchored; }
 
 // What palette.glsl is compiled for: the palette's layout and the match mode.
 struct PaletteVariant {

@@ -165,15 +165,14 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.filtered = filtered();
   v.orientBins = orientBins();
   v.entryAngleShared = v.orientBins > 0 && sharedAngle_.has_value();
-  v.patternPerVertex = patternPerVertex_ && (v.pattern == gl::PatternMapping::Anchored || v.pattern == gl::PatternMapping::Scaled);
+  v.patternPerVertex = patternPerVertex_ && gl::mapsScreenPosition(v.pattern);
   return v;
 }
 
-void GpuPalette::setOrientation(const OrientSettings& orient, const glm::vec4& lightEye, const glm::vec2& viewportSize) {
+void GpuPalette::setOrientation(const OrientSettings& orient, const glm::vec4& lightEye) {
   orient_ = orient;
   orient_.bins = std::clamp(orient.bins, OrientSettings::kMinBins, OrientSettings::kMaxBins);
   orientLight_ = lightEye;
-  viewportSize_ = viewportSize;
 }
 
 gl::StrokeSource GpuPalette::strokeSource() const {
@@ -192,9 +191,9 @@ void GpuPalette::bindStrokeSource(gl::ShaderProgram& prog) const {
     case gl::StrokeSource::Fixed: prog.set("uOrientFixed", float(orient_.degrees * M_PI / 180.0)); break;
     case gl::StrokeSource::Light:
       prog.set("uOrientLight", orientLight_);
-      prog.set("uViewportSize", viewportSize_);
+      prog.set("uViewportSize", glm::vec2(viewport_.z, viewport_.w));
       break;
-    case gl::StrokeSource::Field: prog.set("uViewportSize", viewportSize_); break;
+    case gl::StrokeSource::Field: prog.set("uViewportSize", glm::vec2(viewport_.z, viewport_.w)); break;
     case gl::StrokeSource::None: break;
   }
 }
@@ -211,7 +210,14 @@ void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
 }
 
 namespace {
+// Nearest lookups of mapped patterns are shifted by a fixed fraction of a texel: at a rational
+// scale pixel centres otherwise land exactly on texel edges (at 1.5 every third column), where
+// any rounding picks either texel and a poster's tiles, whose pixels are mapped from other
+// offsets, could differ from one frame. 0.0371 lies off the multiples of 1 / 2a that scales a / b
+// put centres at, for a < 27. Filtered lookups change continuously there: unshifted, texel
+// centres stay exact.
 constexpr float kTexelShift = 0.0371f;
+
 // The anchored pattern's octave split: fract(log2 scale) and how far the dissolve from the
 // coarse octave to the fine one has gone. The dissolve runs over the middle half of the octave
 // only: in the outer quarters one octave shows alone (marks within 2^0.25 of the pattern
@@ -255,11 +261,6 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
   const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
-  // Nearest lookups shifted by a fixed fraction of a texel: at a rational scale pixel centres
-  // otherwise land exactly on texel edges (at 1.5 every third column), where any rounding picks
-  // either texel and a poster's tiles, whose pixels are mapped from other offsets, could differ
-  // from one frame. 0.0371 lies off the multiples of 1 / 2a that scales a / b put centres at, for
-  // a < 27. Filtered lookups change continuously there: unshifted, texel centres stay exact.
   const glm::vec2 offset = m * (frameOffset_ - frame.translation) + glm::vec2(filtered() ? 0.0f : kTexelShift);
   prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
   prog.set("uPatternOffset", offset);

@@ -77,9 +77,9 @@ class GpuPalette {
   // NEAREST_MIPMAP rule), clamped to the levels there are.
   int lodFor(float texelsPerPixel) const;
 
-  // Hatching orientation for the frames drawn next: where the stroke angle comes from, the
-  // first enabled light (eye space) for OrientSource::Light, and the viewport's size.
-  void setOrientation(const OrientSettings& orient, const glm::vec4& lightEye, const glm::vec2& viewportSize);
+  // Hatching orientation for the frames drawn next: where the stroke angle comes from and the
+  // first enabled light (eye space) for OrientSource::Light (the viewport is setPlacement's).
+  void setOrientation(const OrientSettings& orient, const glm::vec4& lightEye);
   // Whether lookups are turned: an orientation is set and some entry has a dominant direction
   // (a stipple palette costs nothing under --orient).
   bool oriented() const { return orient_.source != OrientSource::None && anyOriented_; }
@@ -153,7 +153,6 @@ class GpuPalette {
   std::vector<int> turnedEntryBits_;
   OrientSettings orient_;
   glm::vec4 orientLight_{0, 0, 1, 0};
-  glm::vec2 viewportSize_{1.0f};
 };
 
 }  // namespace npr
