@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include "app/camera_animation.h"
 #include "app/line_export.h"
@@ -44,6 +45,8 @@ int runWindowViewer(const Options& o) {
   ImGuiSession imgui(v.window->handle());
 
   GLFWwindow* w = v.window->handle();
+  std::optional<OffscreenTarget> scene;  // what the views draw into, the window's size
+  glm::ivec2 sceneSize(0);
   auto last = std::chrono::steady_clock::now();
   const auto start = last;
   for (int frame = 0; !glfwWindowShouldClose(w) && !v.quit; ++frame) {
@@ -53,7 +56,18 @@ int runWindowViewer(const Options& o) {
     imgui.endFrame();
 
     const glm::ivec2 fb = v.window->framebufferSize();
-    bindWindowFramebuffer();
+    // The scene is drawn offscreen and copied into the window: passes that share the bound
+    // framebuffer's depth and stencil (the stencil path's masks writing its per-pixel buffers
+    // as they mark) cannot share the window's own, and would draw the mesh once more each.
+    if (fb.x > 0 && fb.y > 0 && fb != sceneSize) {
+      sceneSize = fb;
+      Result<OffscreenTarget> target = OffscreenTarget::create(fb.x, fb.y);
+      scene.reset();
+      if (target) scene = std::move(*target);
+      else v.state.note("drawing straight into the window: " + target.error());
+    }
+    if (scene) scene->bind();
+    else bindWindowFramebuffer();
     const CameraMatrices cam = v.state.camera.matrices(v.aspect());
     if (Status st = v.state.applyLight(*v.renderer, cam); !st) v.state.note("light not moved: " + st.error());
     const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);
@@ -72,6 +86,7 @@ int runWindowViewer(const Options& o) {
     } else {
       drawView(v.state.settings, {0, 0, fb.x, fb.y});
     }
+    if (scene) scene->copyToWindow();
     // Vector export of what this frame shows (the lines of the full view, even when split).
     const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
     if (v.svgRequested || (lastFrame && !o.svg.empty())) {

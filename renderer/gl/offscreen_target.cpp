@@ -49,6 +49,14 @@ void OffscreenTarget::clear(const glm::vec4& colour) const {
   glClear(GL_COLOR_BUFFER_BIT);
 }
 
+void OffscreenTarget::copyToWindow() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glDisable(GL_SCISSOR_TEST);  // a blit is clipped by it (a pass may leave it on)
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 namespace {
 template <class T>
 void flipRows(std::vector<T>& px, int w, int h) {

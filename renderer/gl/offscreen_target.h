@@ -1,5 +1,6 @@
 // A framebuffer object with a colour attachment and a depth24/stencil8 attachment: what
-// headless rendering draws into and reads back from.
+// headless rendering draws into and reads back from, and what the window draws its scene
+// into (passes that share a framebuffer's depth and stencil cannot share the window's).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -21,6 +22,9 @@ class OffscreenTarget {
   int height() const { return height_; }
   ImageRGBA8 readRGBA8() const;
   ImageRGBA32F readRGBA32F() const;
+  // Copies the colour to the window's framebuffer at its corner, pixel for pixel, and leaves
+  // the window's framebuffer bound: how the viewer shows a scene it drew here.
+  void copyToWindow() const;
 
  private:
   int width_ = 0, height_ = 0;
