@@ -30,6 +30,7 @@ void drawOverlay(Viewer& v) {
   ImGui::Text("%zu triangles, %d non-empty buckets", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets);
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
+  if (st.surfaceBuffers) ImGui::Text("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
   ImGui::Separator();
   ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
   // Styles: a whole look at once (app/style_file.h); a style that fails changes nothing.

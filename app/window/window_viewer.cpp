@@ -56,10 +56,16 @@ int runWindowViewer(const Options& o) {
     imgui.endFrame();
 
     const glm::ivec2 fb = v.window->framebufferSize();
-    // The scene is drawn offscreen and copied into the window: passes that share the bound
-    // framebuffer's depth and stencil (the stencil path's masks writing its per-pixel buffers
-    // as they mark) cannot share the window's own, and would draw the mesh once more each.
-    if (fb.x > 0 && fb.y > 0 && fb != sceneSize) {
+    // Where the last frame's passes wanted to share the framebuffer's depth and stencil (the
+    // stencil path's masks writing its per-pixel buffers as they mark), which the window's own
+    // cannot (they would draw the mesh once more for each buffer), the scene is drawn in a
+    // framebuffer of ours and copied into the window; elsewhere straight into the window, as
+    // the copy costs a frame a few milliseconds.
+    const bool offscreen = v.renderer->stats().surfaceBuffers > 0;
+    if (!offscreen) {
+      scene.reset();
+      sceneSize = glm::ivec2(0);
+    } else if (fb.x > 0 && fb.y > 0 && fb != sceneSize) {
       sceneSize = fb;
       Result<OffscreenTarget> target = OffscreenTarget::create(fb.x, fb.y);
       scene.reset();

@@ -21,6 +21,11 @@ struct FrameStats {
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
   int shadowLayers = 0;        // shadow map layers in use (one per light, six for a point light among the casters)
+  // The stencil path's per-pixel surface buffers (stroke angles, object pattern coordinates):
+  // how many the frame needed, and how many of those took a geometry pass of their own because
+  // the bound framebuffer's depth and stencil could not be shared (the window's own cannot).
+  int surfaceBuffers = 0;
+  int surfaceBufferPasses = 0;
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

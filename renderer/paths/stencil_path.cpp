@@ -73,7 +73,9 @@ Status StencilPath::draw(FrameContext& f) {
     for (const glm::ivec4& b : f.triangles.shading().bucketBounds)
       if (b.z > b.x && b.w > b.y) meshRect = glm::ivec4(glm::min(glm::ivec2(meshRect), glm::ivec2(b)), glm::max(glm::ivec2(meshRect.z, meshRect.w), glm::ivec2(b.z, b.w)));
   }
+  f.stats.surfaceBuffers += int(angleBuffer) + int(objectPattern);
   if (!buffersFromMasks) {
+    f.stats.surfaceBufferPasses += int(angleBuffer) + int(objectPattern);
     if (angleBuffer)
       if (Status st = strokeAngles_.draw(f, meshRect); !st) return st;
     if (objectPattern)

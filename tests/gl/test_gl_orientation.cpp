@@ -253,6 +253,32 @@ TEST_F(Orientation, DirectionFieldIsComputedOncePerMesh) {
   r->setMesh(&mesh);
 }
 
+TEST_F(Orientation, StencilMasksWriteTheSurfaceBuffersInAFramebufferTheyShare) {
+  // In a framebuffer of ours (what the window draws into where a frame needs these buffers) the
+  // masks write the stroke angles and the object pattern's coordinates as they mark: no pass of
+  // their own. Drawn by passes of their own instead (masks bucket by bucket) the frame is the same.
+  RenderSettings s;
+  s.path = RenderPath::Stencil;
+  s.orient.source = OrientSource::Curvature;
+  s.pattern = PatternSpace::Object;
+  const ImageRGBA8 fromMasks = test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 2);
+  EXPECT_EQ(r->stats().surfaceBufferPasses, 0);
+  s.stencilMasksFirst = false;
+  const ImageRGBA8 fromPasses = test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 2);
+  EXPECT_EQ(r->stats().surfaceBufferPasses, 2);
+  EXPECT_EQ(test::countDiffering(fromMasks, fromPasses), 0);
+  s.pattern = PatternSpace::Screen;
+  s.stencilMasksFirst = true;
+  (void)test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 1);
+  EXPECT_EQ(r->stats().surfaceBufferPasses, 0);
+  s.orient.source = OrientSource::None;
+  (void)test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 0);
+}
+
 TEST_F(Orientation, StepsAreStableUnderASmallOrbit) {
   // One degree of orbit moves each surface point's stroke angle a little: its step changes by at
   // most one (no flips between the principal directions).
