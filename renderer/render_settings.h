@@ -67,10 +67,15 @@ inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
 // the turn is quantised to `bins` steps over 180 degrees and the two nearest are blended, so
 // strokes stay straight within a step.
 enum class OrientSource { None, Curvature, Light, Fixed };
+// Where the triangle, vertex and pixel paths turn their lookups: in the mesh pass, or once per
+// pixel after it (passes/turn_resolve_pass.h); Auto: after it where the model's triangles
+// span under Renderer's threshold of pixels each (dense meshes), in the mesh pass elsewhere.
+enum class TurnPlacement { Auto, InMeshPass, Resolved };
 struct OrientSettings {
   OrientSource source = OrientSource::None;
   float degrees = 0.0f;  // Fixed: counter-clockwise from the screen's x axis
   int bins = 8;          // 2..64
+  TurnPlacement placement = TurnPlacement::Auto;
   static constexpr int kMinBins = 2, kMaxBins = 64;
   bool operator==(const OrientSettings& o) const { return source == o.source && degrees == o.degrees && bins == o.bins; }
 };

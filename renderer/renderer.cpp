@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
@@ -22,6 +23,9 @@ namespace {
 // orbiting, per vertex against per pixel: icosphere-7 (2.0 pixels) 4-9% faster, torus-500k (1.3)
 // 0-5% slower; in bench_frames the 871K torus (0.75) 5-10% slower, the bunny (178) 7-9% faster.
 constexpr float kPatternPerVertexPixels = 1.5f;
+// Below this many pixels per front-facing triangle the triangle, vertex and pixel paths turn
+// their lookups once per pixel after the mesh pass (passes/turn_resolve_pass.h).
+constexpr float kResolveTurnPixels = 4.0f;
 }  // namespace
 
 Result<std::unique_ptr<Renderer>> Renderer::create() {
@@ -166,9 +170,11 @@ void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings
   // block of pixels per triangle anyway and a varying costs each triangle's set-up more than the
   // arithmetic it saves (pattern_vertex.glsl has the figures).
   bool perVertex = true;
+  pixelsPerFrontTriangle_ = std::numeric_limits<float>::infinity();
   if (mesh_ && !mesh_->indices.empty()) {
     const float frontTriangles = 0.5f * float(mesh_->indices.size() / 3);
-    perVertex = projectedSphereArea(camera, mesh_->radius, viewport) >= kPatternPerVertexPixels * frontTriangles;
+    pixelsPerFrontTriangle_ = projectedSphereArea(camera, mesh_->radius, viewport) / frontTriangles;
+    perVertex = pixelsPerFrontTriangle_ >= kPatternPerVertexPixels;
   }
   auto place = [&](GpuPalette& p) {
     p.setPatternFrame(frame, scale, s.patternLinearFilter);
@@ -287,6 +293,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     if (s.materials) materials_.update(*mesh_, lighting_, stats_);
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
+    frame.turnResolve = turnResolveFor(s, frame.palette, output);
     if (Status st = drawPart(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
@@ -297,6 +304,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     const GpuPalette* palette = g->palette ? g->palette : palette_.get();
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
+    frame.turnResolve = turnResolveFor(s, palette, output);
     if (Status st = drawPart(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
@@ -314,6 +322,17 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
     if (groundShadows_.ready()) frame.groundShadows = &groundShadows_;
   }
   return drawPart(frame, s.path);
+}
+
+TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPalette* palette, gl::MeshOutput output) {
+  const bool onePerPixel = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel;
+  // The object pattern's coordinate comes from the surface, which the resolve cannot see.
+  if (!onePerPixel || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
+    return nullptr;
+  const TurnPlacement where = s.orient.placement;
+  if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !(pixelsPerFrontTriangle_ < kResolveTurnPixels))) return nullptr;
+  ++stats_.surfaceBuffers;
+  return &turnResolve_;
 }
 
 Status Renderer::drawPart(FrameContext& frame, RenderPath path) {

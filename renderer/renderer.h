@@ -31,6 +31,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/palette.h"
 #include "renderer/passes/geometry_pass.h"
+#include "renderer/passes/turn_resolve_pass.h"
 #include "renderer/paths/path_table.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
@@ -146,6 +147,9 @@ class Renderer {
   // One part of the scene (the mesh, a per-material part, the ground) with this frame's shadow
   // maps and screen-space occlusion: the path, then the control-image palettes over it.
   Status drawPart(FrameContext& frame, RenderPath path);
+  // The turn resolve, where a frame of the model's with this palette leaves its turned lookups
+  // to it (TurnPlacement), else null.
+  TurnResolvePass* turnResolveFor(const RenderSettings& settings, const GpuPalette* palette, gl::MeshOutput output);
   // The ground plane with the path's own pass, after the model (--ground).
   Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
   // Splits the mesh into one part per palette when materials have palettes of their own.
@@ -189,6 +193,8 @@ class Renderer {
   std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
   LinePass lines_;
   PatternTracker patterns_;
+  TurnResolvePass turnResolve_;
+  float pixelsPerFrontTriangle_ = 0.0f;  // this frame's, from the model's bounding disc (preparePattern)
   // Gives every palette this frame's pattern frame (anchored) or none (screen) and where it is
   // drawn (the viewport, a poster tile's offset, per-vertex or per-pixel placement); the
   // orientation's screen directions use the same viewport, so it runs before prepareOrientation.

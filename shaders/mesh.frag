@@ -16,6 +16,8 @@
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
+// DEFER_TURN (turned lookups on dense meshes) the pixel's stroke angle and entry for
+// turn_resolve.frag;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 // CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
@@ -104,7 +106,16 @@ layout(location = 1) out vec4 maskStrokeAngle;
 layout(location = 2) out vec4 maskPatternCoordinate;
 #endif
 
-#if defined(OUTPUT_ENTRY)
+#if defined(DEFER_TURN)
+// The turned lookup left to one pass per pixel (turn_resolve.frag): this pixel's stroke
+// angle and entry at output 1 (output 0 goes nowhere).
+layout(location = 1) out vec4 deferredTurn;
+vec4 deferTurn(int e) {
+  deferredTurn = vec4(strokeAngle, strokeValid ? float(e + 1) : -float(e + 1), 0.0, 1.0);
+  return vec4(0.0);
+}
+#define SHOW_ENTRY(e) deferTurn(e)
+#elif defined(OUTPUT_ENTRY)
 #define SHOW_ENTRY(e) vec4(float(e) / 255.0, 0.0, 0.0, 1.0)
 #elif defined(OUTPUT_BLEND)
 #define SHOW_ENTRY(e) vec4(float(e), float(e), 0.0, 1.0)

@@ -21,9 +21,11 @@ struct FrameStats {
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
   int shadowLayers = 0;        // shadow map layers in use (one per light, six for a point light among the casters)
-  // The stencil path's per-pixel surface buffers (stroke angles, object pattern coordinates):
-  // how many the frame needed, and how many of those took a geometry pass of their own because
-  // the bound framebuffer's depth and stencil could not be shared (the window's own cannot).
+  // Per-pixel surface buffers that a mesh pass writes beside its colour, sharing the bound
+  // framebuffer's depth and stencil (the stencil path's stroke angles and object pattern
+  // coordinates, the turn resolve's angles and entries): how many the frame needed, and how
+  // many of the stencil path's took a geometry pass of their own because the framebuffer could
+  // not be shared (the window's own cannot; the turn resolve then turns in the mesh pass).
   int surfaceBuffers = 0;
   int surfaceBufferPasses = 0;
 

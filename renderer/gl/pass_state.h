@@ -34,6 +34,21 @@ inline constexpr PassState kClearViewport = [] { PassState s; s.depthWrite = tru
 inline constexpr PassState kBackground{};
 // Mesh drawing: ordinary depth-tested drawing.
 inline constexpr PassState kMesh = [] { PassState s; s.depthTest = s.depthWrite = true; return s; }();
+// Mesh drawing that leaves its turned lookups to one pass per pixel (passes/turn_resolve_pass.h):
+// it marks the pixels it writes in the stencil, and the resolve draws only there, clearing them.
+inline constexpr PassState kMeshMarked = [] {
+  PassState s;
+  s.depthTest = s.depthWrite = s.stencilTest = true;
+  s.stencilPass = GL_REPLACE;
+  return s;
+}();
+inline constexpr PassState kTurnResolve = [] {
+  PassState s;
+  s.stencilTest = s.scissor = true;
+  s.stencilFunc = GL_EQUAL;
+  s.stencilPass = GL_ZERO;
+  return s;
+}();
 // Stencil path, per bucket: (1) the bucket's triangles mark visible pixels in the stencil,
 inline constexpr PassState kStencilMask = [] {
   PassState s;

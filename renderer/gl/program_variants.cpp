@@ -61,6 +61,7 @@ struct SourceOf {
     if (m.materials && m.materialUniform) s.defines.push_back("MATERIAL_UNIFORM");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
+    if (m.deferTurn) s.defines.push_back("DEFER_TURN");
     if (m.shading == MeshShading::Mask && (m.stroke == StrokeSource::Field || m.stroke == StrokeSource::Light))
       s.defines.push_back("MASK_STROKE_ANGLE");
     if (m.shading == MeshShading::Mask && m.palette && m.palette->pattern == PatternMapping::Object)
@@ -135,6 +136,7 @@ struct SourceOf {
     return {"fullscreen.vert", "ground_shadow.frag",
             {"NUM_LIGHTS " + std::to_string(g.lights), "SHADOWS", "SHADOW_LAYERS " + std::to_string(g.shadowLayers)}};
   }
+  ProgramSource operator()(const TurnResolveProgram& t) const { return {"fullscreen.vert", "turn_resolve.frag", paletteDefines(t.palette)}; }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }
@@ -163,10 +165,11 @@ ProgramSource programSource(const ProgramVariant& variant) { return std::visit(S
 bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
 
 bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  if (std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control, a.groundShadowMap) !=
-      std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control, b.groundShadowMap))
-    return std::tie(a.shading, a.output, a.materials, a.materialMaps, a.vertexColours, a.stroke, a.shadowLayers, a.occlusion, a.screenOcclusion, a.control, a.groundShadowMap) <
-           std::tie(b.shading, b.output, b.materials, b.materialMaps, b.vertexColours, b.stroke, b.shadowLayers, b.occlusion, b.screenOcclusion, b.control, b.groundShadowMap);
+  const auto key = [](const MeshProgram& m) {
+    return std::tie(m.shading, m.output, m.materials, m.materialMaps, m.vertexColours, m.materialUniform, m.stroke, m.shadowLayers, m.occlusion, m.screenOcclusion,
+                    m.control, m.groundShadowMap, m.deferTurn);
+  };
+  if (key(a) != key(b)) return key(a) < key(b);
   if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
   return a.palette < b.palette;
 }

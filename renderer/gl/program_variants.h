@@ -81,6 +81,9 @@ struct MeshProgram {
   bool screenOcclusion = false;  // ... or by this frame's screen-space occlusion (per-pixel shadings)
   MeshControl control = MeshControl::None;
   bool groundShadowMap = false;  // the ground's shadows read from its texture (shadows/ground_shadow_pass.h)
+  // Palette shadings with a stroke source: write each pixel's stroke angle and entry at output 1
+  // for one turned lookup per pixel afterwards (passes/turn_resolve_pass.h) instead of the texel.
+  bool deferTurn = false;
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -94,6 +97,10 @@ struct QuadProgram {
   bool orientBuffer = false;  // ... read per pixel from the stroke-angle buffer (else fixed)
 };
 
+// fullscreen.vert + turn_resolve.frag: the turned lookups a DEFER_TURN mesh pass left, per pixel.
+struct TurnResolveProgram {
+  PaletteVariant palette;
+};
 // lines.vert + lines.frag: feature lines as screen-space quads.
 struct LineProgram {
   bool sketchy = false;
@@ -147,7 +154,7 @@ struct TriangleLightProgram {
 };
 
 using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram>;
+                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram, TurnResolveProgram>;
 
 struct ProgramSource {
   ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
@@ -161,6 +168,7 @@ ProgramSource programSource(const ProgramVariant& variant);
 bool operator<(const PaletteVariant& a, const PaletteVariant& b);
 bool operator<(const MeshProgram& a, const MeshProgram& b);
 bool operator<(const QuadProgram& a, const QuadProgram& b);
+inline bool operator<(const TurnResolveProgram& a, const TurnResolveProgram& b) { return a.palette < b.palette; }
 bool operator<(const LineProgram& a, const LineProgram& b);
 bool operator<(const OutlineProgram& a, const OutlineProgram& b);
 bool operator<(const StrokeProgram& a, const StrokeProgram& b);

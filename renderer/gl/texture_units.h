@@ -25,6 +25,7 @@ enum class TextureUnit : GLint {
   ScreenOcclusionDepth,
   ScreenOcclusionNormals,
   GroundShadows,   // the ground plane's visibility per light
+  TurnBuffer,      // a mesh pass's stroke angle and entry per pixel, for the turn resolve
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

@@ -22,6 +22,8 @@
 
 namespace npr {
 
+class TurnResolvePass;
+
 struct FrameContext {
   const CameraMatrices& camera;
   glm::ivec4 viewport;  // x, y, width, height in the bound framebuffer
@@ -48,6 +50,9 @@ struct FrameContext {
   // Control-image palettes (passes/control_palette_pass.h), when loaded.
   const GpuPalette* shadowPalette = nullptr;
   const GpuPalette* occlusionPalette = nullptr;
+  // Set where this frame's triangle, vertex or pixel pass leaves its turned lookups to one
+  // pass per pixel after it (passes/turn_resolve_pass.h).
+  TurnResolvePass* turnResolve = nullptr;
 
   // A palette's program variant for this output (the frame's palette, or another drawn in the
   // same frame: a control palette); selections are the same turned or not, so they ignore the

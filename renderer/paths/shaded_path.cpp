@@ -3,6 +3,7 @@
 
 #include "renderer/gl/pass_state.h"
 #include "renderer/paths/lit_mesh_program.h"
+#include "renderer/passes/turn_resolve_pass.h"
 
 namespace npr {
 
@@ -17,14 +18,21 @@ Status ShadedPath::draw(FrameContext& f) {
   }
   const GpuPalette* palette = kind_ != Kind::Reference ? f.palette : nullptr;
   gl::MeshProgram variant = litMeshProgram(f, shading, palette);
-  gl::apply(gl::pass::kMesh);
+  // One entry per pixel (not the smooth path's two): its turn can wait for the resolve.
+  const bool oneEntry = kind_ == Kind::Vertex || kind_ == Kind::Pixel;
+  TurnResolvePass* resolve = oneEntry && f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
+  if (resolve) {
+    variant.deferTurn = true;
+    variant.palette->orientBins = 0;
+  }
+  gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
   if (!variant.materials || f.gpuMesh.materialRuns().empty()) {
     Result<gl::ShaderProgram*> prog = f.program(variant);
     if (!prog) return Error{prog.error()};
     bindLitMesh(f, **prog, variant, palette);
     f.gpuMesh.drawAll();
     ++f.stats.drawCalls;
-    return okStatus();
+    return resolve ? resolve->resolve(f) : okStatus();
   }
   // Material by material, each from uniforms, with the diffuse maps only where it has one: a
   // per-pixel table fetch and map lookup cost llvmpipe 11-14% of the 871K mesh's frame.
@@ -46,7 +54,7 @@ Status ShadedPath::draw(FrameContext& f) {
     f.gpuMesh.drawRun(run);
     ++f.stats.drawCalls;
   }
-  return okStatus();
+  return resolve ? resolve->resolve(f) : okStatus();
 }
 
 }  // namespace npr

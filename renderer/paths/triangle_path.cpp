@@ -2,6 +2,7 @@
 #include "renderer/paths/triangle_path.h"
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/passes/turn_resolve_pass.h"
 
 namespace npr {
 
@@ -27,10 +28,15 @@ Status TrianglePath::draw(FrameContext& f) {
   variant.output = f.output;
   variant.palette = f.paletteVariant();
   variant.stroke = f.strokeSource();
+  TurnResolvePass* resolve = f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
+  if (resolve) {
+    variant.deferTurn = true;
+    variant.palette->orientBins = 0;
+  }
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
   gl::ShaderProgram& p = **prog;
-  gl::apply(gl::pass::kMesh);
+  gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
   p.use();
   setMeshTransform(p, f.camera);
   f.bindPalette(p);
@@ -42,7 +48,7 @@ Status TrianglePath::draw(FrameContext& f) {
     f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
     ++f.stats.drawCalls;
   }
-  return okStatus();
+  return resolve ? resolve->resolve(f) : okStatus();
 }
 
 }  // namespace npr

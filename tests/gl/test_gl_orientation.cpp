@@ -11,6 +11,7 @@
 #include "gl/gl_test_env.h"
 #include "renderer/core/image_io.h"
 #include "renderer/mesh/mesh_generators.h"
+#include "renderer/paths/path_table.h"
 #include "renderer/palette/palette_orientation.h"
 #include "support/stroke_alignment.h"
 #include "support/test_util.h"
@@ -277,6 +278,55 @@ TEST_F(Orientation, StencilMasksWriteTheSurfaceBuffersInAFramebufferTheyShare) {
   s.orient.source = OrientSource::None;
   (void)test::renderImage(*r, camera(), s, kSize, kSize);
   EXPECT_EQ(r->stats().surfaceBuffers, 0);
+}
+
+TEST_F(Orientation, TurnsResolvedPerPixelDrawTheInPlaceTurnsPicture) {
+  // The triangle, vertex and pixel paths can leave their turned lookups to one pass per pixel
+  // (passes/turn_resolve_pass.h): the same frame, with the screen's pattern, a scaled one and an
+  // anchored one, the field's angles and the light's.
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel})
+    for (PatternSpace pattern : {PatternSpace::Screen, PatternSpace::Anchored})
+      for (OrientSource source : {OrientSource::Curvature, OrientSource::Light}) {
+        SCOPED_TRACE(std::string(renderPathName(path)) + (pattern == PatternSpace::Anchored ? " anchored" : " screen") +
+                     (source == OrientSource::Light ? " light" : " curvature"));
+        RenderSettings s;
+        s.path = path;
+        s.pattern = pattern;
+        s.patternScale = pattern == PatternSpace::Anchored ? 1.5f : 1.0f;
+        s.orient.source = source;
+        s.orient.placement = TurnPlacement::InMeshPass;
+        r->resetPattern();
+        const ImageRGBA8 inPass = test::renderImage(*r, camera(), s, kSize, kSize);
+        EXPECT_EQ(r->stats().surfaceBuffers, 0);
+        s.orient.placement = TurnPlacement::Resolved;
+        r->resetPattern();
+        const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
+        EXPECT_EQ(r->stats().surfaceBuffers, 1);
+        // The anchored pattern's coordinate is interpolated over the resolve's full-screen
+        // triangle instead of the mesh's: a rounding apart at texel edges.
+        EXPECT_LE(test::countDiffering(inPass, resolved), pattern == PatternSpace::Anchored ? kSize * kSize / 500 : 0);
+        EXPECT_GT(test::countDiffering(inPass, test::renderImage(*r, camera(), RenderSettings{}, kSize, kSize)), kSize * kSize / 20);
+      }
+}
+
+TEST_F(Orientation, TurnsAreResolvedPerPixelOnlyWhereTrianglesAreSmall) {
+  RenderSettings s;
+  s.path = RenderPath::Triangle;
+  s.orient.source = OrientSource::Curvature;
+  (void)test::renderImage(*r, camera(), s, kSize, kSize);  // 9,216 triangles, about 5 pixels each
+  EXPECT_EQ(r->stats().surfaceBuffers, 0);
+  const Mesh dense = [] {
+    Mesh m = cylinder(384, 192);
+    for (glm::vec3& p : m.positions) p = glm::vec3(-p.y, p.x, p.z);
+    finalizeMesh(m);
+    return m;
+  }();
+  r->setMesh(&dense);
+  const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 1);
+  s.orient.placement = TurnPlacement::InMeshPass;
+  EXPECT_EQ(test::countDiffering(resolved, test::renderImage(*r, camera(), s, kSize, kSize)), 0);
+  r->setMesh(&mesh);
 }
 
 TEST_F(Orientation, StepsAreStableUnderASmallOrbit) {

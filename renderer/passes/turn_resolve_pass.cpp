@@ -1,0 +1,44 @@
+// The turn resolve (see turn_resolve_pass.h).
+#include "renderer/passes/turn_resolve_pass.h"
+
+#include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_units.h"
+
+namespace npr {
+
+bool TurnResolvePass::begin(FrameContext& f) {
+  GLint caller = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &caller);
+  const glm::ivec4& vp = f.viewport;
+  // Sized to the framebuffer's pixels, written and read at their own coordinates. Full floats:
+  // the angle read back is the one the mesh pass found, so the picture is the in-place turn's.
+  if (buffer_.resize({vp.x + vp.z, vp.y + vp.w}, GL_RG32F, GL_RG)) {  // resizing binds the buffer's own framebuffer
+    ++f.stats.bufferUploads;
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(caller));
+  }
+  glViewport(vp.x, vp.y, vp.z, vp.w);
+  return target_.bind({buffer_.colour(), 0});
+}
+
+Status TurnResolvePass::resolve(FrameContext& f) {
+  target_.restore();
+  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match)};
+  variant.palette.patternPerVertex = true;  // three vertices for the whole screen: interpolating always pays
+  Result<gl::ShaderProgram*> prog = f.program(variant);
+  if (!prog) return Error{prog.error()};
+  gl::ShaderProgram& p = **prog;
+  const glm::ivec4& vp = f.viewport;
+  gl::apply(gl::pass::kTurnResolve);
+  glScissor(vp.x, vp.y, vp.z, vp.w);
+  p.use();
+  f.bindPalette(p);
+  gl::bindTexture(gl::TextureUnit::TurnBuffer, GL_TEXTURE_2D, buffer_.colour());
+  p.set("uTurnBuffer", gl::unitIndex(gl::TextureUnit::TurnBuffer));
+  p.set("uBufferOrigin", glm::ivec2(0));
+  glBindVertexArray(f.emptyVao.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  ++f.stats.drawCalls;
+  return okStatus();
+}
+
+}  // namespace npr

@@ -1,0 +1,33 @@
+// Turned palette lookups once per pixel instead of once per triangle's block of pixels, for
+// meshes whose triangles cover about a pixel or less (the 871K torus). A CPU rasterizer shades
+// a block of pixels for every triangle however few it covers, so a turn done in the mesh pass
+// (the angle's steps and two lookups) is paid many times over; here the mesh pass writes each
+// pixel's stroke angle and entry into a float buffer, sharing the bound framebuffer's depth and
+// stencil and marking the pixels it writes, and one full-screen pass (shaders/turn_resolve.frag)
+// draws the turned texels where marked. Where the framebuffer cannot be shared (the window's
+// own) the mesh pass turns in place as before.
+#pragma once
+
+#include "renderer/core/result.h"
+#include "renderer/gl/shared_depth_framebuffer.h"
+#include "renderer/gl/texture_target.h"
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+
+class TurnResolvePass {
+ public:
+  // Binds the buffer and the bound framebuffer's depth and stencil for a mesh pass compiled
+  // with MeshProgram::deferTurn and drawn with pass::kMeshMarked. False, with nothing changed,
+  // where they cannot be shared: the mesh pass then turns its lookups itself.
+  bool begin(FrameContext& f);
+  // Binds back the caller's framebuffer and draws the turned texels where the mesh pass wrote,
+  // clearing its marks.
+  [[nodiscard]] Status resolve(FrameContext& f);
+
+ private:
+  gl::TextureTarget buffer_;  // RG32F, the framebuffer's size up to the viewport's far corner
+  gl::SharedDepthFramebuffer target_;
+};
+
+}  // namespace npr
