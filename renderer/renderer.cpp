@@ -24,8 +24,12 @@ namespace {
 // 0-5% slower; in bench_frames the 871K torus (0.75) 5-10% slower, the bunny (178) 7-9% faster.
 constexpr float kPatternPerVertexPixels = 1.5f;
 // Below this many pixels per front-facing triangle the triangle, vertex and pixel paths turn
-// their lookups once per pixel after the mesh pass (passes/turn_resolve_pass.h).
-constexpr float kResolveTurnPixels = 4.0f;
+// their lookups once per pixel after the mesh pass (passes/turn_resolve_pass.h). Measured with
+// the viewer, headless, 1280x720, triangle path, --orient curvature, orbiting, resolved against
+// in the mesh pass, three alternated runs: icosphere-7 (2 pixels a triangle) 8-14% faster,
+// icosphere-6 (8) 8-11% faster, icosphere-5 (32) even (-9% to +9%), icosphere-4 (128) 11-24%
+// slower, the bunny (178) 13-22% slower.
+constexpr float kResolveTurnPixels = 16.0f;
 }  // namespace
 
 Result<std::unique_ptr<Renderer>> Renderer::create() {

@@ -310,17 +310,20 @@ TEST_F(Orientation, TurnsResolvedPerPixelDrawTheInPlaceTurnsPicture) {
 }
 
 TEST_F(Orientation, TurnsAreResolvedPerPixelOnlyWhereTrianglesAreSmall) {
-  RenderSettings s;
-  s.path = RenderPath::Triangle;
-  s.orient.source = OrientSource::Curvature;
-  (void)test::renderImage(*r, camera(), s, kSize, kSize);  // 9,216 triangles, about 5 pixels each
-  EXPECT_EQ(r->stats().surfaceBuffers, 0);
-  const Mesh dense = [] {
-    Mesh m = cylinder(384, 192);
+  auto lying = [](int around, int along) {
+    Mesh m = cylinder(around, along);
     for (glm::vec3& p : m.positions) p = glm::vec3(-p.y, p.x, p.z);
     finalizeMesh(m);
     return m;
-  }();
+  };
+  RenderSettings s;
+  s.path = RenderPath::Triangle;
+  s.orient.source = OrientSource::Curvature;
+  const Mesh coarse = lying(24, 6);  // 288 triangles, about 150 pixels each at 256 x 256
+  r->setMesh(&coarse);
+  (void)test::renderImage(*r, camera(), s, kSize, kSize);
+  EXPECT_EQ(r->stats().surfaceBuffers, 0);
+  const Mesh dense = lying(384, 192);  // 147,456, under half a pixel
   r->setMesh(&dense);
   const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
   EXPECT_EQ(r->stats().surfaceBuffers, 1);
