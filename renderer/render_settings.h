@@ -67,7 +67,7 @@ inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
 // the turn is quantised to `bins` steps over 180 degrees and the two nearest are blended, so
 // strokes stay straight within a step.
 enum class OrientSource { None, Curvature, Light, Fixed };
-// Where the triangle, vertex and pixel paths turn their lookups: in the mesh pass, or once per
+// Where the triangle, vertex, pixel and smooth paths turn their lookups: in the mesh pass, or once per
 // pixel after it (passes/turn_resolve_pass.h); Auto: after it where the model's triangles
 // span under Renderer's threshold of pixels each (dense meshes), in the mesh pass elsewhere.
 enum class TurnPlacement { Auto, InMeshPass, Resolved };

@@ -23,7 +23,7 @@ namespace {
 // orbiting, per vertex against per pixel: icosphere-7 (2.0 pixels) 4-9% faster, torus-500k (1.3)
 // 0-5% slower; in bench_frames the 871K torus (0.75) 5-10% slower, the bunny (178) 7-9% faster.
 constexpr float kPatternPerVertexPixels = 1.5f;
-// Below this many pixels per front-facing triangle the triangle, vertex and pixel paths turn
+// Below this many pixels per front-facing triangle the triangle, vertex, pixel and smooth paths turn
 // their lookups once per pixel after the mesh pass (passes/turn_resolve_pass.h). Measured with
 // the viewer, headless, 1280x720, triangle path, --orient curvature, orbiting, resolved against
 // in the mesh pass, three alternated runs: icosphere-7 (2 pixels a triangle) 8-14% faster,
@@ -329,9 +329,9 @@ Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& 
 }
 
 TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPalette* palette, gl::MeshOutput output) {
-  const bool onePerPixel = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel;
+  const bool meshPath = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel || s.path == RenderPath::Smooth;
   // The object pattern's coordinate comes from the surface, which the resolve cannot see.
-  if (!onePerPixel || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
+  if (!meshPath || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
     return nullptr;
   const TurnPlacement where = s.orient.placement;
   if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !(pixelsPerFrontTriangle_ < kResolveTurnPixels))) return nullptr;

@@ -108,7 +108,8 @@ layout(location = 2) out vec4 maskPatternCoordinate;
 
 #if defined(DEFER_TURN)
 // The turned lookup left to one pass per pixel (turn_resolve.frag): this pixel's stroke
-// angle and entry at output 1 (output 0 goes nowhere).
+// angle and entry at output 1 (output 0 goes nowhere); the smooth path's writes its two
+// entries and weight.
 layout(location = 1) out vec4 deferredTurn;
 vec4 deferTurn(int e) {
   deferredTurn = vec4(strokeAngle, strokeValid ? float(e + 1) : -float(e + 1), 0.0, 1.0);
@@ -184,6 +185,10 @@ void main() {
   fragColor = SHOW_ENTRY(matchEntry(lit));
 #elif defined(PATH_SMOOTH) && defined(OUTPUT_BLEND)
   fragColor = vec4(blendSelection(lit), 1.0);
+#elif defined(PATH_SMOOTH) && defined(DEFER_TURN)
+  vec3 b = blendSelection(lit);
+  deferredTurn = vec4(strokeAngle, strokeValid ? b.x + 1.0 : -(b.x + 1.0), b.y, b.z);
+  fragColor = vec4(0.0);
 #elif defined(PATH_SMOOTH)
   fragColor = vec4(paletteBlend(lit), 1.0);
 #elif defined(PATH_PHONG)

@@ -6,13 +6,19 @@
 // same palette.glsl as the mesh passes, only where the stencil marks a pixel it wrote.
 #include "palette.glsl"
 
-uniform sampler2D uTurnBuffer;  // (stroke angle, entry + 1; negative: no stroke angle)
-uniform ivec2 uBufferOrigin;    // the framebuffer pixel the buffer's texel (0, 0) holds
+// (stroke angle, entry + 1, negative where there is no stroke angle; with RESOLVE_BLEND, the
+// smooth path's, also the second entry and its weight)
+uniform sampler2D uTurnBuffer;
+uniform ivec2 uBufferOrigin;  // the framebuffer pixel the buffer's texel (0, 0) holds
 out vec4 fragColor;
 
 void main() {
-  vec2 t = texelFetch(uTurnBuffer, ivec2(gl_FragCoord.xy) - uBufferOrigin, 0).rg;
+  vec4 t = texelFetch(uTurnBuffer, ivec2(gl_FragCoord.xy) - uBufferOrigin, 0);
   strokeAngle = t.x;
   strokeValid = t.y > 0.0;
-  fragColor = vec4(paletteColour(int(abs(t.y)) - 1), 1.0);
+  vec3 c = paletteColour(int(abs(t.y)) - 1);
+#ifdef RESOLVE_BLEND
+  c = mix(c, paletteColour(int(t.z)), t.w);
+#endif
+  fragColor = vec4(c, 1.0);
 }

@@ -136,7 +136,11 @@ struct SourceOf {
     return {"fullscreen.vert", "ground_shadow.frag",
             {"NUM_LIGHTS " + std::to_string(g.lights), "SHADOWS", "SHADOW_LAYERS " + std::to_string(g.shadowLayers)}};
   }
-  ProgramSource operator()(const TurnResolveProgram& t) const { return {"fullscreen.vert", "turn_resolve.frag", paletteDefines(t.palette)}; }
+  ProgramSource operator()(const TurnResolveProgram& t) const {
+    ProgramSource s{"fullscreen.vert", "turn_resolve.frag", paletteDefines(t.palette)};
+    if (t.blend) s.defines.push_back("RESOLVE_BLEND");
+    return s;
+  }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }

@@ -100,6 +100,7 @@ struct QuadProgram {
 // fullscreen.vert + turn_resolve.frag: the turned lookups a DEFER_TURN mesh pass left, per pixel.
 struct TurnResolveProgram {
   PaletteVariant palette;
+  bool blend = false;  // two entries blended (the smooth path's)
 };
 // lines.vert + lines.frag: feature lines as screen-space quads.
 struct LineProgram {
@@ -168,7 +169,10 @@ ProgramSource programSource(const ProgramVariant& variant);
 bool operator<(const PaletteVariant& a, const PaletteVariant& b);
 bool operator<(const MeshProgram& a, const MeshProgram& b);
 bool operator<(const QuadProgram& a, const QuadProgram& b);
-inline bool operator<(const TurnResolveProgram& a, const TurnResolveProgram& b) { return a.palette < b.palette; }
+inline bool operator<(const TurnResolveProgram& a, const TurnResolveProgram& b) {
+  if (a.blend != b.blend) return a.blend < b.blend;
+  return a.palette < b.palette;
+}
 bool operator<(const LineProgram& a, const LineProgram& b);
 bool operator<(const OutlineProgram& a, const OutlineProgram& b);
 bool operator<(const StrokeProgram& a, const StrokeProgram& b);

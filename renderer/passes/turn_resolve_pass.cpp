@@ -12,7 +12,7 @@ bool TurnResolvePass::begin(FrameContext& f) {
   const glm::ivec4& vp = f.viewport;
   // Sized to the framebuffer's pixels, written and read at their own coordinates. Full floats:
   // the angle read back is the one the mesh pass found, so the picture is the in-place turn's.
-  if (buffer_.resize({vp.x + vp.z, vp.y + vp.w}, GL_RG32F, GL_RG)) {  // resizing binds the buffer's own framebuffer
+  if (buffer_.resize({vp.x + vp.z, vp.y + vp.w}, GL_RGBA32F, GL_RGBA)) {  // resizing binds the buffer's own framebuffer
     ++f.stats.bufferUploads;
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(caller));
   }
@@ -20,9 +20,9 @@ bool TurnResolvePass::begin(FrameContext& f) {
   return target_.bind({buffer_.colour(), 0});
 }
 
-Status TurnResolvePass::resolve(FrameContext& f) {
+Status TurnResolvePass::resolve(FrameContext& f, bool blend) {
   target_.restore();
-  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match)};
+  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match), blend};
   variant.palette.patternPerVertex = true;  // three vertices for the whole screen: interpolating always pays
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};

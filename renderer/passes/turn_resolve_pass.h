@@ -22,11 +22,11 @@ class TurnResolvePass {
   // where they cannot be shared: the mesh pass then turns its lookups itself.
   bool begin(FrameContext& f);
   // Binds back the caller's framebuffer and draws the turned texels where the mesh pass wrote,
-  // clearing its marks.
-  [[nodiscard]] Status resolve(FrameContext& f);
+  // clearing its marks; `blend`: two entries and a weight per pixel (the smooth path's).
+  [[nodiscard]] Status resolve(FrameContext& f, bool blend);
 
  private:
-  gl::TextureTarget buffer_;  // RG32F, the framebuffer's size up to the viewport's far corner
+  gl::TextureTarget buffer_;  // RGBA32F, the framebuffer's size up to the viewport's far corner
   gl::SharedDepthFramebuffer target_;
 };
 

@@ -50,7 +50,7 @@ struct FrameContext {
   // Control-image palettes (passes/control_palette_pass.h), when loaded.
   const GpuPalette* shadowPalette = nullptr;
   const GpuPalette* occlusionPalette = nullptr;
-  // Set where this frame's triangle, vertex or pixel pass leaves its turned lookups to one
+  // Set where this frame's triangle, vertex, pixel or smooth pass leaves its turned lookups to one
   // pass per pixel after it (passes/turn_resolve_pass.h).
   TurnResolvePass* turnResolve = nullptr;
 

@@ -18,9 +18,10 @@ Status ShadedPath::draw(FrameContext& f) {
   }
   const GpuPalette* palette = kind_ != Kind::Reference ? f.palette : nullptr;
   gl::MeshProgram variant = litMeshProgram(f, shading, palette);
-  // One entry per pixel (not the smooth path's two): its turn can wait for the resolve.
-  const bool oneEntry = kind_ == Kind::Vertex || kind_ == Kind::Pixel;
-  TurnResolvePass* resolve = oneEntry && f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
+  // The palette paths' turns can wait for the resolve (the smooth path's two entries too).
+  const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || kind_ == Kind::Smooth;
+  const bool blend = kind_ == Kind::Smooth;
+  TurnResolvePass* resolve = turns && f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
   if (resolve) {
     variant.deferTurn = true;
     variant.palette->orientBins = 0;
@@ -32,7 +33,7 @@ Status ShadedPath::draw(FrameContext& f) {
     bindLitMesh(f, **prog, variant, palette);
     f.gpuMesh.drawAll();
     ++f.stats.drawCalls;
-    return resolve ? resolve->resolve(f) : okStatus();
+    return resolve ? resolve->resolve(f, blend) : okStatus();
   }
   // Material by material, each from uniforms, with the diffuse maps only where it has one: a
   // per-pixel table fetch and map lookup cost llvmpipe 11-14% of the 871K mesh's frame.
@@ -54,7 +55,7 @@ Status ShadedPath::draw(FrameContext& f) {
     f.gpuMesh.drawRun(run);
     ++f.stats.drawCalls;
   }
-  return resolve ? resolve->resolve(f) : okStatus();
+  return resolve ? resolve->resolve(f, blend) : okStatus();
 }
 
 }  // namespace npr

@@ -48,7 +48,7 @@ Status TrianglePath::draw(FrameContext& f) {
     f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
     ++f.stats.drawCalls;
   }
-  return resolve ? resolve->resolve(f) : okStatus();
+  return resolve ? resolve->resolve(f, false) : okStatus();
 }
 
 }  // namespace npr

@@ -281,10 +281,10 @@ TEST_F(Orientation, StencilMasksWriteTheSurfaceBuffersInAFramebufferTheyShare) {
 }
 
 TEST_F(Orientation, TurnsResolvedPerPixelDrawTheInPlaceTurnsPicture) {
-  // The triangle, vertex and pixel paths can leave their turned lookups to one pass per pixel
+  // The triangle, vertex, pixel and smooth paths can leave their turned lookups to one pass per pixel
   // (passes/turn_resolve_pass.h): the same frame, with the screen's pattern, a scaled one and an
   // anchored one, the field's angles and the light's.
-  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel})
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth})
     for (PatternSpace pattern : {PatternSpace::Screen, PatternSpace::Anchored})
       for (OrientSource source : {OrientSource::Curvature, OrientSource::Light}) {
         SCOPED_TRACE(std::string(renderPathName(path)) + (pattern == PatternSpace::Anchored ? " anchored" : " screen") +
