@@ -6,23 +6,25 @@
 
 namespace npr {
 
-bool TurnResolvePass::begin(FrameContext& f) {
+bool TurnResolvePass::begin(FrameContext& f, bool blend) {
   GLint caller = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &caller);
   const glm::ivec4& vp = f.viewport;
+  gl::TextureTarget& buffer = blend ? blend_ : one_;
   // Sized to the framebuffer's pixels, written and read at their own coordinates. Full floats:
   // the angle read back is the one the mesh pass found, so the picture is the in-place turn's.
-  if (buffer_.resize({vp.x + vp.z, vp.y + vp.w}, GL_RGBA32F, GL_RGBA)) {  // resizing binds the buffer's own framebuffer
-    ++f.stats.bufferUploads;
+  if (buffer.resize({vp.x + vp.z, vp.y + vp.w}, blend ? GL_RGBA32F : GL_RG32F, blend ? GL_RGBA : GL_RG)) {
+    ++f.stats.bufferUploads;  // resizing bound the buffer's own framebuffer
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(caller));
   }
   glViewport(vp.x, vp.y, vp.z, vp.w);
-  return target_.bind({buffer_.colour(), 0});
+  blending_ = blend;
+  return target_.bind({buffer.colour(), 0});
 }
 
-Status TurnResolvePass::resolve(FrameContext& f, bool blend) {
+Status TurnResolvePass::resolve(FrameContext& f) {
   target_.restore();
-  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match), blend};
+  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match), blending_};
   variant.palette.patternPerVertex = true;  // three vertices for the whole screen: interpolating always pays
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
@@ -32,7 +34,7 @@ Status TurnResolvePass::resolve(FrameContext& f, bool blend) {
   glScissor(vp.x, vp.y, vp.z, vp.w);
   p.use();
   f.bindPalette(p);
-  gl::bindTexture(gl::TextureUnit::TurnBuffer, GL_TEXTURE_2D, buffer_.colour());
+  gl::bindTexture(gl::TextureUnit::TurnBuffer, GL_TEXTURE_2D, (blending_ ? blend_ : one_).colour());
   p.set("uTurnBuffer", gl::unitIndex(gl::TextureUnit::TurnBuffer));
   p.set("uBufferOrigin", glm::ivec2(0));
   glBindVertexArray(f.emptyVao.id());

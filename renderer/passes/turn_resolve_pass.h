@@ -17,16 +17,21 @@ namespace npr {
 
 class TurnResolvePass {
  public:
-  // Binds the buffer and the bound framebuffer's depth and stencil for a mesh pass compiled
-  // with MeshProgram::deferTurn and drawn with pass::kMeshMarked. False, with nothing changed,
-  // where they cannot be shared: the mesh pass then turns its lookups itself.
-  bool begin(FrameContext& f);
+  // Binds a buffer and the bound framebuffer's depth and stencil for a mesh pass compiled with
+  // MeshProgram::deferTurn and drawn with pass::kMeshMarked; `blend`: the smooth path's, two
+  // entries and a weight per pixel. False, with nothing changed, where they cannot be shared:
+  // the mesh pass then turns its lookups itself.
+  bool begin(FrameContext& f, bool blend);
   // Binds back the caller's framebuffer and draws the turned texels where the mesh pass wrote,
-  // clearing its marks; `blend`: two entries and a weight per pixel (the smooth path's).
-  [[nodiscard]] Status resolve(FrameContext& f, bool blend);
+  // clearing its marks.
+  [[nodiscard]] Status resolve(FrameContext& f);
 
  private:
-  gl::TextureTarget buffer_;  // RGBA32F, the framebuffer's size up to the viewport's far corner
+  // The framebuffer's size up to the viewport's far corner: RG32F (angle, entry), and RGBA32F
+  // for the smooth path (half the bytes per fragment where one entry is all there is: on the
+  // 871K torus the mesh pass writes many times more fragments than there are pixels).
+  gl::TextureTarget one_, blend_;
+  bool blending_ = false;  // which begin() bound
   gl::SharedDepthFramebuffer target_;
 };
 

@@ -21,7 +21,7 @@ Status ShadedPath::draw(FrameContext& f) {
   // The palette paths' turns can wait for the resolve (the smooth path's two entries too).
   const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || kind_ == Kind::Smooth;
   const bool blend = kind_ == Kind::Smooth;
-  TurnResolvePass* resolve = turns && f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
+  TurnResolvePass* resolve = turns && f.turnResolve && f.turnResolve->begin(f, blend) ? f.turnResolve : nullptr;
   if (resolve) {
     variant.deferTurn = true;
     variant.palette->orientBins = 0;
@@ -33,7 +33,7 @@ Status ShadedPath::draw(FrameContext& f) {
     bindLitMesh(f, **prog, variant, palette);
     f.gpuMesh.drawAll();
     ++f.stats.drawCalls;
-    return resolve ? resolve->resolve(f, blend) : okStatus();
+    return resolve ? resolve->resolve(f) : okStatus();
   }
   // Material by material, each from uniforms, with the diffuse maps only where it has one: a
   // per-pixel table fetch and map lookup cost llvmpipe 11-14% of the 871K mesh's frame.
@@ -55,7 +55,7 @@ Status ShadedPath::draw(FrameContext& f) {
     f.gpuMesh.drawRun(run);
     ++f.stats.drawCalls;
   }
-  return resolve ? resolve->resolve(f, blend) : okStatus();
+  return resolve ? resolve->resolve(f) : okStatus();
 }
 
 }  // namespace npr

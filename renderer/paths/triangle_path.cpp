@@ -28,7 +28,7 @@ Status TrianglePath::draw(FrameContext& f) {
   variant.output = f.output;
   variant.palette = f.paletteVariant();
   variant.stroke = f.strokeSource();
-  TurnResolvePass* resolve = f.turnResolve && f.turnResolve->begin(f) ? f.turnResolve : nullptr;
+  TurnResolvePass* resolve = f.turnResolve && f.turnResolve->begin(f, false) ? f.turnResolve : nullptr;
   if (resolve) {
     variant.deferTurn = true;
     variant.palette->orientBins = 0;
@@ -48,7 +48,7 @@ Status TrianglePath::draw(FrameContext& f) {
     f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
     ++f.stats.drawCalls;
   }
-  return resolve ? resolve->resolve(f, false) : okStatus();
+  return resolve ? resolve->resolve(f) : okStatus();
 }
 
 }  // namespace npr
