@@ -25,6 +25,8 @@ class TurnResolvePass {
   // Binds back the caller's framebuffer and draws the turned texels where the mesh pass wrote,
   // clearing its marks.
   [[nodiscard]] Status resolve(FrameContext& f);
+  // Binds back the caller's framebuffer without drawing: a mesh pass that failed after begin().
+  void cancel() const { target_.restore(); }
 
  private:
   // The framebuffer's size up to the viewport's far corner: RG32F (angle, entry), and RGBA32F

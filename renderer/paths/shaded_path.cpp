@@ -29,7 +29,10 @@ Status ShadedPath::draw(FrameContext& f) {
   gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
   if (!variant.materials || f.gpuMesh.materialRuns().empty()) {
     Result<gl::ShaderProgram*> prog = f.program(variant);
-    if (!prog) return Error{prog.error()};
+    if (!prog) {
+      if (resolve) resolve->cancel();
+      return Error{prog.error()};
+    }
     bindLitMesh(f, **prog, variant, palette);
     f.gpuMesh.drawAll();
     ++f.stats.drawCalls;
@@ -46,7 +49,10 @@ Status ShadedPath::draw(FrameContext& f) {
     gl::ShaderProgram*& p = bound[mapped ? 1 : 0];
     if (!p) {
       Result<gl::ShaderProgram*> prog = f.program(variant);
-      if (!prog) return Error{prog.error()};
+      if (!prog) {
+        if (resolve) resolve->cancel();
+        return Error{prog.error()};
+      }
       p = *prog;
       bindLitMesh(f, *p, variant, palette);
     }

@@ -34,7 +34,10 @@ Status TrianglePath::draw(FrameContext& f) {
     variant.palette->orientBins = 0;
   }
   Result<gl::ShaderProgram*> prog = f.program(variant);
-  if (!prog) return Error{prog.error()};
+  if (!prog) {
+    if (resolve) resolve->cancel();
+    return Error{prog.error()};
+  }
   gl::ShaderProgram& p = **prog;
   gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
   p.use();
