@@ -16,9 +16,9 @@
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
-// DEFER_TURN (turned lookups on dense meshes) the pixel's stroke angle and entry for
-// turn_resolve.frag;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
+// DEFER_TURN (turned lookups on dense meshes) writes the pixel's stroke angle and entry for
+// turn_resolve.frag instead.
 // CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
 // shadows block, or 1 - the occlusion factor; pixels where it is 0 are left alone.
