@@ -154,6 +154,9 @@ struct RenderSettings {
   // compare; passes/control_palette_pass.h).
   bool controlPalettes = true;
   TriangleLighting triangleLighting = TriangleLighting::Auto;
+  // Drop back faces where none can show: a closed mesh (Mesh::closed) wholly beyond the near
+  // plane. Off: every face is rasterized, as the original did (the same picture, slower).
+  bool cullHiddenBackFaces = true;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

@@ -298,6 +298,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
     frame.turnResolve = turnResolveFor(s, frame.palette, output);
+    frame.cullBackFaces = backFacesHidden(camera, s);
     if (Status st = drawPart(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
@@ -309,9 +310,16 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
     frame.turnResolve = turnResolveFor(s, palette, output);
+    frame.cullBackFaces = backFacesHidden(camera, s);  // the whole mesh's: parts hide each other's
     if (Status st = drawPart(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
+}
+
+bool Renderer::backFacesHidden(const CameraMatrices& camera, const RenderSettings& s) {
+  const bool hidden = s.cullHiddenBackFaces && mesh_ && mesh_->closed && sphereBeyondNearPlane(camera, mesh_->radius);
+  stats_.backFacesCulled = stats_.backFacesCulled || hidden;
+  return hidden;
 }
 
 Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {

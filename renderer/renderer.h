@@ -150,6 +150,9 @@ class Renderer {
   // The turn resolve, where a frame of the model's with this palette leaves its turned lookups
   // to it (TurnPlacement), else null.
   TurnResolvePass* turnResolveFor(const RenderSettings& settings, const GpuPalette* palette, gl::MeshOutput output);
+  // Whether this frame's mesh passes may drop back faces (FrameContext::cullBackFaces); noted in
+  // the frame's stats.
+  bool backFacesHidden(const CameraMatrices& camera, const RenderSettings& settings);
   // The ground plane with the path's own pass, after the model (--ground).
   Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
   // Splits the mesh into one part per palette when materials have palettes of their own.

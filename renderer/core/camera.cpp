@@ -75,6 +75,17 @@ float projectedSphereArea(const CameraMatrices& camera, float radius, const glm:
   return std::isfinite(disc) ? std::min(disc, full) : full;
 }
 
+bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius) {
+  const glm::mat4& p = camera.projection;
+  // The near plane's distance: perspective P[3][2] / (P[2][2] - 1), orthographic (P[3][2] + 1) / P[2][2].
+  const bool perspective = p[2][3] == -1.0f && p[3][3] == 0.0f;
+  const bool orthographic = p[2][3] == 0.0f && p[3][3] == 1.0f;
+  if (!perspective && !orthographic) return false;
+  const float nearP = perspective ? p[3][2] / (p[2][2] - 1.0f) : (p[3][2] + 1.0f) / p[2][2];
+  const float ahead = -(camera.view * glm::vec4(0, 0, 0, 1)).z;  // the centre's distance along the view
+  return std::isfinite(nearP) && std::isfinite(ahead) && ahead - radius > nearP;
+}
+
 CameraMatrices OrbitCamera::matrices(float aspect) const {
   CameraMatrices m;
   if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;

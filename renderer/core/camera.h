@@ -56,5 +56,8 @@ class OrbitCamera {
 // projection is degenerate): a bound on what the model covers, for choosing per-vertex or
 // per-pixel work by how many pixels a triangle spans.
 float projectedSphereArea(const CameraMatrices& camera, float radius, const glm::ivec4& viewport);
+// Whether the sphere of `radius` about the origin lies wholly beyond the near plane (perspective
+// or orthographic projections): the eye is outside it and no clipping cuts into what it holds.
+bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius);
 
 }  // namespace npr

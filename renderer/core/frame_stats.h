@@ -28,6 +28,7 @@ struct FrameStats {
   // not be shared (the window's own cannot; the turn resolve then turns in the mesh pass).
   int surfaceBuffers = 0;
   int surfaceBufferPasses = 0;
+  bool backFacesCulled = false;  // the mesh passes dropped back faces (render_pass.h: FrameContext)
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

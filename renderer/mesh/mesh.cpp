@@ -28,6 +28,35 @@ void computeFaceTints(Mesh& m) {
   }
 }
 
+bool closedSurface(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
+                   const std::vector<std::uint32_t>& sourceVertex) {
+  const std::size_t nf = indices.size() / 3;
+  if (nf == 0) return false;
+  const bool split = sourceVertex.size() == positions.size();
+  auto slot = [&](std::uint32_t v) -> std::uint64_t { return split ? sourceVertex[v] : v; };
+  // Each directed edge once, and its reverse once: the directed edges and the reversed ones are
+  // then the same set (two sorts, no hashing: the 871K mesh takes a fraction of its load).
+  std::vector<std::uint64_t> forward, reverse;
+  forward.reserve(nf * 3);
+  reverse.reserve(nf * 3);
+  double volume = 0.0;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::uint32_t* id = &indices[f * 3];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t a = slot(id[k]), b = slot(id[(k + 1) % 3]);
+      if (a == b) return false;  // a degenerate triangle: no orientation to trust
+      forward.push_back(a << 32 | b);
+      reverse.push_back(b << 32 | a);
+    }
+    const glm::dvec3 p0 = positions[id[0]], p1 = positions[id[1]], p2 = positions[id[2]];
+    volume += glm::dot(p0, glm::cross(p1, p2));
+  }
+  std::sort(forward.begin(), forward.end());
+  if (std::adjacent_find(forward.begin(), forward.end()) != forward.end()) return false;
+  std::sort(reverse.begin(), reverse.end());
+  return forward == reverse && volume > 0.0 && std::isfinite(volume);
+}
+
 void finalizeMesh(Mesh& m) {
   const size_t nv = m.positions.size(), nf = m.indices.size() / 3;
   float r2 = 0.0f;
@@ -61,6 +90,7 @@ void finalizeMesh(Mesh& m) {
     // Vertices touching only zero-area faces (or none) get +Z: finite, and harmless to light.
     m.normals[i] = len > 0.0 && std::isfinite(len) ? glm::vec3(a / len) : glm::vec3(0.0f, 0.0f, 1.0f);
   }
+  m.closed = closedSurface(m.positions, m.indices, m.sourceVertex);
   computeFaceTints(m);
   m.report.vertices = nv;
   m.report.triangles = nf;

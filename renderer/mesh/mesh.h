@@ -71,6 +71,10 @@ struct Mesh {
   std::vector<glm::vec3> faceCentroids;   // per triangle
   std::vector<glm::vec3> faceNormals;     // per triangle; zero for zero-area triangles
   float radius = 1.0f;                    // bounding sphere radius about the origin
+  // Every edge joins exactly two triangles wound in opposite directions, and they enclose a
+  // positive volume: seen from outside, every back face lies behind a front face
+  // (closedSurface below; finalizeMesh fills it).
+  bool closed = false;
   // Appearance from the file, all optional (empty when the file has none). Vertices are split
   // where a file vertex has two texture coordinates or borders two materials, so every
   // attribute is per vertex; split vertices share their normal (sourceVertex).
@@ -94,6 +98,10 @@ struct Mesh {
 // Fills the radius, centroids and normals from `positions` and `indices` (used by the loader
 // and by meshes built in code, e.g. the benchmark's generated icosphere).
 void finalizeMesh(Mesh& m);
+// Whether the triangles `indices` (vertex `slot`s: split vertices welded) form a closed,
+// consistently wound surface enclosing positive volume (Mesh::closed).
+bool closedSurface(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
+                   const std::vector<std::uint32_t>& sourceVertex);
 // faceTints from the texture maps (part of finalizeMesh; empty when no material has a map).
 void computeFaceTints(Mesh& m);
 

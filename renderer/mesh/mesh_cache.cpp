@@ -172,6 +172,8 @@ std::optional<Mesh> readMeshCache(const std::string& path) {
     if (!finite(m.positions[i]) || !finite(m.normals[i])) return std::nullopt;
   for (std::size_t i = 0; i < nf; ++i)
     if (!finite(m.faceCentroids[i]) || !finite(m.faceNormals[i])) return std::nullopt;
+  // Not stored: worked out again, so an entry can never claim a closed surface it lacks.
+  m.closed = closedSurface(m.positions, m.indices, {});
   r.file = path;
   r.vertices = counts[0];
   r.triangles = counts[1];

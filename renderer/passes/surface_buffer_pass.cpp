@@ -10,7 +10,7 @@ namespace {
 Status drawMesh(FrameContext& f, const gl::MeshProgram& variant, bool pattern) {
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};
-  gl::apply(gl::pass::kMesh);
+  gl::apply(f.meshPass(gl::pass::kMesh));
   (*prog)->use();
   setMeshTransform(**prog, f.camera);
   if (pattern) f.palette->bindPattern(**prog);

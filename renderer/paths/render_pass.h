@@ -9,6 +9,7 @@
 #include "renderer/core/camera.h"
 #include "renderer/core/frame_stats.h"
 #include "renderer/core/result.h"
+#include "renderer/gl/pass_state.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/gpu_materials.h"
@@ -53,6 +54,16 @@ struct FrameContext {
   // Set where this frame's triangle, vertex, pixel or smooth pass leaves its turned lookups to one
   // pass per pixel after it (passes/turn_resolve_pass.h).
   TurnResolvePass* turnResolve = nullptr;
+  // Set where no back face can show (a closed mesh wholly beyond the near plane, Mesh::closed):
+  // the mesh passes drop them in the rasterizer. Drawn first in an unsorted order, they would
+  // pass the depth test and be shaded, then be covered (on the 871K torus, about a third of
+  // the stencil path's frame).
+  bool cullBackFaces = false;
+  // A mesh pass's preset with that culling.
+  gl::PassState meshPass(gl::PassState preset) const {
+    if (cullBackFaces) preset.cull = GL_BACK;
+    return preset;
+  }
 
   // A palette's program variant for this output (the frame's palette, or another drawn in the
   // same frame: a control palette); selections are the same turned or not, so they ignore the

@@ -26,7 +26,7 @@ Status ShadedPath::draw(FrameContext& f) {
     variant.deferTurn = true;
     variant.palette->orientBins = 0;
   }
-  gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
+  gl::apply(f.meshPass(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh));
   if (!variant.materials || f.gpuMesh.materialRuns().empty()) {
     Result<gl::ShaderProgram*> prog = f.program(variant);
     if (!prog) {

@@ -105,7 +105,7 @@ Status StencilPath::draw(FrameContext& f) {
 
   // (1) the bucket's triangles mark the pixels where they are visible so far with `mark`
   auto drawMask = [&](int k, std::uint32_t count, int mark) {
-    gl::PassState state = gl::pass::kStencilMask;
+    gl::PassState state = f.meshPass(gl::pass::kStencilMask);
     state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
     gl::apply(state);
     glStencilFunc(GL_ALWAYS, mark, 0xFF);

@@ -39,7 +39,7 @@ Status TrianglePath::draw(FrameContext& f) {
     return Error{prog.error()};
   }
   gl::ShaderProgram& p = **prog;
-  gl::apply(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh);
+  gl::apply(f.meshPass(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh));
   p.use();
   setMeshTransform(p, f.camera);
   f.bindPalette(p);

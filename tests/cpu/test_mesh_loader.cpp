@@ -1,7 +1,10 @@
 // CPU tier: the mesh loader's rules, on small OBJ files the tests write themselves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <sstream>
 
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
@@ -40,6 +43,39 @@ TEST(MeshLoader, LoadsATriangleAndReportsIt) {
   EXPECT_EQ(m->report.skipped_faces, 0u);
   EXPECT_NEAR(glm::length(m->faceNormals[0]), 1.0f, 1e-6f);
   EXPECT_NEAR(m->faceNormals[0].z, 1.0f, 1e-6f);  // counter-clockwise in xy faces +z
+}
+
+// Mesh::closed (what lets the mesh passes drop back faces) only for a surface that encloses a
+// volume from outside: a cube, also with its corners split for texture coordinates; not
+// with a face missing, nor turned inside out, nor with a face wound against its neighbours.
+TEST(MeshLoader, ClosedSurfacesAreToldFromOpenInvertedAndMiswoundOnes) {
+  TempDir d;
+  const std::string corners = "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n";
+  const std::vector<std::string> faces = {"1 4 3 2", "5 6 7 8", "1 2 6 5", "2 3 7 6", "3 4 8 7", "4 1 5 8"};  // outward
+  auto cube = [&](int skip, int flip, bool inverted, bool texcoords) {
+    std::string obj = corners + (texcoords ? "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n" : "");
+    for (int i = 0; i < int(faces.size()); ++i) {
+      if (i == skip) continue;
+      std::istringstream in(faces[std::size_t(i)]);
+      std::vector<std::string> v{std::istream_iterator<std::string>(in), {}};
+      if (inverted || i == flip) std::reverse(v.begin(), v.end());
+      obj += "f";
+      for (std::size_t k = 0; k < v.size(); ++k) obj += " " + v[k] + (texcoords ? "/" + std::to_string(k + 1) : "");
+      obj += "\n";
+    }
+    auto m = loadMesh(d.write("cube.obj", obj));
+    EXPECT_TRUE(m) << m.error();
+    return m ? m->closed : false;
+  };
+  EXPECT_TRUE(cube(-1, -1, false, false));
+  EXPECT_TRUE(cube(-1, -1, false, true));  // vertices split by texture coordinates are welded
+  EXPECT_FALSE(cube(2, -1, false, false));
+  EXPECT_FALSE(cube(-1, -1, true, false));
+  EXPECT_FALSE(cube(-1, 3, false, false));
+  // Generated meshes too: the icosphere and torus are closed, a square is not.
+  EXPECT_TRUE(test::icosphere(2).closed);
+  EXPECT_TRUE(test::torus(24, 12).closed);
+  EXPECT_FALSE(test::square(2).closed);
 }
 
 TEST(MeshLoader, ConcavePolygonIsEarClippedNotFanned) {

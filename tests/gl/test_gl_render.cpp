@@ -77,6 +77,39 @@ TEST_F(Fixture, StencilEqualsTriangleOnA500KTriangleMesh) {
   expectStencilEqualsTriangle(*r, "torus");
 }
 
+// Back faces are dropped (RenderSettings::cullHiddenBackFaces) only where none can show: a
+// closed sphere seen from outside draws the same picture either way in every palette path; from
+// inside it, and for an open square, nothing is dropped (inside, the sphere's back faces are
+// all there is to see).
+TEST_F(Fixture, BackFacesAreDroppedOnlyWhereNoneCanShow) {
+  const Mesh sphere = test::icosphere(3);
+  const Mesh square = test::square(4);
+  ASSERT_TRUE(r->setPalette(greyRamp(8)));
+  const int w = 160, h = 120;
+  const CameraMatrices outside = OrbitCamera(30.0f, 20.0f, 3.0f).matrices(float(w) / h);
+  CameraMatrices inside;
+  inside.view = glm::lookAt(glm::vec3(0.1f, 0.0f, 0.2f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0, 1, 0));
+  inside.projection = glm::perspective(glm::radians(60.0f), float(w) / h, 0.05f, 10.0f);
+  struct Case {
+    const Mesh* mesh;
+    const CameraMatrices* camera;
+    bool culled;
+  };
+  for (const Case& c : {Case{&sphere, &outside, true}, Case{&sphere, &inside, false}, Case{&square, &outside, false}}) {
+    r->setMesh(c.mesh);
+    for (RenderPath path : {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
+      RenderSettings s;
+      s.path = path;
+      const ImageRGBA8 dropped = renderImage(*r, *c.camera, s, w, h);
+      EXPECT_EQ(r->stats().backFacesCulled, c.culled) << pathInfo(path).name;
+      s.cullHiddenBackFaces = false;
+      const ImageRGBA8 all = renderImage(*r, *c.camera, s, w, h);
+      EXPECT_FALSE(r->stats().backFacesCulled);
+      EXPECT_EQ(countDiffering(dropped, all), 0) << pathInfo(path).name << (c.culled ? " outside" : " inside or open");
+    }
+  }
+}
+
 TEST_F(Fixture, NaiveStencilDrawsTheSameImage) {
   auto mesh = loadMesh(sourcePath("models/teapot.obj"));
   ASSERT_TRUE(mesh);
