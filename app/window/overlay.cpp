@@ -27,7 +27,8 @@ void drawOverlay(Viewer& v) {
     ImGui::Text("pattern fit: %.3f ms, %d samples", st.cpuPatternMs, st.patternSamples);
   ImGui::Text("CPU: shading %.2f ms, frame %.2f ms   GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
               st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
-  ImGui::Text("%zu triangles, %d non-empty buckets", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets);
+  ImGui::Text("%zu triangles, %d non-empty buckets%s", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets,
+              st.backFacesCulled ? ", closed: back faces dropped" : "");
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
   if (st.surfaceBuffers) ImGui::Text("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);

@@ -1,6 +1,7 @@
 // The on-disk mesh cache (see mesh_cache.h). Layout, little-endian as written by this machine:
 // magic "NPRMESH", format version, the source's absolute path, size and mtime, the report's
-// counts, centre, scale and warnings, the radius, then the arrays with their lengths.
+// counts, centre, scale, the radius, whether the surface is closed, the warnings, then the arrays
+// with their lengths.
 #include "renderer/mesh/mesh_cache.h"
 
 #include <sys/mman.h>
@@ -19,7 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr char kMagic[8] = {'N', 'P', 'R', 'M', 'E', 'S', 'H', '\0'};
-constexpr std::uint32_t kVersion = 2;  // 2: models with materials are no longer cached
+constexpr std::uint32_t kVersion = 3;  // 2: models with materials are no longer cached; 3: Mesh::closed
 
 struct SourceKey {
   std::string path;
@@ -155,7 +156,11 @@ std::optional<Mesh> readMeshCache(const std::string& path) {
   LoadReport& r = m.report;
   std::uint64_t counts[7];
   std::uint64_t nWarnings = 0;
-  if (!in.pod(counts) || !in.pod(r.original_centre) || !in.pod(r.original_scale) || !in.pod(m.radius) || !in.pod(nWarnings)) return std::nullopt;
+  std::uint8_t closed = 0;
+  if (!in.pod(counts) || !in.pod(r.original_centre) || !in.pod(r.original_scale) || !in.pod(m.radius) || !in.pod(closed) ||
+      !in.pod(nWarnings) || closed > 1)
+    return std::nullopt;
+  m.closed = closed == 1;
   if (nWarnings > 1000) return std::nullopt;
   r.warnings.resize(nWarnings);
   for (std::string& w : r.warnings)
@@ -172,8 +177,6 @@ std::optional<Mesh> readMeshCache(const std::string& path) {
     if (!finite(m.positions[i]) || !finite(m.normals[i])) return std::nullopt;
   for (std::size_t i = 0; i < nf; ++i)
     if (!finite(m.faceCentroids[i]) || !finite(m.faceNormals[i])) return std::nullopt;
-  // Not stored: worked out again, so an entry can never claim a closed surface it lacks.
-  m.closed = closedSurface(m.positions, m.indices, {});
   r.file = path;
   r.vertices = counts[0];
   r.triangles = counts[1];
@@ -214,6 +217,7 @@ bool writeMeshCache(const std::string& path, const Mesh& m) {
     out.pod(r.original_centre);
     out.pod(r.original_scale);
     out.pod(m.radius);
+    out.pod(static_cast<std::uint8_t>(m.closed ? 1 : 0));
     out.pod(static_cast<std::uint64_t>(r.warnings.size()));
     for (const std::string& w : r.warnings) out.string(w);
     out.array(m.positions);

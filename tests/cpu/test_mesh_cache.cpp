@@ -36,6 +36,7 @@ class MeshCache : public ::testing::Test {
     EXPECT_TRUE(a.faceCentroids == b.faceCentroids);
     EXPECT_TRUE(a.faceNormals == b.faceNormals);
     EXPECT_EQ(a.radius, b.radius);
+    EXPECT_EQ(a.closed, b.closed);
     EXPECT_EQ(a.report.triangles, b.report.triangles);
     EXPECT_EQ(a.report.warnings, b.report.warnings);
   }
@@ -47,6 +48,7 @@ TEST_F(MeshCache, UnchangedFileReloadsFromTheCacheIdentically) {
   auto parsed = loadMesh(model);
   ASSERT_TRUE(parsed) << parsed.error();
   EXPECT_FALSE(parsed->report.from_cache);
+  EXPECT_TRUE(parsed->closed);  // kept in the entry, as the rest
   auto cached = loadMesh(model);
   ASSERT_TRUE(cached) << cached.error();
   EXPECT_TRUE(cached->report.from_cache);
