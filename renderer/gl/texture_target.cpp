@@ -2,25 +2,29 @@
 #include "renderer/gl/texture_target.h"
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/gl/texture.h"
 
 namespace npr::gl {
 
-bool TextureTarget::resize(const glm::ivec2& size, GLint internalFormat, GLenum format) {
+bool TextureTarget::resize(const glm::ivec2& size, GLenum internalFormat) {
   if (size == size_ && fbo_.id()) return false;
-  colour_ = createTexture();
-  glBindTexture(GL_TEXTURE_2D, colour_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, size.x, size.y, 0, format, GL_FLOAT, nullptr);
-  setNearestSingleLevel(GL_TEXTURE_2D);
-  depth_ = createTexture();
-  glBindTexture(GL_TEXTURE_2D, depth_.id());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, size.x, size.y, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
-  setNearestSingleLevel(GL_TEXTURE_2D);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  fbo_ = createFramebuffer();
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_.id(), 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_.id(), 0);
+  // Direct state access throughout: resizing happens in the middle of passes that draw into
+  // the caller's framebuffer, and leaves every binding (framebuffer, texture unit) as it was.
+  const auto image = [&](GLenum storage) {
+    GLuint n = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &n);
+    Texture t(n);
+    glTextureStorage2D(n, 1, storage, size.x, size.y);
+    glTextureParameteri(n, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(n, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+  };
+  colour_ = image(internalFormat);
+  depth_ = image(GL_DEPTH_COMPONENT24);
+  GLuint n = 0;
+  glCreateFramebuffers(1, &n);
+  fbo_ = Framebuffer(n);
+  glNamedFramebufferTexture(n, GL_COLOR_ATTACHMENT0, colour_.id(), 0);
+  glNamedFramebufferTexture(n, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   size_ = size;
   return true;
 }

@@ -13,9 +13,9 @@ namespace npr::gl {
 
 class TextureTarget {
  public:
-  // (Re)allocates at `size` with a colour texture of `internalFormat` (uploaded as `format`);
-  // true when it did, false when it already had that size.
-  bool resize(const glm::ivec2& size, GLint internalFormat, GLenum format);
+  // (Re)allocates at `size` with a colour texture of `internalFormat`; true when it did, false
+  // when it already had that size. Changes no binding.
+  bool resize(const glm::ivec2& size, GLenum internalFormat);
   // Binds for drawing over the whole target and clears colour (to 0) and depth.
   void bindAndClear() const;
   // Binds for drawing over the whole target, clearing nothing.

@@ -14,7 +14,7 @@ Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, c
   if (!ls.imageSpace) return okStatus();
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  if (target_.resize({viewport.z, viewport.w}, GL_RGBA16F, GL_RGBA)) ++stats.bufferUploads;
+  if (target_.resize({viewport.z, viewport.w}, GL_RGBA16F)) ++stats.bufferUploads;
   // The geometry pass: normals and depth of what this frame shows.
   target_.bindAndClear();
   Status status = drawGeometry(mesh, camera, GeometryOutput::EyeNormal, programs, stats);

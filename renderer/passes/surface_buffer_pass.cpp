@@ -33,18 +33,13 @@ bool SurfaceBufferPass::resize(const glm::ivec2& size, FrameStats& stats) {
   const bool angles = content_ == Content::StrokeAngles;
   // Pattern coordinates grow with zoom (texels per object unit): full floats, the octave packed
   // into the first (shaders/pattern.glsl).
-  if (!target_.resize(size, angles ? GL_RG16F : GL_RG32F, GL_RG)) return false;
+  if (!target_.resize(size, angles ? GL_RG16F : GL_RG32F)) return false;
   ++stats.bufferUploads;
   return true;
 }
 
 GLuint SurfaceBufferPass::output(const glm::ivec4& viewport, FrameStats& stats) {
-  GLint target = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
-  if (resize({viewport.x + viewport.z, viewport.y + viewport.w}, stats)) {  // resizing binds the target's own
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
-    glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
-  }
+  resize({viewport.x + viewport.z, viewport.y + viewport.w}, stats);
   return target_.colour();
 }
 

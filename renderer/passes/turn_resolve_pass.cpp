@@ -7,17 +7,11 @@
 namespace npr {
 
 bool TurnResolvePass::begin(FrameContext& f, bool blend) {
-  GLint caller = 0;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &caller);
   const glm::ivec4& vp = f.viewport;
   gl::TextureTarget& buffer = blend ? blend_ : one_;
   // Sized to the framebuffer's pixels, written and read at their own coordinates. Full floats:
   // the angle read back is the one the mesh pass found, so the picture is the in-place turn's.
-  if (buffer.resize({vp.x + vp.z, vp.y + vp.w}, blend ? GL_RGBA32F : GL_RG32F, blend ? GL_RGBA : GL_RG)) {
-    ++f.stats.bufferUploads;  // resizing bound the buffer's own framebuffer
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(caller));
-  }
-  glViewport(vp.x, vp.y, vp.z, vp.w);
+  if (buffer.resize({vp.x + vp.z, vp.y + vp.w}, blend ? GL_RGBA32F : GL_RG32F)) ++f.stats.bufferUploads;
   blending_ = blend;
   return target_.bind({buffer.colour(), 0});
 }

@@ -33,7 +33,7 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
   GLint viewport[4];
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   glGetIntegerv(GL_VIEWPORT, viewport);
-  if (target_.resize({kSize, kSize}, GL_RGBA8, GL_RGBA)) {
+  if (target_.resize({kSize, kSize}, GL_RGBA8)) {
     ++stats.bufferUploads;
     sampled_ = gl::createTexture();
     glBindTexture(GL_TEXTURE_2D, sampled_.id());

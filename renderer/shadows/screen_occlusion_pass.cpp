@@ -35,9 +35,9 @@ Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, cons
   // Half the viewport's resolution (a quarter of the pixels): occlusion varies slowly, and the
   // frame reads it back filtered.
   const glm::ivec2 size = glm::max(glm::ivec2(viewport.z, viewport.w) / 2, glm::ivec2(1));
-  if (geometry_.resize(size, GL_RGBA16F, GL_RGBA)) ++stats.bufferUploads;
-  if (raw_.resize(size, GL_R16F, GL_RED)) ++stats.bufferUploads;
-  if (blurred_.resize(size, GL_RG32F, GL_RG)) ++stats.bufferUploads;  // occlusion, linear depth
+  if (geometry_.resize(size, GL_RGBA16F)) ++stats.bufferUploads;
+  if (raw_.resize(size, GL_R16F)) ++stats.bufferUploads;
+  if (blurred_.resize(size, GL_RG32F)) ++stats.bufferUploads;  // occlusion, linear depth
   if (kernel_.empty()) kernel_ = hemisphereKernel(gl::ScreenOcclusionProgram::kKernelSize);
   Status status = okStatus();
   auto restore = [&] {

@@ -1,7 +1,8 @@
 // GL tier: programs, their uniforms, the program cache and the pass states. A uniform name
 // that no stage declares is reported like a GL error (so the test that triggers it fails); a
 // uniform a variant compiled out is skipped quietly; the cache builds each variant once; each
-// pass-state preset is what GL holds after it is applied.
+// pass-state preset is what GL holds after it is applied; an off-screen target resized in the
+// middle of a pass leaves that pass's bindings alone.
 #include <gtest/gtest.h>
 
 #include "gl/gl_test_env.h"
@@ -9,6 +10,7 @@
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/shader_program.h"
+#include "renderer/gl/texture_target.h"
 
 namespace npr {
 namespace {
@@ -124,6 +126,43 @@ TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
   EXPECT_EQ(integer(GL_STENCIL_WRITEMASK) & 0xFF, 0xFF);
   EXPECT_EQ(integer(GL_CURRENT_PROGRAM), 0);
   EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), 0);
+}
+
+// Passes resize their buffers while the caller's framebuffer is bound for drawing: the resize
+// must not rebind it (nor the active unit's texture), and the target must be complete.
+TEST(TextureTarget, ResizingLeavesBindingsAloneAndGivesACompleteTarget) {
+  const int before = gl::checkErrors("before");
+  GLuint fbo = 0, tex = 0;
+  glCreateFramebuffers(1, &fbo);
+  glCreateTextures(GL_TEXTURE_2D, 1, &tex);
+  glTextureStorage2D(tex, 1, GL_RGBA8, 4, 4);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, tex, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  gl::TextureTarget target;
+  for (const glm::ivec2 size : {glm::ivec2(37, 21), glm::ivec2(64, 48)}) {
+    ASSERT_TRUE(target.resize(size, GL_RG32F));
+    EXPECT_EQ(integer(GL_DRAW_FRAMEBUFFER_BINDING), GLint(fbo)) << size.x;
+    EXPECT_EQ(integer(GL_READ_FRAMEBUFFER_BINDING), GLint(fbo)) << size.x;
+    EXPECT_EQ(integer(GL_TEXTURE_BINDING_2D), GLint(tex)) << size.x;
+    EXPECT_FALSE(target.resize(size, GL_RG32F));  // same size: nothing reallocated
+    // Complete, and drawn to at its own size.
+    target.bindAndClear();
+    EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    GLint v[4] = {};
+    glGetIntegerv(GL_VIEWPORT, v);
+    EXPECT_EQ(glm::ivec2(v[2], v[3]), size);
+    GLint w = 0;
+    glGetTextureLevelParameteriv(target.colour(), 0, GL_TEXTURE_WIDTH, &w);
+    EXPECT_EQ(w, size.x);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  }
+  EXPECT_EQ(gl::checkErrors("texture target"), before);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteTextures(1, &tex);
 }
 
 }  // namespace
