@@ -2,7 +2,8 @@
 // pattern moves with it, pixel for pixel; with `screen` the pattern stays where it was on the
 // screen. Under zoom the anchored pattern's octaves are dissolved only mid-octave and the tone
 // holds. Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
-// similarity fit recovers known motions; a view jump restarts the frame.
+// similarity fit recovers known motions; a view jump restarts the frame. The object-space
+// pattern stays on the surface and shows each point's texel at its depth's octave.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -197,6 +198,73 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
         EXPECT_LT(misses, 0.02) << pathInfo(path).name;
         EXPECT_LT(misses * 5.0, screenMisses) << pathInfo(path).name;
       }
+    }
+  }
+}
+
+// Where the object-space pattern reads its texels: on a square facing the camera at a known
+// depth, every pixel shows the texel floor(p texels) of its surface point p (projected along
+// the normal's axis), with texels per object unit the power of two whose texels are 1 to 2
+// pixels wide there; the coarse octave reads level 0, the fine one level 1, and the fine one's
+// share of the pixels is how far the depth has gone through its octave. The palette's one
+// layer spells each texel's index and level in its colour, at level 0 and at a level 1 of its
+// own. In every path (the stencil path through its coordinate buffer; per-triangle and
+// per-vertex paths by the face's normal).
+TEST_F(Fixture, ObjectPatternTexelsAreTheSurfacePointsAtItsDepthsOctave) {
+  Palette coded;
+  PaletteEntry e;
+  auto spell = [](int size, std::uint8_t level, int step) {
+    ImageRGBA8 img{size, size, std::vector<std::uint8_t>(std::size_t(size) * size * 4)};
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        std::uint8_t* t = &img.pixels[(std::size_t(j) * size + i) * 4];
+        t[0] = std::uint8_t(i * step), t[1] = std::uint8_t(j * step), t[2] = level, t[3] = 255;
+      }
+    return img;
+  };
+  e.image = spell(64, 0, 4);
+  e.mips = {spell(32, 255, 8)};
+  coded.entries = {e};
+  const Mesh sq = test::square();
+  r->setMesh(&sq);
+  ASSERT_TRUE(r->setPalette(coded));
+  const int w = 160, h = 160;
+  CameraMatrices cam;
+  cam.projection = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f);
+  const float pixelSize = 2.0f / (cam.projection[1][1] * float(h));  // object units per pixel at depth 1
+  // Depths where an object unit is m 2^-7 ... wide, near the ends of an octave and in its middle.
+  for (float m : {1.9f, 1.5f, 1.1f}) {
+    const float depth = m * std::exp2(-7.0f) / pixelSize;
+    cam.view = glm::lookAt(glm::vec3(0.0f, 0.0f, depth), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::mat4 toObject = glm::inverse(cam.view);
+    const ImageRGBA32F eye = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+    for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Smooth}) {
+      RenderSettings s;
+      s.path = path;
+      s.pattern = PatternSpace::Object;
+      const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
+      int n = 0, fine = 0, wrong = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const std::size_t i = (std::size_t(y) * w + x) * 4;
+          if (eye.pixels[i + 3] <= 0.0f) continue;
+          const glm::vec3 pe(eye.pixels[i], eye.pixels[i + 1], eye.pixels[i + 2]);
+          int k = 0;
+          std::frexp(-pe.z * pixelSize, &k);  // = m 2^(k-1): texels of 2^k units
+          const glm::vec3 p = glm::vec3(toObject * glm::vec4(pe, 1.0f)) * std::exp2(float(-k));
+          const std::uint8_t* c = &img.pixels[(std::size_t(h - 1 - y) * w + x) * 4];  // its rows run down
+          const bool isFine = c[2] > 127;
+          const int period = isFine ? 32 : 64, step = isFine ? 8 : 4;
+          auto index = [&](float u) { return int(std::floor(u)) & (period - 1); };
+          ++n;
+          fine += isFine;
+          wrong += c[0] != index(p.x) * step || c[1] != index(p.y) * step;
+        }
+      std::printf("m = %.1f, %s: %.4f of the pixels off their texel, %.3f fine\n", double(m), pathInfo(path).name, double(wrong) / std::max(n, 1),
+                  double(fine) / std::max(n, 1));
+      ASSERT_GT(n, w * h / 2) << pathInfo(path).name;
+      EXPECT_LT(double(wrong) / n, 0.01) << pathInfo(path).name << " at m = " << m << ": " << wrong << " of " << n << " pixels";
+      EXPECT_NEAR(double(fine) / n, 2.0 - m, 0.06) << pathInfo(path).name << " at m = " << m;
     }
   }
 }
