@@ -1,7 +1,8 @@
 // GL tier: pattern spaces. A camera-facing square panned by whole pixels: with `anchored` its
 // pattern moves with it, pixel for pixel; with `screen` the pattern stays where it was on the
 // screen. Under zoom the anchored pattern's octaves are dissolved only mid-octave and the tone
-// holds. Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
+// holds; panned by a fraction of a pixel, the anchored pattern moves by that much (phase
+// correlation). Every path draws anchored patterns without GL errors, with 1 and 256 entries; the
 // similarity fit recovers known motions; a view jump restarts the frame. The object-space
 // pattern stays on the surface and shows each point's texel at its depth's octave.
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "support/pattern_motion.h"
+#include "support/phase_correlation.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -145,6 +147,44 @@ TEST(PatternFit, RecoversAKnownSimilarity) {
   EXPECT_NEAR(back.scale * f.scale, 1.0f, 1e-5f);
   // Rotation following off: upright.
   EXPECT_EQ(fitSimilarity(from, to, w, false).rotation, 0.0f);
+}
+
+// The same pan by a fraction of a pixel, measured as the issue asks, by phase correlation
+// between the frames: with bilinear texels (--pattern-filter linear) the anchored pattern moves
+// by the pan to within 0.1 pixel; with the nearest texel (the default), a texel a pixel wide
+// can only move by whole pixels, so it moves by the pan rounded (the frame keeps the exact
+// translation, so the rounding never adds up). The screen's pattern does not move.
+TEST_F(Fixture, AnchoredPatternMovesBySubpixelPansPhaseCorrelationTells) {
+  const Mesh sq = test::square();
+  r->setMesh(&sq);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  const float raking[4] = {0, 2, 1, 0};  // a mid-tone hatching, the same over the whole square
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, raking));
+  const int w = 160, h = 160, window = 128, margin = 16;
+  for (bool linear : {false, true})
+    for (const auto& [pan, steps] : {std::pair{glm::vec2(3.3f, -2.6f), 1}, {glm::vec2(-0.4f, 1.7f), 1}, {glm::vec2(1.8f, -2.7f), 6}})
+      for (PatternSpace space : {PatternSpace::Anchored, PatternSpace::Screen}) {
+        OrbitCamera cam(0.0f, 0.0f, 3.0f);
+        cam.frame(0.6f);  // the square covers the whole view, before and after
+        RenderSettings s;
+        s.path = RenderPath::Pixel;
+        s.pattern = space;
+        s.patternLinearFilter = linear;
+        r->resetPattern();
+        const ImageRGBA8 before = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
+        ImageRGBA8 after;
+        for (int i = 0; i < steps; ++i) {  // several steps: what the pattern shows is still the whole pan's
+          cam.pan(glm::vec2(2.0f * pan.x / w, -2.0f * pan.y / h) / float(steps), float(w) / h);
+          after = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
+        }
+        const glm::vec2 moved = test::phaseCorrelationShift(before, after, margin, margin, window);
+        const glm::vec2 expected = space == PatternSpace::Screen ? glm::vec2(0.0f) : linear ? pan : glm::round(pan);
+        std::printf("%s, %s texels, pan (%.1f, %.1f) in %d: the pattern moved (%.3f, %.3f)\n", patternSpaceName(space),
+                    linear ? "bilinear" : "nearest", double(pan.x), double(pan.y), steps, double(moved.x), double(moved.y));
+        EXPECT_NEAR(moved.x, expected.x, 0.1f) << patternSpaceName(space) << (linear ? " bilinear" : " nearest");
+        EXPECT_NEAR(moved.y, expected.y, 0.1f) << patternSpaceName(space) << (linear ? " bilinear" : " nearest");
+      }
 }
 
 // The object-space pattern is glued to the surface: after an orbit, the texel a surface point
