@@ -4,6 +4,7 @@
 // palettes draw, within 0.1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -49,12 +50,24 @@ TEST(PhaseCorrelation, FindsKnownSubpixelShifts) {
     const float a = (i % 2 ? 0.7f : 2.3f) + 0.2f * u(rng);
     strokes.push_back({glm::vec2(u(rng), u(rng)) * float(kSize + 40) - 20.0f, glm::vec2(std::cos(a), std::sin(a))});
   }
+  // Each 8-pixel cell lists the strokes that reach into it, so a sample tests a few strokes,
+  // not all (the test stays quick under the sanitizers).
+  constexpr float kCell = 8.0f, kOrigin = -32.0f;
+  constexpr int kCells = (kSize + 64) / 8;
+  std::vector<std::vector<int>> cells(std::size_t(kCells) * kCells);
+  auto cellOf = [&](float v) { return std::clamp(int(std::floor((v - kOrigin) / kCell)), 0, kCells - 1); };
+  for (int k = 0; k < int(strokes.size()); ++k) {
+    const glm::vec2 c = strokes[std::size_t(k)].centre;
+    for (int cy = cellOf(c.y - 9.0f); cy <= cellOf(c.y + 9.0f); ++cy)
+      for (int cx = cellOf(c.x - 9.0f); cx <= cellOf(c.x + 9.0f); ++cx) cells[std::size_t(cy) * kCells + std::size_t(cx)].push_back(k);
+  }
   auto hatch = [&](float x, float y) {
     float ink = 0.0f;
     for (int j = 0; j < 4; ++j)
       for (int i = 0; i < 4; ++i) {
         const glm::vec2 p(x + (float(i) + 0.5f) / 4.0f, y + (float(j) + 0.5f) / 4.0f);
-        for (const Stroke& s : strokes) {
+        for (int k : cells[std::size_t(cellOf(p.y)) * kCells + std::size_t(cellOf(p.x))]) {
+          const Stroke& s = strokes[std::size_t(k)];
           const glm::vec2 q = p - s.centre;
           const float along = glm::dot(q, s.direction), across = q.x * s.direction.y - q.y * s.direction.x;
           if (std::fabs(along) < 8.0f && std::fabs(across) < 0.75f) {

@@ -26,7 +26,8 @@ void dft2(std::vector<Complex>& g, int n, int sign) {
       for (int j = 0; j < n; ++j) line[static_cast<std::size_t>(j)] = at(j);
       for (int k = 0; k < n; ++k) {
         Complex s = 0.0;
-        for (int j = 0; j < n; ++j) s += line[static_cast<std::size_t>(j)] * twiddle[static_cast<std::size_t>((std::int64_t(k) * j) % n)];
+        for (int j = 0, t = 0; j < n; ++j, t = t + k >= n ? t + k - n : t + k)  // t = k j mod n
+          s += line[static_cast<std::size_t>(j)] * twiddle[static_cast<std::size_t>(t)];
         out[static_cast<std::size_t>(k)] = s;
       }
       for (int j = 0; j < n; ++j) at(j) = out[static_cast<std::size_t>(j)];
