@@ -293,12 +293,14 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 
 Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
   if (!mesh_) return okStatus();
+  // The whole mesh's, for every part: the parts hide each other's back faces.
+  const bool cullBackFaces = backFacesHidden(camera, s);
   if (groups_.empty() || !s.materials) {
     if (s.materials) materials_.update(*mesh_, lighting_, stats_);
     FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
     frame.turnResolve = turnResolveFor(s, frame.palette, output);
-    frame.cullBackFaces = backFacesHidden(camera, s);
+    frame.cullBackFaces = cullBackFaces;
     if (Status st = drawPart(frame, s.path); !st) return st;
     return drawGround(camera, s, viewport, output);
   }
@@ -310,7 +312,7 @@ Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s,
     FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
     frame.occlusion = occlusionValues(s);
     frame.turnResolve = turnResolveFor(s, palette, output);
-    frame.cullBackFaces = backFacesHidden(camera, s);  // the whole mesh's: parts hide each other's
+    frame.cullBackFaces = cullBackFaces;
     if (Status st = drawPart(frame, s.path); !st) return st;
   }
   return drawGround(camera, s, viewport, output);
