@@ -1,4 +1,5 @@
-// Command-line parsing and validation (see cli.h).
+// Command-line parsing and validation (see cli.h). The settings' options come from the
+// settings table (app/settings/); what is written here are the actions.
 #include "app/cli.h"
 
 #include <CLI/CLI.hpp>
@@ -6,7 +7,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <sstream>
+
+#include "app/settings/style_file.h"
 
 namespace npr {
 namespace {
@@ -32,36 +36,41 @@ int fail(const std::string& msg) {
 
 }  // namespace
 
+const SettingValue* Options::setting(const std::string& key) const {
+  for (const SettingValue& v : settings)
+    if (v.row->key == key) return &v;
+  return nullptr;
+}
+
+Look Options::look() const {
+  Look l;
+  for (const SettingValue& v : settings) (void)v.row->parse(v.value, l);
+  return l;
+}
+
 ParseOutcome parseCommandLine(int argc, char** argv) {
   CLI::App app{"npr-viewer: palette-based non-photorealistic rendering of meshes.\n"
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
-               "whose average colour or intensity matches best, in screen space."};
+               "whose average colour or intensity matches best, in screen space.\n"
+               "Every setting below is also a style-file key (docs/settings.md)."};
   Options o;
-  std::string path, match, size, light, camera, rangeScale, lines, tone, bands, materials, outlineMethod;
-  float outlineOffset = NAN;
-  std::string strokeSize;
+  std::string size, camera;
   std::vector<std::string> paletteFor;
-  std::string animate, pattern, orient, triangleLighting, occlusionMethod;
-  float creaseAngle = NAN, lineWidth = NAN;
+  std::string animate;
   app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
-  app.add_option("--path", path, "Render path: " + userRenderPathNames("|"));
   app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
-  app.add_option("--match", match, "Match mode: colors|intensity|order (default: the palette's); --benchmark also takes all");
-  app.add_option("--range-scale", rangeScale, "IntensityRangeScale S > 0: spreads the palette about its midpoint");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
-  app.add_option("--light", light, "Light position X,Y,Z in model units (the model fits a unit sphere)");
   app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)");
   app.add_flag("--headless", o.headless, "Render through EGL with no window");
+  app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)");
   app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
   app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
   app.add_flag("--info", o.info, "Print the model's load report as one line of JSON and exit");
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
   CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: the benchmark's (default benchmark-results) or --make-palette's");
-  std::string ladder, patternFilter;
-  app.add_option("--pattern-filter", patternFilter,
-                 "Scaled or anchored patterns: nearest (the nearest texel, default) | linear (bilinear in linear light: smoother, slower)");
+  std::string ladder;
   app.add_option("--make-palette", o.makePalette,
                  "Make a palette from IMAGE (with --ladder) or from a stroke image (with --tam), write it to --out DIR and print its report");
   app.add_option("--ladder", ladder, "--make-palette step applied progressively: blur|offset|solarize|posterize|threshold|darken|desaturate");
@@ -70,35 +79,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--style", o.style,
                  "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated) "
                  "or FILE; options given beside it win");
+  app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file");
+  app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (docs/settings.md) and exit");
   app.add_option("--palette-sheet", o.paletteSheet,
                  "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
-  app.add_option("--materials", materials, "on|off: light with the model's own materials, vertex colours and texture maps (default on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
-  app.add_option("--pattern", pattern, "Pattern space: screen (fixed to the window, the original) | anchored (follows the object, stays flat) | object (glued to the surface, triplanar)");
-  app.add_flag("--pattern-no-rotation", o.patternNoRotation, "Anchored patterns move and scale with the object but stay upright");
-  app.add_option("--pattern-scale", o.patternScale,
-                 "Size of a palette texel in screen pixels, 0.125..16 (default: the window's content scale, 1 headless)");
-  app.add_option("--orient", orient,
-                 "Hatching direction: none (the texture's own, default) | curvature (along the surface's form) | light "
-                 "(along the light's gradient) | DEGREES (a fixed screen angle)");
-  app.add_option("--orient-bins", o.orientBins, "Steps the turn is quantised to over 180 degrees (2..64, default 8)");
-  app.add_flag("--strokes", o.strokes, "Painterly brush strokes over the path: particles on the surface, coloured by the palette");
-  app.add_option("--stroke-density", o.strokeDensity, "Strokes per unit area of the model fitted to the unit sphere (default 3000)");
-  app.add_option("--stroke-budget", o.strokeBudget, "At most this many strokes (default 200000)");
-  app.add_option("--stroke-size", strokeSize, "Stroke length x width in pixels, LxW (default 16x6)");
-  app.add_flag("--ground", o.ground, "A ground plane under the model, drawn with the same palette and path");
-  app.add_flag("--shadows", o.shadows, "Cast shadows from every enabled light (GPU-lit paths: vertex, pixel, smooth, reference)");
-  app.add_flag("--occlusion", o.occlusion, "Ambient occlusion baked per vertex on the GPU darkens crevices (GPU-lit paths)");
-  app.add_option("--occlusion-strength", o.occlusionStrength, "How much the occlusion darkens, 0..1 (default 1)");
-  app.add_option("--occlusion-method", occlusionMethod,
-                 "baked (per vertex, once per mesh, default) | screen (per pixel, every frame, from what the frame shows; pixel, smooth and reference paths)");
-  app.add_option("--shadow-palette", o.shadowPalette,
-                 "Control image: a palette drawn where cast shadows fall, blended in by the shadowed share of the light (needs --shadows)");
-  app.add_option("--occlusion-palette", o.occlusionPalette,
-                 "Control image: a palette drawn in crevices, blended in by the ambient occlusion (needs --occlusion)");
-  app.add_option("--triangle-lighting", triangleLighting,
-                 "Per-triangle paths light on the cpu | gpu (read back) | auto (gpu with --shadows, default)");
   app.add_option("--animate", animate,
                  "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
@@ -107,17 +93,33 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)");
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
-  app.add_flag("--gouraud", o.gouraud, "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting");
-  app.add_flag("--naive-stencil", o.naiveStencil, "Stencil path: mask and full-screen quads bucket by bucket, for every bucket (the original's cost)");
-  app.add_option("--lines", lines, "Feature lines, comma-separated: silhouette,crease,boundary,image,hardware,rim");
-  app.add_option("--outline", outlineMethod, "Hardware outlines (--lines hardware) from back faces: fatten (even widths), offset or edges");
-  app.add_option("--outline-offset", outlineOffset, "--outline offset: back faces pulled this fraction of their depth towards the eye (0..0.2, default 0.005)");
-  app.add_option("--crease-angle", creaseAngle, "Dihedral angle above which an edge is a crease, degrees (default 60)");
-  app.add_option("--line-width", lineWidth, "Line width in pixels (default 2)");
-  app.add_flag("--sketchy", o.sketchy, "Draw each line as a few jittered strokes");
-  app.add_flag("--line-falloff", o.lineFalloff, "Thinner lines with distance");
-  app.add_option("--bands", bands, "Cel band thresholds T1,T2,... on the match query axis [0,3] (one fewer than the palette's tones)");
-  app.add_option("--tone", tone, "Lighting model the palette matches against: opengl|gooch|splashback|charcoal");
+  bool naiveStencil = false;
+  app.add_flag("--naive-stencil", naiveStencil,
+               "Stencil path: mask and full-screen quads bucket by bucket, for every bucket (the original's cost; "
+               "--no-stencil-scissor --no-stencil-skip-empty --no-stencil-masks-first)");
+
+  // The settings: one option per row of the table, in its sections.
+  std::map<const Setting*, std::string> given;  // the row's value as the command line gave it
+  std::map<const Setting*, CLI::Option*> options;
+  const Look defaults;
+  for (const SettingSection& section : settingSections())
+    for (const Setting& row : settingsTable()) {
+      if (row.section != section.name || !row.cli) continue;
+      const std::string help = row.help + " (" + row.valueForm() + "; default " + row.format(defaults) + ")";
+      const Setting* r = &row;
+      CLI::Option* opt = nullptr;
+      if (row.type == SettingType::Bool && !row.cliTakesValue) {
+        opt = app.add_flag_function("--" + row.key + ",!--no-" + row.key,
+                                    [&given, r](std::int64_t count) { given[r] = count > 0 ? "on" : "off"; }, help);
+      } else {
+        opt = app.add_option_function<std::string>("--" + row.key, [&given, r](const std::string& v) { given[r] = v; }, help);
+      }
+      opt->group(section.title);
+      options[r] = opt;
+      for (const auto& [alias, value] : row.cliAliases)
+        app.add_flag_function(alias, [&given, r, value = value](std::int64_t) { given[r] = value; }, "Same as --" + row.key + " " + value)
+            ->group(section.title);
+    }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -126,10 +128,26 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return {std::nullopt, fail(e.what())};
   }
-  if (!patternFilter.empty()) {
-    if (patternFilter != "nearest" && patternFilter != "linear")
-      return {std::nullopt, fail("unknown --pattern-filter '" + patternFilter + "': use nearest or linear")};
-    o.patternLinear = patternFilter == "linear";
+  if (naiveStencil)
+    for (const char* key : {"stencil-scissor", "stencil-skip-empty", "stencil-masks-first"}) given[findSetting(key)] = "off";
+  // Every value is checked here, so that a bad one stops before anything loads.
+  Look scratch;
+  for (const Setting& row : settingsTable()) {
+    const auto it = given.find(&row);
+    if (it == given.end()) continue;
+    std::string value = it->second;
+    if (row.key == "match" && value == "all" && o.benchmark) {
+      o.allMatchModes = true;
+      continue;
+    }
+    if (row.type == SettingType::File) {
+      value = resolvePalette(value, ".");
+      std::error_code ec;
+      if (value != "none" && !std::filesystem::exists(value, ec))
+        return {std::nullopt, fail("--" + row.key + ": palette file '" + value + "' does not exist")};
+    }
+    if (Status s = row.parse(value, scratch); !s) return {std::nullopt, fail("--" + row.key + " '" + value + "': " + s.error())};
+    o.settings.push_back({&row, value, "--" + row.key});
   }
   if (!ladder.empty()) {
     o.ladder = parseLadder(ladder);
@@ -144,53 +162,6 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   } else if (o.ladder || o.tam) {
     return {std::nullopt, fail("--ladder and --tam go with --make-palette IMAGE")};
   }
-  if (!path.empty()) {
-    o.path = parseRenderPath(path);
-    if (!o.path || !pathInfo(*o.path).userSelectable)
-      return {std::nullopt, fail("unknown --path '" + path + "': use one of " + userRenderPathNames())};
-  }
-  if (!match.empty() && match == "all" && o.benchmark) {
-    o.allMatchModes = true;
-  } else if (!match.empty()) {
-    o.match = parseMatchMode(match);
-    if (!o.match) return {std::nullopt, fail("unknown --match '" + match + "': use colors, intensity or order")};
-  }
-  if (!materials.empty()) {
-    if (materials != "on" && materials != "off") return {std::nullopt, fail("--materials must be on or off, got '" + materials + "'")};
-    o.materials = materials == "on";
-  }
-  if (!pattern.empty()) {
-    o.pattern = parsePatternSpace(pattern);
-    if (!o.pattern) return {std::nullopt, fail("unknown --pattern '" + pattern + "': use screen, anchored or object")};
-  }
-  if (o.patternScale && !(*o.patternScale >= RenderSettings::kMinPatternScale && *o.patternScale <= RenderSettings::kMaxPatternScale))
-    return {std::nullopt, fail("--pattern-scale must be in 0.125..16 (texel size in pixels), got " + std::to_string(*o.patternScale))};
-  if (!orient.empty()) {
-    o.orient = parseOrient(orient);
-    if (!o.orient) return {std::nullopt, fail("unknown --orient '" + orient + "': use none, curvature, light or an angle in degrees")};
-  }
-  if (o.orientBins && (*o.orientBins < OrientSettings::kMinBins || *o.orientBins > OrientSettings::kMaxBins))
-    return {std::nullopt, fail("--orient-bins must be " + std::to_string(OrientSettings::kMinBins) + ".." +
-                                   std::to_string(OrientSettings::kMaxBins) + ", got " + std::to_string(*o.orientBins))};
-  if (!occlusionMethod.empty()) {
-    if (occlusionMethod == "baked") o.occlusionMethod = OcclusionMethod::Baked;
-    else if (occlusionMethod == "screen") o.occlusionMethod = OcclusionMethod::Screen;
-    else return {std::nullopt, fail("unknown --occlusion-method '" + occlusionMethod + "': use baked or screen")};
-  }
-  if (!triangleLighting.empty()) {
-    if (triangleLighting == "cpu") o.triangleLighting = TriangleLighting::Cpu;
-    else if (triangleLighting == "gpu") o.triangleLighting = TriangleLighting::Gpu;
-    else if (triangleLighting == "auto") o.triangleLighting = TriangleLighting::Auto;
-    else return {std::nullopt, fail("unknown --triangle-lighting '" + triangleLighting + "': use cpu, gpu or auto")};
-  }
-  if (o.strokeDensity && !(*o.strokeDensity >= StrokeSettings::kMinDensity && *o.strokeDensity <= StrokeSettings::kMaxDensity))
-    return {std::nullopt, fail("--stroke-density must be in 1..1000000 strokes per unit area")};
-  if (o.strokeBudget && !(*o.strokeBudget >= 0 && *o.strokeBudget <= StrokeSettings::kMaxBudget))
-    return {std::nullopt, fail("--stroke-budget must be in 0..4000000")};
-  if (!strokeSize.empty() && !(o.strokeSize = parseStrokeSize(strokeSize)))
-    return {std::nullopt, fail("--stroke-size must be LxW in pixels, each 1..256, got '" + strokeSize + "'")};
-  if (o.occlusionStrength && !(*o.occlusionStrength >= 0.0f && *o.occlusionStrength <= 1.0f))
-    return {std::nullopt, fail("--occlusion-strength must be in 0..1, got " + std::to_string(*o.occlusionStrength))};
   if (!animate.empty()) {
     Result<CameraAnimation> a = parseCameraAnimation(animate);
     if (!a) return {std::nullopt, fail(a.error())};
@@ -211,9 +182,6 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (ec || !std::filesystem::is_directory(o.saveFrames))
       return {std::nullopt, fail("--save-frames: cannot create the folder '" + o.saveFrames + "'" + (ec ? " (" + ec.message() + ")" : ""))};
   }
-  for (const auto& [option, file] : {std::pair{"--shadow-palette", &o.shadowPalette}, std::pair{"--occlusion-palette", &o.occlusionPalette}})
-    if (!file->empty() && !std::filesystem::exists(*file))
-      return {std::nullopt, fail(std::string(option) + ": palette file '" + *file + "' does not exist")};
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == pf.size())
@@ -222,12 +190,6 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (!std::filesystem::exists(file)) return {std::nullopt, fail("--palette-for " + pf.substr(0, eq) + ": palette file '" + file + "' does not exist")};
     o.materialPalettes.emplace_back(pf.substr(0, eq), file);
   }
-  if (!rangeScale.empty()) {
-    char* end = nullptr;
-    const float s = std::strtof(rangeScale.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(s) || s <= 0.0f) return {std::nullopt, fail("--range-scale must be a finite number > 0, got '" + rangeScale + "'")};
-    o.rangeScale = s;
-  }
   if (!size.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
@@ -235,53 +197,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       return {std::nullopt, fail("--size must be WxH with 1 <= W, H <= 65536, got '" + size + "'")};
     o.size = {w, h};
   }
-  if (!light.empty()) {
-    float v[3];
-    if (!parseFloats(light, 3, v)) return {std::nullopt, fail("--light must be three finite numbers X,Y,Z, got '" + light + "'")};
-    o.light = glm::vec3(v[0], v[1], v[2]);
-  }
   if (!camera.empty()) {
     float v[3];
     if (!parseFloats(camera, 3, v) || v[2] <= 0.0f)
       return {std::nullopt, fail("--camera must be YAW,PITCH,DISTANCE with DISTANCE > 0, got '" + camera + "'")};
     o.camera = glm::vec3(v[0], v[1], v[2]);
-  }
-  if (!lines.empty()) {
-    LineSettings kinds;
-    std::string unknown;
-    if (!parseLineKinds(lines, kinds, &unknown))
-      return {std::nullopt, fail("unknown --lines kind '" + unknown + "': use silhouette, crease, boundary, image, hardware or rim")};
-    o.lineKinds = kinds;
-  }
-  if (!outlineMethod.empty() && !(o.outlineMethod = parseOutlineMethod(outlineMethod)))
-    return {std::nullopt, fail("unknown --outline '" + outlineMethod + "': use fatten, offset or edges")};
-  if (!std::isnan(outlineOffset)) {
-    if (!(outlineOffset >= LineSettings::kMinOutlineOffset && outlineOffset <= LineSettings::kMaxOutlineOffset))
-      return {std::nullopt, fail("--outline-offset must be in [0, 0.2]")};
-    o.outlineOffset = outlineOffset;
-  }
-  if (!std::isnan(creaseAngle)) {
-    if (!(creaseAngle >= 0.0f && creaseAngle <= 180.0f)) return {std::nullopt, fail("--crease-angle must be in [0, 180]")};
-    o.creaseAngle = creaseAngle;
-  }
-  if (!std::isnan(lineWidth)) {
-    if (!(lineWidth > 0.0f && lineWidth <= 64.0f)) return {std::nullopt, fail("--line-width must be in (0, 64] pixels")};
-    o.lineWidth = lineWidth;
-  }
-  if (!bands.empty()) {
-    std::stringstream ss(bands);
-    std::string part;
-    while (std::getline(ss, part, ',')) {
-      char* end = nullptr;
-      const float t = std::strtof(part.c_str(), &end);
-      if (part.empty() || *end != '\0' || !std::isfinite(t) || (!o.bands.empty() && t <= o.bands.back()))
-        return {std::nullopt, fail("--bands must be finite, strictly ascending numbers, got '" + bands + "'")};
-      o.bands.push_back(t);
-    }
-  }
-  if (!tone.empty()) {
-    o.tone = parseToneModel(tone);
-    if (!o.tone) return {std::nullopt, fail("unknown --tone '" + tone + "': use opengl, gooch, splashback or charcoal")};
   }
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.

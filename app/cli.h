@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "app/camera_animation.h"
+#include "app/settings/look.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_maker.h"
@@ -17,17 +18,17 @@
 
 namespace npr {
 
+// What the command line asks for: the settings it names (rows of the settings table, applied
+// over the style and the palette's defaults) and the actions it takes.
 struct Options {
   std::vector<std::string> models;  // the first is shown; --benchmark uses all
   std::vector<std::string> palettes;
-  std::optional<RenderPath> path;
+  std::vector<SettingValue> settings;  // in the table's order
   bool listPaths = false;
-  std::optional<MatchMode> match;
-  std::optional<float> rangeScale;
   glm::ivec2 size{1280, 720};
-  std::optional<glm::vec3> light;
   std::optional<glm::vec3> camera;  // yaw, pitch (degrees), distance (model radii)
   bool headless = false;
+  bool noPanel = false;  // --no-panel: the window opens with its panel hidden (F1 shows it)
   int frames = 0;  // 0: run until closed (window) or 1 (headless)
   std::string screenshot;
   bool info = false;
@@ -39,44 +40,23 @@ struct Options {
   int levels = 10;
   std::string paletteSheet;  // --palette-sheet DIR
   std::string style;         // --style NAME|FILE (palettes/styles/NAME.style)
+  std::string saveStyle;     // --save-style FILE: the look as a style file, after start-up
+  bool settingsReference = false;  // --settings-reference: the settings table as Markdown
   bool benchmark = false;
   bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";
-  bool gouraud = false;
-  bool materials = true;
   std::vector<std::pair<std::string, std::string>> materialPalettes;  // --palette-for MATERIAL=FILE
   CameraAnimation animation;  // --animate
-  std::optional<PatternSpace> pattern;  // --pattern
-  bool patternNoRotation = false;       // --pattern-no-rotation
-  std::optional<float> patternScale;    // --pattern-scale (default: the window's content scale)
-  bool patternLinear = false;           // --pattern-filter linear
-  std::optional<OrientSettings> orient; // --orient
-  std::optional<int> orientBins;        // --orient-bins
-  bool ground = false;                  // --ground
-  bool shadows = false;                 // --shadows
-  bool occlusion = false;               // --occlusion
-  std::optional<float> occlusionStrength;  // --occlusion-strength
-  std::optional<OcclusionMethod> occlusionMethod;  // --occlusion-method
-  std::string shadowPalette, occlusionPalette;  // --shadow-palette, --occlusion-palette (control images)
-  TriangleLighting triangleLighting = TriangleLighting::Auto;  // --triangle-lighting
   std::string saveFrames;     // --save-frames DIR
   std::string svg;            // --svg FILE: the last frame's feature lines as SVG
   bool svgRaster = false;     // --svg-raster: with the frame embedded underneath
-  int turntable = 0;
-  int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit          // --turntable N: N frames of one full orbit, headless, frames and a GIF
-  bool naiveStencil = false;
-  // Lines and tone (overlay toggles too)
-  bool strokes = false;                   // --strokes
-  std::optional<float> strokeDensity;     // --stroke-density
-  std::optional<int> strokeBudget;        // --stroke-budget
-  std::optional<glm::vec2> strokeSize;    // --stroke-size LxW
-  std::optional<LineSettings> lineKinds;  // --lines: which kinds (the rest of it is defaults)
-  std::optional<OutlineMethod> outlineMethod;  // --outline
-  std::optional<float> outlineOffset;          // --outline-offset
-  std::optional<float> creaseAngle, lineWidth;
-  bool sketchy = false, lineFalloff = false;
-  std::optional<ToneModel> tone;
-  std::vector<float> bands;
+  int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
+  int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit
+
+  // The value the command line gives the setting `key`, or null.
+  const SettingValue* setting(const std::string& key) const;
+  // The settings over a default look (for runs with no viewer state: the benchmark).
+  Look look() const;
 };
 
 // Returns the options, or an exit status (0 after --help, 2 for bad arguments) with the

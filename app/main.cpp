@@ -1,5 +1,5 @@
 // npr-viewer: parses the command line and hands over to the window, --headless, --info,
-// --palette-info, --make-palette, --palette-sheet, --list-paths or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
+// --palette-info, --make-palette, --palette-sheet, --list-paths, --settings-reference or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
 // 2 bad arguments.
 #include <cstdio>
 
@@ -7,6 +7,7 @@
 #include "app/cli.h"
 #include "app/headless/headless_run.h"
 #include "app/palette_tools.h"
+#include "app/settings/settings_reference.h"
 #include "app/window/window_viewer.h"
 #include "renderer/core/heap_policy.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -25,6 +26,10 @@ int main(int argc, char** argv) {
   if (!parsed.options) return parsed.exitCode;
   const npr::Options& o = *parsed.options;
 
+  if (o.settingsReference) {
+    std::printf("%s", npr::settingsReferenceMarkdown().c_str());
+    return 0;
+  }
   if (o.listPaths) {
     for (const npr::PathInfo& p : npr::renderPaths())
       std::printf("%s\t%s\t%s\n", p.name, p.userSelectable ? "user" : "internal", p.label);

@@ -60,7 +60,7 @@ Result<ImageRGBA8> litSphere(HeadlessSession& session, const std::string& palett
   Options o;
   o.models = {"generated:icosphere-4"};
   o.palettes = {palette};
-  o.path = RenderPath::Pixel;
+  o.settings.push_back({findSetting("path"), "pixel", "the contact sheet"});
   ViewerState state;
   if (Status s = startScene(o, state, *session.renderer); !s) return Error{s.error()};
   auto target = OffscreenTarget::create(kSphere, kSphere);

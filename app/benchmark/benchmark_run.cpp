@@ -293,17 +293,16 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   camera.frame(mesh.radius);
   r.lighting() = LightingState();
   applyDefaultMaterial(r.lighting());
-  RenderSettings settings;
+  // The command line's settings over the defaults; the palette's range scale unless one is given.
+  RenderSettings settings = o.look().render;
   settings.match = mode;
-  settings.rangeScale = o.rangeScale.value_or(palette.defaultRangeScale.value_or(1.0f));
-  settings.shadows = o.shadows;
-  settings.occlusion = o.occlusion;
-  settings.occlusionStrength = o.occlusionStrength.value_or(1.0f);
-  settings.occlusionMethod = o.occlusionMethod.value_or(OcclusionMethod::Baked);
+  if (!o.setting("range-scale")) settings.rangeScale = palette.defaultRangeScale.value_or(1.0f);
   ConfigResult c;
   c.model = fs::path(mesh.report.file).filename().string();
-  if (o.shadows) c.model += " +shadows";
-  if (o.occlusion) c.model += settings.occlusionMethod == OcclusionMethod::Screen ? " +screen occlusion" : " +occlusion";
+  // The row names the settings table gives: "+shadows", "occlusion-method=screen".
+  for (const SettingValue& v : o.settings)
+    if (v.row->key != "match" && v.row->key != "range-scale")
+      c.model += v.row->type == SettingType::Bool ? (v.value == "on" ? " +" : " -") + v.row->key : " " + v.row->key + "=" + v.value;
   c.palette = palette.name + " (" + std::to_string(palette.entries.size()) + ")";
   c.mode = mode;
   c.errorUnit = mode == MatchMode::Colors ? "RGB distance" : "palette steps";
@@ -355,7 +354,7 @@ int runBenchmark(const Options& o) {
       auto palette = loadPalette(paletteFile);
       if (!palette) return reportFailure(palette.error());
       if (Status s = r.setPalette(*palette); !s) return reportFailure(s.error());
-      std::vector<MatchMode> modes = {o.match.value_or(palette->defaultMatch.value_or(MatchMode::Intensity))};
+      std::vector<MatchMode> modes = {o.setting("match") ? o.look().render.match : palette->defaultMatch.value_or(MatchMode::Intensity)};
       if (o.allMatchModes) modes = {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order};
       for (const MatchMode mode : modes) {
         ConfigResult c = measureConfiguration(r, mesh, *palette, mode, o);

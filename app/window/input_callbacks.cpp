@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace npr {
@@ -62,7 +63,9 @@ void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
   if (ws.x <= 0 || ws.y <= 0) return;
   double x = 0, y = 0;
   glfwGetCursorPos(w, &x, &y);
-  glm::vec2 ndc(float(x / ws.x) * 2.0f - 1.0f, 1.0f - float(y / ws.y) * 2.0f);
+  // Within the scene, left of the docked panel.
+  const double sceneWidth = std::max(1.0, double(ws.x) - (v.overlay ? double(v.panelWidth) : 0.0));
+  glm::vec2 ndc(float(x / sceneWidth) * 2.0f - 1.0f, 1.0f - float(y / ws.y) * 2.0f);
   if (v.state.splitView) ndc.x = ndc.x < 0.0f ? ndc.x * 2.0f + 1.0f : ndc.x * 2.0f - 1.0f;
   v.state.camera.zoom(std::pow(0.88f, float(dy)), ndc, v.aspect());
 }

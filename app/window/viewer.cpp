@@ -1,6 +1,9 @@
 // Viewer actions (see viewer.h).
 #include "app/window/viewer.h"
 
+#include <algorithm>
+#include <cmath>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -21,9 +24,16 @@ bool isPaletteFile(const std::string& path) {
 
 }  // namespace
 
+glm::ivec4 Viewer::sceneViewport() const {
+  const glm::ivec2 fb = window->framebufferSize();
+  const glm::ivec2 ws = window->windowSize();
+  const int panel = overlay && ws.x > 0 ? int(std::lround(double(panelWidth) * fb.x / ws.x)) : 0;
+  return {0, 0, std::max(fb.x - panel, 1), fb.y};
+}
+
 float Viewer::aspect() const {
-  const glm::ivec2 s = window->framebufferSize();
-  const float a = s.y > 0 ? float(s.x) / float(s.y) : 1.0f;
+  const glm::ivec4 s = sceneViewport();
+  const float a = s.w > 0 ? float(s.z) / float(s.w) : 1.0f;
   return state.splitView ? a * 0.5f : a;
 }
 

@@ -32,7 +32,12 @@ struct Viewer {
   bool dragging[3] = {false, false, false};
   bool lightDrag = false;
 
-  // Of one view: half the window in split view.
+  // The docked panel's width in window units (0: hidden or collapsed), as the overlay last
+  // drew it; the scene takes the rest of the window.
+  float panelWidth = 0.0f;
+  // Where the scene is drawn in the framebuffer: the window left of the panel.
+  glm::ivec4 sceneViewport() const;
+  // Of one view: half the scene in split view.
   float aspect() const;
 };
 

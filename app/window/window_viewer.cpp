@@ -43,6 +43,7 @@ int runWindowViewer(const Options& o) {
   if (v.screenshotDir.empty()) v.screenshotDir = ".";
   installInputCallbacks(v);
   ImGuiSession imgui(v.window->handle());
+  v.overlay = !o.noPanel;
 
   GLFWwindow* w = v.window->handle();
   std::optional<OffscreenTarget> scene;  // what the views draw into, the window's size
@@ -82,15 +83,18 @@ int runWindowViewer(const Options& o) {
       if (st) st = v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, viewport);
       if (!st) v.state.note(st.error());
     };
+    // The scene left of the docked panel, which is drawn over a cleared strip.
+    const glm::ivec4 sceneView = v.sceneViewport();
+    clearRightOf(sceneView.z, fb.x, fb.y);
     if (v.state.splitView) {
       // Left: the plain lit render the original showed beside its NPR images; right: the chosen path.
-      const int half = fb.x / 2;
+      const int half = sceneView.z / 2;
       RenderSettings ref = v.state.settings;
       ref.path = RenderPath::Reference;
       drawView(ref, {0, 0, half, fb.y});
-      drawView(v.state.settings, {half, 0, fb.x - half, fb.y});
+      drawView(v.state.settings, {half, 0, sceneView.z - half, fb.y});
     } else {
-      drawView(v.state.settings, {0, 0, fb.x, fb.y});
+      drawView(v.state.settings, sceneView);
     }
     if (scene) scene->copyToWindow();
     // Vector export of what this frame shows (the lines of the full view, even when split).
@@ -99,13 +103,13 @@ int runWindowViewer(const Options& o) {
       const std::filesystem::path file =
           v.svgRequested ? v.screenshotDir / ("npr-lines-" + std::to_string(++v.svgCount) + ".svg") : std::filesystem::path(o.svg);
       v.svgRequested = false;
-      const Status st = exportLinesSvg(*v.renderer, cam, v.state.settings, fb, nullptr, file.string());
+      const Status st = exportLinesSvg(*v.renderer, cam, v.state.settings, {sceneView.z, sceneView.w}, nullptr, file.string());
       v.state.note(st ? "lines written to " + file.string() : st.error());
       bindWindowFramebuffer();
     }
     // The frames written are the scene alone, without the overlay.
     if (!o.saveFrames.empty()) {
-      const Status st = writeImage(frameFileName(o.saveFrames, frame), readFramebufferRGBA8(0, 0, fb.x, fb.y));
+      const Status st = writeImage(frameFileName(o.saveFrames, frame), readFramebufferRGBA8(0, 0, sceneView.z, sceneView.w));
       if (!st) v.state.note(st.error());
     }
     imgui.draw();

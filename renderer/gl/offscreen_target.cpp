@@ -100,6 +100,15 @@ ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height) {
 namespace npr {
 void bindWindowFramebuffer() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
 void finishGpuWork() { glFinish(); }
+void clearRightOf(int fromX, int width, int height) {
+  if (fromX >= width || height <= 0) return;
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(fromX, 0, width - fromX, height);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+}
 int maxFramebufferSide() {
   GLint renderbuffer = 0, viewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);

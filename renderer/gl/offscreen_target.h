@@ -42,6 +42,9 @@ ImageRGBA8 readFramebufferRGBA8(int x, int y, int width, int height);
 int maxFramebufferSide();
 // Makes the window's own framebuffer the target again (after offscreen passes).
 void bindWindowFramebuffer();
+// Clears the pixels x >= `fromX` of the bound framebuffer to black (the strip under the
+// window's docked panel, which the scene does not draw).
+void clearRightOf(int fromX, int width, int height);
 // Blocks until the GPU has finished all submitted work: what frame timings must include.
 void finishGpuWork();
 }  // namespace npr

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "app/benchmark/interleaved_timing.h"
-#include "app/style_file.h"
+#include "app/settings/style_file.h"
 #include "app/viewer_state.h"
 #include "bench_common.h"
 #include "renderer/core/heap_policy.h"

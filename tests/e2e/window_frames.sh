@@ -13,7 +13,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 fail=0
 compare() {  # compare NAME FRAMES ARGS...: three frames in the window and headless, FRAMES equal
   local name=$1 frames=$2; shift 2
-  "$viewer" "$@" --size 480x360 --frames 3 --save-frames "$tmp/$name-window" >"$tmp/$name-window.log" 2>&1 ||
+  "$viewer" "$@" --no-panel --size 480x360 --frames 3 --save-frames "$tmp/$name-window" >"$tmp/$name-window.log" 2>&1 ||
     { echo "FAIL: $name: the window run failed"; cat "$tmp/$name-window.log"; fail=1; return; }
   "$viewer" "$@" --headless --size 480x360 --frames 3 --save-frames "$tmp/$name-headless" >"$tmp/$name-headless.log" 2>&1 ||
     { echo "FAIL: $name: the headless run failed"; cat "$tmp/$name-headless.log"; fail=1; return; }

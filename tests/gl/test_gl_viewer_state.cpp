@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "app/style_file.h"
+#include "app/settings/style_file.h"
 #include "app/viewer_state.h"
 #include "gl/gl_test_env.h"
 #include "renderer/mesh/mesh_loader.h"

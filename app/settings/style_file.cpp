@@ -1,0 +1,98 @@
+// Style files (see style_file.h).
+#include "app/settings/style_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "renderer/core/input_file.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+
+std::vector<std::string> discoverStyles() {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& f : fs::directory_iterator(fs::path(dataDirectory()) / "palettes" / "styles", ec))
+    if (f.path().extension() == ".style") out.push_back(f.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string resolveStyle(const std::string& nameOrFile) {
+  std::error_code ec;
+  if (fs::exists(nameOrFile, ec)) return nameOrFile;
+  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / "styles" / (nameOrFile + ".style");
+  return fs::exists(shipped, ec) ? shipped.string() : nameOrFile;
+}
+
+std::string resolvePalette(const std::string& name, const std::string& baseDirectory) {
+  if (name == "none" || name.empty()) return name;
+  std::error_code ec;
+  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / name;
+  const fs::path relative = fs::path(baseDirectory) / name;
+  return fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
+}
+
+namespace {
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
+}
+}  // namespace
+
+Result<Style> loadStyle(const std::string& path) {
+  Result<std::string> text = readInputFile(path, InputKind::Palette);
+  if (!text) return Error{text.error()};
+  Style st;
+  st.file = path;
+  st.name = fs::path(path).stem().string();
+  const std::string dir = fs::path(path).parent_path().string();
+  std::istringstream in(*text);
+  std::string raw;
+  int lineNo = 0;
+  Look scratch;  // every value is checked as it is read
+  while (std::getline(in, raw)) {
+    ++lineNo;
+    const std::string line = trim(raw);
+    if (line.empty() || line[0] == '#') continue;
+    const std::string where = path + " line " + std::to_string(lineNo);
+    const auto sp = line.find_first_of(" \t");
+    const std::string key = line.substr(0, sp), arg = sp == std::string::npos ? "" : trim(line.substr(sp));
+    if (key == "name") {
+      st.name = arg;
+      continue;
+    }
+    const Setting* row = findSetting(key);
+    if (!row) return Error{where + ": unknown key '" + key + "' (docs/settings.md lists the settings a style may set)"};
+    const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : arg;
+    if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + arg + "': " + s.error()};
+    if (key == "palette") st.palette = value;
+    else st.values.push_back({row, value, where});
+  }
+  return st;
+}
+
+Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
+  std::vector<SettingValue> values;
+  if (st.palette) values.push_back({findSetting("palette"), *st.palette, st.file});
+  values.insert(values.end(), st.values.begin(), st.values.end());
+  if (Status s = applySettings(values, true, state, renderer); !s) return Error{st.file + ": " + s.error()};
+  state.note("style " + st.name + " applied");
+  return okStatus();
+}
+
+std::string styleText(const ViewerState& state, const Renderer& renderer, const std::string& name) {
+  return "# Saved by npr-viewer: apply with --style FILE\nname " + name + "\n" + lookText(currentLook(state, renderer));
+}
+
+Status saveStyle(const ViewerState& state, const Renderer& renderer, const std::string& name, const std::string& file) {
+  std::ofstream out(file);
+  out << styleText(state, renderer, name);
+  if (!out.flush()) return Error{"cannot write the style file '" + file + "'"};
+  return okStatus();
+}
+
+}  // namespace npr
