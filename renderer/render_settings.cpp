@@ -14,8 +14,12 @@ std::string orientName(const OrientSettings& o) {
     case OrientSource::Curvature: return "curvature";
     case OrientSource::Light: return "light";
     case OrientSource::Fixed: {
+      // As short as reads back to the same angle (a saved style keeps it exactly).
       char buf[32];
-      std::snprintf(buf, sizeof buf, "%g", double(o.degrees));
+      for (int digits = 6; digits <= 9; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*g", digits, double(o.degrees));
+        if (std::strtof(buf, nullptr) == o.degrees) break;
+      }
       return buf;
     }
   }

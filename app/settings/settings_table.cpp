@@ -405,7 +405,7 @@ const char* settingTypeName(SettingType t) {
 std::string Setting::valueForm() const {
   auto num = [](double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
+    std::snprintf(buf, sizeof buf, "%.10g", v);
     return std::string(buf);
   };
   auto joined = [&](const std::string& sep, const std::string& last) {

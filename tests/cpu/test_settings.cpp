@@ -1,0 +1,188 @@
+// CPU tier: the settings table (app/settings/). Every row is well formed; every saved row
+// round-trips through a style file's text with random valid values; every row is an option of
+// the command line that sets it; values out of range are refused with the row's own form.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "app/cli.h"
+#include "app/settings/setting.h"
+#include "app/settings/style_file.h"
+
+namespace npr {
+namespace {
+
+// A random value the row accepts, as text.
+std::string randomValue(const Setting& row, std::mt19937& rng) {
+  auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+  auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  switch (row.type) {
+    case SettingType::Bool: return pick(2) ? "on" : "off";
+    case SettingType::Int: return std::to_string(std::uniform_int_distribution<int>(int(row.min), int(row.max))(rng));
+    case SettingType::Float: {
+      // Log-uniform over wide ranges, so small values are drawn too; the ends now and then.
+      const std::size_t end = pick(10);
+      if (end == 0) return formatFloat(float(row.min));
+      if (end == 1) return formatFloat(float(row.max));
+      const double lo = std::max(row.min, 1e-3);
+      const double v = row.logarithmic && row.min > 0 ? std::exp(uniform(std::log(lo), std::log(row.max))) : uniform(row.min, row.max);
+      return formatFloat(std::clamp(float(v), float(row.min), float(row.max)));
+    }
+    case SettingType::Choice: return row.choices[pick(row.choices.size())];
+    case SettingType::Kinds: {
+      std::string out;
+      for (const std::string& c : row.choices)
+        if (pick(2)) out += (out.empty() ? "" : ",") + c;
+      return out.empty() ? "none" : out;
+    }
+    case SettingType::Colour: return formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1)));
+    case SettingType::Vector: return formatFloat(float(uniform(-9, 9))) + "," + formatFloat(float(uniform(-9, 9))) + "," + formatFloat(float(uniform(-9, 9)));
+    case SettingType::File: {
+      const char* shipped[] = {"palettes/crosshatch/crosshatch.palette", "palettes/stipple/stipple.palette", "palettes/gooch/gooch.palette"};
+      if (row.key != "palette" && pick(3) == 0) return "none";
+      return std::filesystem::absolute(std::filesystem::path(NPR_SOURCE_DIR) / shipped[pick(3)]).lexically_normal().string();
+    }
+    case SettingType::Text:
+      if (row.key == "orient") {
+        const std::size_t k = pick(4);
+        return k < 3 ? row.choices[k] : formatFloat(float(uniform(0, 179)));
+      }
+      if (row.key == "bands") {
+        std::string out;
+        float t = float(uniform(0, 0.5));
+        for (std::size_t i = 0, n = pick(5); i < n; ++i, t += float(uniform(0.01, 0.7))) out += (out.empty() ? "" : ",") + formatFloat(t);
+        return out.empty() ? "none" : out;
+      }
+      if (row.key == "stroke-size") return formatFloat(float(uniform(1, 256))) + "x" + formatFloat(float(uniform(1, 256)));
+      return row.example;
+  }
+  return row.example;
+}
+
+TEST(SettingsTable, EveryRowIsWellFormedAndItsDefaultParsesBack) {
+  std::set<std::string> keys, sections;
+  for (const SettingSection& s : settingSections()) sections.insert(s.name);
+  const Look defaults;
+  for (const Setting& row : settingsTable()) {
+    EXPECT_TRUE(keys.insert(row.key).second) << "two rows named " << row.key;
+    EXPECT_TRUE(sections.count(row.section)) << row.key << ": no section " << row.section;
+    EXPECT_FALSE(row.help.empty()) << row.key;
+    EXPECT_FALSE(row.label.empty()) << row.key;
+    ASSERT_TRUE(row.format && row.parse) << row.key;
+    if (row.type == SettingType::Bool) EXPECT_TRUE(row.boolRef) << row.key;
+    if (row.type == SettingType::Int) EXPECT_TRUE(row.intRef && row.min <= row.max) << row.key;
+    if (row.type == SettingType::Float) EXPECT_TRUE(row.floatRef && row.min <= row.max) << row.key;
+    if (row.type == SettingType::Choice || row.type == SettingType::Kinds) EXPECT_FALSE(row.choices.empty()) << row.key;
+    if (row.key == "palette") continue;  // no default palette file in a bare look
+    Look l = defaults;
+    const Status back = row.parse(row.format(defaults), l);
+    EXPECT_TRUE(back) << row.key << " '" << row.format(defaults) << "': " << back.error();
+    EXPECT_EQ(row.format(l), row.format(defaults)) << row.key;
+    EXPECT_EQ(findSetting(row.key), &row);
+  }
+  EXPECT_EQ(findSetting("frobnicate"), nullptr);
+}
+
+// The whole look, drawn at random row by row, written as a style and read back, is the same
+// look: no row is lost, truncated or read into another.
+TEST(SettingsTable, RandomLooksRoundTripThroughStyleText) {
+  std::mt19937 rng(20261126);
+  for (int trial = 0; trial < 200; ++trial) {
+    Look look;
+    for (const Setting& row : settingsTable()) {
+      const std::string v = randomValue(row, rng);
+      ASSERT_TRUE(row.parse(v, look)) << row.key << " '" << v << "'";
+      // Numbers straight into the fields, full float precision: what a slider leaves.
+      std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+      if (row.floatRef) *row.floatRef(look) = std::clamp(float(row.min + (row.max - row.min) * unit(rng)), float(row.min), float(row.max));
+      if (row.vectorRef) *row.vectorRef(look) = glm::vec3(unit(rng), unit(rng), unit(rng));
+    }
+    const std::string text = lookText(look);
+    Look back;
+    std::istringstream in(text);
+    std::string line;
+    std::set<std::string> seen;
+    while (std::getline(in, line)) {
+      const std::string key = line.substr(0, line.find(' ')), value = line.substr(line.find(' ') + 1);
+      const Setting* row = findSetting(key);
+      ASSERT_NE(row, nullptr) << line;
+      ASSERT_TRUE(row->parse(value, back)) << line;
+      seen.insert(key);
+    }
+    for (const Setting& row : settingsTable()) {
+      if (!row.saved) continue;
+      EXPECT_TRUE(seen.count(row.key)) << "not saved: " << row.key;
+      EXPECT_EQ(row.format(back), row.format(look)) << row.key << " (trial " << trial << ")";
+    }
+    // The fields themselves, not only their text.
+    EXPECT_EQ(back.render.orient, look.render.orient);
+    EXPECT_EQ(back.render.patternScale, look.render.patternScale);
+    EXPECT_EQ(back.render.strokes.density, look.render.strokes.density);
+    EXPECT_EQ(back.render.lines.silhouetteColour, look.render.lines.silhouetteColour);
+    EXPECT_EQ(back.light, look.light);
+    EXPECT_EQ(back.render.bands, look.render.bands);
+  }
+}
+
+// The drift the table ended: the orientation does not reset its bins; the bins may go to 64.
+TEST(SettingsTable, OrientKeepsItsBinsAndBinsTakeTheFullRange) {
+  Look look;
+  ASSERT_TRUE(findSetting("orient-bins")->parse("64", look));
+  ASSERT_TRUE(findSetting("orient")->parse("curvature", look));
+  EXPECT_EQ(look.render.orient.bins, 64);
+  EXPECT_EQ(look.render.orient.source, OrientSource::Curvature);
+  EXPECT_FALSE(findSetting("orient-bins")->parse("65", look));
+  EXPECT_EQ(findSetting("orient-bins")->max, OrientSettings::kMaxBins);
+}
+
+// Values a row refuses, and the message says what it takes.
+TEST(SettingsTable, BadValuesAreRefusedWithTheRowsForm) {
+  Look look;
+  const Look before = look;
+  for (const auto& [key, value, says] : std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"pattern-scale", "100", "0.125..16"},
+           {"pattern-scale", "nan", "0.125..16"},
+           {"range-scale", "0", "0.01..100"},
+           {"shadows", "maybe", "on or off"},
+           {"occlusion-method", "raytraced", "baked or screen"},
+           {"light", "1,2", "X,Y,Z"},
+           {"light", "1,nan,2", "X,Y,Z"},
+           {"silhouette-colour", "2,0,0", "0..1"},
+           {"lines", "silhouette,glow", "silhouette"},
+           {"bands", "1,0.5", "ascending"},
+           {"stroke-size", "0x4", "LxW"},
+           {"orient-bins", "2.5", "integer"},
+           {"stroke-budget", "-1", "0..4000000"}}) {
+    const Status s = findSetting(key)->parse(value, look);
+    ASSERT_FALSE(s) << key << " " << value;
+    EXPECT_NE(s.error().find(says), std::string::npos) << key << ": " << s.error();
+  }
+  EXPECT_EQ(lookText(look), lookText(before));
+}
+
+// Every row is an option of the command line (or says it is not), and the option sets it.
+TEST(SettingsTable, EveryRowIsACommandLineOptionThatSetsIt) {
+  std::mt19937 rng(7);
+  for (const Setting& row : settingsTable()) {
+    if (!row.cli) continue;
+    const std::string value = randomValue(row, rng);
+    std::vector<std::string> args{"npr-viewer", "--headless"};
+    if (row.type == SettingType::Bool && !row.cliTakesValue) args.push_back(value == "on" ? "--" + row.key : "--no-" + row.key);
+    else args.insert(args.end(), {"--" + row.key, value});
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    const ParseOutcome parsed = parseCommandLine(int(argv.size()), argv.data());
+    ASSERT_TRUE(parsed.options) << row.key << " " << value;
+    const SettingValue* given = parsed.options->setting(row.key);
+    ASSERT_NE(given, nullptr) << row.key;
+    Look expected, got = parsed.options->look();
+    ASSERT_TRUE(row.parse(value, expected));
+    EXPECT_EQ(row.format(got), row.format(expected)) << row.key;
+  }
+}
+
+}  // namespace
+}  // namespace npr
