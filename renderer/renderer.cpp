@@ -1,4 +1,5 @@
-// The renderer facade (see renderer.h): what a frame is, in order. The work is in the passes.
+// The renderer facade (see renderer.h): what a frame is, in order. The work is in the passes;
+// what is derived from each mesh lives with its model (scene/model.h).
 #include "renderer/renderer.h"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 #include "renderer/gl/pass_state.h"
 #include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/mesh/ground_plane.h"
-#include "renderer/mesh/mesh_subset.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/control_palette_pass.h"
 #include "renderer/passes/marker_pass.h"
@@ -30,6 +30,8 @@ constexpr float kPatternPerVertexPixels = 1.5f;
 // icosphere-6 (8) 8-11% faster, icosphere-5 (32) even (-9% to +9%), icosphere-4 (128) 11-24%
 // slower, the bunny (178) 13-22% slower.
 constexpr float kResolveTurnPixels = 16.0f;
+
+bool isIdentity(const glm::mat4& m) { return m == glm::mat4(1.0f); }
 }  // namespace
 
 Result<std::unique_ptr<Renderer>> Renderer::create() {
@@ -42,39 +44,43 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
 
 Renderer::~Renderer() = default;
 
+// ---------------------------------------------------------------------------------------
+// The scene and the palettes
+
+ModelId Renderer::addModel(const Mesh& mesh, const glm::mat4& transform) {
+  partsDirty_ = true;
+  return scene_.add(mesh, transform, stats_);
+}
+
+void Renderer::removeModel(ModelId id) { scene_.remove(id); }
+
+bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
+
 void Renderer::setMesh(const Mesh* mesh) {
-  mesh_ = mesh && !mesh->indices.empty() ? mesh : nullptr;
-  gpuMesh_.clear();
-  materials_.clear();
-  triangles_.setMesh(mesh_);
-  lines_.setMesh(mesh_);
-  strokes_.setMesh(mesh_);
-  patterns_.setMesh(mesh_);
-  groups_.clear();
-  groupsDirty_ = true;
-  field_.reset();
-  occlusion_.reset();
-  ++sceneVersion_;
-  groundGpu_.clear();
-  groundTriangles_.setMesh(nullptr);
-  ground_ = Mesh{};
-  if (!mesh_) return;
-  gpuMesh_.upload(*mesh_);
-  materials_.upload(*mesh_);
-  stats_.bufferUploads += 3;
+  scene_.clear();
+  ground_.reset();
+  if (mesh && !mesh->indices.empty()) addModel(*mesh);
+}
+
+Status Renderer::setPalette(const Palette& palette) {
+  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
+  if (!uploaded) return Error{uploaded.error()};
+  palette_ = std::move(*uploaded);
+  stats_.bufferUploads += 1;
+  return okStatus();
 }
 
 Status Renderer::setMaterialPalette(const std::string& material, const Palette& palette) {
   Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
   if (!uploaded) return Error{uploaded.error()};
   materialPalettes_[material] = std::move(*uploaded);
-  groupsDirty_ = true;
+  partsDirty_ = true;
   stats_.bufferUploads += 1;
   return okStatus();
 }
 
 void Renderer::clearMaterialPalette(const std::string& material) {
-  if (materialPalettes_.erase(material)) groupsDirty_ = true;
+  if (materialPalettes_.erase(material)) partsDirty_ = true;
 }
 
 Status Renderer::setControlPalette(ControlParameter parameter, const Palette& palette) {
@@ -89,63 +95,19 @@ void Renderer::clearControlPalette(ControlParameter parameter) {
   (parameter == ControlParameter::Shadow ? shadowPalette_ : occlusionPalette_).reset();
 }
 
-std::vector<std::string> Renderer::materialPaletteNames() const {
-  std::vector<std::string> out;
-  for (const auto& [name, palette] : materialPalettes_) out.push_back(name);
-  return out;
-}
-
-void Renderer::rebuildPaletteGroups() {
-  groupsDirty_ = false;
-  groups_.clear();
-  if (!mesh_ || materialPalettes_.empty() || mesh_->faceMaterials.size() != mesh_->triangleCount()) return;
-  // The palette of each material: 0 the main one, k > 0 the k-th distinct material palette.
-  std::vector<const GpuPalette*> palettes{nullptr};
-  std::vector<std::size_t> groupOf(mesh_->materials.size(), 0);
-  for (std::size_t i = 0; i < mesh_->materials.size(); ++i) {
-    auto it = materialPalettes_.find(mesh_->materials[i].name);
-    if (it == materialPalettes_.end()) continue;
-    auto at = std::find(palettes.begin(), palettes.end(), it->second.get());
-    if (at == palettes.end()) at = palettes.insert(palettes.end(), it->second.get());
-    groupOf[i] = static_cast<std::size_t>(at - palettes.begin());
-  }
-  if (palettes.size() == 1) return;  // no material of this mesh has its own palette
-  for (std::size_t g = 0; g < palettes.size(); ++g) {
-    std::vector<char> keep(mesh_->triangleCount(), 0);
-    bool any = false;
-    for (std::size_t f = 0; f < keep.size(); ++f) {
-      keep[f] = groupOf[mesh_->faceMaterials[f]] == g;
-      any = any || keep[f];
-    }
-    if (!any) continue;
-    auto group = std::make_unique<PaletteGroup>();
-    group->palette = palettes[g];
-    group->mesh = meshSubset(*mesh_, keep);
-    group->gpuMesh.upload(group->mesh);
-    group->materials.upload(group->mesh);
-    group->triangles.setMesh(&group->mesh);
-    if (field_) group->gpuMesh.uploadDirections(field_->directions);  // a subset keeps every vertex
-    if (occlusion_ && occlusion_->done()) group->gpuMesh.uploadOcclusion(occlusion_->values());
-    stats_.bufferUploads += 3;
-    groups_.push_back(std::move(group));
-  }
-}
-
-Status Renderer::setPalette(const Palette& palette) {
-  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
-  if (!uploaded) return Error{uploaded.error()};
-  palette_ = std::move(*uploaded);
-  stats_.bufferUploads += 1;
-  return okStatus();
-}
-
-void Renderer::collectGpuTime() {
-  if (std::optional<double> ms = timer_.collect()) stats_.gpuMs = *ms;
-}
+// ---------------------------------------------------------------------------------------
+// What the frame needs before it draws
 
 Status Renderer::prepare(const RenderSettings& s) {
   if (!palette_ && pathInfo(s.path).usesPalette) return Error{"no palette loaded"};
-  if (groupsDirty_) rebuildPaletteGroups();
+  if (partsDirty_) {
+    partsDirty_ = false;
+    auto paletteOf = [&](const std::string& material) -> const GpuPalette* {
+      const auto it = materialPalettes_.find(material);
+      return it == materialPalettes_.end() ? nullptr : it->second.get();
+    };
+    scene_.forEach([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
+  }
   // Cel bands belong to the main palette (they are one fewer than its tones).
   for (auto& [name, p] : materialPalettes_)
     if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"palette of material '" + name + "': " + st.error()};
@@ -157,27 +119,27 @@ Status Renderer::prepare(const RenderSettings& s) {
   return okStatus();
 }
 
-void Renderer::preparePattern(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+void Renderer::preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& s, const glm::ivec4& viewport) {
   std::optional<PatternFrame> frame;
-  if (s.pattern == PatternSpace::Anchored && mesh_) {
-    const PatternFit& fit = patterns_.update(camera, viewport, s.patternFollowsRotation);
+  if (s.pattern == PatternSpace::Anchored && model) {
+    const PatternFit& fit = model->patterns().update(placed, viewport, s.patternFollowsRotation);
     stats_.cpuPatternMs = fit.ms;
     stats_.patternSamples = fit.samplesUsed;
-    frame = patterns_.frame();
+    frame = model->patterns().frame();
   }
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
-  // Object units one pixel spans at eye depth 1 (the mesh's units are the eye's).
-  const float pixelSize = 2.0f / (std::max(std::abs(camera.projection[1][1]), 1e-6f) * float(std::max(viewport.w, 1)));
-  const glm::mat4 eyeToObject = glm::inverse(camera.view);
+  // Object units one pixel spans at eye depth 1 (the model's units are the eye's).
+  const float pixelSize = 2.0f / (std::max(std::abs(placed.projection[1][1]), 1e-6f) * float(std::max(viewport.w, 1)));
+  const glm::mat4 eyeToObject = glm::inverse(placed.view);
   // Mapped patterns are placed per vertex where the model's triangles span a few pixels each:
   // there interpolation is cheaper than mapping every pixel; on denser meshes llvmpipe shades a
   // block of pixels per triangle anyway and a varying costs each triangle's set-up more than the
   // arithmetic it saves (pattern_vertex.glsl has the figures).
   bool perVertex = true;
   pixelsPerFrontTriangle_ = std::numeric_limits<float>::infinity();
-  if (mesh_ && !mesh_->indices.empty()) {
-    const float frontTriangles = 0.5f * float(mesh_->indices.size() / 3);
-    pixelsPerFrontTriangle_ = projectedSphereArea(camera, mesh_->radius, viewport) / frontTriangles;
+  if (model) {
+    const float frontTriangles = 0.5f * float(model->mesh().indices.size() / 3);
+    pixelsPerFrontTriangle_ = projectedSphereArea(placed, model->mesh().radius, viewport) / frontTriangles;
     perVertex = pixelsPerFrontTriangle_ >= kPatternPerVertexPixels;
   }
   auto place = [&](GpuPalette& p) {
@@ -205,80 +167,82 @@ void Renderer::prepareOrientation(const RenderSettings& s) {
     p.setOrientation(s.orient, light);
     turned = turned || p.oriented();
   });
-  if (turned && s.orient.source == OrientSource::Curvature) ensureDirectionField();
+  if (turned && s.orient.source == OrientSource::Curvature) scene_.forEach([&](Model& m) { (void)m.directionField(stats_); });
 }
 
-void Renderer::ensureDirectionField() {
-  if (!mesh_ || field_) return;
-  field_ = computeDirectionField(*mesh_);
-  stats_.cpuFieldMs = field_->ms;
-  gpuMesh_.uploadDirections(field_->directions);
-  for (auto& g : groups_) g->gpuMesh.uploadDirections(field_->directions);
-  stats_.bufferUploads += 1;
-}
-
-void Renderer::prepareGround() {
-  if (!mesh_ || !ground_.indices.empty()) return;
-  ground_ = groundPlane(*mesh_);
-  groundGpu_.upload(ground_);
-  groundTriangles_.setMesh(&ground_);
-  stats_.bufferUploads += 1;
+Model* Renderer::prepareGround() {
+  if (scene_.empty()) return nullptr;
+  if (ground_ && groundVersion_ == scene_.version()) return ground_.get();
+  // Under the scene's lowest point, about the origin, holding every model.
+  float lowest = std::numeric_limits<float>::infinity();
+  scene_.forEach([&](const Model& m) {
+    if (isIdentity(m.transform())) {
+      for (const glm::vec3& p : m.mesh().positions) lowest = std::min(lowest, p.y);
+    } else {
+      for (const glm::vec3& p : m.mesh().positions) lowest = std::min(lowest, (m.transform() * glm::vec4(p, 1.0f)).y);
+    }
+  });
+  const glm::vec4 bounds = scene_.bounds();
+  groundMesh_ = groundPlane(std::isfinite(lowest) ? lowest : -1.0f, glm::length(glm::vec3(bounds)) + bounds.w);
+  ground_ = std::make_unique<Model>(groundMesh_, glm::mat4(1.0f), stats_, false);
+  groundVersion_ = scene_.version();
+  return ground_.get();
 }
 
 Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettings& s) {
   shadowsReady_ = false;
-  if (!s.shadows || !mesh_) return okStatus();
-  if (s.ground) prepareGround();
+  if (!s.shadows || scene_.empty()) return okStatus();
+  const Model* ground = s.ground ? prepareGround() : nullptr;
   ShadowScene scene;
-  scene.casters = {&gpuMesh_};
-  scene.casterRadius = mesh_->radius;
-  scene.sceneRadius = s.ground ? ground_.radius : mesh_->radius;
-  scene.version = sceneVersion_ * 2 + (s.ground ? 1 : 0);
+  scene_.forEach([&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform()}); });
+  const glm::vec4 bounds = scene_.bounds();
+  scene.centre = glm::vec3(bounds);
+  scene.casterRadius = bounds.w;
+  scene.sceneRadius = ground ? ground->mesh().radius : bounds.w;
+  scene.version = scene_.version() * 2 + (ground ? 1 : 0);
   if (Status st = shadows_.update(lighting_, camera.view, scene, programs_, stats_); !st) return st;
   shadowsReady_ = shadows_.layers() > 0;
   stats_.shadowLayers = shadows_.layers();
   return okStatus();
 }
 
-const std::vector<float>* Renderer::occlusionValues(const RenderSettings& s) const {
-  return s.occlusion && s.occlusionMethod == OcclusionMethod::Baked && occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr;
+Status Renderer::prepareOcclusion(const RenderSettings& s) {
+  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Baked) return okStatus();
+  Status status = okStatus();
+  scene_.forEach([&](Model& m) {
+    if (!status) return;
+    if (status = m.startOcclusionBake(); !status) return;
+    OcclusionBake& bake = *m.occlusionBake();
+    if (bake.done()) return;
+    if (occlusionBudgetMs_ <= 0.0 && progress_) {
+      // To the end now, in slices, saying how far it got.
+      while (status && !bake.done()) {
+        status = bake.step(250.0, programs_, stats_);
+        progress_("baking ambient occlusion", double(bake.directionsDone()) / bake.directions());
+      }
+    } else {
+      status = bake.step(occlusionBudgetMs_, programs_, stats_);
+    }
+    if (status && bake.done()) m.occlusionBaked(stats_);
+  });
+  return status;
+}
+
+std::vector<PlacedMesh> Renderer::placedMeshes(const CameraMatrices& camera, bool ground) {
+  std::vector<PlacedMesh> meshes;
+  scene_.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(camera)}); });
+  if (ground)
+    if (Model* g = prepareGround()) meshes.push_back({&g->gpu(), camera});
+  return meshes;
 }
 
 Status Renderer::prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   screenOcclusionReady_ = false;
-  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Screen || !mesh_) return okStatus();
-  std::vector<const GpuMesh*> meshes{&gpuMesh_};
-  if (s.ground) {
-    prepareGround();
-    meshes.push_back(&groundGpu_);
-  }
-  const float radius = std::clamp(s.screenOcclusionRadius, 0.01f, 10.0f) * (mesh_->radius > 0.0f ? mesh_->radius : 1.0f);
-  if (Status st = screenOcclusion_.draw(meshes, camera, radius, viewport, programs_, emptyVao_, stats_); !st) return st;
+  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Screen || scene_.empty()) return okStatus();
+  const float sceneRadius = scene_.bounds().w;
+  const float radius = std::clamp(s.screenOcclusionRadius, 0.01f, 10.0f) * (sceneRadius > 0.0f ? sceneRadius : 1.0f);
+  if (Status st = screenOcclusion_.draw(placedMeshes(camera, s.ground), camera, radius, viewport, programs_, emptyVao_, stats_); !st) return st;
   screenOcclusionReady_ = true;
-  return okStatus();
-}
-
-Status Renderer::prepareOcclusion(const RenderSettings& s) {
-  if (!s.occlusion || !mesh_ || s.occlusionMethod != OcclusionMethod::Baked) return okStatus();
-  if (!occlusion_) {
-    Result<std::unique_ptr<OcclusionBake>> bake = OcclusionBake::start(*mesh_, gpuMesh_);
-    if (!bake) return Error{bake.error()};
-    occlusion_ = std::move(*bake);
-  }
-  if (occlusion_->done()) return okStatus();
-  if (occlusionBudgetMs_ <= 0.0 && progress_) {
-    // To the end now, in slices, saying how far it got.
-    while (!occlusion_->done()) {
-      if (Status st = occlusion_->step(250.0, programs_, stats_); !st) return st;
-      progress_("baking ambient occlusion", double(occlusion_->directionsDone()) / occlusion_->directions());
-    }
-  } else if (Status st = occlusion_->step(occlusionBudgetMs_, programs_, stats_); !st) {
-    return st;
-  }
-  if (!occlusion_->done()) return okStatus();
-  gpuMesh_.uploadOcclusion(occlusion_->values());
-  for (auto& g : groups_) g->gpuMesh.uploadOcclusion(occlusion_->values());  // subsets keep every vertex
-  stats_.bufferUploads += 1;
   return okStatus();
 }
 
@@ -291,48 +255,65 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
 
-Status Renderer::drawPath(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
-  if (!mesh_) return okStatus();
-  // The whole mesh's, for every part: the parts hide each other's back faces.
-  const bool cullBackFaces = backFacesHidden(camera, s);
-  if (groups_.empty() || !s.materials) {
-    if (s.materials) materials_.update(*mesh_, lighting_, stats_);
-    FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_, output};
-    frame.occlusion = occlusionValues(s);
-    frame.turnResolve = turnResolveFor(s, frame.palette, output);
-    frame.cullBackFaces = cullBackFaces;
-    if (Status st = drawPart(frame, s.path); !st) return st;
-    return drawGround(camera, s, viewport, output);
-  }
-  // One draw of the path per palette, each over its part of the mesh; depth testing across
-  // the parts keeps the nearest surface, whichever part is drawn first.
-  for (auto& g : groups_) {
-    g->materials.update(g->mesh, lighting_, stats_);
-    const GpuPalette* palette = g->palette ? g->palette : palette_.get();
-    FrameContext frame{camera, viewport, s, lighting_, g->gpuMesh, g->mesh, g->materials, palette, g->triangles, programs_, stats_, emptyVao_, output};
-    frame.occlusion = occlusionValues(s);
-    frame.turnResolve = turnResolveFor(s, palette, output);
-    frame.cullBackFaces = cullBackFaces;
-    if (Status st = drawPart(frame, s.path); !st) return st;
-  }
+// ---------------------------------------------------------------------------------------
+// The surfaces
+
+Status Renderer::drawScene(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output,
+                           const Model* prepared) {
+  Status status = okStatus();
+  scene_.forEach([&](Model& m) {
+    if (status) status = drawModel(m, camera, s, viewport, output, &m != prepared);
+  });
+  if (!status || scene_.empty()) return status;
   return drawGround(camera, s, viewport, output);
 }
 
-bool Renderer::backFacesHidden(const CameraMatrices& camera, const RenderSettings& s) {
-  const bool hidden = s.cullHiddenBackFaces && mesh_ && mesh_->closed && sphereBeyondNearPlane(camera, mesh_->radius);
+Status Renderer::drawModel(Model& model, const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport,
+                           gl::MeshOutput output, bool preparePalettes) {
+  const CameraMatrices placed = model.placed(camera);
+  if (output == gl::MeshOutput::Colour && preparePalettes) {
+    preparePattern(&model, placed, s, viewport);
+    prepareOrientation(s);
+  }
+  // The whole model's, for every part: the parts hide each other's back faces.
+  const bool cullBackFaces = backFacesHidden(model, placed, s);
+  const std::vector<float>* occlusion = s.occlusion && s.occlusionMethod == OcclusionMethod::Baked ? model.occlusionValues() : nullptr;
+  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette) {
+    if (s.materials) materials.update(mesh, lighting_, stats_);
+    FrameContext frame{placed, viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
+    frame.sceneView = camera.view;
+    frame.occlusion = occlusion;
+    frame.turnResolve = turnResolveFor(s, palette, output);
+    frame.cullBackFaces = cullBackFaces;
+    return drawPart(frame, s.path);
+  };
+  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), palette_.get());
+  // One draw of the path per palette, each over its part of the model; depth testing across
+  // the parts keeps the nearest surface, whichever part is drawn first.
+  for (auto& part : model.parts())
+    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : palette_.get()); !st) return st;
+  return okStatus();
+}
+
+bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& s) {
+  const bool hidden = s.cullHiddenBackFaces && model.mesh().closed && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
+                      sphereBeyondNearPlane(placed, model.sceneRadius());
   stats_.backFacesCulled = stats_.backFacesCulled || hidden;
   return hidden;
 }
 
 Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
-  if (!s.ground || !mesh_ || !palette_) return okStatus();
-  prepareGround();
+  if (!s.ground || !palette_) return okStatus();
+  Model* ground = prepareGround();
+  if (!ground) return okStatus();
   // The ground has no materials of its own: lit with the lighting state's material.
   RenderSettings plain = s;
   plain.materials = false;
-  FrameContext frame{camera, viewport, plain, lighting_, groundGpu_, ground_, groundMaterials_, palette_.get(), groundTriangles_, programs_, stats_, emptyVao_, output};
+  FrameContext frame{camera, viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(), ground->triangles(),
+                     programs_, stats_, emptyVao_, output};
+  frame.sceneView = camera.view;
   if (shadowsReady_ && s.groundShadowTexture) {
-    if (Status st = groundShadows_.update(shadows_, ground_, sceneVersion_, programs_, emptyVao_, stats_); !st) return st;
+    if (Status st = groundShadows_.update(shadows_, groundMesh_, scene_.version(), programs_, emptyVao_, stats_); !st) return st;
     if (groundShadows_.ready()) frame.groundShadows = &groundShadows_;
   }
   return drawPart(frame, s.path);
@@ -359,13 +340,36 @@ Status Renderer::drawPart(FrameContext& frame, RenderPath path) {
   return drawControlPalettes(frame, path);
 }
 
+Status Renderer::drawOverSurfaces(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  Status result = okStatus();
+  scene_.forEach([&](Model& m) {
+    if (result && s.strokes.on && palette_)
+      result = m.strokes().draw(m.placed(camera), s.strokes, lighting_, *palette_, s.match, m.directionField(stats_).directions, viewport,
+                                programs_, stats_);
+  });
+  scene_.forEach([&](Model& m) {
+    if (result) result = drawHardwareOutlines(m.gpu(), m.placed(camera), s.lines, palette_.get(), s.match, viewport, programs_, stats_);
+  });
+  if (result && !scene_.empty()) result = imageEdges_.draw(placedMeshes(camera, false), camera, s.lines, viewport, programs_, emptyVao_, stats_);
+  scene_.forEach([&](Model& m) {
+    if (result) result = m.lines().draw(m.placed(camera), s.lines, viewport, programs_, stats_);
+  });
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------
+// Frames
+
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
-  preparePattern(camera, s, viewport);
+  // The palettes' pattern and orientation for the first model (the background's paper reads
+  // the placement too); the other models set theirs before they are drawn.
+  Model* first = scene_.first();
+  preparePattern(first, first ? first->placed(camera) : camera, s, viewport);
   prepareOrientation(s);
   Status shadowStatus = prepareShadows(camera, s);
   if (shadowStatus) shadowStatus = prepareOcclusion(s);
@@ -373,14 +377,8 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   clearViewport(viewport);
   if (shadowStatus) shadowStatus = prepareScreenOcclusion(camera, s, viewport);
   Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
-  if (result) result = drawPath(camera, s, viewport, gl::MeshOutput::Colour);
-  if (result && mesh_ && s.strokes.on && palette_) {
-    ensureDirectionField();
-    result = strokes_.draw(camera, s.strokes, lighting_, *palette_, s.match, field_->directions, viewport, programs_, stats_);
-  }
-  if (result && mesh_) result = drawHardwareOutlines(gpuMesh_, camera, s.lines, palette_.get(), s.match, viewport, programs_, stats_);
-  if (result && mesh_) result = imageEdges_.draw(gpuMesh_, camera, s.lines, viewport, programs_, emptyVao_, stats_);
-  if (result && mesh_) result = lines_.draw(camera, s.lines, viewport, programs_, stats_);
+  if (result) result = drawScene(camera, s, viewport, gl::MeshOutput::Colour, first);
+  if (result) result = drawOverSurfaces(camera, s, viewport);
   timer_.end();
   gl::restoreDefaults();
   stats_.cpuFrameMs = msSince(frameStart);
@@ -396,21 +394,27 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   if (Status st = prepareOcclusion(s); !st) return st;
   clearViewport(viewport);
   if (Status st = prepareScreenOcclusion(camera, s, viewport); !st) return st;
-  const Status result = drawPath(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend);
+  const Status result = drawScene(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend, nullptr);
   gl::restoreDefaults();
   return result;
 }
 
 Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   stats_.startFrame();
-  if (viewport.z < 1 || viewport.w < 1 || !mesh_) return okStatus();
+  if (viewport.z < 1 || viewport.w < 1 || scene_.empty()) return okStatus();
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
-  preparePattern(camera, s, viewport);
-  prepareOrientation(s);
   clearViewport(viewport);
-  FrameContext frame{camera, viewport, s, lighting_, gpuMesh_, *mesh_, materials_, palette_.get(), triangles_, programs_, stats_, emptyVao_};
-  const Status result = palette_->oriented() ? drawStrokeAngles(frame) : okStatus();
+  Status result = okStatus();
+  scene_.forEach([&](Model& m) {
+    if (!result) return;
+    const CameraMatrices placed = m.placed(camera);
+    preparePattern(&m, placed, s, viewport);
+    prepareOrientation(s);
+    FrameContext frame{placed, viewport, s, lighting_, m.gpu(), m.mesh(), m.materials(), palette_.get(), m.triangles(), programs_, stats_, emptyVao_};
+    frame.sceneView = camera.view;
+    if (palette_->oriented()) result = drawStrokeAngles(frame);
+  });
   gl::restoreDefaults();
   return result;
 }
@@ -419,14 +423,59 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
   stats_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   clearViewport(viewport);
-  const Status result = mesh_ ? drawGeometry(gpuMesh_, camera, output, programs_, stats_) : okStatus();
+  Status result = okStatus();
+  for (const PlacedMesh& m : placedMeshes(camera, false))
+    if (result) result = drawGeometry(*m.mesh, m.camera, output, programs_, stats_);
   gl::restoreDefaults();
   return result;
+}
+
+// ---------------------------------------------------------------------------------------
+// What the app and the tests read back
+
+void Renderer::collectGpuTime() {
+  if (std::optional<double> ms = timer_.collect()) stats_.gpuMs = *ms;
 }
 
 Status Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& worldPosition, const glm::vec3& colour, float pixels,
                             const glm::ivec4& viewport) {
   return npr::drawMarker(camera, worldPosition, colour, pixels, viewport, programs_, emptyVao_, stats_);
+}
+
+std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, const RenderSettings& settings) {
+  std::vector<FeatureLine> out;
+  scene_.forEach([&](Model& m) {
+    std::vector<FeatureLine> lines = m.lines().lines(m.placed(camera), settings.lines);
+    if (!isIdentity(m.transform()))
+      for (FeatureLine& l : lines) {
+        l.a = glm::vec3(m.transform() * glm::vec4(l.a, 1.0f));
+        l.b = glm::vec3(m.transform() * glm::vec4(l.b, 1.0f));
+      }
+    out.insert(out.end(), lines.begin(), lines.end());
+  });
+  return out;
+}
+
+const PatternTracker& Renderer::patternTracker() const {
+  static const PatternTracker none;
+  return scene_.first() ? scene_.first()->patterns() : none;
+}
+
+const TriangleShading& Renderer::triangleShading() const {
+  static const TriangleShading none;
+  return scene_.first() ? const_cast<Model*>(scene_.first())->triangles().shading() : none;
+}
+
+std::size_t Renderer::strokeCount() const {
+  std::size_t n = 0;
+  scene_.forEach([&](const Model& m) { n += const_cast<Model&>(m).strokes().strokes(); });
+  return n;
+}
+
+double Renderer::strokeSeedMs() const {
+  double ms = 0.0;
+  scene_.forEach([&](const Model& m) { ms += const_cast<Model&>(m).strokes().seedMs(); });
+  return ms;
 }
 
 }  // namespace npr

@@ -1,6 +1,6 @@
-// The palette renderer's one entry point for the app and the tests: set a mesh, a palette
-// and the lighting state, then render frames. Each frame is: clear, background, the chosen
-// render path (paths/, one file each), lines (lines/), timers. The paths light with the shared
+// The palette renderer's one entry point for the app and the tests: set a scene of models, a
+// palette and the lighting state, then render frames. Each frame is: clear, background, the
+// chosen render path over every model (paths/, one file each), lines (lines/), timers. The paths light with the shared
 // lighting model (lighting/) and match with the shared PaletteMatcher (palette/); they differ
 // only in where lighting is sampled and how the palette reaches the screen (screen space).
 //
@@ -23,24 +23,17 @@
 #include "renderer/lighting/control_weights.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/lines/image_edges_pass.h"
-#include "renderer/lines/line_pass.h"
-#include "renderer/mesh/gpu_materials.h"
-#include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
-#include "renderer/orientation/direction_field.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/palette.h"
 #include "renderer/passes/geometry_pass.h"
 #include "renderer/passes/turn_resolve_pass.h"
 #include "renderer/paths/path_table.h"
-#include "renderer/patterns/pattern_tracker.h"
 #include "renderer/render_settings.h"
-#include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/scene/scene.h"
 #include "renderer/shadows/ground_shadow_pass.h"
-#include "renderer/shadows/occlusion_bake.h"
 #include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
-#include "renderer/strokes/brush_stroke_pass.h"
 
 namespace npr {
 
@@ -58,8 +51,16 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Uploads the mesh. The renderer keeps a pointer for per-triangle shading and lines: call
-  // again (or with nullptr) before the mesh is destroyed or replaced.
+  // The scene (scene/scene.h): models placed by transforms, each uploaded when added and
+  // owning what is derived from its mesh. The renderer keeps a pointer to each mesh: remove
+  // the model (or set another scene) before the mesh is destroyed.
+  ModelId addModel(const Mesh& mesh, const glm::mat4& transform = glm::mat4(1.0f));
+  void removeModel(ModelId id);
+  // False when there is no such model.
+  bool setModelTransform(ModelId id, const glm::mat4& transform);
+  std::size_t modelCount() const { return scene_.size(); }
+  const Model* model(ModelId id) const { return scene_.find(id); }
+  // A scene of one model, untransformed (nullptr or an empty mesh: an empty scene).
   void setMesh(const Mesh* mesh);
   // Uploads the palette; on failure the current one stays in place.
   [[nodiscard]] Status setPalette(const Palette& palette);
@@ -68,8 +69,6 @@ class Renderer {
   // meshes, applied to whichever has a material of that name; on failure nothing changes.
   [[nodiscard]] Status setMaterialPalette(const std::string& material, const Palette& palette);
   void clearMaterialPalette(const std::string& material);
-  // The materials that have their own palette and whether the current mesh has them.
-  std::vector<std::string> materialPaletteNames() const;
   // Control-image palettes (passes/control_palette_pass.h): drawn where shadows fall or in
   // crevices, blended in by that parameter over the main palette. Matched with the main
   // palette's match mode and range scale; on failure nothing changes.
@@ -94,34 +93,38 @@ class Renderer {
   // green where there is one; read from a float target). All invalid when the palette has no
   // entry with a stroke direction.
   [[nodiscard]] Status renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
-  // The mesh's interpolated eye-space position or normal (read from a float target).
+  // The scene's interpolated eye-space position or normal (read from a float target).
   [[nodiscard]] Status renderGeometry(const CameraMatrices& camera, GeometryOutput output, const glm::ivec4& viewport);
 
   // The anchored pattern starts again from the screen's frame at the next frame: call on view
-  // jumps (frame the model, reset the view). A new mesh does it too.
-  void resetPattern() { patterns_.reset(); }
+  // jumps (frame the model, reset the view). A new model does it too.
+  void resetPattern() {
+    scene_.forEach([](Model& m) { m.patterns().reset(); });
+  }
   // Where the viewport's pixels sit in the whole frame, for a poster drawn in tiles: palette
   // patterns continue across the tiles' seams. (0, 0) for an ordinary frame.
   void setFrameOffset(const glm::ivec2& offset) { frameOffset_ = offset; }
-  // The feature lines the frame shows for this camera (object space), for vector export.
-  std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings) { return lines_.lines(camera, settings.lines); }
-  const PatternTracker& patternTracker() const { return patterns_; }
+  // The feature lines the frame shows for this camera, every model's in scene space, for
+  // vector export.
+  std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings);
+  // The first model's (tests and the overlay; a scene of one is the viewer's today).
+  const PatternTracker& patternTracker() const;
   // The main palette as the last frame drew it (null before one is set).
   const GpuPalette* palette() const { return palette_.get(); }
-  // The ambient occlusion bake of the current mesh: started the first time a frame asks for
+  // The first model's ambient occlusion bake: started the first time a frame asks for
   // occlusion, run for at most `occlusionBudgetMs` per frame (0: to the end in one frame, as
   // headless runs and tests want), uploaded when done. Null before it starts.
-  const OcclusionBake* occlusionBake() const { return occlusion_.get(); }
+  const OcclusionBake* occlusionBake() const { return scene_.first() ? scene_.first()->occlusionBake() : nullptr; }
   void setOcclusionBudget(double ms) { occlusionBudgetMs_ = ms; }
   // Told how far long work inside a frame has got (the occlusion bake when it bakes to the end
   // at once), so a terminal can show it; empty: nothing told.
   void setProgress(std::function<void(const std::string& what, double fraction)> progress) { progress_ = std::move(progress); }
-  // The current mesh's hatching direction field: computed the first time a frame orients
-  // strokes along the curvature, kept until the mesh changes (null until then).
-  const DirectionField* directionField() const { return field_ ? &*field_ : nullptr; }
-  // The painterly strokes seeded on the current mesh (0 until a frame draws them).
-  std::size_t strokeCount() const { return strokes_.strokes(); }
-  double strokeSeedMs() const { return strokes_.seedMs(); }
+  // The first model's hatching direction field: computed the first time a frame orients
+  // strokes along the curvature, kept with the model (null until then).
+  const DirectionField* directionField() const { return scene_.first() ? scene_.first()->directionFieldIfComputed() : nullptr; }
+  // The painterly strokes seeded on the scene's models (0 until a frame draws them).
+  std::size_t strokeCount() const;
+  double strokeSeedMs() const;
 
   // Reads finished GPU timer queries into stats().gpuMs (render() does this first). Call it
   // after the GPU work is finished to attribute a frame's time to that frame.
@@ -133,40 +136,38 @@ class Renderer {
   const FrameStats& stats() const { return stats_; }
   // The matcher of the last frame (for tests and the benchmark's accuracy reference).
   const PaletteMatcher* matcher() const { return palette_ ? palette_->matcher() : nullptr; }
-  const TriangleShading& triangleShading() const { return triangles_.shading(); }
-  int paletteSize() const { return palette_ ? palette_->size() : 0; }
+  // The first model's per-triangle shading (tests).
+  const TriangleShading& triangleShading() const;
 
  private:
   Renderer() = default;
-  // Checks that `settings` can be drawn and brings the matcher up to date for them.
+  // Checks that `settings` can be drawn and brings the matchers and the models' parts up to date.
   Status prepare(const RenderSettings& settings);
   // Depth and stencil cleared in the viewport only (the split view draws two).
   void clearViewport(const glm::ivec4& viewport);
-  Status drawPath(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
-                  gl::MeshOutput output);
-  // One part of the scene (the mesh, a per-material part, the ground) with this frame's shadow
+  // The scene's surfaces with the path: every model's parts, then the ground. Colour frames set
+  // each model's pattern and orientation in the palettes first, but for `prepared`'s (done).
+  Status drawScene(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output,
+                   const Model* prepared);
+  // One model's parts (or the whole model) with the path.
+  Status drawModel(Model& model, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
+                   gl::MeshOutput output, bool preparePalettes);
+  // One part of the scene (a model, a per-material part, the ground) with this frame's shadow
   // maps and screen-space occlusion: the path, then the control-image palettes over it.
   Status drawPart(FrameContext& frame, RenderPath path);
   // The turn resolve, where a frame of the model's with this palette leaves its turned lookups
   // to it (TurnPlacement), else null.
   TurnResolvePass* turnResolveFor(const RenderSettings& settings, const GpuPalette* palette, gl::MeshOutput output);
-  // Whether this frame's mesh passes may drop back faces (FrameContext::cullBackFaces); noted in
+  // Whether this model's mesh passes may drop back faces (FrameContext::cullBackFaces); noted in
   // the frame's stats.
-  bool backFacesHidden(const CameraMatrices& camera, const RenderSettings& settings);
-  // The ground plane with the path's own pass, after the model (--ground).
+  bool backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& settings);
+  // The ground plane with the path's own pass, after the models (--ground).
   Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
-  // Splits the mesh into one part per palette when materials have palettes of their own.
-  void rebuildPaletteGroups();
+  // The lines, strokes and outlines drawn over the surfaces.
+  Status drawOverSurfaces(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+  // Every model's mesh placed for `camera` (and the ground's, with `ground`).
+  std::vector<PlacedMesh> placedMeshes(const CameraMatrices& camera, bool ground);
 
-  // A part of the mesh drawn with one palette (per-material palettes), with its own GPU
-  // copy, appearance and per-triangle cache. Empty when no material has its own palette.
-  struct PaletteGroup {
-    const GpuPalette* palette = nullptr;  // null: the main palette
-    Mesh mesh;
-    GpuMesh gpuMesh;
-    GpuMaterials materials;
-    TriangleShadingCache triangles;
-  };
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
   std::unique_ptr<GpuPalette> shadowPalette_, occlusionPalette_;
   GpuPalette* controlPalette(ControlParameter parameter) const {
@@ -180,42 +181,30 @@ class Renderer {
     if (shadowPalette_) fn(*shadowPalette_);
     if (occlusionPalette_) fn(*occlusionPalette_);
   }
-  std::vector<std::unique_ptr<PaletteGroup>> groups_;
-  bool groupsDirty_ = false;
+  bool partsDirty_ = false;  // the material palettes changed since the models were split
 
   LightingState lighting_;
   FrameStats stats_;
-  const Mesh* mesh_ = nullptr;
-  GpuMesh gpuMesh_;
-  GpuMaterials materials_;
+  Scene scene_;
   std::unique_ptr<GpuPalette> palette_;
-  TriangleShadingCache triangles_;
   gl::ProgramCache programs_;
   gl::GpuTimer timer_;
   gl::VertexArray emptyVao_;  // full-screen passes make their vertices in the shader
   std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
-  LinePass lines_;
-  PatternTracker patterns_;
   TurnResolvePass turnResolve_;
-  float pixelsPerFrontTriangle_ = 0.0f;  // this frame's, from the model's bounding disc (preparePattern)
-  // Gives every palette this frame's pattern frame (anchored) or none (screen) and where it is
+  float pixelsPerFrontTriangle_ = 0.0f;  // the model being drawn, from its bounding disc (preparePattern)
+  // Gives every palette this model's pattern frame (anchored) or none (screen) and where it is
   // drawn (the viewport, a poster tile's offset, per-vertex or per-pixel placement); the
   // orientation's screen directions use the same viewport, so it runs before prepareOrientation.
-  void preparePattern(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
-  // Gives every palette this frame's hatching orientation; computes the direction field when
-  // a palette turns along the curvature and the mesh has none yet.
+  void preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& settings, const glm::ivec4& viewport);
+  // Gives every palette this frame's hatching orientation; computes the direction field of
+  // every model when a palette turns along the curvature and a model has none yet.
   void prepareOrientation(const RenderSettings& settings);
-  std::optional<DirectionField> field_;
-  // Computes the direction field of the current mesh if it has none yet (and uploads it).
-  void ensureDirectionField();
-  BrushStrokePass strokes_;
   // Brings the shadow maps up to date when `settings.shadows` is on.
   Status prepareShadows(const CameraMatrices& camera, const RenderSettings& settings);
   ShadowMaps shadows_;
-  // Continues the occlusion bake when `settings.occlusion` is on.
+  // Continues the models' occlusion bakes when `settings.occlusion` is on.
   Status prepareOcclusion(const RenderSettings& settings);
-  std::unique_ptr<OcclusionBake> occlusion_;
-  const std::vector<float>* occlusionValues(const RenderSettings& settings) const;  // null until baked
   double occlusionBudgetMs_ = 0.0;
   // This frame's screen-space occlusion, when `settings` ask for it; after the viewport's clear.
   Status prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
@@ -224,14 +213,12 @@ class Renderer {
   glm::ivec2 frameOffset_{0};
   std::function<void(const std::string&, double)> progress_;
   bool shadowsReady_ = false;  // this frame draws with shadows_
-  unsigned sceneVersion_ = 0;  // counts meshes set, for the shadow maps' cache
-  // The ground plane under the current mesh (--ground), drawn like one more part of it; built
-  // and uploaded the first time a frame asks for it.
-  void prepareGround();
-  Mesh ground_;
-  GpuMesh groundGpu_;
-  GpuMaterials groundMaterials_;  // never uploaded: the ground has no appearance
-  TriangleShadingCache groundTriangles_;
+  // The ground plane under the scene (--ground), drawn like one more model; built the first
+  // time a frame asks for it, again when the scene changes.
+  Model* prepareGround();
+  Mesh groundMesh_;
+  std::unique_ptr<Model> ground_;
+  unsigned groundVersion_ = 0;  // the scene's version it was built for
   GroundShadowPass groundShadows_;
   ImageEdgesPass imageEdges_;
 };

@@ -9,7 +9,7 @@
 
 namespace npr {
 
-Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport,
+Status ImageEdgesPass::draw(const std::vector<PlacedMesh>& meshes, const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
   if (!ls.imageSpace) return okStatus();
   GLint target = 0;
@@ -17,7 +17,9 @@ Status ImageEdgesPass::draw(const GpuMesh& mesh, const CameraMatrices& camera, c
   if (target_.resize({viewport.z, viewport.w}, GL_RGBA16F)) ++stats.bufferUploads;
   // The geometry pass: normals and depth of what this frame shows.
   target_.bindAndClear();
-  Status status = drawGeometry(mesh, camera, GeometryOutput::EyeNormal, programs, stats);
+  Status status = okStatus();
+  for (const PlacedMesh& m : meshes)
+    if (status) status = drawGeometry(*m.mesh, m.camera, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> sobel = programs.get(gl::EdgeProgram{}, stats.shaderBuilds);
   if (status && !sobel) status = Error{sobel.error()};
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));

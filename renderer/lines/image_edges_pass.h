@@ -12,13 +12,14 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/texture_target.h"
 #include "renderer/mesh/gpu_mesh.h"
+#include "renderer/scene/placed_mesh.h"
 #include "renderer/render_settings.h"
 
 namespace npr {
 
 class ImageEdgesPass {
  public:
-  [[nodiscard]] Status draw(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& lines,
+  [[nodiscard]] Status draw(const std::vector<PlacedMesh>& meshes, const CameraMatrices& camera, const LineSettings& lines,
                             const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao,
                             FrameStats& stats);
 

@@ -30,7 +30,6 @@ class GpuMesh {
   // The hatching direction field, one vector per vertex (attribute 6; orientation/
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);
-  bool hasDirections() const { return directions_.id() != 0; }
   // Baked ambient occlusion, one value per vertex (attribute 7; shadows/occlusion_bake.h).
   void uploadOcclusion(const std::vector<float>& occlusion);
   bool hasOcclusion() const { return occlusion_.id() != 0; }

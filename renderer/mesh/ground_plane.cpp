@@ -7,11 +7,15 @@
 namespace npr {
 
 Mesh groundPlane(const Mesh& model, float extent, int cells) {
-  Mesh g;
-  cells = std::clamp(cells, 1, 1024);
   float lowest = model.positions.empty() ? -1.0f : model.positions.front().y;
   for (const glm::vec3& p : model.positions) lowest = std::min(lowest, p.y);
-  const float r = model.radius > 0.0f && std::isfinite(model.radius) ? model.radius : 1.0f;
+  return groundPlane(lowest, model.radius, extent, cells);
+}
+
+Mesh groundPlane(float lowest, float radius, float extent, int cells) {
+  Mesh g;
+  cells = std::clamp(cells, 1, 1024);
+  const float r = radius > 0.0f && std::isfinite(radius) ? radius : 1.0f;
   const float y = lowest - 0.002f * r, half = extent * r;
   for (int j = 0; j <= cells; ++j)
     for (int i = 0; i <= cells; ++i)

@@ -11,5 +11,7 @@ namespace npr {
 // Centred under the model's bounding sphere, `extent` model radii to each side, `cells` x
 // `cells` quads, at the model's lowest y less a hair (so it never z-fights the model's base).
 Mesh groundPlane(const Mesh& model, float extent = 2.5f, int cells = 48);
+// The same under a scene: its lowest y and the radius of a sphere about the origin holding it.
+Mesh groundPlane(float lowest, float radius, float extent = 2.5f, int cells = 48);
 
 }  // namespace npr

@@ -49,7 +49,6 @@ class GpuPalette {
     patternScale_ = patternScale;
     linearFilter_ = linearFilter;
   }
-  bool anchored() const { return pattern_.has_value(); }
   // The object-space pattern (--pattern object) for the frames drawn next, or not; `pixelSize`
   // is the object units one pixel spans at eye depth 1 (2 / (projection[1][1] x height)),
   // `eyeToObject` the view's inverse.

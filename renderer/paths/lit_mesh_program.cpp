@@ -39,7 +39,7 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
     uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
   }
   if (palette) f.bindPalette(p, palette);
-  if (f.shadows) f.shadows->bind(p, f.camera.view);
+  if (f.shadows) f.shadows->bind(p, f.sceneView);
   if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   if (variant.screenOcclusion) f.screenOcclusion->bind(p, f.viewport);
   if (variant.groundShadowMap) f.groundShadows->bind(p);

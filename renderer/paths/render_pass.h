@@ -26,7 +26,7 @@ namespace npr {
 class TurnResolvePass;
 
 struct FrameContext {
-  const CameraMatrices& camera;
+  const CameraMatrices& camera;  // placed by the model's transform (the scene's view times it)
   glm::ivec4 viewport;  // x, y, width, height in the bound framebuffer
   const RenderSettings& settings;
   const LightingState& lighting;
@@ -40,8 +40,10 @@ struct FrameContext {
   const gl::VertexArray& emptyVao;   // for full-screen triangles (vertices made in the shader)
   // Palette paths write their texels, or the selection behind them (tests, the benchmark).
   gl::MeshOutput output = gl::MeshOutput::Colour;
-  // This frame's shadow maps, when shadows are on and some light has one.
+  // This frame's shadow maps, when shadows are on and some light has one; they are bound with
+  // the scene's view (eye to scene space), not the model's.
   const ShadowMaps* shadows = nullptr;
+  glm::mat4 sceneView{1.0f};
   // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
   // The ground's shadow texture, when this pass draws the ground and the texture is ready.

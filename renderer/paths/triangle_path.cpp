@@ -11,7 +11,7 @@ Status updateTriangleShading(FrameContext& f) {
   const bool gpu = where == TriangleLighting::Gpu || (where == TriangleLighting::Auto && f.shadows);
   if (gpu && !f.drawMaterials()) {
     std::vector<std::uint8_t> entries;
-    const GpuTriangleLightingInputs in{f.lighting, f.camera, *f.palette, f.settings.match, f.shadows, f.occlusion, f.settings.occlusionStrength};
+    const GpuTriangleLightingInputs in{f.lighting, f.camera, *f.palette, f.settings.match, f.shadows, f.sceneView, f.occlusion, f.settings.occlusionStrength};
     if (Status st = f.triangles.gpu().shade(in, f.programs, f.stats, entries); !st) return st;
     f.triangles.setEntries(std::move(entries), f.palette->size(), f.stats);
     return okStatus();

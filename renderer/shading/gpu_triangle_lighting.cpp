@@ -96,7 +96,7 @@ Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::Progr
   p.set("uTargetSize", size);
   uploadLightingUniforms(p, prepareLighting<float>(in.lighting));
   in.palette.bind(p, false);
-  if (in.shadows) in.shadows->bind(p, in.camera.view);
+  if (in.shadows) in.shadows->bind(p, in.sceneView);
   if (occluded) p.set("uOcclusionStrength", std::clamp(in.occlusionStrength, 0.0f, 1.0f));
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(nt));

@@ -28,6 +28,7 @@ struct GpuTriangleLightingInputs {
   const GpuPalette& palette;
   MatchMode match;
   const ShadowMaps* shadows = nullptr;           // null: unshadowed
+  glm::mat4 sceneView{1.0f};                     // the shadow maps' eye-to-scene transform
   const std::vector<float>* occlusion = nullptr;  // per vertex; null: none
   float occlusionStrength = 1.0f;
 };

@@ -28,7 +28,7 @@ std::vector<glm::vec3> hemisphereKernel(int n) {
 
 }  // namespace
 
-Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, const CameraMatrices& camera, float radius, const glm::ivec4& viewport,
+Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const CameraMatrices& camera, float radius, const glm::ivec4& viewport,
                                  gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
   GLint target = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
@@ -46,8 +46,8 @@ Status ScreenOcclusionPass::draw(const std::vector<const GpuMesh*>& meshes, cons
   };
   // (1) what the frame shows: normals and depth
   geometry_.bindAndClear();
-  for (const GpuMesh* m : meshes)
-    if (status) status = drawGeometry(*m, camera, GeometryOutput::EyeNormal, programs, stats);
+  for (const PlacedMesh& m : meshes)
+    if (status) status = drawGeometry(*m.mesh, m.camera, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> estimate = programs.get(gl::ScreenOcclusionProgram{false}, stats.shaderBuilds);
   Result<gl::ShaderProgram*> blur = programs.get(gl::ScreenOcclusionProgram{true}, stats.shaderBuilds);
   if (status && !estimate) status = Error{estimate.error()};

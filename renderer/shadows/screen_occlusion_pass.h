@@ -19,6 +19,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/gl/texture_target.h"
 #include "renderer/mesh/gpu_mesh.h"
+#include "renderer/scene/placed_mesh.h"
 
 namespace npr {
 
@@ -26,7 +27,7 @@ class ScreenOcclusionPass {
  public:
   // Draws this frame's occlusion for `meshes` seen through `camera` in `viewport`, with
   // hemisphere radius `radius` (eye units); leaves the bound framebuffer and viewport as they were.
-  [[nodiscard]] Status draw(const std::vector<const GpuMesh*>& meshes, const CameraMatrices& camera, float radius, const glm::ivec4& viewport,
+  [[nodiscard]] Status draw(const std::vector<PlacedMesh>& meshes, const CameraMatrices& camera, float radius, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats);
   // Binds the result for a mesh program compiled with SCREEN_OCCLUSION.
   void bind(gl::ShaderProgram& program, const glm::ivec4& viewport) const;

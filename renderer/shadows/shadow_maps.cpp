@@ -141,9 +141,9 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
       glClearDepth(1.0);
       glClear(GL_DEPTH_BUFFER_BIT);
       gl::apply(gl::pass::kShadowDepth);
-      (*prog)->set("uLightViewProjection", m.viewProjection[size_t(f)]);
-      for (const GpuMesh* c : scene.casters) {
-        c->drawAll();
+      for (const ShadowCaster& c : scene.casters) {
+        (*prog)->set("uLightViewProjection", m.viewProjection[size_t(f)] * c.transform);
+        c.mesh->drawAll();
         ++stats.drawCalls;
       }
     }

@@ -21,8 +21,14 @@
 
 namespace npr {
 
+// A mesh that casts shadows, placed by its model's transform (model to scene space).
+struct ShadowCaster {
+  const GpuMesh* mesh;
+  glm::mat4 transform{1.0f};
+};
+
 struct ShadowScene {
-  std::vector<const GpuMesh*> casters;
+  std::vector<ShadowCaster> casters;
   glm::vec3 centre{0.0f};
   float casterRadius = 1.0f;  // a sphere about `centre` holding every caster
   float sceneRadius = 1.0f;   // ... and every receiver (the ground plane)

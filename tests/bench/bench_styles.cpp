@@ -34,7 +34,7 @@ using namespace npr;
 
 namespace {
 
-struct Scene {
+struct BenchScene {
   const char* name;
   const Mesh* mesh;
 };
@@ -66,7 +66,7 @@ Palette whitePalette() {
   return p;
 }
 
-int lines(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames, const Palette& crosshatch) {
+int lines(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, int frames, const Palette& crosshatch) {
   auto created = Renderer::create();
   if (!created) return 1;
   Renderer& r = **created;
@@ -89,7 +89,7 @@ int lines(const std::vector<Scene>& scenes, const OffscreenTarget& target, int f
 
   std::printf("## Hardware outlines against object-space silhouettes (3 px lines)\n\n");
   std::printf("| mesh | method | object-space px near it | its px near object-space | width median | p10 | p90 |\n|---|---|---|---|---|---|---|\n");
-  for (const Scene& sc : scenes) {
+  for (const BenchScene& sc : scenes) {
     r.setMesh(sc.mesh);
     if (!r.setPalette(whitePalette())) return 1;
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
@@ -113,7 +113,7 @@ int lines(const std::vector<Scene>& scenes, const OffscreenTarget& target, int f
 
   std::printf("\n## Frame cost, crosshatch, pixel path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | lines | median ms | p95 ms | CPU ms | x no lines | x object-space |\n|---|---|---|---|---|---|---|\n");
-  for (const Scene& sc : scenes) {
+  for (const BenchScene& sc : scenes) {
     r.setMesh(sc.mesh);
     if (!r.setPalette(crosshatch)) return 1;
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
@@ -136,7 +136,7 @@ int lines(const std::vector<Scene>& scenes, const OffscreenTarget& target, int f
   return 0;
 }
 
-int styles(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames) {
+int styles(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, int frames) {
   struct Entry {
     std::string name;
     ViewerState state;
@@ -172,7 +172,7 @@ int styles(const std::vector<Scene>& scenes, const OffscreenTarget& target, int 
   const float aspect = float(target.width()) / float(target.height());
   std::printf("\n## Styles: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | style | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|\n");
-  for (const Scene& sc : scenes) {
+  for (const BenchScene& sc : scenes) {
     for (Entry& e : entries) e.renderer->setMesh(sc.mesh);
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
@@ -211,7 +211,7 @@ double changedShare(const ImageRGBA8& a, const ImageRGBA8& b, const glm::vec3& g
   return covered ? double(changed) / covered : 0.0;
 }
 
-int strokes(const std::vector<Scene>& scenes, const OffscreenTarget& target, int frames) {
+int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, int frames) {
   auto created = Renderer::create();
   if (!created) return 1;
   Renderer& r = **created;
@@ -225,7 +225,7 @@ int strokes(const std::vector<Scene>& scenes, const OffscreenTarget& target, int
   };
   std::printf("\n## Painterly strokes: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | row | strokes | seeding ms | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|---|---|\n");
-  for (const Scene& sc : scenes) {
+  for (const BenchScene& sc : scenes) {
     r.setMesh(sc.mesh);
     const bool large = sc.mesh->triangleCount() > 500000;
     std::vector<Row> rows(3);
@@ -268,7 +268,7 @@ int strokes(const std::vector<Scene>& scenes, const OffscreenTarget& target, int
   // alone is the yardstick, and strokes cut at their rank instead of faded show the popping.
   std::printf("\n## Painterly strokes: pixels popping between consecutive frames (luminance change > 0.08)\n\n");
   std::printf("| mesh | motion | smooth | + strokes (faded) | + strokes (cut) |\n|---|---|---|---|---|\n");
-  for (const Scene& sc : scenes) {
+  for (const BenchScene& sc : scenes) {
     if (sc.mesh->triangleCount() > 500000) continue;  // the bunny and the teapot say it
     r.setMesh(sc.mesh);
     RenderSettings base;
@@ -337,7 +337,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_styles: could not set up (target, models or palette)\n");
     return 1;
   }
-  std::vector<Scene> scenes;
+  std::vector<BenchScene> scenes;
   if (meshFilter.empty() || meshFilter == "bunny") scenes.push_back({"bunny", &*bunny});
   if (meshFilter.empty() || meshFilter == "teapot") scenes.push_back({"teapot", &*teapot});
   if (meshFilter.empty() || meshFilter == "torus") scenes.push_back({"torus 871K", &bench::largeMesh()});

@@ -1,0 +1,76 @@
+// A model of the scene and its derived caches (see model.h).
+#include "renderer/scene/model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "renderer/mesh/mesh_subset.h"
+
+namespace npr {
+
+Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bool appearance) : mesh_(&mesh), transform_(transform) {
+  triangles_.setMesh(mesh_);
+  lines_.setMesh(mesh_);
+  strokes_.setMesh(mesh_);
+  patterns_.setMesh(mesh_);
+  gpu_.upload(mesh);
+  stats.bufferUploads += 1;
+  if (!appearance) return;
+  materials_.upload(mesh);
+  stats.bufferUploads += 2;
+}
+
+float Model::sceneRadius() const {
+  float scale = 0.0f;
+  for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(transform_[c])));
+  return mesh_->radius * scale;
+}
+
+const DirectionField& Model::directionField(FrameStats& stats) {
+  if (!field_) {
+    field_ = computeDirectionField(*mesh_);
+    stats.cpuFieldMs = field_->ms;
+    gpu_.uploadDirections(field_->directions);
+    for (auto& p : parts_) p->gpu.uploadDirections(field_->directions);  // a part keeps every vertex
+    stats.bufferUploads += 1;
+  }
+  return *field_;
+}
+
+Status Model::startOcclusionBake() {
+  if (occlusion_) return okStatus();
+  Result<std::unique_ptr<OcclusionBake>> bake = OcclusionBake::start(*mesh_, gpu_);
+  if (!bake) return Error{bake.error()};
+  occlusion_ = std::move(*bake);
+  return okStatus();
+}
+
+void Model::occlusionBaked(FrameStats& stats) {
+  gpu_.uploadOcclusion(occlusion_->values());
+  for (auto& p : parts_) p->gpu.uploadOcclusion(occlusion_->values());  // a part keeps every vertex
+  stats.bufferUploads += 1;
+}
+
+void Model::uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats) {
+  for (std::size_t g = 0; g < palettes.size(); ++g) {
+    std::vector<char> keep(mesh_->triangleCount(), 0);
+    bool any = false;
+    for (std::size_t f = 0; f < keep.size(); ++f) {
+      keep[f] = partOf[mesh_->faceMaterials[f]] == g;
+      any = any || keep[f];
+    }
+    if (!any) continue;
+    auto part = std::make_unique<Part>();
+    part->palette = palettes[g];
+    part->mesh = meshSubset(*mesh_, keep);
+    part->gpu.upload(part->mesh);
+    part->materials.upload(part->mesh);
+    part->triangles.setMesh(&part->mesh);
+    if (field_) part->gpu.uploadDirections(field_->directions);
+    if (const std::vector<float>* o = occlusionValues()) part->gpu.uploadOcclusion(*o);
+    stats.bufferUploads += 3;
+    parts_.push_back(std::move(part));
+  }
+}
+
+}  // namespace npr

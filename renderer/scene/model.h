@@ -1,0 +1,114 @@
+// One object of the scene: a mesh placed by a transform, and everything derived from the mesh,
+// each computed the first time a frame needs it and dropped with the model: the GPU copy, the
+// materials' appearance, the per-triangle shading cache, the feature edges, the hatching
+// direction field, the occlusion bake, the painterly strokes' seeds, the anchored pattern's
+// samples, and the parts drawn with palettes of their own (per-material palettes).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/core/camera.h"
+#include "renderer/core/frame_stats.h"
+#include "renderer/lines/line_pass.h"
+#include "renderer/mesh/gpu_materials.h"
+#include "renderer/mesh/gpu_mesh.h"
+#include "renderer/mesh/mesh.h"
+#include "renderer/orientation/direction_field.h"
+#include "renderer/patterns/pattern_tracker.h"
+#include "renderer/shading/triangle_shading_cache.h"
+#include "renderer/shadows/occlusion_bake.h"
+#include "renderer/strokes/brush_stroke_pass.h"
+
+namespace npr {
+
+class GpuPalette;
+
+class Model {
+ public:
+  // Keeps a pointer to `mesh`, which must outlive the model (or be replaced first); uploads it,
+  // with its materials' appearance unless `appearance` is off (the ground has none).
+  Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bool appearance = true);
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const Mesh& mesh() const { return *mesh_; }
+  // Model space to the scene's (world) space.
+  const glm::mat4& transform() const { return transform_; }
+  void setTransform(const glm::mat4& transform) { transform_ = transform; }
+  // The camera as this model sees it: the scene's view times the model's transform.
+  CameraMatrices placed(const CameraMatrices& camera) const { return {camera.view * transform_, camera.projection}; }
+  // The bounding sphere's radius in scene units (the largest axis scale of the transform).
+  float sceneRadius() const;
+
+  GpuMesh& gpu() { return gpu_; }
+  const GpuMesh& gpu() const { return gpu_; }
+  GpuMaterials& materials() { return materials_; }
+  TriangleShadingCache& triangles() { return triangles_; }
+  LinePass& lines() { return lines_; }
+  BrushStrokePass& strokes() { return strokes_; }
+  PatternTracker& patterns() { return patterns_; }
+  const PatternTracker& patterns() const { return patterns_; }
+
+  // The hatching direction field: computed and uploaded (to the parts too) the first time.
+  const DirectionField& directionField(FrameStats& stats);
+  const DirectionField* directionFieldIfComputed() const { return field_ ? &*field_ : nullptr; }
+  // The occlusion bake: started the first time, advanced by `step`; uploaded when done.
+  OcclusionBake* occlusionBake() { return occlusion_.get(); }
+  const OcclusionBake* occlusionBake() const { return occlusion_.get(); }
+  [[nodiscard]] Status startOcclusionBake();
+  void occlusionBaked(FrameStats& stats);  // uploads the finished bake to the model and its parts
+  const std::vector<float>* occlusionValues() const { return occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr; }
+
+  // A part of the model drawn with one palette (null: the main one), with its own GPU copy,
+  // appearance and per-triangle cache. Empty when no material of the mesh has its own palette.
+  struct Part {
+    const GpuPalette* palette = nullptr;
+    Mesh mesh;
+    GpuMesh gpu;
+    GpuMaterials materials;
+    TriangleShadingCache triangles;
+  };
+  // Splits the model into parts by the palette each material is drawn with (`paletteOf`
+  // returns null for the main palette).
+  template <class PaletteOf>
+  void splitByPalette(PaletteOf&& paletteOf, FrameStats& stats);
+  std::vector<std::unique_ptr<Part>>& parts() { return parts_; }
+
+ private:
+  void uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats);
+
+  const Mesh* mesh_;
+  glm::mat4 transform_;
+  GpuMesh gpu_;
+  GpuMaterials materials_;
+  TriangleShadingCache triangles_;
+  LinePass lines_;
+  BrushStrokePass strokes_;
+  PatternTracker patterns_;
+  std::optional<DirectionField> field_;
+  std::unique_ptr<OcclusionBake> occlusion_;
+  std::vector<std::unique_ptr<Part>> parts_;
+};
+
+template <class PaletteOf>
+void Model::splitByPalette(PaletteOf&& paletteOf, FrameStats& stats) {
+  parts_.clear();
+  if (mesh_->faceMaterials.size() != mesh_->triangleCount()) return;
+  // The palette of each material: 0 the main one, k > 0 the k-th distinct material palette.
+  std::vector<const GpuPalette*> palettes{nullptr};
+  std::vector<std::size_t> partOf(mesh_->materials.size(), 0);
+  for (std::size_t i = 0; i < mesh_->materials.size(); ++i) {
+    const GpuPalette* p = paletteOf(mesh_->materials[i].name);
+    if (!p) continue;
+    auto at = std::find(palettes.begin(), palettes.end(), p);
+    if (at == palettes.end()) at = palettes.insert(palettes.end(), p);
+    partOf[i] = static_cast<std::size_t>(at - palettes.begin());
+  }
+  if (palettes.size() > 1) uploadParts(palettes, partOf, stats);
+}
+
+}  // namespace npr

@@ -1,0 +1,98 @@
+// The scene: the models the renderer draws, each with its own transform and derived caches
+// (model.h). Today's viewer is a scene of one model; the API adds, removes and moves them.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "renderer/scene/model.h"
+#include "renderer/scene/placed_mesh.h"
+
+namespace npr {
+
+using ModelId = std::uint32_t;
+
+class Scene {
+ public:
+  ModelId add(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
+    models_.push_back({nextId_, std::make_unique<Model>(mesh, transform, stats)});
+    ++version_;
+    return nextId_++;
+  }
+  bool remove(ModelId id) {
+    for (auto it = models_.begin(); it != models_.end(); ++it)
+      if (it->id == id) {
+        models_.erase(it);
+        ++version_;
+        return true;
+      }
+    return false;
+  }
+  void clear() {
+    models_.clear();
+    ++version_;
+  }
+  Model* find(ModelId id) {
+    for (auto& m : models_)
+      if (m.id == id) return m.model.get();
+    return nullptr;
+  }
+  const Model* find(ModelId id) const { return const_cast<Scene*>(this)->find(id); }
+  bool setTransform(ModelId id, const glm::mat4& transform) {
+    Model* m = find(id);
+    if (!m) return false;
+    m->setTransform(transform);
+    ++version_;
+    return true;
+  }
+  bool empty() const { return models_.empty(); }
+  std::size_t size() const { return models_.size(); }
+  // Changes whenever a model is added, removed or moved (for the caches of the whole scene).
+  unsigned version() const { return version_; }
+  // Calls fn(Model&) for every model, in the order they were added.
+  template <class Fn>
+  void forEach(Fn&& fn) {
+    for (auto& m : models_) fn(*m.model);
+  }
+  template <class Fn>
+  void forEach(Fn&& fn) const {
+    for (const auto& m : models_) fn(static_cast<const Model&>(*m.model));
+  }
+  Model* first() { return models_.empty() ? nullptr : models_.front().model.get(); }
+  const Model* first() const { return models_.empty() ? nullptr : models_.front().model.get(); }
+  // A sphere holding every model (scene space).
+  glm::vec4 bounds() const {
+    glm::vec3 centre(0.0f);
+    float radius = -1.0f;
+    for (const auto& e : models_) {
+      const glm::vec3 c(e.model->transform()[3]);
+      const float r = e.model->sceneRadius();
+      if (radius < 0.0f) {
+        centre = c, radius = r;
+        continue;
+      }
+      const float d = glm::length(c - centre);
+      if (d + r <= radius) continue;
+      if (d + radius <= r) {
+        centre = c, radius = r;
+        continue;
+      }
+      const float grown = 0.5f * (d + r + radius);
+      centre += (c - centre) * ((grown - radius) / d);
+      radius = grown;
+    }
+    return glm::vec4(centre, std::max(radius, 0.0f));
+  }
+
+ private:
+  struct Entry {
+    ModelId id;
+    std::unique_ptr<Model> model;
+  };
+  std::vector<Entry> models_;
+  ModelId nextId_ = 1;
+  unsigned version_ = 0;
+};
+
+}  // namespace npr

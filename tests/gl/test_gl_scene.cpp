@@ -1,0 +1,184 @@
+// GL tier: a scene of several models (renderer/scene/). Each model is drawn where its transform
+// puts it (the same picture as its mesh moved there), the nearest surface wins across models,
+// one model casts shadows and screen-space occlusion on another, each keeps its own caches
+// (a removed model takes only its own with it; unchanged frames do no work), and the anchored
+// pattern follows each model alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gl/gl_test_env.h"
+#include "renderer/mesh/mesh_builder.h"
+#include "support/analytic_surfaces.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using SceneFixture = test::RendererFixture;
+
+constexpr int kSize = 160;
+
+float luminance(const ImageRGBA8& img, std::size_t i) {
+  return (0.2126f * img.pixels[4 * i] + 0.7152f * img.pixels[4 * i + 1] + 0.0722f * img.pixels[4 * i + 2]) / 255.0f;
+}
+bool covered(const ImageRGBA32F& g, std::size_t i) { return g.pixels[4 * i + 2] != 0.0f; }
+
+// A slab facing up (the square turned to face +y), scaled and lowered under a sphere.
+Mesh slab() { return test::rotatedMesh(test::square(8), glm::mat3(glm::rotate(glm::mat4(1.0f), glm::radians(-90.0f), glm::vec3(1, 0, 0)))); }
+const glm::mat4 kSlabPlace = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(1.2f));
+const glm::mat4 kSpherePlace = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0.0f, 0.1f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.35f));
+
+void lightFromAbove(Renderer& r, const CameraMatrices& cam) {
+  const float pos[4] = {0.2f, 1.0f, 0.3f, 0.0f};
+  r.lighting().setModelView(cam.view);
+  ASSERT_TRUE(r.lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
+}
+
+TEST_F(SceneFixture, AModelIsDrawnWhereItsTransformPutsIt) {
+  const Mesh sphere = icosphere(3);
+  const glm::mat4 place = glm::translate(glm::mat4(1.0f), glm::vec3(0.3f, -0.2f, 0.1f)) *
+                          glm::rotate(glm::mat4(1.0f), glm::radians(35.0f), glm::vec3(0, 1, 0)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  Mesh moved = sphere;
+  for (glm::vec3& p : moved.positions) p = glm::vec3(place * glm::vec4(p, 1.0f));
+  finalizeMesh(moved);
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  const CameraMatrices cam = test::testCamera(1.0f);
+  r->setMesh(&moved);
+  const ImageRGBA8 baked = test::renderImage(*r, cam, s, kSize, kSize);
+  r->setMesh(nullptr);
+  const ModelId id = r->addModel(sphere, place);
+  EXPECT_EQ(r->modelCount(), 1u);
+  const ImageRGBA8 placed = test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_LE(test::countDiffering(baked, placed), kSize * kSize / 200);
+  // Moved back to the origin, it is another picture.
+  ASSERT_TRUE(r->setModelTransform(id, glm::mat4(1.0f)));
+  EXPECT_GT(test::countDiffering(baked, test::renderImage(*r, cam, s, kSize, kSize)), kSize * kSize / 20);
+  EXPECT_FALSE(r->setModelTransform(id + 100, glm::mat4(1.0f)));
+}
+
+TEST_F(SceneFixture, TheNearestSurfaceWinsAcrossModels) {
+  const Mesh a = icosphere(3), b = torus(48, 24);
+  const glm::mat4 pa = glm::translate(glm::mat4(1.0f), glm::vec3(-0.25f, 0.0f, 0.2f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  const glm::mat4 pb = glm::translate(glm::mat4(1.0f), glm::vec3(0.2f, 0.1f, -0.1f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.7f));
+  const CameraMatrices cam = test::testCamera(1.0f);
+  const ModelId ia = r->addModel(a, pa);
+  const ImageRGBA32F onlyA = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  r->removeModel(ia);
+  r->addModel(b, pb);
+  const ImageRGBA32F onlyB = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  r->addModel(a, pa);
+  EXPECT_EQ(r->modelCount(), 2u);
+  const ImageRGBA32F both = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  int overlap = 0, wrong = 0;
+  for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
+    const bool inA = covered(onlyA, i), inB = covered(onlyB, i);
+    if (!inA && !inB) {
+      wrong += covered(both, i);
+      continue;
+    }
+    overlap += inA && inB;
+    const float nearest = inA && inB ? std::max(onlyA.pixels[4 * i + 2], onlyB.pixels[4 * i + 2]) : inA ? onlyA.pixels[4 * i + 2] : onlyB.pixels[4 * i + 2];
+    wrong += std::fabs(both.pixels[4 * i + 2] - nearest) > 1e-4f;
+  }
+  EXPECT_GT(overlap, 500) << "the models do not overlap on screen: the test tests nothing";
+  EXPECT_LE(wrong, kSize * kSize / 1000);
+}
+
+TEST_F(SceneFixture, OneModelShadowsAndOccludesAnother) {
+  const Mesh sphere = icosphere(3), ground = slab();
+  const CameraMatrices cam = test::testCamera(1.0f, 30.0f, 50.0f);
+  lightFromAbove(*r, cam);
+  r->addModel(ground, kSlabPlace);
+  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  r->addModel(sphere, kSpherePlace);
+  const ImageRGBA32F withSphere = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  const ImageRGBA8 lit = test::renderImage(*r, cam, s, kSize, kSize);
+  s.shadows = true;
+  const ImageRGBA8 shadowed = test::renderImage(*r, cam, s, kSize, kSize);
+  s.shadows = false;
+  s.occlusion = true;
+  s.occlusionMethod = OcclusionMethod::Screen;
+  const ImageRGBA8 occluded = test::renderImage(*r, cam, s, kSize, kSize);
+  // The slab's own pixels (seen past the sphere): a flat slab lit from above neither shadows
+  // nor occludes itself, so what darkens there comes from the sphere.
+  int slabPixels = 0, inShadow = 0, inCrevice = 0;
+  for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
+    if (!covered(slabAlone, i) || std::fabs(withSphere.pixels[4 * i + 2] - slabAlone.pixels[4 * i + 2]) > 1e-4f) continue;
+    ++slabPixels;
+    inShadow += luminance(shadowed, i) < luminance(lit, i) - 0.1f;
+    inCrevice += luminance(occluded, i) < luminance(lit, i) - 0.05f;
+  }
+  EXPECT_GT(slabPixels, kSize * kSize / 4);
+  EXPECT_GT(inShadow, 200) << "the sphere casts no shadow on the slab";
+  EXPECT_GT(inCrevice, 50) << "the sphere occludes nothing of the slab";
+  // The slab alone: nothing darkens it.
+  r->setMesh(nullptr);
+  r->addModel(ground, kSlabPlace);
+  s.occlusion = false;
+  const ImageRGBA8 aloneLit = test::renderImage(*r, cam, s, kSize, kSize);
+  s.shadows = true;
+  const ImageRGBA8 aloneShadowed = test::renderImage(*r, cam, s, kSize, kSize);
+  int darkened = 0;
+  for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) darkened += luminance(aloneShadowed, i) < luminance(aloneLit, i) - 0.1f;
+  EXPECT_LE(darkened, kSize * kSize / 1000);
+}
+
+TEST_F(SceneFixture, EachModelKeepsItsOwnCaches) {
+  const Mesh a = test::rotatedMesh(torus(48, 24), test::obliqueRotation()), b = test::rotatedMesh(icosphere(3), test::obliqueRotation());
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  // Rigid placements: the per-triangle lighting is kept in model space across frames for those
+  // (a scaled model is relit every frame, as a scaled modelview always was).
+  const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.9f, 0.0f, 0.0f)));
+  const ModelId ib = r->addModel(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 0.0f)));
+  RenderSettings s;
+  s.path = RenderPath::Triangle;
+  s.orient.source = OrientSource::Curvature;
+  s.lines.silhouettes = true;
+  const CameraMatrices cam = test::testCamera(1.0f);
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  const DirectionField* fieldA = r->model(ia)->directionFieldIfComputed();
+  const DirectionField* fieldB = r->model(ib)->directionFieldIfComputed();
+  ASSERT_NE(fieldA, nullptr);
+  ASSERT_NE(fieldB, nullptr);
+  EXPECT_EQ(fieldA->directions.size(), a.positions.size());
+  EXPECT_EQ(fieldB->directions.size(), b.positions.size());
+  // Unchanged frames do no work; removing one model leaves the other's caches as they were.
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_EQ(r->stats().bufferUploads, 0);
+  EXPECT_EQ(r->stats().lightingRecomputes, 0);
+  r->removeModel(ib);
+  EXPECT_EQ(r->model(ib), nullptr);
+  EXPECT_EQ(r->model(ia)->directionFieldIfComputed(), fieldA);
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_EQ(r->stats().bufferUploads, 0);
+  EXPECT_EQ(r->stats().lightingRecomputes, 0);
+  EXPECT_EQ(r->model(ia)->directionFieldIfComputed(), fieldA);
+}
+
+TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
+  const Mesh a = icosphere(3), b = torus(48, 24);
+  const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
+  const ModelId ib = r->addModel(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  RenderSettings s;
+  s.pattern = PatternSpace::Anchored;
+  const CameraMatrices cam = test::testCamera(1.0f);
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  const PatternFrame a0 = r->model(ia)->patterns().frame(), b0 = r->model(ib)->patterns().frame();
+  // B moves 0.1 to the right: its pattern moves with it, A's stays.
+  ASSERT_TRUE(r->setModelTransform(ib, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f))));
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  const PatternFrame a1 = r->model(ia)->patterns().frame(), b1 = r->model(ib)->patterns().frame();
+  EXPECT_NEAR(glm::length(a1.translation - a0.translation), 0.0f, 0.05f);
+  EXPECT_GT(b1.translation.x - b0.translation.x, 3.0f) << "B's pattern did not move right with it";
+}
+
+}  // namespace
+}  // namespace npr
