@@ -115,6 +115,15 @@ enum class TriangleLighting { Auto, Cpu, Gpu };
 // the per-pixel shadings only: pixel, smooth, reference's Phong, and the control palettes).
 enum class OcclusionMethod { Baked, Screen };
 
+// The depth cue (features/depth_cue/): the paper blended over tone and lines by distance
+// through the scene, from `start` to `end` (fractions of the scene's depth: 0 its front, 1
+// its back), at most `strength`.
+struct DepthCueSettings {
+  bool on = false;
+  float start = 0.2f, end = 1.0f;
+  float strength = 0.8f;
+};
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -166,6 +175,7 @@ struct RenderSettings {
   bool stencilMasksFirst = true;
   LineSettings lines;
   StrokeSettings strokes;
+  DepthCueSettings depthCue;
 };
 
 }  // namespace npr

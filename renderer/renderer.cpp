@@ -8,7 +8,6 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
-#include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/mesh/ground_plane.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/control_palette_pass.h"
@@ -189,60 +188,24 @@ Model* Renderer::prepareGround() {
   return ground_.get();
 }
 
-Status Renderer::prepareShadows(const CameraMatrices& camera, const RenderSettings& s) {
-  shadowsReady_ = false;
-  if (!s.shadows || scene_.empty()) return okStatus();
-  const Model* ground = s.ground ? prepareGround() : nullptr;
-  ShadowScene scene;
-  scene_.forEach([&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform()}); });
-  const glm::vec4 bounds = scene_.bounds();
-  scene.centre = glm::vec3(bounds);
-  scene.casterRadius = bounds.w;
-  scene.sceneRadius = ground ? ground->mesh().radius : bounds.w;
-  scene.version = scene_.version() * 2 + (ground ? 1 : 0);
-  if (Status st = shadows_.update(lighting_, camera.view, scene, programs_, stats_); !st) return st;
-  shadowsReady_ = shadows_.layers() > 0;
-  stats_.shadowLayers = shadows_.layers();
-  return okStatus();
-}
-
-Status Renderer::prepareOcclusion(const RenderSettings& s) {
-  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Baked) return okStatus();
-  Status status = okStatus();
-  scene_.forEach([&](Model& m) {
-    if (!status) return;
-    if (status = m.startOcclusionBake(); !status) return;
-    OcclusionBake& bake = *m.occlusionBake();
-    if (bake.done()) return;
-    if (occlusionBudgetMs_ <= 0.0 && progress_) {
-      // To the end now, in slices, saying how far it got.
-      while (status && !bake.done()) {
-        status = bake.step(250.0, programs_, stats_);
-        progress_("baking ambient occlusion", double(bake.directionsDone()) / bake.directions());
-      }
-    } else {
-      status = bake.step(occlusionBudgetMs_, programs_, stats_);
-    }
-    if (status && bake.done()) m.occlusionBaked(stats_);
-  });
-  return status;
-}
-
-std::vector<PlacedMesh> Renderer::placedMeshes(const CameraMatrices& camera, bool ground) {
+std::vector<PlacedMesh> Renderer::placedMeshes(const CameraMatrices& camera) {
   std::vector<PlacedMesh> meshes;
   scene_.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(camera)}); });
-  if (ground)
-    if (Model* g = prepareGround()) meshes.push_back({&g->gpu(), camera});
   return meshes;
 }
 
-Status Renderer::prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
-  screenOcclusionReady_ = false;
-  if (!s.occlusion || s.occlusionMethod != OcclusionMethod::Screen || scene_.empty()) return okStatus();
-  const float sceneRadius = scene_.bounds().w;
-  const float radius = std::clamp(s.screenOcclusionRadius, 0.01f, 10.0f) * (sceneRadius > 0.0f ? sceneRadius : 1.0f);
-  if (Status st = screenOcclusion_.draw(placedMeshes(camera, s.ground), camera, radius, viewport, programs_, emptyVao_, stats_); !st) return st;
-  screenOcclusionReady_ = true;
+FrameView Renderer::frameView(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, bool colour) {
+  return FrameView{camera,     s,       viewport,   colour,          scene_,   lighting_, palette_.get(), programs_, stats_,
+                   emptyVao_, [this] { return prepareGround(); }, progress_, occlusionBudgetMs_};
+}
+
+Status Renderer::prepareFeatures(FrameView& frame) {
+  if (features_.empty()) features_ = makeFeatures();
+  active_.clear();
+  for (const auto& f : features_)
+    if (f->active(frame)) active_.push_back(f.get());
+  for (Feature* f : active_)
+    if (Status st = f->prepare(frame); !st) return st;
   return okStatus();
 }
 
@@ -258,34 +221,31 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // ---------------------------------------------------------------------------------------
 // The surfaces
 
-Status Renderer::drawScene(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output,
-                           const Model* prepared) {
+Status Renderer::drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared) {
   Status status = okStatus();
   scene_.forEach([&](Model& m) {
-    if (status) status = drawModel(m, camera, s, viewport, output, &m != prepared);
+    if (status) status = drawModel(frame, m, output, &m != prepared);
   });
   if (!status || scene_.empty()) return status;
-  return drawGround(camera, s, viewport, output);
+  return drawGround(frame, output);
 }
 
-Status Renderer::drawModel(Model& model, const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport,
-                           gl::MeshOutput output, bool preparePalettes) {
-  const CameraMatrices placed = model.placed(camera);
+Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool preparePalettes) {
+  const RenderSettings& s = view.settings;
+  const CameraMatrices placed = model.placed(view.camera);
   if (output == gl::MeshOutput::Colour && preparePalettes) {
-    preparePattern(&model, placed, s, viewport);
+    preparePattern(&model, placed, s, view.viewport);
     prepareOrientation(s);
   }
   // The whole model's, for every part: the parts hide each other's back faces.
   const bool cullBackFaces = backFacesHidden(model, placed, s);
-  const std::vector<float>* occlusion = s.occlusion && s.occlusionMethod == OcclusionMethod::Baked ? model.occlusionValues() : nullptr;
   auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette) {
     if (s.materials) materials.update(mesh, lighting_, stats_);
-    FrameContext frame{placed, viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
-    frame.sceneView = camera.view;
-    frame.occlusion = occlusion;
+    FrameContext frame{placed, view.viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
+    frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
     frame.cullBackFaces = cullBackFaces;
-    return drawPart(frame, s.path);
+    return drawPart(view, &model, frame, s.path);
   };
   if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), palette_.get());
   // One draw of the path per palette, each over its part of the model; depth testing across
@@ -295,28 +255,24 @@ Status Renderer::drawModel(Model& model, const CameraMatrices& camera, const Ren
   return okStatus();
 }
 
+Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
+  if (!view.settings.ground || !palette_) return okStatus();
+  Model* ground = prepareGround();
+  if (!ground) return okStatus();
+  // The ground has no materials of its own: lit with the lighting state's material.
+  RenderSettings plain = view.settings;
+  plain.materials = false;
+  FrameContext frame{view.camera, view.viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(),
+                     ground->triangles(), programs_, stats_, emptyVao_, output};
+  frame.sceneView = view.camera.view;
+  return drawPart(view, nullptr, frame, plain.path);
+}
+
 bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& s) {
   const bool hidden = s.cullHiddenBackFaces && model.mesh().closed && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
                       sphereBeyondNearPlane(placed, model.sceneRadius());
   stats_.backFacesCulled = stats_.backFacesCulled || hidden;
   return hidden;
-}
-
-Status Renderer::drawGround(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, gl::MeshOutput output) {
-  if (!s.ground || !palette_) return okStatus();
-  Model* ground = prepareGround();
-  if (!ground) return okStatus();
-  // The ground has no materials of its own: lit with the lighting state's material.
-  RenderSettings plain = s;
-  plain.materials = false;
-  FrameContext frame{camera, viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(), ground->triangles(),
-                     programs_, stats_, emptyVao_, output};
-  frame.sceneView = camera.view;
-  if (shadowsReady_ && s.groundShadowTexture) {
-    if (Status st = groundShadows_.update(shadows_, groundMesh_, scene_.version(), programs_, emptyVao_, stats_); !st) return st;
-    if (groundShadows_.ready()) frame.groundShadows = &groundShadows_;
-  }
-  return drawPart(frame, s.path);
 }
 
 TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPalette* palette, gl::MeshOutput output) {
@@ -330,9 +286,8 @@ TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPale
   return &turnResolve_;
 }
 
-Status Renderer::drawPart(FrameContext& frame, RenderPath path) {
-  frame.shadows = shadowsReady_ ? &shadows_ : nullptr;
-  frame.screenOcclusion = screenOcclusionReady_ ? &screenOcclusion_ : nullptr;
+Status Renderer::drawPart(FrameView& view, const Model* model, FrameContext& frame, RenderPath path) {
+  for (Feature* f : active_) f->shade(view, model, frame);
   if (Status st = paths_[pathIndex(path)]->draw(frame); !st) return st;
   if (!frame.settings.controlPalettes) return okStatus();
   frame.shadowPalette = shadowPalette_.get();
@@ -340,45 +295,32 @@ Status Renderer::drawPart(FrameContext& frame, RenderPath path) {
   return drawControlPalettes(frame, path);
 }
 
-Status Renderer::drawOverSurfaces(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
-  Status result = okStatus();
-  scene_.forEach([&](Model& m) {
-    if (result && s.strokes.on && palette_)
-      result = m.strokes().draw(m.placed(camera), s.strokes, lighting_, *palette_, s.match, m.directionField(stats_).directions, viewport,
-                                programs_, stats_);
-  });
-  scene_.forEach([&](Model& m) {
-    if (result) result = drawHardwareOutlines(m.gpu(), m.placed(camera), s.lines, palette_.get(), s.match, viewport, programs_, stats_);
-  });
-  if (result && !scene_.empty()) result = imageEdges_.draw(placedMeshes(camera, false), camera, s.lines, viewport, programs_, emptyVao_, stats_);
-  scene_.forEach([&](Model& m) {
-    if (result) result = m.lines().draw(m.placed(camera), s.lines, viewport, programs_, stats_);
-  });
-  return result;
-}
-
 // ---------------------------------------------------------------------------------------
 // Frames
 
+// The frame: the scene's palettes and features prepared, the viewport cleared, the paper, the
+// surfaces with the path, then the features' passes over them.
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
-  // The palettes' pattern and orientation for the first model (the background's paper reads
-  // the placement too); the other models set theirs before they are drawn.
+  FrameView frame = frameView(camera, s, viewport, true);
+  // The palettes' pattern and orientation for the first model (the paper reads the placement
+  // too); the other models set theirs before they are drawn.
   Model* first = scene_.first();
   preparePattern(first, first ? first->placed(camera) : camera, s, viewport);
   prepareOrientation(s);
-  Status shadowStatus = prepareShadows(camera, s);
-  if (shadowStatus) shadowStatus = prepareOcclusion(s);
+  Status result = prepareFeatures(frame);
   timer_.begin();
   clearViewport(viewport);
-  if (shadowStatus) shadowStatus = prepareScreenOcclusion(camera, s, viewport);
-  Status result = shadowStatus ? drawBackground(palette_.get(), programs_, emptyVao_, stats_) : shadowStatus;
-  if (result) result = drawScene(camera, s, viewport, gl::MeshOutput::Colour, first);
-  if (result) result = drawOverSurfaces(camera, s, viewport);
+  for (Feature* f : active_)
+    if (result) result = f->afterClear(frame);
+  if (result) result = drawBackground(palette_.get(), programs_, emptyVao_, stats_);
+  if (result) result = drawScene(frame, gl::MeshOutput::Colour, first);
+  for (Feature* f : active_)
+    if (result) result = f->drawOver(frame);
   timer_.end();
   gl::restoreDefaults();
   stats_.cpuFrameMs = msSince(frameStart);
@@ -390,11 +332,12 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   stats_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   if (Status st = prepare(s); !st) return st;
-  if (Status st = prepareShadows(camera, s); !st) return st;
-  if (Status st = prepareOcclusion(s); !st) return st;
+  FrameView frame = frameView(camera, s, viewport, false);
+  if (Status st = prepareFeatures(frame); !st) return st;
   clearViewport(viewport);
-  if (Status st = prepareScreenOcclusion(camera, s, viewport); !st) return st;
-  const Status result = drawScene(camera, s, viewport, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend, nullptr);
+  for (Feature* f : active_)
+    if (Status st = f->afterClear(frame); !st) return st;
+  const Status result = drawScene(frame, output == SelectionOutput::Entry ? gl::MeshOutput::Entry : gl::MeshOutput::Blend, nullptr);
   gl::restoreDefaults();
   return result;
 }
@@ -424,7 +367,7 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   clearViewport(viewport);
   Status result = okStatus();
-  for (const PlacedMesh& m : placedMeshes(camera, false))
+  for (const PlacedMesh& m : placedMeshes(camera))
     if (result) result = drawGeometry(*m.mesh, m.camera, output, programs_, stats_);
   gl::restoreDefaults();
   return result;

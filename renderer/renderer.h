@@ -22,18 +22,15 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/control_weights.h"
 #include "renderer/lighting/lighting_state.h"
-#include "renderer/lines/image_edges_pass.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/palette.h"
 #include "renderer/passes/geometry_pass.h"
 #include "renderer/passes/turn_resolve_pass.h"
 #include "renderer/paths/path_table.h"
+#include "renderer/features/feature.h"
 #include "renderer/render_settings.h"
 #include "renderer/scene/scene.h"
-#include "renderer/shadows/ground_shadow_pass.h"
-#include "renderer/shadows/screen_occlusion_pass.h"
-#include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
 
@@ -143,30 +140,30 @@ class Renderer {
   Renderer() = default;
   // Checks that `settings` can be drawn and brings the matchers and the models' parts up to date.
   Status prepare(const RenderSettings& settings);
+  // What the features see of this frame.
+  FrameView frameView(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, bool colour);
+  // Picks this frame's active features and runs their preparation (before the clear).
+  Status prepareFeatures(FrameView& frame);
   // Depth and stencil cleared in the viewport only (the split view draws two).
   void clearViewport(const glm::ivec4& viewport);
   // The scene's surfaces with the path: every model's parts, then the ground. Colour frames set
   // each model's pattern and orientation in the palettes first, but for `prepared`'s (done).
-  Status drawScene(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output,
-                   const Model* prepared);
+  Status drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared);
   // One model's parts (or the whole model) with the path.
-  Status drawModel(Model& model, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
-                   gl::MeshOutput output, bool preparePalettes);
-  // One part of the scene (a model, a per-material part, the ground) with this frame's shadow
-  // maps and screen-space occlusion: the path, then the control-image palettes over it.
-  Status drawPart(FrameContext& frame, RenderPath path);
+  Status drawModel(FrameView& frame, Model& model, gl::MeshOutput output, bool preparePalettes);
+  // The ground plane with the path's own pass, after the models (--ground).
+  Status drawGround(FrameView& frame, gl::MeshOutput output);
+  // One part of the scene (a model, a per-material part, the ground) with the active
+  // features' share: the path, then the control-image palettes over it.
+  Status drawPart(FrameView& view, const Model* model, FrameContext& frame, RenderPath path);
   // The turn resolve, where a frame of the model's with this palette leaves its turned lookups
   // to it (TurnPlacement), else null.
   TurnResolvePass* turnResolveFor(const RenderSettings& settings, const GpuPalette* palette, gl::MeshOutput output);
   // Whether this model's mesh passes may drop back faces (FrameContext::cullBackFaces); noted in
   // the frame's stats.
   bool backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& settings);
-  // The ground plane with the path's own pass, after the models (--ground).
-  Status drawGround(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, gl::MeshOutput output);
-  // The lines, strokes and outlines drawn over the surfaces.
-  Status drawOverSurfaces(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
-  // Every model's mesh placed for `camera` (and the ground's, with `ground`).
-  std::vector<PlacedMesh> placedMeshes(const CameraMatrices& camera, bool ground);
+  // Every model's mesh placed for `camera`.
+  std::vector<PlacedMesh> placedMeshes(const CameraMatrices& camera);
 
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
   std::unique_ptr<GpuPalette> shadowPalette_, occlusionPalette_;
@@ -191,6 +188,8 @@ class Renderer {
   gl::GpuTimer timer_;
   gl::VertexArray emptyVao_;  // full-screen passes make their vertices in the shader
   std::vector<std::unique_ptr<RenderPass>> paths_;  // by pathIndex()
+  std::vector<std::unique_ptr<Feature>> features_;  // the feature table (features/feature.h)
+  std::vector<Feature*> active_;                    // this frame's
   TurnResolvePass turnResolve_;
   float pixelsPerFrontTriangle_ = 0.0f;  // the model being drawn, from its bounding disc (preparePattern)
   // Gives every palette this model's pattern frame (anchored) or none (screen) and where it is
@@ -200,27 +199,15 @@ class Renderer {
   // Gives every palette this frame's hatching orientation; computes the direction field of
   // every model when a palette turns along the curvature and a model has none yet.
   void prepareOrientation(const RenderSettings& settings);
-  // Brings the shadow maps up to date when `settings.shadows` is on.
-  Status prepareShadows(const CameraMatrices& camera, const RenderSettings& settings);
-  ShadowMaps shadows_;
-  // Continues the models' occlusion bakes when `settings.occlusion` is on.
-  Status prepareOcclusion(const RenderSettings& settings);
   double occlusionBudgetMs_ = 0.0;
-  // This frame's screen-space occlusion, when `settings` ask for it; after the viewport's clear.
-  Status prepareScreenOcclusion(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
-  ScreenOcclusionPass screenOcclusion_;
-  bool screenOcclusionReady_ = false;
   glm::ivec2 frameOffset_{0};
   std::function<void(const std::string&, double)> progress_;
-  bool shadowsReady_ = false;  // this frame draws with shadows_
   // The ground plane under the scene (--ground), drawn like one more model; built the first
   // time a frame asks for it, again when the scene changes.
   Model* prepareGround();
   Mesh groundMesh_;
   std::unique_ptr<Model> ground_;
   unsigned groundVersion_ = 0;  // the scene's version it was built for
-  GroundShadowPass groundShadows_;
-  ImageEdgesPass imageEdges_;
 };
 
 }  // namespace npr

@@ -382,6 +382,19 @@ std::vector<Setting> buildTable() {
            {"crease-colour", "crease colour", "Creases' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.creaseColour; }},
            {"boundary-colour", "boundary colour", "Boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.boundaryColour; }}})
     t.push_back(vectorRow(key, label, "lines", help, K::Colour, ref));
+  // --- depth cue
+  t.push_back(boolRow("depth-cue", "depth cue", "depth-cue", "Tone and lines fade toward the paper with distance through the scene",
+                      [](Look& l) -> bool& { return l.render.depthCue.on; }));
+  auto cued = [](const Look& l) { return l.render.depthCue.on; };
+  t.push_back(floatRow("depth-cue-start", "fade from", "depth-cue", "Where the fade starts: 0 the scene's front, 1 its back", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.depthCue.start; }));
+  t.back().shown = cued;
+  t.push_back(floatRow("depth-cue-end", "fade to", "depth-cue", "Where the fade is whole: 0 the scene's front, 1 its back", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.depthCue.end; }));
+  t.back().shown = cued;
+  t.push_back(floatRow("depth-cue-strength", "fade strength", "depth-cue", "How much of the paper covers the farthest surfaces", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.depthCue.strength; }));
+  t.back().shown = cued;
   return t;
 }
 
@@ -437,6 +450,7 @@ const std::vector<SettingSection>& settingSections() {
       {"palette", "Palette and tone", false},   {"path", "Render path", false},         {"pattern", "Pattern", false},
       {"orientation", "Hatching direction", false}, {"light", "Light", false},         {"shadows", "Ground and shadows", false},
       {"occlusion", "Ambient occlusion", false}, {"strokes", "Painterly strokes", true}, {"lines", "Lines", true},
+      {"depth-cue", "Depth cue", false},
   };
   return sections;
 }

@@ -3,14 +3,25 @@
 
 namespace npr::gl {
 
+namespace {
+std::string keyOf(const ProgramSource& src) {
+  std::string key = src.vertexFile + "|" + src.geometryFile + "|" + src.fragmentFile;
+  for (const std::string& d : src.defines) key += "|" + d;
+  return key;
+}
+}  // namespace
+
+std::string programKey(const ProgramVariant& variant) { return keyOf(programSource(variant)); }
+
 Result<ShaderProgram*> ProgramCache::get(const ProgramVariant& variant, int& builds) {
-  auto it = programs_.find(variant);
-  if (it != programs_.end()) return &it->second;
   const ProgramSource src = programSource(variant);
+  std::string key = keyOf(src);
+  auto it = programs_.find(key);
+  if (it != programs_.end()) return &it->second;
   Result<ShaderProgram> p = ShaderProgram::build(src.vertexFile, src.fragmentFile, src.defines, src.geometryFile);
   if (!p) return Error{p.error()};
   ++builds;
-  return &programs_.emplace(variant, std::move(*p)).first->second;
+  return &programs_.emplace(std::move(key), std::move(*p)).first->second;
 }
 
 }  // namespace npr::gl

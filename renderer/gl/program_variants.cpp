@@ -50,6 +50,7 @@ std::vector<std::string> shadingDefines(MeshShading s) {
 }
 
 struct SourceOf {
+  ProgramSource operator()(const FeatureProgram& f) const { return {f.vertexFile, f.fragmentFile, f.defines}; }
   ProgramSource operator()(const MeshProgram& m) const {
     ProgramSource s{"mesh.vert", "mesh.frag", {}};
     if (m.lighting) s.defines = m.lighting->glslDefines();
@@ -156,53 +157,8 @@ struct SourceOf {
   }
 };
 
-auto lightingKey(const std::optional<LightingFeatures>& f) {
-  const LightingFeatures l = f.value_or(LightingFeatures{});
-  return std::make_tuple(f.has_value(), l.lightCount, l.lighting, l.positional, l.attenuation, l.spot, l.specular,
-                         l.localViewer, l.twoSided, l.tone);
-}
-
 }  // namespace
 
 ProgramSource programSource(const ProgramVariant& variant) { return std::visit(SourceOf{}, variant); }
-
-bool operator<(const PaletteVariant& a, const PaletteVariant& b) { return a.key() < b.key(); }
-
-bool operator<(const MeshProgram& a, const MeshProgram& b) {
-  const auto key = [](const MeshProgram& m) {
-    return std::tie(m.shading, m.output, m.materials, m.materialMaps, m.vertexColours, m.materialUniform, m.stroke, m.shadowLayers, m.occlusion, m.screenOcclusion,
-                    m.control, m.groundShadowMap, m.deferTurn);
-  };
-  if (key(a) != key(b)) return key(a) < key(b);
-  if (lightingKey(a.lighting) != lightingKey(b.lighting)) return lightingKey(a.lighting) < lightingKey(b.lighting);
-  return a.palette < b.palette;
-}
-
-bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b) {
-  const auto l = lightingKey(a.lighting), r = lightingKey(b.lighting);
-  if (l != r) return l < r;
-  if (a.palette < b.palette || b.palette < a.palette) return a.palette < b.palette;
-  return std::tie(a.shadowLayers, a.occlusion) < std::tie(b.shadowLayers, b.occlusion);
-}
-
-bool operator<(const QuadProgram& a, const QuadProgram& b) {
-  return std::tie(a.kind, a.backgroundImage, a.pattern, a.layerSizesDiffer, a.filtered, a.orientBins, a.orientBuffer) <
-         std::tie(b.kind, b.backgroundImage, b.pattern, b.layerSizesDiffer, b.filtered, b.orientBins, b.orientBuffer);
-}
-
-bool operator<(const OutlineProgram& a, const OutlineProgram& b) {
-  if (a.method != b.method) return a.method < b.method;
-  return a.palette < b.palette;
-}
-
-bool operator<(const StrokeProgram& a, const StrokeProgram& b) {
-  const auto l = lightingKey(a.lighting), r = lightingKey(b.lighting);
-  if (l != r) return l < r;
-  return a.palette < b.palette;
-}
-
-bool operator<(const LineProgram& a, const LineProgram& b) {
-  return std::tie(a.sketchy, a.depthFalloff) < std::tie(b.sketchy, b.depthFalloff);
-}
 
 }  // namespace npr::gl

@@ -1,7 +1,7 @@
 // Every shader program the renderer builds, as typed variants (after Magnum's shader Flags):
-// one struct per program family, whose fields are the features it is specialised for. The
-// program cache is keyed by these values, not by define strings, and each variant turns
-// itself into its files and #define lines in one place (program_variants.cpp).
+// one struct per program family, whose fields are the features it is specialised for. Each
+// variant turns itself into its files and #define lines in one place (program_variants.cpp),
+// and the program cache is keyed by that source: no field list is kept by hand.
 #pragma once
 
 #include <cstdint>
@@ -36,9 +36,6 @@ struct PaletteVariant {
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
   bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
   bool patternPerVertex = false;  // an anchored or scaled pattern's coordinate interpolated from the vertices
-  auto key() const {
-    return std::tie(size, layerSizesDiffer, precomposited, backgroundImage, match, pattern, filtered, orientBins, entryAngleShared, patternPerVertex);
-  }
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).
@@ -154,7 +151,15 @@ struct TriangleLightProgram {
   bool occlusion = false;
 };
 
-using ProgramVariant = std::variant<MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
+// A feature's own program (renderer/features/): its files and defines as it names them. A
+// feature brings its shaders without a variant struct of its own; the cache keys it by them.
+struct FeatureProgram {
+  const char* vertexFile;
+  const char* fragmentFile;
+  std::vector<std::string> defines;
+};
+
+using ProgramVariant = std::variant<FeatureProgram, MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
                                     TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram, TurnResolveProgram>;
 
 struct ProgramSource {
@@ -165,25 +170,5 @@ struct ProgramSource {
   std::string geometryFile;  // empty: none
 };
 ProgramSource programSource(const ProgramVariant& variant);
-
-bool operator<(const PaletteVariant& a, const PaletteVariant& b);
-bool operator<(const MeshProgram& a, const MeshProgram& b);
-bool operator<(const QuadProgram& a, const QuadProgram& b);
-inline bool operator<(const TurnResolveProgram& a, const TurnResolveProgram& b) {
-  if (a.blend != b.blend) return a.blend < b.blend;
-  return a.palette < b.palette;
-}
-bool operator<(const LineProgram& a, const LineProgram& b);
-bool operator<(const OutlineProgram& a, const OutlineProgram& b);
-bool operator<(const StrokeProgram& a, const StrokeProgram& b);
-inline bool operator<(const EdgeProgram&, const EdgeProgram&) { return false; }
-inline bool operator<(const MarkerProgram&, const MarkerProgram&) { return false; }
-inline bool operator<(const ShadowDepthProgram&, const ShadowDepthProgram&) { return false; }
-inline bool operator<(const GroundShadowProgram& a, const GroundShadowProgram& b) {
-  return std::tie(a.lights, a.shadowLayers) < std::tie(b.lights, b.shadowLayers);
-}
-inline bool operator<(const OcclusionBakeProgram&, const OcclusionBakeProgram&) { return false; }
-inline bool operator<(const ScreenOcclusionProgram& a, const ScreenOcclusionProgram& b) { return a.blur < b.blur; }
-bool operator<(const TriangleLightProgram& a, const TriangleLightProgram& b);
 
 }  // namespace npr::gl

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "renderer/gl/program_cache.h"
 #include "renderer/gl/program_variants.h"
 #include "renderer/paths/path_table.h"
 #include "renderer/paths/render_pass.h"
@@ -126,9 +127,9 @@ TEST(RenderSettingsText, NewKindsMethodsSpacesAndSizes) {
 }
 
 TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
-  // The cache is a std::map over the variant: equal variants must share a key and every
-  // field that changes the defines must change the key.
-  std::map<gl::ProgramVariant, int> cache;
+  // The cache is keyed by the variant's source (gl::programKey): equal variants must share a
+  // key and every field that changes the defines must change the key.
+  std::map<std::string, int> cache;
   gl::MeshProgram base;
   base.lighting = LightingFeatures{};
   base.palette = gl::PaletteVariant{};
@@ -161,7 +162,7 @@ TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   with([](gl::MeshProgram& m) { m.palette->pattern = gl::PatternMapping::Object; });
   with([](gl::MeshProgram& m) { m.shading = gl::MeshShading::PatternCoordinate; });
   variants.push_back(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, gl::PatternMapping::Object});
-  for (size_t i = 0; i < variants.size(); ++i) cache.emplace(variants[i], int(i));
+  for (size_t i = 0; i < variants.size(); ++i) cache.emplace(gl::programKey(variants[i]), int(i));
   EXPECT_EQ(cache.size(), variants.size());
   std::set<std::vector<std::string>> defineSets;
   for (const auto& v : variants) {
@@ -172,7 +173,7 @@ TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   }
   EXPECT_EQ(defineSets.size(), variants.size()) << "two variants compile to the same program";
   gl::MeshProgram same = base;
-  EXPECT_FALSE(cache.emplace(same, -1).second);
+  EXPECT_FALSE(cache.emplace(gl::programKey(same), -1).second);
 }
 
 }  // namespace

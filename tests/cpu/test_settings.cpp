@@ -72,10 +72,18 @@ TEST(SettingsTable, EveryRowIsWellFormedAndItsDefaultParsesBack) {
     EXPECT_FALSE(row.help.empty()) << row.key;
     EXPECT_FALSE(row.label.empty()) << row.key;
     ASSERT_TRUE(row.format && row.parse) << row.key;
-    if (row.type == SettingType::Bool) EXPECT_TRUE(row.boolRef) << row.key;
-    if (row.type == SettingType::Int) EXPECT_TRUE(row.intRef && row.min <= row.max) << row.key;
-    if (row.type == SettingType::Float) EXPECT_TRUE(row.floatRef && row.min <= row.max) << row.key;
-    if (row.type == SettingType::Choice || row.type == SettingType::Kinds) EXPECT_FALSE(row.choices.empty()) << row.key;
+    if (row.type == SettingType::Bool) {
+      EXPECT_TRUE(row.boolRef) << row.key;
+    }
+    if (row.type == SettingType::Int) {
+      EXPECT_TRUE(row.intRef && row.min <= row.max) << row.key;
+    }
+    if (row.type == SettingType::Float) {
+      EXPECT_TRUE(row.floatRef && row.min <= row.max) << row.key;
+    }
+    if (row.type == SettingType::Choice || row.type == SettingType::Kinds) {
+      EXPECT_FALSE(row.choices.empty()) << row.key;
+    }
     if (row.key == "palette") continue;  // no default palette file in a bare look
     Look l = defaults;
     const Status back = row.parse(row.format(defaults), l);

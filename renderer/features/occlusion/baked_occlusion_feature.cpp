@@ -1,0 +1,45 @@
+// Ambient occlusion baked per vertex (`--occlusion`, method baked) as a feature: each model's
+// bake runs the first frames that ask for it, within the frame's work budget, and the surface
+// passes of that model read its values (shadows/occlusion_bake.h).
+#include <memory>
+
+#include "renderer/features/feature.h"
+#include "renderer/paths/render_pass.h"
+
+namespace npr {
+namespace {
+
+class BakedOcclusionFeature final : public Feature {
+ public:
+  const char* name() const override { return "occlusion (baked)"; }
+  bool active(const FrameView& f) const override { return f.settings.occlusion && f.settings.occlusionMethod == OcclusionMethod::Baked; }
+  Status prepare(FrameView& f) override {
+    Status status = okStatus();
+    f.scene.forEach([&](Model& m) {
+      if (!status) return;
+      if (status = m.startOcclusionBake(); !status) return;
+      OcclusionBake& bake = *m.occlusionBake();
+      if (bake.done()) return;
+      if (f.workBudgetMs <= 0.0 && f.progress) {
+        // To the end now, in slices, saying how far it got.
+        while (status && !bake.done()) {
+          status = bake.step(250.0, f.programs, f.stats);
+          f.progress("baking ambient occlusion", double(bake.directionsDone()) / bake.directions());
+        }
+      } else {
+        status = bake.step(f.workBudgetMs, f.programs, f.stats);
+      }
+      if (status && bake.done()) m.occlusionBaked(f.stats);
+    });
+    return status;
+  }
+  void shade(const FrameView&, const Model* model, FrameContext& frame) override {
+    if (model) frame.occlusion = model->occlusionValues();
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Feature> makeBakedOcclusionFeature() { return std::make_unique<BakedOcclusionFeature>(); }
+
+}  // namespace npr

@@ -1,0 +1,45 @@
+// Ambient occlusion per pixel (`--occlusion --occlusion-method screen`) as a feature: estimated
+// every frame from what the frame shows of every model and the ground, after the clear, and
+// read by the per-pixel shadings (shadows/screen_occlusion_pass.h).
+#include <algorithm>
+#include <memory>
+
+#include "renderer/features/feature.h"
+#include "renderer/paths/render_pass.h"
+#include "renderer/shadows/screen_occlusion_pass.h"
+
+namespace npr {
+namespace {
+
+class ScreenOcclusionFeature final : public Feature {
+ public:
+  const char* name() const override { return "occlusion (screen)"; }
+  bool active(const FrameView& f) const override {
+    return f.settings.occlusion && f.settings.occlusionMethod == OcclusionMethod::Screen && !f.scene.empty();
+  }
+  Status afterClear(FrameView& f) override {
+    ready_ = false;
+    std::vector<PlacedMesh> meshes;
+    f.scene.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(f.camera)}); });
+    if (f.settings.ground)
+      if (Model* g = f.ground()) meshes.push_back({&g->gpu(), f.camera});
+    const float sceneRadius = f.scene.bounds().w;
+    const float radius = std::clamp(f.settings.screenOcclusionRadius, 0.01f, 10.0f) * (sceneRadius > 0.0f ? sceneRadius : 1.0f);
+    if (Status st = pass_.draw(meshes, f.camera, radius, f.viewport, f.programs, f.emptyVao, f.stats); !st) return st;
+    ready_ = true;
+    return okStatus();
+  }
+  void shade(const FrameView&, const Model*, FrameContext& frame) override {
+    if (ready_) frame.screenOcclusion = &pass_;
+  }
+
+ private:
+  ScreenOcclusionPass pass_;
+  bool ready_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Feature> makeScreenOcclusionFeature() { return std::make_unique<ScreenOcclusionFeature>(); }
+
+}  // namespace npr

@@ -1,0 +1,51 @@
+// Cast shadows (`--shadows`) as a feature: the shadow maps of every enabled light over the
+// scene's models, redrawn when a light or the scene moves (shadows/shadow_maps.h), and the
+// ground's shadow texture (shadows/ground_shadow_pass.h).
+#include <memory>
+
+#include "renderer/features/feature.h"
+#include "renderer/paths/render_pass.h"
+#include "renderer/shadows/ground_shadow_pass.h"
+#include "renderer/shadows/shadow_maps.h"
+
+namespace npr {
+namespace {
+
+class ShadowsFeature final : public Feature {
+ public:
+  const char* name() const override { return "shadows"; }
+  bool active(const FrameView& f) const override { return f.settings.shadows && !f.scene.empty(); }
+  Status prepare(FrameView& f) override {
+    ready_ = false;
+    const Model* ground = f.settings.ground ? f.ground() : nullptr;
+    ShadowScene scene;
+    f.scene.forEach([&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform()}); });
+    const glm::vec4 bounds = f.scene.bounds();
+    scene.centre = glm::vec3(bounds);
+    scene.casterRadius = bounds.w;
+    scene.sceneRadius = ground ? ground->mesh().radius : bounds.w;
+    scene.version = f.scene.version() * 2 + (ground ? 1 : 0);
+    if (Status st = maps_.update(f.lighting, f.camera.view, scene, f.programs, f.stats); !st) return st;
+    ready_ = maps_.layers() > 0;
+    f.stats.shadowLayers = maps_.layers();
+    if (ready_ && ground && f.settings.groundShadowTexture)
+      if (Status st = groundShadows_.update(maps_, ground->mesh(), f.scene.version(), f.programs, f.emptyVao, f.stats); !st) return st;
+    return okStatus();
+  }
+  void shade(const FrameView& f, const Model* model, FrameContext& frame) override {
+    if (!ready_) return;
+    frame.shadows = &maps_;
+    if (!model && f.settings.groundShadowTexture && groundShadows_.ready()) frame.groundShadows = &groundShadows_;
+  }
+
+ private:
+  ShadowMaps maps_;
+  GroundShadowPass groundShadows_;
+  bool ready_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Feature> makeShadowsFeature() { return std::make_unique<ShadowsFeature>(); }
+
+}  // namespace npr

@@ -1,0 +1,30 @@
+// Painterly brush strokes (`--strokes`) as a feature: each model's strokes, seeded on its
+// surface once and oriented by its direction field, drawn over the surfaces
+// (strokes/brush_stroke_pass.h).
+#include <memory>
+
+#include "renderer/features/feature.h"
+
+namespace npr {
+namespace {
+
+class StrokesFeature final : public Feature {
+ public:
+  const char* name() const override { return "strokes"; }
+  bool active(const FrameView& f) const override { return f.settings.strokes.on && f.palette; }
+  Status drawOver(FrameView& f) override {
+    Status result = okStatus();
+    f.scene.forEach([&](Model& m) {
+      if (result)
+        result = m.strokes().draw(m.placed(f.camera), f.settings.strokes, f.lighting, *f.palette, f.settings.match,
+                                  m.directionField(f.stats).directions, f.viewport, f.programs, f.stats);
+    });
+    return result;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Feature> makeStrokesFeature() { return std::make_unique<StrokesFeature>(); }
+
+}  // namespace npr
