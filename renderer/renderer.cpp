@@ -373,6 +373,27 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
   return result;
 }
 
+bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) const {
+  if (!palette_ || scene_.empty() || viewport.z < 1 || viewport.w < 1) return false;
+  bool turnable = palette_->hasOrientedEntries();
+  for (const auto& [name, p] : materialPalettes_) turnable = turnable || p->hasOrientedEntries();
+  const bool turned = turnable && s.orient.source != OrientSource::None;
+  const bool object = s.pattern == PatternSpace::Object;
+  // The stencil path's surface buffers: the stroke angle (field or light) and the object pattern.
+  if (s.path == RenderPath::Stencil)
+    return object || (turned && (s.orient.source == OrientSource::Curvature || s.orient.source == OrientSource::Light));
+  // The turn resolve (turnResolveFor), by each model's density as preparePattern measures it.
+  const bool meshPath = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel || s.path == RenderPath::Smooth;
+  if (!meshPath || !turned || object || s.orient.placement == TurnPlacement::InMeshPass) return false;
+  if (s.orient.placement == TurnPlacement::Resolved) return true;
+  bool dense = false;
+  scene_.forEach([&](const Model& m) {
+    const float frontTriangles = 0.5f * float(m.mesh().indices.size() / 3);
+    dense = dense || projectedSphereArea(m.placed(camera), m.mesh().radius, viewport) / frontTriangles < kResolveTurnPixels;
+  });
+  return dense;
+}
+
 // ---------------------------------------------------------------------------------------
 // What the app and the tests read back
 

@@ -80,6 +80,12 @@ class Renderer {
   // Draws one frame into the bound framebuffer's `viewport` (x, y, width, height).
   [[nodiscard]] Status render(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
 
+  // Whether a frame with these settings has passes that share the bound framebuffer's depth
+  // and stencil (the stencil path's masks writing its surface buffers, the turn resolve): a
+  // window's own framebuffer cannot be shared, so the window draws such frames offscreen. Said
+  // before the frame, from the conditions those passes test.
+  bool sharesFramebufferDepth(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport) const;
+
   // Outputs for tests and the benchmark's accuracy reference, not images. Neither draws a
   // background or lines; clear the target first.
   // The palette selection `settings.path` makes at each pixel (stencil: the triangle path's,

@@ -57,12 +57,15 @@ int runWindowViewer(const Options& o) {
     imgui.endFrame();
 
     const glm::ivec2 fb = v.window->framebufferSize();
-    // Where the last frame's passes wanted to share the framebuffer's depth and stencil (the
-    // stencil path's masks writing its per-pixel buffers as they mark), which the window's own
-    // cannot (they would draw the mesh once more for each buffer), the scene is drawn in a
+    const glm::ivec4 sceneView = v.sceneViewport();
+    const CameraMatrices cam = v.state.camera.matrices(v.aspect());
+    // Where this frame's passes share the framebuffer's depth and stencil (the stencil path's
+    // masks writing its per-pixel buffers as they mark, the turn resolve), which the window's
+    // own cannot (they would draw the mesh once more for each buffer), the scene is drawn in a
     // framebuffer of ours and copied into the window; elsewhere straight into the window, as
-    // the copy costs a frame a few milliseconds.
-    const bool offscreen = v.renderer->stats().surfaceBuffers > 0;
+    // the copy costs a frame a few milliseconds. The renderer says so before the frame.
+    const glm::ivec4 chosenView = v.state.splitView ? glm::ivec4(sceneView.z / 2, 0, sceneView.z - sceneView.z / 2, fb.y) : sceneView;
+    const bool offscreen = v.renderer->sharesFramebufferDepth(cam, v.state.settings, chosenView);
     if (!offscreen) {
       scene.reset();
       sceneSize = glm::ivec2(0);
@@ -75,7 +78,6 @@ int runWindowViewer(const Options& o) {
     }
     if (scene) scene->bind();
     else bindWindowFramebuffer();
-    const CameraMatrices cam = v.state.camera.matrices(v.aspect());
     if (Status st = v.state.applyLight(*v.renderer, cam); !st) v.state.note("light not moved: " + st.error());
     const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);
     auto drawView = [&](const RenderSettings& settings, const glm::ivec4& viewport) {
@@ -84,7 +86,6 @@ int runWindowViewer(const Options& o) {
       if (!st) v.state.note(st.error());
     };
     // The scene left of the docked panel, which is drawn over a cleared strip.
-    const glm::ivec4 sceneView = v.sceneViewport();
     clearRightOf(sceneView.z, fb.x, fb.y);
     if (v.state.splitView) {
       // Left: the plain lit render the original showed beside its NPR images; right: the chosen path.

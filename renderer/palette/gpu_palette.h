@@ -82,6 +82,8 @@ class GpuPalette {
   // Whether lookups are turned: an orientation is set and some entry has a dominant direction
   // (a stipple palette costs nothing under --orient).
   bool oriented() const { return orient_.source != OrientSource::None && anyOriented_; }
+  // Whether some entry has a stroke direction (what an orientation would turn).
+  bool hasOrientedEntries() const { return anyOriented_; }
   // Where mesh passes take the stroke angle from (None when not oriented).
   gl::StrokeSource strokeSource() const;
   int orientBins() const { return oriented() ? orient_.bins : 0; }

@@ -180,5 +180,34 @@ TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
   EXPECT_GT(b1.translation.x - b0.translation.x, 3.0f) << "B's pattern did not move right with it";
 }
 
+// The window draws offscreen where a frame's passes share the framebuffer's depth; the renderer
+// says so before the frame, and what it says is what the frame then does, for every path,
+// orientation and pattern, on a sparse and a dense mesh.
+TEST_F(SceneFixture, TheFramebufferIsAskedForBeforeTheFrame) {
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  const Mesh sparse = icosphere(2), dense = icosphere(5);
+  const CameraMatrices cam = test::testCamera(1.0f);
+  int shared = 0, checked = 0;
+  for (const Mesh* mesh : {&sparse, &dense}) {
+    r->setMesh(mesh);
+    for (RenderPath path : userRenderPaths())
+      for (OrientSource orient : {OrientSource::None, OrientSource::Curvature, OrientSource::Light, OrientSource::Fixed})
+        for (PatternSpace pattern : {PatternSpace::Screen, PatternSpace::Object}) {
+          RenderSettings s;
+          s.path = path;
+          s.orient.source = orient;
+          s.pattern = pattern;
+          const bool said = r->sharesFramebufferDepth(cam, s, {0, 0, kSize, kSize});
+          (void)test::renderImage(*r, cam, s, kSize, kSize);
+          EXPECT_EQ(said, r->stats().surfaceBuffers > 0) << renderPathName(path) << " orient " << int(orient) << " pattern " << int(pattern)
+                                                         << " on " << mesh->triangleCount() << " triangles";
+          shared += said;
+          ++checked;
+        }
+  }
+  EXPECT_GT(shared, 4);
+  EXPECT_LT(shared, checked);
+}
+
 }  // namespace
 }  // namespace npr
