@@ -52,7 +52,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   CLI::App app{"npr-viewer: palette-based non-photorealistic rendering of meshes.\n"
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
                "whose average colour or intensity matches best, in screen space.\n"
-               "Every setting below is also a style-file key (docs/settings.md)."};
+               "Every setting below is also a style-file key (the README's settings reference)."};
   Options o;
   std::string size, camera;
   std::vector<std::string> paletteFor;
@@ -80,7 +80,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated) "
                  "or FILE; options given beside it win");
   app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file");
-  app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (docs/settings.md) and exit");
+  app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit");
   app.add_option("--palette-sheet", o.paletteSheet,
                  "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
   app.add_option("--palette-for", paletteFor,

@@ -1,5 +1,6 @@
-// What the user chooses: the render path, matching, stencil refinements and lines. Only user
-// settings live here; the test and benchmark outputs are their own calls on the Renderer.
+// What the user chooses: the render path, matching, stencil refinements, lines and the
+// features' settings (each a row of the app's settings table), and apart from them the
+// renderer's own tuning, which only tests and benchmarks turn (RenderTuning).
 #pragma once
 
 #include <optional>
@@ -75,7 +76,6 @@ struct OrientSettings {
   OrientSource source = OrientSource::None;
   float degrees = 0.0f;  // Fixed: counter-clockwise from the screen's x axis
   int bins = 8;          // 2..64
-  TurnPlacement placement = TurnPlacement::Auto;
   static constexpr int kMinBins = 2, kMaxBins = 64;
   bool operator==(const OrientSettings& o) const { return source == o.source && degrees == o.degrees && bins == o.bins; }
 };
@@ -98,7 +98,6 @@ struct StrokeSettings {
   float density = 3000.0f;
   int budget = 200000;
   float length = 16.0f, width = 6.0f;
-  bool fade = true;
   static constexpr float kMinDensity = 1.0f, kMaxDensity = 1e6f, kMaxSize = 256.0f;
   static constexpr int kMaxBudget = 4000000;
 };
@@ -122,6 +121,23 @@ struct DepthCueSettings {
   bool on = false;
   float start = 0.2f, end = 1.0f;
   float strength = 0.8f;
+};
+
+// Not user settings: the renderer's own choices, which tests and benchmarks turn to compare
+// (the same picture by another way, or the cost a choice saves). No option, style key or
+// panel widget sets them.
+struct RenderTuning {
+  // The ground's shadows read from a texture drawn whenever the maps are (shadows/
+  // ground_shadow_pass.h) rather than filtered per pixel; off: per pixel, to compare.
+  bool groundShadowTexture = true;
+  // Drop back faces where none can show: a closed mesh (Mesh::closed) wholly beyond the near
+  // plane. Off: every face is rasterized, as the original did (the same picture, slower).
+  bool cullHiddenBackFaces = true;
+  // Where turned lookups happen (TurnPlacement): by density, or forced either way.
+  TurnPlacement turnPlacement = TurnPlacement::Auto;
+  // Painterly strokes beyond the framing distance fade in and out over a band of ranks (off:
+  // cut, which pops).
+  bool strokeFade = true;
 };
 
 struct RenderSettings {
@@ -149,9 +165,6 @@ struct RenderSettings {
   bool ground = false;
   // Cast shadows from every enabled light in the GPU-lit paths (shadows/shadow_maps.h).
   bool shadows = false;
-  // The ground's shadows read from a texture drawn whenever the maps are (shadows/
-  // ground_shadow_pass.h) rather than filtered per pixel; off: per pixel, to compare.
-  bool groundShadowTexture = true;
   // Ambient occlusion baked per vertex (shadows/occlusion_bake.h) scales ambient and diffuse in
   // the GPU-lit paths: by mix(1, occlusion, strength).
   bool occlusion = false;
@@ -163,9 +176,6 @@ struct RenderSettings {
   // compare; passes/control_palette_pass.h).
   bool controlPalettes = true;
   TriangleLighting triangleLighting = TriangleLighting::Auto;
-  // Drop back faces where none can show: a closed mesh (Mesh::closed) wholly beyond the near
-  // plane. Off: every face is rasterized, as the original did (the same picture, slower).
-  bool cullHiddenBackFaces = true;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle
@@ -176,6 +186,7 @@ struct RenderSettings {
   LineSettings lines;
   StrokeSettings strokes;
   DepthCueSettings depthCue;
+  RenderTuning tuning;
 };
 
 }  // namespace npr

@@ -269,7 +269,7 @@ Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
 }
 
 bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& s) {
-  const bool hidden = s.cullHiddenBackFaces && model.mesh().closed && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
+  const bool hidden = s.tuning.cullHiddenBackFaces && model.mesh().closed && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
                       sphereBeyondNearPlane(placed, model.sceneRadius());
   stats_.backFacesCulled = stats_.backFacesCulled || hidden;
   return hidden;
@@ -280,7 +280,7 @@ TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPale
   // The object pattern's coordinate comes from the surface, which the resolve cannot see.
   if (!meshPath || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
     return nullptr;
-  const TurnPlacement where = s.orient.placement;
+  const TurnPlacement where = s.tuning.turnPlacement;
   if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !(pixelsPerFrontTriangle_ < kResolveTurnPixels))) return nullptr;
   ++stats_.surfaceBuffers;
   return &turnResolve_;
@@ -384,8 +384,8 @@ bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const Render
     return object || (turned && (s.orient.source == OrientSource::Curvature || s.orient.source == OrientSource::Light));
   // The turn resolve (turnResolveFor), by each model's density as preparePattern measures it.
   const bool meshPath = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel || s.path == RenderPath::Smooth;
-  if (!meshPath || !turned || object || s.orient.placement == TurnPlacement::InMeshPass) return false;
-  if (s.orient.placement == TurnPlacement::Resolved) return true;
+  if (!meshPath || !turned || object || s.tuning.turnPlacement == TurnPlacement::InMeshPass) return false;
+  if (s.tuning.turnPlacement == TurnPlacement::Resolved) return true;
   bool dense = false;
   scene_.forEach([&](const Model& m) {
     const float frontTriangles = 0.5f * float(m.mesh().indices.size() / 3);

@@ -66,7 +66,7 @@ Result<Style> loadStyle(const std::string& path) {
       continue;
     }
     const Setting* row = findSetting(key);
-    if (!row) return Error{where + ": unknown key '" + key + "' (docs/settings.md lists the settings a style may set)"};
+    if (!row) return Error{where + ": unknown key '" + key + "' (the README's settings reference lists the keys a style may set)"};
     const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : arg;
     if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + arg + "': " + s.error()};
     if (key == "palette") st.palette = value;

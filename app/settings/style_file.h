@@ -1,5 +1,5 @@
 // Style files: a whole look in plain `key value` lines, like the palette file. The keys are
-// the settings table's (docs/settings.md lists them), plus `name TEXT`; `#` starts a comment.
+// the settings table's (the README's settings reference lists them), plus `name TEXT`; `#` starts a comment.
 // Palettes are a shipped palette's folder name or a path relative to the style file. Shipped
 // styles live in palettes/styles/; `--style NAME|FILE`, `--save-style FILE`, the overlay's
 // style list and its "save style" use them. A style that fails to load or apply changes

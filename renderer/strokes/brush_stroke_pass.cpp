@@ -47,7 +47,7 @@ void BrushStrokePass::setMesh(const Mesh* mesh) {
 }
 
 Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings& st, const LightingState& lighting, const GpuPalette& palette,
-                             MatchMode match, const std::vector<glm::vec3>& directions, const glm::ivec4& viewport,
+                             MatchMode match, const std::vector<glm::vec3>& directions, bool fade, const glm::ivec4& viewport,
                              gl::ProgramCache& programs, FrameStats& stats) {
   if (!st.on || !mesh_) return okStatus();
   if (!vao_) {
@@ -106,7 +106,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   p.set("uStrokeSize", glm::clamp(glm::vec2(st.length, st.width), glm::vec2(1.0f), glm::vec2(StrokeSettings::kMaxSize)));
   // Every stroke is drawn out to the distance the viewer frames the model at (3 radii).
   p.set("uKeepDepth", 3.0f * mesh_->radius);
-  p.set("uFadeBand", st.fade ? 0.3f : 0.0f);
+  p.set("uFadeBand", fade ? 0.3f : 0.0f);
   glm::vec4 light(0, 0, 1, 0);
   for (int i = 0; i < kMaxLights; ++i)
     if (lighting.light(i).enabled) {

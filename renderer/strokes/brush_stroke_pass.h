@@ -30,7 +30,7 @@ class BrushStrokePass {
   // `directions`: the mesh's direction field (one per vertex) or empty. Seeds first when the
   // mesh, density or budget changed since the last seeding.
   [[nodiscard]] Status draw(const CameraMatrices& camera, const StrokeSettings& strokes, const LightingState& lighting,
-                            const GpuPalette& palette, MatchMode match, const std::vector<glm::vec3>& directions,
+                            const GpuPalette& palette, MatchMode match, const std::vector<glm::vec3>& directions, bool fade,
                             const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats);
   std::size_t strokes() const { return count_; }
   double seedMs() const { return seedMs_; }

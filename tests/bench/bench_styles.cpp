@@ -279,7 +279,7 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
     faded.strokes.density = cut.strokes.density = 1500.0f;
     faded.strokes.length = cut.strokes.length = 26.0f;
     faded.strokes.width = cut.strokes.width = 9.0f;
-    cut.strokes.fade = false;
+    cut.tuning.strokeFade = false;
     for (const char* motion : {"orbit 0.25 deg/frame", "zoom out 1%/frame"}) {
       double sums[3] = {0, 0, 0};
       const RenderSettings* settings[3] = {&base, &faded, &cut};

@@ -294,11 +294,11 @@ TEST_F(Orientation, TurnsResolvedPerPixelDrawTheInPlaceTurnsPicture) {
         s.pattern = pattern;
         s.patternScale = pattern == PatternSpace::Anchored ? 1.5f : 1.0f;
         s.orient.source = source;
-        s.orient.placement = TurnPlacement::InMeshPass;
+        s.tuning.turnPlacement = TurnPlacement::InMeshPass;
         r->resetPattern();
         const ImageRGBA8 inPass = test::renderImage(*r, camera(), s, kSize, kSize);
         EXPECT_EQ(r->stats().surfaceBuffers, 0);
-        s.orient.placement = TurnPlacement::Resolved;
+        s.tuning.turnPlacement = TurnPlacement::Resolved;
         r->resetPattern();
         const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
         EXPECT_EQ(r->stats().surfaceBuffers, 1);
@@ -327,7 +327,7 @@ TEST_F(Orientation, TurnsAreResolvedPerPixelOnlyWhereTrianglesAreSmall) {
   r->setMesh(&dense);
   const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
   EXPECT_EQ(r->stats().surfaceBuffers, 1);
-  s.orient.placement = TurnPlacement::InMeshPass;
+  s.tuning.turnPlacement = TurnPlacement::InMeshPass;
   EXPECT_EQ(test::countDiffering(resolved, test::renderImage(*r, camera(), s, kSize, kSize)), 0);
   r->setMesh(&mesh);
 }

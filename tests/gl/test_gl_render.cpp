@@ -102,7 +102,7 @@ TEST_F(Fixture, BackFacesAreDroppedOnlyWhereNoneCanShow) {
       s.path = path;
       const ImageRGBA8 dropped = renderImage(*r, *c.camera, s, w, h);
       EXPECT_EQ(r->stats().backFacesCulled, c.culled) << pathInfo(path).name;
-      s.cullHiddenBackFaces = false;
+      s.tuning.cullHiddenBackFaces = false;
       const ImageRGBA8 all = renderImage(*r, *c.camera, s, w, h);
       EXPECT_FALSE(r->stats().backFacesCulled);
       EXPECT_EQ(countDiffering(dropped, all), 0) << pathInfo(path).name << (c.culled ? " outside" : " inside or open");

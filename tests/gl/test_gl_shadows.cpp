@@ -153,9 +153,9 @@ TEST_F(Shadows, GroundShadowTextureAgreesWithPerPixelLookups) {
       RenderSettings s;
       s.path = path;
       s.ground = s.shadows = true;
-      s.groundShadowTexture = false;
+      s.tuning.groundShadowTexture = false;
       const ImageRGBA8 perPixel = test::renderImage(*r, cam, s, kSize, kSize);
-      s.groundShadowTexture = true;
+      s.tuning.groundShadowTexture = true;
       const ImageRGBA8 textured = test::renderImage(*r, cam, s, kSize, kSize);
       s.shadows = false;
       const ImageRGBA8 unshadowed = test::renderImage(*r, cam, s, kSize, kSize);

@@ -28,14 +28,14 @@ class ShadowsFeature final : public Feature {
     if (Status st = maps_.update(f.lighting, f.camera.view, scene, f.programs, f.stats); !st) return st;
     ready_ = maps_.layers() > 0;
     f.stats.shadowLayers = maps_.layers();
-    if (ready_ && ground && f.settings.groundShadowTexture)
+    if (ready_ && ground && f.settings.tuning.groundShadowTexture)
       if (Status st = groundShadows_.update(maps_, ground->mesh(), f.scene.version(), f.programs, f.emptyVao, f.stats); !st) return st;
     return okStatus();
   }
   void shade(const FrameView& f, const Model* model, FrameContext& frame) override {
     if (!ready_) return;
     frame.shadows = &maps_;
-    if (!model && f.settings.groundShadowTexture && groundShadows_.ready()) frame.groundShadows = &groundShadows_;
+    if (!model && f.settings.tuning.groundShadowTexture && groundShadows_.ready()) frame.groundShadows = &groundShadows_;
   }
 
  private:
