@@ -56,9 +56,10 @@ void Renderer::removeModel(ModelId id) { scene_.remove(id); }
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
 
 void Renderer::setMesh(const Mesh* mesh) {
-  scene_.clear();
   ground_.reset();
-  if (mesh && !mesh->indices.empty()) addModel(*mesh);
+  partsDirty_ = true;
+  if (mesh && !mesh->indices.empty()) scene_.setOnly(*mesh, glm::mat4(1.0f), stats_);
+  else scene_.clear();
 }
 
 Status Renderer::setPalette(const Palette& palette) {

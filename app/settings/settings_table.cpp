@@ -174,7 +174,7 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
   {
-    Setting b = base("bands", "cel bands", "palette",
+    Setting b = base("bands", "band thresholds", "palette",
                      "Cel band thresholds T1,T2,... on the match query axis [0,3], strictly ascending (one fewer than the palette's tones); none: the nearest level",
                      K::Text);
     b.example = "0.8,1.6";

@@ -20,6 +20,21 @@ Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bo
   stats.bufferUploads += 2;
 }
 
+void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
+  mesh_ = &mesh;
+  transform_ = transform;
+  field_.reset();
+  occlusion_.reset();
+  parts_.clear();
+  triangles_.setMesh(mesh_);
+  lines_.setMesh(mesh_);
+  strokes_.setMesh(mesh_);
+  patterns_.setMesh(mesh_);
+  gpu_.upload(mesh);
+  materials_.upload(mesh);
+  stats.bufferUploads += 3;
+}
+
 float Model::sceneRadius() const {
   float scale = 0.0f;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(transform_[c])));

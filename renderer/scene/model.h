@@ -35,6 +35,10 @@ class Model {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
+  // Another mesh in the same model: every derived cache dropped, its objects kept for reuse
+  // (opening one file after another keeps the allocations of the first).
+  void reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats);
+
   const Mesh& mesh() const { return *mesh_; }
   // Model space to the scene's (world) space.
   const glm::mat4& transform() const { return transform_; }

@@ -20,6 +20,16 @@ class Scene {
     ++version_;
     return nextId_++;
   }
+  // A scene of one model showing `mesh`: the present model reused when there is exactly one.
+  ModelId setOnly(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
+    if (models_.size() != 1) {
+      clear();
+      return add(mesh, transform, stats);
+    }
+    models_.front().model->reset(mesh, transform, stats);
+    ++version_;
+    return models_.front().id;
+  }
   bool remove(ModelId id) {
     for (auto it = models_.begin(); it != models_.end(); ++it)
       if (it->id == id) {
