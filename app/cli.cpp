@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/settings/style_file.h"
+#include "renderer/core/printable.h"
 
 namespace npr {
 namespace {
@@ -144,9 +145,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       value = resolvePalette(value, ".");
       std::error_code ec;
       if (value != "none" && !std::filesystem::exists(value, ec))
-        return {std::nullopt, fail("--" + row.key + ": palette file '" + value + "' does not exist")};
+        return {std::nullopt, fail("--" + row.key + ": palette file '" + printable(value) + "' does not exist")};
     }
-    if (Status s = row.parse(value, scratch); !s) return {std::nullopt, fail("--" + row.key + " '" + value + "': " + s.error())};
+    if (Status s = row.parse(value, scratch); !s) return {std::nullopt, fail("--" + row.key + " '" + printable(value) + "': " + s.error())};
     o.settings.push_back({&row, value, "--" + row.key});
   }
   if (!ladder.empty()) {

@@ -5,6 +5,8 @@
 #include <set>
 #include <tuple>
 
+#include "renderer/core/printable.h"
+
 namespace npr {
 
 Look currentLook(const ViewerState& state, const Renderer& renderer) {
@@ -28,7 +30,7 @@ bool sameTone(const ToneParameters& a, const ToneParameters& b) {
 
 Status located(const SettingValue& v, const Status& s) {
   if (s) return s;
-  return Error{v.where + ": " + v.row->key + " '" + v.value + "': " + s.error()};
+  return Error{v.where + ": " + v.row->key + " '" + printable(v.value) + "': " + s.error()};
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "renderer/core/input_file.h"
+#include "renderer/core/printable.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -66,9 +67,9 @@ Result<Style> loadStyle(const std::string& path) {
       continue;
     }
     const Setting* row = findSetting(key);
-    if (!row) return Error{where + ": unknown key '" + key + "' (the README's settings reference lists the keys a style may set)"};
+    if (!row) return Error{where + ": unknown key '" + printable(key) + "' (the README's settings reference lists the keys a style may set)"};
     const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : arg;
-    if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + arg + "': " + s.error()};
+    if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + printable(arg) + "': " + s.error()};
     if (key == "palette") st.palette = value;
     else st.values.push_back({row, value, where});
   }

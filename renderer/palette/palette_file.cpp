@@ -9,6 +9,7 @@
 #include "renderer/core/colour.h"
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
+#include "renderer/core/printable.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_mipmaps.h"
 
@@ -108,13 +109,13 @@ Result<Palette> loadPalette(const std::string& path) {
       bgLine = lineNo;
     } else if (key == "match") {
       auto m = parseMatchMode(arg);
-      if (!m) return Error{where + ": unknown match mode '" + arg + "' (use colors, intensity or order)"};
+      if (!m) return Error{where + ": unknown match mode '" + printable(arg) + "' (use colors, intensity or order)"};
       p.defaultMatch = m;
     } else if (key == "range-scale") {
       char* end = nullptr;
       const float s = std::strtof(arg.c_str(), &end);
       if (arg.empty() || *end != '\0' || !std::isfinite(s) || s <= 0.0f)
-        return Error{where + ": range-scale must be a finite number > 0, got '" + arg + "'"};
+        return Error{where + ": range-scale must be a finite number > 0, got '" + printable(arg) + "'"};
       p.defaultRangeScale = s;
     } else if (key == "name") {
       p.name = arg;

@@ -11,6 +11,7 @@
 #include "app/cli.h"
 #include "app/settings/setting.h"
 #include "app/settings/style_file.h"
+#include "support/test_util.h"
 
 namespace npr {
 namespace {
@@ -189,6 +190,101 @@ TEST(SettingsTable, EveryRowIsACommandLineOptionThatSetsIt) {
     Look expected, got = parsed.options->look();
     ASSERT_TRUE(row.parse(value, expected));
     EXPECT_EQ(row.format(got), row.format(expected)) << row.key;
+  }
+}
+
+bool hasRawBytes(const std::string& message) {
+  for (unsigned char c : message)
+    if (c < 0x20 || c >= 0x7f) return true;
+  return false;
+}
+
+// A style file's bytes never reach the terminal raw: escape sequences and binary come back as
+// \xNN, long values cut; the line is still named.
+TEST(StyleFiles, MessagesShowTheFilesBytesEscaped) {
+  test::TempDir d;
+  const std::string esc = d.write("esc.style", "name x\npath \x1b[31mred\x1b[0m\n");
+  Result<Style> st = loadStyle(esc);
+  ASSERT_FALSE(st);
+  EXPECT_NE(st.error().find("esc.style line 2"), std::string::npos) << st.error();
+  EXPECT_NE(st.error().find("\\x1b[31m"), std::string::npos) << st.error();
+  EXPECT_FALSE(hasRawBytes(st.error()));
+  Result<Style> key = loadStyle(d.write("key.style", std::string("\xff\xfe\x07" "bell 1\n")));
+  ASSERT_FALSE(key);
+  EXPECT_FALSE(hasRawBytes(key.error())) << key.error();
+  Result<Style> longValue = loadStyle(d.write("long.style", "pattern " + std::string(5000, 'z') + "\n"));
+  ASSERT_FALSE(longValue);
+  EXPECT_LT(longValue.error().size(), 400u);
+}
+
+// Random style files (keys of the table with random values, random bytes, long lines) are read
+// or refused with the file and line named: never a crash, never raw bytes in the message.
+TEST(StyleFiles, RandomFilesAreReadOrRefusedWithTheLineNamed) {
+  std::mt19937 rng(42);
+  test::TempDir d;
+  const auto& table = settingsTable();
+  std::uniform_int_distribution<int> byte(0, 255);
+  int refused = 0, read = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::string text;
+    for (int line = 0, n = int(rng() % 6) + 1; line < n; ++line) {
+      const Setting& row = table[rng() % table.size()];
+      switch (rng() % 4) {
+        case 0: text += row.key + " " + randomValue(row, rng); break;
+        case 1: text += row.key + " " + std::to_string(int(rng() % 2000) - 1000) + "," + std::to_string(rng() % 7); break;
+        case 2:
+          text += row.key + " ";
+          for (int i = 0, m = int(rng() % 40); i < m; ++i) text += char(byte(rng));
+          break;
+        default:
+          for (int i = 0, m = int(rng() % 60); i < m; ++i) text += char(byte(rng));
+      }
+      text += "\n";
+    }
+    Result<Style> st = loadStyle(d.write("random.style", text));
+    if (st) {
+      ++read;
+      continue;
+    }
+    ++refused;
+    EXPECT_NE(st.error().find("random.style"), std::string::npos) << st.error();
+    EXPECT_FALSE(hasRawBytes(st.error())) << st.error();
+  }
+  EXPECT_GT(read, 0);
+  EXPECT_GT(refused, 0);
+}
+
+// Random command lines built from the table's options: parsed or refused with exit status 2,
+// the message free of raw bytes.
+TEST(SettingsTable, RandomCommandLinesAreParsedOrRefused) {
+  std::mt19937 rng(9);
+  const auto& table = settingsTable();
+  std::uniform_int_distribution<int> byte(1, 255);
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::string> args{"npr-viewer", "--headless"};
+    for (int i = 0, n = int(rng() % 4) + 1; i < n; ++i) {
+      const Setting& row = table[rng() % table.size()];
+      if (!row.cli) continue;
+      if (row.type == SettingType::Bool && !row.cliTakesValue) {
+        args.push_back((rng() % 2 ? "--" : "--no-") + row.key);
+        continue;
+      }
+      args.push_back("--" + row.key);
+      std::string value = randomValue(row, rng);
+      if (rng() % 3 == 0) {
+        value.clear();
+        for (int k = 0, m = int(rng() % 12) + 1; k < m; ++k) value += char(byte(rng));
+      }
+      args.push_back(value);
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    testing::internal::CaptureStderr();
+    const ParseOutcome parsed = parseCommandLine(int(argv.size()), argv.data());
+    const std::string err = testing::internal::GetCapturedStderr();
+    if (parsed.options) continue;
+    EXPECT_EQ(parsed.exitCode, 2);
+    EXPECT_FALSE(hasRawBytes(err.substr(0, err.empty() ? 0 : err.size() - 1))) << err;
   }
 }
 
