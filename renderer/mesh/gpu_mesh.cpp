@@ -59,6 +59,7 @@ void GpuMesh::clear() {
   directions_.reset();
   occlusion_.reset();
   runs_.clear();
+  shared_ = nullptr;
   triangleCount_ = 0;
   vertexCount_ = 0;
 }
@@ -81,6 +82,43 @@ void GpuMesh::upload(const Mesh& mesh) {
   floatAttribute(0, positions_, 3);
   floatAttribute(1, normals_, 3);
   if (mesh.hasAppearance()) uploadAppearance(mesh);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+  glBindVertexArray(0);
+}
+
+void GpuMesh::uploadPart(const GpuMesh& base, const Mesh& part) {
+  clear();
+  if (part.indices.empty() || !base.vao_.id()) return;
+  triangleCount_ = part.triangleCount();
+  vertexCount_ = base.vertexCount_;
+  if (part.hasAppearance()) {
+    const std::vector<std::uint32_t> grouped = groupedByMaterial(part, runs_);
+    indices_ = staticBuffer(grouped.data(), grouped.size() * sizeof(std::uint32_t));
+  } else {
+    indices_ = staticBuffer(part.indices.data(), part.indices.size() * sizeof(std::uint32_t));
+  }
+  vao_ = gl::createVertexArray();
+  shareStreamsOf(base);
+}
+
+void GpuMesh::shareStreamsOf(const GpuMesh& base) {
+  if (!vao_.id()) return;
+  // Vertices are split per material while loading, so a vertex's faces, its material and its
+  // map average are all of one part: base's per-vertex streams are the part's exactly.
+  glBindVertexArray(vao_.id());
+  floatAttribute(0, base.positions_, 3);
+  floatAttribute(1, base.normals_, 3);
+  if (base.colours_.id()) {
+    floatAttribute(2, base.colours_, 3);
+    floatAttribute(3, base.texcoords_, 2);
+    glBindBuffer(GL_ARRAY_BUFFER, base.materials_.id());
+    glEnableVertexAttribArray(4);
+    glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
+    floatAttribute(5, base.mapAverages_, 3);
+  }
+  if (base.directions_.id()) floatAttribute(6, base.directions_, 3);
+  if (base.occlusion_.id()) floatAttribute(7, base.occlusion_, 1);
+  shared_ = &base;
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBindVertexArray(0);
 }

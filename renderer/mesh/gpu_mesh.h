@@ -26,13 +26,19 @@ class GpuMesh {
  public:
   // Uploads `mesh` (replacing what was there); an empty mesh leaves nothing to draw.
   void upload(const Mesh& mesh);
+  // A part of `base` (a per-material palette's faces): `part` holds some of base's mesh's faces
+  // over the same vertices (mesh_subset.h). Only its index buffer is its own; it draws through
+  // base's vertex buffers, which must outlive it. Call shareStreamsOf again after base uploads
+  // its direction field or occlusion.
+  void uploadPart(const GpuMesh& base, const Mesh& part);
+  void shareStreamsOf(const GpuMesh& base);
   void clear();
   // The hatching direction field, one vector per vertex (attribute 6; orientation/
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);
   // Baked ambient occlusion, one value per vertex (attribute 7; shadows/occlusion_bake.h).
   void uploadOcclusion(const std::vector<float>& occlusion);
-  bool hasOcclusion() const { return occlusion_.id() != 0; }
+  bool hasOcclusion() const { return occlusion_.id() != 0 || (shared_ && shared_->hasOcclusion()); }
   // Every vertex as a point (the occlusion bake addresses vertices by gl_VertexID).
   void drawPoints() const;
 
@@ -54,6 +60,7 @@ class GpuMesh {
   void uploadAppearance(const Mesh& mesh);
   gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_, occlusion_;
   std::vector<MaterialRun> runs_;
+  const GpuMesh* shared_ = nullptr;  // a part's: whose vertex streams it draws through
   std::size_t vertexCount_ = 0;
   std::size_t triangleCount_ = 0;
 };

@@ -46,7 +46,7 @@ const DirectionField& Model::directionField(FrameStats& stats) {
     field_ = computeDirectionField(*mesh_);
     stats.cpuFieldMs = field_->ms;
     gpu_.uploadDirections(field_->directions);
-    for (auto& p : parts_) p->gpu.uploadDirections(field_->directions);  // a part keeps every vertex
+    for (auto& p : parts_) p->gpu.shareStreamsOf(gpu_);  // parts draw through the model's streams
     stats.bufferUploads += 1;
   }
   return *field_;
@@ -62,7 +62,7 @@ Status Model::startOcclusionBake() {
 
 void Model::occlusionBaked(FrameStats& stats) {
   gpu_.uploadOcclusion(occlusion_->values());
-  for (auto& p : parts_) p->gpu.uploadOcclusion(occlusion_->values());  // a part keeps every vertex
+  for (auto& p : parts_) p->gpu.shareStreamsOf(gpu_);  // parts draw through the model's streams
   stats.bufferUploads += 1;
 }
 
@@ -78,12 +78,12 @@ void Model::uploadParts(const std::vector<const GpuPalette*>& palettes, const st
     auto part = std::make_unique<Part>();
     part->palette = palettes[g];
     part->mesh = meshSubset(*mesh_, keep);
-    part->gpu.upload(part->mesh);
+    // Only the part's index buffer is its own: it draws through the model's vertex streams
+    // (the direction field and occlusion included, when the model has them).
+    part->gpu.uploadPart(gpu_, part->mesh);
     part->materials.upload(part->mesh);
     part->triangles.setMesh(&part->mesh);
-    if (field_) part->gpu.uploadDirections(field_->directions);
-    if (const std::vector<float>* o = occlusionValues()) part->gpu.uploadOcclusion(*o);
-    stats.bufferUploads += 3;
+    stats.bufferUploads += 2;
     parts_.push_back(std::move(part));
   }
 }

@@ -313,6 +313,31 @@ TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
   EXPECT_EQ(blue, 0);
 }
 
+// A material's part draws through the model's own vertex streams (only its index buffer is
+// its own): given the main palette again, the split model shows the same picture as the whole
+// one, the hatching direction field and the occlusion bake included, in every path.
+TEST_F(Fixture, PerMaterialPartsDrawThroughTheModelsVertexStreams) {
+  test::TempDir dir;
+  const Mesh mesh = twoMaterialSphere(dir);
+  r->setMesh(&mesh);
+  const Palette hatch = test::shippedPalette("hatch");
+  ASSERT_TRUE(r->setPalette(hatch));
+  const CameraMatrices cam = testCamera(1.0f);
+  for (const PathInfo& info : renderPaths()) {
+    if (!info.userSelectable || !info.usesPalette) continue;
+    RenderSettings s;
+    s.path = info.id;
+    s.orient.source = OrientSource::Curvature;
+    s.occlusion = true;
+    r->clearMaterialPalette("red");
+    const ImageRGBA8 whole = renderImage(*r, cam, s, 160, 160);
+    ASSERT_TRUE(r->setMaterialPalette("red", hatch));
+    const ImageRGBA8 split = renderImage(*r, cam, s, 160, 160);
+    EXPECT_EQ(test::countDiffering(whole, split), 0) << info.name;
+  }
+  r->clearMaterialPalette("red");
+}
+
 // The original interface: a Materialfv between RenderTriangle calls applies to the triangles
 // that follow, as in OpenGL. Two camera-facing triangles, red then blue.
 TEST_F(Fixture, ImmediateMaterialfvAppliesToTheTrianglesThatFollow) {
