@@ -138,8 +138,7 @@ void Renderer::preparePattern(Model* model, const CameraMatrices& placed, const 
   bool perVertex = true;
   pixelsPerFrontTriangle_ = std::numeric_limits<float>::infinity();
   if (model) {
-    const float frontTriangles = 0.5f * float(model->mesh().indices.size() / 3);
-    pixelsPerFrontTriangle_ = projectedSphereArea(placed, model->mesh().radius, viewport) / frontTriangles;
+    pixelsPerFrontTriangle_ = model->pixelsPerFrontTriangle(placed, viewport);
     perVertex = pixelsPerFrontTriangle_ >= kPatternPerVertexPixels;
   }
   auto place = [&](GpuPalette& p) {
@@ -187,12 +186,6 @@ Model* Renderer::prepareGround() {
   ground_ = std::make_unique<Model>(groundMesh_, glm::mat4(1.0f), stats_, false);
   groundVersion_ = scene_.version();
   return ground_.get();
-}
-
-std::vector<PlacedMesh> Renderer::placedMeshes(const CameraMatrices& camera) {
-  std::vector<PlacedMesh> meshes;
-  scene_.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(camera)}); });
-  return meshes;
 }
 
 FrameView Renderer::frameView(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, bool colour) {
@@ -368,7 +361,7 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   clearViewport(viewport);
   Status result = okStatus();
-  for (const PlacedMesh& m : placedMeshes(camera))
+  for (const PlacedMesh& m : scene_.placed(camera))
     if (result) result = drawGeometry(*m.mesh, m.camera, output, programs_, stats_);
   gl::restoreDefaults();
   return result;
@@ -389,8 +382,7 @@ bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const Render
   if (s.tuning.turnPlacement == TurnPlacement::Resolved) return true;
   bool dense = false;
   scene_.forEach([&](const Model& m) {
-    const float frontTriangles = 0.5f * float(m.mesh().indices.size() / 3);
-    dense = dense || projectedSphereArea(m.placed(camera), m.mesh().radius, viewport) / frontTriangles < kResolveTurnPixels;
+    dense = dense || m.pixelsPerFrontTriangle(m.placed(camera), viewport) < kResolveTurnPixels;
   });
   return dense;
 }

@@ -168,8 +168,6 @@ class Renderer {
   // Whether this model's mesh passes may drop back faces (FrameContext::cullBackFaces); noted in
   // the frame's stats.
   bool backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& settings);
-  // Every model's mesh placed for `camera`.
-  std::vector<PlacedMesh> placedMeshes(const CameraMatrices& camera);
 
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
   std::unique_ptr<GpuPalette> shadowPalette_, occlusionPalette_;

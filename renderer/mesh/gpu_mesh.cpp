@@ -67,58 +67,55 @@ void GpuMesh::clear() {
 void GpuMesh::upload(const Mesh& mesh) {
   clear();
   if (mesh.indices.empty()) return;
-  triangleCount_ = mesh.triangleCount();
   vertexCount_ = mesh.positions.size();
   positions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   normals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  if (mesh.hasAppearance()) uploadAppearance(mesh);
+  uploadIndices(mesh);
+  vao_ = gl::createVertexArray();
+  bindStreams(*this);
+}
+
+void GpuMesh::uploadPart(const GpuMesh& base, const Mesh& part) {
+  clear();
+  if (part.indices.empty() || !base.vao_.id()) return;
+  vertexCount_ = base.vertexCount_;
+  uploadIndices(part);
+  vao_ = gl::createVertexArray();
+  bindStreams(base);
+}
+
+void GpuMesh::shareStreamsOf(const GpuMesh& base) { bindStreams(base); }
+
+void GpuMesh::uploadIndices(const Mesh& mesh) {
+  triangleCount_ = mesh.triangleCount();
   if (mesh.hasAppearance()) {
     const std::vector<std::uint32_t> grouped = groupedByMaterial(mesh, runs_);
     indices_ = staticBuffer(grouped.data(), grouped.size() * sizeof(std::uint32_t));
   } else {
     indices_ = staticBuffer(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   }
-  vao_ = gl::createVertexArray();
-  glBindVertexArray(vao_.id());
-  floatAttribute(0, positions_, 3);
-  floatAttribute(1, normals_, 3);
-  if (mesh.hasAppearance()) uploadAppearance(mesh);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
-  glBindVertexArray(0);
 }
 
-void GpuMesh::uploadPart(const GpuMesh& base, const Mesh& part) {
-  clear();
-  if (part.indices.empty() || !base.vao_.id()) return;
-  triangleCount_ = part.triangleCount();
-  vertexCount_ = base.vertexCount_;
-  if (part.hasAppearance()) {
-    const std::vector<std::uint32_t> grouped = groupedByMaterial(part, runs_);
-    indices_ = staticBuffer(grouped.data(), grouped.size() * sizeof(std::uint32_t));
-  } else {
-    indices_ = staticBuffer(part.indices.data(), part.indices.size() * sizeof(std::uint32_t));
-  }
-  vao_ = gl::createVertexArray();
-  shareStreamsOf(base);
-}
-
-void GpuMesh::shareStreamsOf(const GpuMesh& base) {
+void GpuMesh::bindStreams(const GpuMesh& source) {
   if (!vao_.id()) return;
-  // Vertices are split per material while loading, so a vertex's faces, its material and its
-  // map average are all of one part: base's per-vertex streams are the part's exactly.
+  // A part draws through its model's streams: vertices are split per material while loading,
+  // so a vertex's faces, its material and its map average are all of one part, and the
+  // model's per-vertex streams are the part's exactly.
   glBindVertexArray(vao_.id());
-  floatAttribute(0, base.positions_, 3);
-  floatAttribute(1, base.normals_, 3);
-  if (base.colours_.id()) {
-    floatAttribute(2, base.colours_, 3);
-    floatAttribute(3, base.texcoords_, 2);
-    glBindBuffer(GL_ARRAY_BUFFER, base.materials_.id());
+  floatAttribute(0, source.positions_, 3);
+  floatAttribute(1, source.normals_, 3);
+  if (source.colours_.id()) {  // attributes 2-5 of mesh.vert's MATERIALS variant
+    floatAttribute(2, source.colours_, 3);
+    floatAttribute(3, source.texcoords_, 2);
+    glBindBuffer(GL_ARRAY_BUFFER, source.materials_.id());
     glEnableVertexAttribArray(4);
     glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
-    floatAttribute(5, base.mapAverages_, 3);
+    floatAttribute(5, source.mapAverages_, 3);
   }
-  if (base.directions_.id()) floatAttribute(6, base.directions_, 3);
-  if (base.occlusion_.id()) floatAttribute(7, base.occlusion_, 1);
-  shared_ = &base;
+  if (source.directions_.id()) floatAttribute(6, source.directions_, 3);
+  if (source.occlusion_.id()) floatAttribute(7, source.occlusion_, 1);
+  shared_ = &source == this ? nullptr : &source;
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBindVertexArray(0);
 }
@@ -146,7 +143,7 @@ void GpuMesh::drawPoints() const {
 
 void GpuMesh::uploadAppearance(const Mesh& mesh) {
   const std::size_t nv = mesh.positions.size();
-  // Attributes 2-5 of mesh.vert's MATERIALS variant; where the mesh lacks one, a neutral array
+  // The streams of attributes 2-5 (bindStreams); where the mesh lacks one, a neutral array
   // (white, (0,0), material 0) keeps one vertex layout for every mesh with an appearance.
   const std::vector<glm::vec3> white(mesh.colours.size() == nv ? 0 : nv, glm::vec3(1.0f));
   const std::vector<glm::vec3>& colours = mesh.colours.size() == nv ? mesh.colours : white;
@@ -177,12 +174,6 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
       if (count[v] > 0.0f) mapAverage[v] = sum[v] / count[v];
   }
   mapAverages_ = staticBuffer(mapAverage.data(), nv * sizeof(glm::vec3));
-  floatAttribute(2, colours_, 3);
-  floatAttribute(3, texcoords_, 2);
-  glBindBuffer(GL_ARRAY_BUFFER, materials_.id());
-  glEnableVertexAttribArray(4);
-  glVertexAttribIPointer(4, 1, GL_UNSIGNED_SHORT, sizeof(std::uint16_t), nullptr);
-  floatAttribute(5, mapAverages_, 3);
 }
 
 void GpuMesh::drawAll() const {

@@ -57,7 +57,10 @@ class GpuMesh {
 
  private:
   gl::VertexArray vao_;
-  void uploadAppearance(const Mesh& mesh);
+  void uploadAppearance(const Mesh& mesh);  // the appearance's streams (attributes 2-5)
+  void uploadIndices(const Mesh& mesh);     // the index buffer, grouped by material with an appearance
+  // Points the vertex array at `source`'s streams (this mesh's own, or a part's model's).
+  void bindStreams(const GpuMesh& source);
   gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_, occlusion_;
   std::vector<MaterialRun> runs_;
   const GpuMesh* shared_ = nullptr;  // a part's: whose vertex streams it draws through

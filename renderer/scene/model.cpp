@@ -35,6 +35,11 @@ void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stat
   stats.bufferUploads += 3;
 }
 
+float Model::pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const {
+  const float frontTriangles = 0.5f * float(mesh_->indices.size() / 3);
+  return projectedSphereArea(placed, mesh_->radius, viewport) / frontTriangles;
+}
+
 float Model::sceneRadius() const {
   float scale = 0.0f;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(transform_[c])));

@@ -47,6 +47,10 @@ class Model {
   CameraMatrices placed(const CameraMatrices& camera) const { return {camera.view * transform_, camera.projection}; }
   // The bounding sphere's radius in scene units (the largest axis scale of the transform).
   float sceneRadius() const;
+  // Screen pixels per front-facing triangle seen through `placed` (the bounding disc over half
+  // the triangles): how dense the mesh is on screen, which picks where patterns and turns are
+  // worked out.
+  float pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const;
 
   GpuMesh& gpu() { return gpu_; }
   const GpuMesh& gpu() const { return gpu_; }

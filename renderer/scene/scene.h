@@ -69,6 +69,12 @@ class Scene {
   void forEach(Fn&& fn) const {
     for (const auto& m : models_) fn(static_cast<const Model&>(*m.model));
   }
+  // Every model's mesh with the camera placed by its transform (passes that see the whole scene).
+  std::vector<PlacedMesh> placed(const CameraMatrices& camera) const {
+    std::vector<PlacedMesh> meshes;
+    for (const auto& e : models_) meshes.push_back({&e.model->gpu(), e.model->placed(camera)});
+    return meshes;
+  }
   Model* first() { return models_.empty() ? nullptr : models_.front().model.get(); }
   const Model* first() const { return models_.empty() ? nullptr : models_.front().model.get(); }
   // A sphere holding every model (scene space).

@@ -30,9 +30,7 @@ class ImageEdgesFeature final : public Feature {
   const char* name() const override { return "image edges"; }
   bool active(const FrameView& f) const override { return f.settings.lines.imageSpace && !f.scene.empty(); }
   Status drawOver(FrameView& f) override {
-    std::vector<PlacedMesh> meshes;
-    f.scene.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(f.camera)}); });
-    return pass_.draw(meshes, f.camera, f.settings.lines, f.viewport, f.programs, f.emptyVao, f.stats);
+    return pass_.draw(f.scene.placed(f.camera), f.camera, f.settings.lines, f.viewport, f.programs, f.emptyVao, f.stats);
   }
 
  private:

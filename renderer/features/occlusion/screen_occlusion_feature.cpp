@@ -19,8 +19,7 @@ class ScreenOcclusionFeature final : public Feature {
   }
   Status afterClear(FrameView& f) override {
     ready_ = false;
-    std::vector<PlacedMesh> meshes;
-    f.scene.forEach([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(f.camera)}); });
+    std::vector<PlacedMesh> meshes = f.scene.placed(f.camera);
     if (f.settings.ground)
       if (Model* g = f.ground()) meshes.push_back({&g->gpu(), f.camera});
     const float sceneRadius = f.scene.bounds().w;
