@@ -64,6 +64,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
   app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)");
   app.add_flag("--headless", o.headless, "Render through EGL with no window");
+  std::string gpu;
+  app.add_option("--gpu", gpu,
+                 "Headless runs: the EGL device, by index or part of its name, 'auto' (a GPU before a software rasterizer) "
+                 "or 'surfaceless' (Mesa's software platform); --gl-info lists them")
+      ->envname("NPR_GPU");
+  app.add_flag("--gl-info", o.glInfo, "Print the headless context's GL_VENDOR, GL_RENDERER, GL_VERSION and the EGL devices, and exit");
+  app.add_flag("--version", o.version, "Print the version and exit");
   app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)");
   app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
   app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
@@ -150,6 +157,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (Status s = row.parse(value, scratch); !s) return {std::nullopt, fail("--" + row.key + " '" + printable(value) + "': " + s.error())};
     o.settings.push_back({&row, value, "--" + row.key});
   }
+  if (auto g = parseGpuRequest(gpu); g) o.gpu = *g;
+  else return {std::nullopt, fail(g.error())};
   if (!ladder.empty()) {
     o.ladder = parseLadder(ladder);
     if (!o.ladder) return {std::nullopt, fail("unknown --ladder '" + ladder + "': use blur, offset, solarize, posterize, threshold, darken or desaturate")};

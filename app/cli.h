@@ -10,6 +10,7 @@
 
 #include "app/camera_animation.h"
 #include "app/settings/look.h"
+#include "renderer/gl/gpu_choice.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_maker.h"
@@ -42,6 +43,9 @@ struct Options {
   std::string style;         // --style NAME|FILE (palettes/styles/NAME.style)
   std::string saveStyle;     // --save-style FILE: the look as a style file, after start-up
   bool settingsReference = false;  // --settings-reference: the settings table as Markdown
+  GpuRequest gpu;                  // --gpu INDEX|NAME|auto|surfaceless (or NPR_GPU): the headless device
+  bool glInfo = false;             // --gl-info: what the headless context runs on
+  bool version = false;            // --version
   bool benchmark = false;
   bool allMatchModes = false;  // --benchmark --match all
   std::string outDir = "benchmark-results";

@@ -1,10 +1,13 @@
 // npr-viewer: parses the command line and hands over to the window, --headless, --info,
-// --palette-info, --make-palette, --palette-sheet, --list-paths, --settings-reference or --benchmark. Exit status: 0 success, 1 a file failed to load or render,
-// 2 bad arguments.
+// --palette-info, --make-palette, --palette-sheet, --list-paths, --settings-reference,
+// --gl-info, --version or --benchmark. Exit status: 0 success, 1 a file failed to load or
+// render, 2 bad arguments.
 #include <cstdio>
 
 #include "app/benchmark/benchmark_run.h"
 #include "app/cli.h"
+#include "app/data_directory.h"
+#include "app/headless/headless_session.h"
 #include "app/headless/headless_run.h"
 #include "app/palette_tools.h"
 #include "app/settings/settings_reference.h"
@@ -14,6 +17,7 @@
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/paths/path_table.h"
+#include "app/version.h"
 
 #if defined(__SANITIZE_ADDRESS__)
 // See tests/gl/gl_test_env.cpp: Mesa's unloaded driver would be reported as leaking.
@@ -26,6 +30,20 @@ int main(int argc, char** argv) {
   if (!parsed.options) return parsed.exitCode;
   const npr::Options& o = *parsed.options;
 
+  if (o.version) {
+    const std::string git = NPR_GIT_DESCRIPTION;
+    std::printf("npr-viewer %s%s\ndata: %s\n", NPR_VERSION, git.empty() ? "" : (" (" + git + ")").c_str(),
+                npr::dataDirectory().c_str());
+    return 0;
+  }
+  if (o.glInfo) {
+    auto session = npr::openHeadlessSession(false, o.gpu);
+    if (!session) return npr::reportFailure(session.error());
+    const npr::GlInfo& info = session->context->info();
+    std::printf("%s\nEGL devices:\n%s", info.line().c_str(),
+                info.devices.empty() ? "  (none listed)\n" : npr::describeDevices(info.devices).c_str());
+    return 0;
+  }
   if (o.settingsReference) {
     std::printf("%s", npr::settingsReferenceMarkdown().c_str());
     return 0;

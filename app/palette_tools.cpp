@@ -143,7 +143,7 @@ int runPaletteSheets(const Options& o) {
   std::error_code ec;
   fs::create_directories(o.paletteSheet, ec);
   if (!fs::is_directory(o.paletteSheet, ec)) return reportFailure("--palette-sheet: cannot create the folder " + o.paletteSheet);
-  auto session = openHeadlessSession(true);
+  auto session = openHeadlessSession(true, o.gpu);
   if (!session) return reportFailure(session.error());
   const std::vector<std::string> palettes = o.palettes.empty() ? discoverPalettes() : o.palettes;
   bool fontMissing = false;

@@ -12,14 +12,6 @@
 namespace npr {
 namespace fs = std::filesystem;
 
-std::string dataDirectory() {
-  if (const char* env = std::getenv("NPR_DATA_DIR"); env && *env) return env;
-  return NPR_SOURCE_DIR;
-}
-
-std::string defaultModelPath() { return (fs::path(dataDirectory()) / "models" / "bunny.obj").string(); }
-std::string defaultPalettePath() { return (fs::path(dataDirectory()) / "palettes" / "crosshatch" / "crosshatch.palette").string(); }
-
 std::vector<std::string> discoverPalettes() {
   std::vector<std::string> out;
   std::error_code ec;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/data_directory.h"
 #include "renderer/core/camera.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/palette.h"
@@ -15,11 +16,6 @@
 
 namespace npr {
 
-// Where the shipped models/ and palettes/ are (baked in at build time, overridable with the
-// NPR_DATA_DIR environment variable).
-std::string dataDirectory();
-std::string defaultModelPath();
-std::string defaultPalettePath();
 // The .palette files under palettes/, sorted by folder name.
 std::vector<std::string> discoverPalettes();
 

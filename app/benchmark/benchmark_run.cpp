@@ -330,7 +330,7 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
 // [SECTION] Driver
 
 int runBenchmark(const Options& o) {
-  auto session = openHeadlessSession(false);
+  auto session = openHeadlessSession(false, o.gpu);
   if (!session) return reportFailure(session.error());
   Renderer& r = *session->renderer;
   std::error_code ec;
@@ -365,7 +365,7 @@ int runBenchmark(const Options& o) {
       }
     }
   }
-  writeBenchmarkReport(results, o.outDir, o.size, frames, session->context->description());
+  writeBenchmarkReport(results, o.outDir, o.size, frames, session->context->info().line());
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   if (!failures.empty()) {

@@ -22,7 +22,7 @@
 namespace npr {
 
 int runHeadless(const Options& o) {
-  auto session = openHeadlessSession(true);
+  auto session = openHeadlessSession(true, o.gpu);
   if (!session) return reportFailure(session.error());
   Renderer* renderer = session->renderer.get();
   ViewerState state;

@@ -5,10 +5,11 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace npr {
 
-inline std::string printable(const std::string& text, std::size_t maxChars = 80) {
+inline std::string printable(std::string_view text, std::size_t maxChars = 80) {
   static const char* hex = "0123456789abcdef";
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {

@@ -111,7 +111,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_frames: --mesh must be bunny or torus, not '%s'\n", meshFilter.c_str());
     return 2;
   }
-  auto ctx = HeadlessContext::create(false);
+  auto gpu = gpuRequestFromEnvironment();  // NPR_GPU, as for the viewer's --gpu
+  if (!gpu) {
+    std::fprintf(stderr, "%s\n", gpu.error().c_str());
+    return 2;
+  }
+  auto ctx = HeadlessContext::create(false, *gpu);
   if (!ctx) {
     std::fprintf(stderr, "%s\n", ctx.error().c_str());
     return 1;
@@ -245,7 +250,7 @@ int main(int argc, char** argv) {
         paths.push_back(on);
       }
     }
-  std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->description().c_str(), w, h, frames);
+  std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->info().line().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& sc : scenes) {

@@ -129,7 +129,7 @@ TEST(HostileInput, LargestVertexIndexIsNamedWithoutOverflow) {
 TEST(HostileInput, CorruptOmFileCostsAMessageNotTheProcess) {
   // Found by fuzz_om: OpenMesh's reader asserts on this file's vertex chunk (abort). It now
   // runs in a child process; this test's process must survive and get a message.
-  auto m = loadMesh(std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/om-bad-vertex-chunk.om");
+  auto m = loadMesh(std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/om/bad-vertex-chunk.om");
   ASSERT_FALSE(m);
   EXPECT_TRUE(contains(m.error(), "OM reader")) << m.error();
 }
@@ -205,7 +205,7 @@ TEST(HostileInput, LargeImagesAreReducedWhileReadKeepingTheTone) {
 TEST(HostileInput, PngChunkLongerThanTheFileIsRefusedBeforeDecoding) {
   // libpng allocates a chunk's declared length before reading it: the fuzzer's file of 316
   // bytes made it allocate 1.8 GB. The chunks are checked against the file first.
-  const std::string found = std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/png-chunk-longer-than-the-file.png";
+  const std::string found = std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/image/png-chunk-longer-than-the-file.png";
   auto size = readImageSize(found);
   ASSERT_FALSE(size);
   EXPECT_TRUE(contains(size.error(), "corrupt PNG: chunk")) << size.error();

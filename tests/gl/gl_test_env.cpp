@@ -147,12 +147,18 @@ extern "C" const char* __asan_default_options() { return "detect_leaks=0"; }
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-  auto ctx = npr::HeadlessContext::create(true);
+  // NPR_GPU picks the device as it does for the viewer (the reference images are llvmpipe's).
+  auto gpu = npr::gpuRequestFromEnvironment();
+  if (!gpu) {
+    std::fprintf(stderr, "%s\n", gpu.error().c_str());
+    return 1;
+  }
+  auto ctx = npr::HeadlessContext::create(true, *gpu);
   if (!ctx) {
     std::fprintf(stderr, "cannot create the headless OpenGL context: %s\n", ctx.error().c_str());
     return 1;  // a GL test program without GL fails; it never skips silently
   }
-  std::fprintf(stderr, "GL: %s\n", (*ctx)->description().c_str());
+  std::fprintf(stderr, "GL: %s\n", (*ctx)->info().line().c_str());
   npr::gl::setStrictUniforms(true);  // a misspelled uniform fails the test like a GL error
   ::testing::UnitTest::GetInstance()->listeners().Append(new npr::test::GlErrorCheck);
   return RUN_ALL_TESTS();

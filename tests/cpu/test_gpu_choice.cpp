@@ -1,0 +1,91 @@
+// CPU tier: which EGL device a headless run opens (renderer/gl/gpu_choice.h), on made-up
+// device lists like a GPU server's (a machine without a GPU cannot produce one).
+#include <gtest/gtest.h>
+
+#include "renderer/gl/gpu_choice.h"
+
+namespace npr {
+namespace {
+
+GpuDevice device(int index, std::string name, bool software, std::string node = "") {
+  GpuDevice d;
+  d.index = index;
+  d.name = std::move(name);
+  d.software = software;
+  d.drmNode = std::move(node);
+  return d;
+}
+
+// A server as NVIDIA's driver and Mesa list it together under libglvnd: Mesa's software device
+// first, then two GPUs.
+std::vector<GpuDevice> server() {
+  return {device(0, "", true), device(1, "NVIDIA H100 80GB HBM3", false, "/dev/dri/renderD128"),
+          device(2, "NVIDIA H100 80GB HBM3", false, "/dev/dri/renderD129")};
+}
+
+std::vector<int> order(const std::vector<GpuDevice>& devices, const std::string& request) {
+  auto r = parseGpuRequest(request);
+  EXPECT_TRUE(r) << r.error();
+  auto o = devicesToTry(devices, *r);
+  EXPECT_TRUE(o) << o.error();
+  return o ? *o : std::vector<int>{};
+}
+
+TEST(GpuChoice, AutomaticTriesHardwareBeforeSoftwareKeepingEglOrder) {
+  EXPECT_EQ(order(server(), "auto"), (std::vector<int>{1, 2, 0}));
+  EXPECT_EQ(order(server(), ""), (std::vector<int>{1, 2, 0}));
+  // Software devices in the middle and at the front: still after every hardware one.
+  const std::vector<GpuDevice> mixed = {device(0, "", true), device(1, "Intel", false), device(2, "", true), device(3, "AMD", false)};
+  EXPECT_EQ(order(mixed, "auto"), (std::vector<int>{1, 3, 0, 2}));
+  // Only software (this machine): that device, then (by the caller) the surfaceless platform.
+  EXPECT_EQ(order({device(0, "", true)}, "auto"), (std::vector<int>{0}));
+  EXPECT_TRUE(order({}, "auto").empty());
+}
+
+TEST(GpuChoice, IndexAndNameChooseOnlyWhatTheyName) {
+  EXPECT_EQ(order(server(), "2"), (std::vector<int>{2}));
+  EXPECT_EQ(order(server(), "0"), (std::vector<int>{0}));
+  EXPECT_EQ(order(server(), "nvidia"), (std::vector<int>{1, 2}));
+  EXPECT_EQ(order(server(), "renderD129"), (std::vector<int>{2}));
+  EXPECT_EQ(order(server(), "software"), (std::vector<int>{0}));
+  EXPECT_EQ(order(server(), "HARDWARE"), (std::vector<int>{1, 2}));
+}
+
+TEST(GpuChoice, SurfacelessSkipsTheDeviceList) {
+  auto r = parseGpuRequest("surfaceless");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->kind, GpuRequest::Kind::Surfaceless);
+  auto o = devicesToTry(server(), *r);
+  ASSERT_TRUE(o);
+  EXPECT_TRUE(o->empty());
+}
+
+TEST(GpuChoice, UnknownDevicesAreRefusedWithTheList) {
+  for (const char* request : {"3", "radeon"}) {
+    auto r = parseGpuRequest(request);
+    ASSERT_TRUE(r);
+    auto o = devicesToTry(server(), *r);
+    ASSERT_FALSE(o) << request;
+    EXPECT_NE(o.error().find("matches none"), std::string::npos) << o.error();
+    EXPECT_NE(o.error().find("1: NVIDIA H100 80GB HBM3 (/dev/dri/renderD128) [hardware]"), std::string::npos) << o.error();
+  }
+  auto none = devicesToTry({}, *parseGpuRequest("0"));
+  ASSERT_FALSE(none);
+  EXPECT_NE(none.error().find("lists no devices"), std::string::npos) << none.error();
+  EXPECT_FALSE(parseGpuRequest("-1"));
+  // A name from the environment is escaped in the message.
+  auto evil = devicesToTry(server(), *parseGpuRequest("\x1b]0;title\x07"));
+  ASSERT_FALSE(evil);
+  EXPECT_EQ(evil.error().find('\x1b'), std::string::npos);
+}
+
+TEST(GpuChoice, SoftwareRenderersAreRecognised) {
+  EXPECT_TRUE(isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+  EXPECT_TRUE(isSoftwareRenderer("softpipe"));
+  EXPECT_TRUE(isSoftwareRenderer("Mesa X11 swrast"));
+  EXPECT_FALSE(isSoftwareRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"));
+  EXPECT_FALSE(isSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6, DRM 3.49)"));
+}
+
+}  // namespace
+}  // namespace npr
