@@ -31,7 +31,7 @@ bool parseFloats(const std::string& s, int n, float* out) {
 }
 
 int fail(const std::string& msg) {
-  std::fprintf(stderr, "npr-viewer: %s (see --help)\n", msg.c_str());
+  tellUser(msg + " (see --help)");
   return 2;
 }
 
@@ -224,8 +224,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   return {o, 0};
 }
 
+void tellUser(const std::string& message) { std::fprintf(stderr, "npr-viewer: %s\n", printableMessage(message).c_str()); }
+
 int reportFailure(const std::string& message) {
-  std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());
+  tellUser(message);
   return 1;
 }
 

@@ -71,6 +71,10 @@ struct ParseOutcome {
 };
 ParseOutcome parseCommandLine(int argc, char** argv);
 
+// The app's one way of telling the user something on stderr: "npr-viewer: MESSAGE", with
+// control characters and invalid UTF-8 from files and paths escaped (core/printable.h).
+void tellUser(const std::string& message);
+
 // The app's one way of ending on a runtime failure (a file that fails to load, a render that
 // fails, no display): prints "npr-viewer: MESSAGE" on stderr and returns exit status 1.
 int reportFailure(const std::string& message);

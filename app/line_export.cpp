@@ -7,6 +7,7 @@
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/lines/svg_export.h"
+#include "app/cli.h"
 
 namespace npr {
 
@@ -29,7 +30,7 @@ Status exportLinesSvg(Renderer& renderer, const CameraMatrices& camera, const Re
   std::ofstream out(path, std::ios::binary);
   out << svgDocument(lines, size, settings.lines, png);
   if (!out.flush()) return Error{path + ": cannot write the SVG"};
-  std::fprintf(stderr, "npr-viewer: wrote %s: %d paths, %.0f px of lines\n", path.c_str(), lines.paths, lines.lengthPx);
+  tellUser("wrote " + path + ": " + std::to_string(lines.paths) + " paths, " + std::to_string(static_cast<long>(lines.lengthPx + 0.5)) + " px of lines");
   return okStatus();
 }
 

@@ -17,6 +17,7 @@
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/palette/palette_analysis.h"
+#include "app/cli.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -33,7 +34,7 @@ int runPaletteMaker(const Options& o) {
   if (!file) return reportFailure(file.error());
   Result<Palette> p = loadPalette(*file);
   if (!p) return reportFailure("the palette just written does not load: " + p.error());
-  std::fprintf(stderr, "npr-viewer: wrote %s (%zu entries)\n", file->c_str(), p->entries.size());
+  tellUser("wrote " + *file + " (" + std::to_string(p->entries.size()) + " entries)");
   std::printf("%s\n", paletteReportJson(*p).c_str());
   return 0;
 }
@@ -133,7 +134,7 @@ Status writeSheet(HeadlessSession& session, const std::string& paletteFile, cons
     drawText(sheet, x, y + kTile + kSwatch + kLabel - 4, label, 13, fontMissing);
   }
   if (Status s = writeImage(out.string(), fromBuf(sheet)); !s) return s;
-  std::fprintf(stderr, "npr-viewer: wrote %s\n", out.string().c_str());
+  tellUser("wrote " + out.string());
   return okStatus();
 }
 
@@ -151,7 +152,7 @@ int runPaletteSheets(const Options& o) {
   std::vector<std::string> used;
   for (const std::string& p : palettes)
     if (Status s = writeSheet(*session, p, fs::path(o.paletteSheet) / (sheetName(p, used) + ".png"), fontMissing); !s) {
-      std::fprintf(stderr, "npr-viewer: %s\n", s.error().c_str());
+      tellUser(s.error());
       ++failed;
     }
   if (fontMissing) std::fprintf(stderr, "npr-viewer: no DejaVu Sans font found: the sheets show the tones as swatches without numbers\n");

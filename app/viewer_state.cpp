@@ -8,6 +8,7 @@
 
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette_analysis.h"
+#include "renderer/core/printable.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -28,11 +29,12 @@ std::vector<std::string> discoverPalettes() {
   return out;
 }
 
-void ViewerState::note(const std::string& message) {
+void ViewerState::note(const std::string& raw) {
+  const std::string message = printableMessage(raw);
   // Also on stderr: a user who started the viewer from a terminal, and the soak test's log,
   // see every load failure and warning without the overlay. A failure repeated every frame
   // (a render error) is printed once, not once per frame.
-  if (messages.empty() || messages.back() != message) std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());
+  if (messages.empty() || messages.back() != message) std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());  // escaped above
   messages.push_back(message);
   if (messages.size() > 20) messages.erase(messages.begin());
 }

@@ -30,6 +30,7 @@
 #include "renderer/core/parallel.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/shadows/occlusion_bake.h"
+#include "app/cli.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -369,7 +370,7 @@ int runBenchmark(const Options& o) {
   std::ifstream md(fs::path(o.outDir) / "results.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   if (!failures.empty()) {
-    std::fprintf(stderr, "npr-viewer: %zu call(s) failed during the benchmark; the first: %s\n", failures.size(), failures.front().c_str());
+    tellUser(std::to_string(failures.size()) + " call(s) failed during the benchmark; the first: " + failures.front());
     return 1;
   }
   if (nonFinite) {

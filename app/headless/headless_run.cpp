@@ -18,6 +18,7 @@
 #include "renderer/gl/gl_debug.h"
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
+#include "app/cli.h"
 
 namespace npr {
 
@@ -75,8 +76,8 @@ int runHeadless(const Options& o) {
     if (frames > 1) progress.update(double(f + 1) / frames);
     stepCameraAnimation(state.camera, o.animation, o.size);
   }
-  if (!o.saveFrames.empty()) std::fprintf(stderr, "npr-viewer: %d frame(s) written to %s\n", frames, o.saveFrames.c_str());
-  if (gif) std::fprintf(stderr, "npr-viewer: turntable written to %s\n", gifPath.c_str());
+  if (!o.saveFrames.empty()) tellUser(std::to_string(frames) + " frame(s) written to " + o.saveFrames);
+  if (gif) tellUser("turntable written to " + gifPath);
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
                state.mesh->report.file.c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),

@@ -9,6 +9,7 @@
 #include "renderer/core/image_io.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/offscreen_target.h"
+#include "app/cli.h"
 
 namespace npr {
 namespace {
@@ -68,7 +69,8 @@ int renderPoster(const Options& o, ViewerState& state, Renderer& renderer) {
     }
     if (Status s = out->append(strip); !s) return reportFailure(s.error());
   }
-  std::fprintf(stderr, "npr-viewer: poster %dx%d written to %s (%d tiles of %d)\n", W, H, o.screenshot.c_str(), rows * columns, tile);
+  tellUser("poster " + std::to_string(W) + "x" + std::to_string(H) + " written to " + o.screenshot + " (" + std::to_string(rows * columns) +
+           " tiles of " + std::to_string(tile) + ")");
   if (const int errors = gl::checkErrors("poster")) return reportFailure(std::to_string(errors) + " OpenGL error(s) during the poster");
   return 0;
 }

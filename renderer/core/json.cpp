@@ -4,9 +4,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "renderer/core/printable.h"
+
 namespace npr::json {
 
-std::string string(const std::string& s) {
+std::string string(const std::string& raw) {
+  // Text from files (paths, names, warnings) escaped as messages are (\xNN for control
+  // characters and invalid UTF-8), so the JSON is valid UTF-8 and a terminal showing it is safe.
+  const std::string s = printableMessage(raw);
   std::string o = "\"";
   for (unsigned char c : s) {
     switch (c) {

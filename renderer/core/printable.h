@@ -1,6 +1,7 @@
-// Text from a user's file or command line as it may be shown in a message: control characters
-// and bytes outside printable ASCII written as \xNN, and long text cut, so a message never
-// sends a file's raw bytes (escape sequences, NULs) to a terminal.
+// Text from a user's file, path or command line as it may be shown in a message: control
+// characters (C0, DEL, C1) and bytes that are not valid UTF-8 written as \xNN, so a message
+// never sends a file's raw bytes (escape sequences, NULs, a terminal's 8-bit CSI) to a
+// terminal. Valid UTF-8 (a path named in French or Japanese) is kept as it is.
 #pragma once
 
 #include <cstddef>
@@ -9,21 +10,11 @@
 
 namespace npr {
 
-inline std::string printable(std::string_view text, std::size_t maxChars = 80) {
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (out.size() >= maxChars) return out + "...";
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
+// One quoted piece of text, cut after `maxChars` bytes of output ("...").
+std::string printable(std::string_view text, std::size_t maxChars = 80);
+
+// A whole message at the point it is printed (stderr, the window's notes): the same escaping,
+// never cut, line breaks kept (messages such as a device list span lines).
+std::string printableMessage(std::string_view message);
 
 }  // namespace npr

@@ -20,6 +20,7 @@
 #include <cstring>
 
 #include "renderer/core/input_file.h"
+#include "renderer/core/printable.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/polygon_soup.h"
 
@@ -95,6 +96,30 @@ bool writeAll(int fd, const void* data, std::size_t n) {
   ::_exit(status);
 }
 
+// OpenMesh's reader believes the header's counts (it reserves and loops over them before the
+// chunks say otherwise), so they are checked against the file's size first: OM's header is
+// "OM", the mesh kind (T, Q or P), a version byte and three little-endian uint32 counts
+// (vertices, faces, edges). A vertex's position alone takes 12 bytes (three floats) and a
+// face or edge at least one byte, so a file smaller than that cannot hold what it declares.
+Status checkOmHeader(const std::string& path, std::uintmax_t size) {
+  unsigned char h[16] = {};
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return Error{printable(path) + ": cannot be opened for reading (permissions?)"};
+  const std::size_t got = std::fread(h, 1, sizeof h, f);
+  std::fclose(f);
+  if (got != sizeof h || h[0] != 'O' || h[1] != 'M') return Error{printable(path) + ": not an OM file (it does not start with 'OM')"};
+  if (h[2] != 'T' && h[2] != 'Q' && h[2] != 'P')
+    return Error{printable(path) + ": not an OM mesh (its kind byte is " + std::to_string(h[2]) + ", not T, Q or P)"};
+  const auto count = [&](int at) {
+    return std::uint64_t(h[at]) | std::uint64_t(h[at + 1]) << 8 | std::uint64_t(h[at + 2]) << 16 | std::uint64_t(h[at + 3]) << 24;
+  };
+  const std::uint64_t nv = count(4), nf = count(8), ne = count(12);
+  if (nv * 12 + nf + ne > size)
+    return Error{printable(path) + ": its header declares " + std::to_string(nv) + " vertices, " + std::to_string(nf) + " faces and " +
+                 std::to_string(ne) + " edges, more than its " + std::to_string(size) + " bytes can hold: the file is corrupt or cut short"};
+  return okStatus();
+}
+
 enum class ChildOutput { Complete, TimedOut, TooLarge };
 
 // Reads the child's whole output, giving up after the time limit or past `maxBytes`.
@@ -120,14 +145,7 @@ ChildOutput readAllWithin(int fd, std::string& out, std::chrono::steady_clock::t
 Result<Mesh> loadOm(const std::string& path, int seconds) {
   Result<std::uintmax_t> size = checkInputFile(path, InputKind::Mesh);
   if (!size) return Error{size.error()};
-  {
-    char magic[2] = {0, 0};
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) return Error{path + ": cannot be opened for reading (permissions?)"};
-    const std::size_t got = std::fread(magic, 1, 2, f);
-    std::fclose(f);
-    if (*size < 16 || got != 2 || magic[0] != 'O' || magic[1] != 'M') return Error{path + ": not an OM file (it does not start with 'OM')"};
-  }
+  if (Status header = checkOmHeader(path, *size); !header) return Error{header.error()};
   int fds[2];
   if (::pipe(fds) != 0) return Error{path + ": cannot start the OM reader (pipe: " + std::strerror(errno) + ")"};
   const pid_t pid = ::fork();

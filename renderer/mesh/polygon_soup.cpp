@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "renderer/mesh/mesh_builder.h"
+#include "renderer/core/printable.h"
 
 namespace npr {
 namespace {
@@ -71,7 +72,8 @@ bool PolygonSoup::addVertex(const glm::dvec3& v) {
 }
 
 void Warnings::add(std::string w) {
-  if (out_.size() < kMaxWarnings) out_.push_back(std::move(w));
+  // Warnings quote files (names, statements): escaped here, once, for every reader.
+  if (out_.size() < kMaxWarnings) out_.push_back(printableMessage(w));
   else ++dropped_;
 }
 

@@ -134,6 +134,26 @@ TEST(HostileInput, CorruptOmFileCostsAMessageNotTheProcess) {
   EXPECT_TRUE(contains(m.error(), "OM reader")) << m.error();
 }
 
+TEST(HostileInput, OmHeaderCountsBeyondTheFileAreRefusedBeforeOpenMeshReadsIt) {
+  // A 118-byte OM file whose header declares billions of vertices, faces and edges kept
+  // OpenMesh's reader (in its child) busy for seconds and gigabytes. The counts are checked
+  // against the file's size first, so no child is started.
+  TempDir d;
+  std::string bytes = "OMTB";
+  for (int k = 0; k < 3; ++k) bytes += std::string("\xf0\xff\xff\x0f", 4);
+  bytes += std::string(118 - bytes.size(), '\0');
+  const std::string path = d.write("absurd.om", bytes);
+  auto m = loadMesh(path);
+  ASSERT_FALSE(m);
+  EXPECT_TRUE(contains(m.error(), "header declares 268435440 vertices")) << m.error();
+  EXPECT_TRUE(contains(m.error(), "more than its 118 bytes can hold")) << m.error();
+  EXPECT_FALSE(contains(m.error(), "OM reader")) << "the child was started: " << m.error();
+  // A kind byte other than T, Q or P is not an OM mesh.
+  auto kind = loadMesh(d.write("kind.om", std::string("OMXB") + std::string(14, '\0')));
+  ASSERT_FALSE(kind);
+  EXPECT_TRUE(contains(kind.error(), "kind byte is 88")) << kind.error();
+}
+
 TEST(HostileInput, CoordinatesNearTheDoubleRangeStayFiniteAndKeepTheShape) {
   TempDir d;
   // Centring (lo + hi) / 2 and the radius overflowed to inf, and every position became NaN.

@@ -193,9 +193,19 @@ TEST(SettingsTable, EveryRowIsACommandLineOptionThatSetsIt) {
   }
 }
 
+// Control bytes (C0, DEL, C1) or bytes that are not UTF-8: what a terminal must never get.
 bool hasRawBytes(const std::string& message) {
-  for (unsigned char c : message)
-    if (c < 0x20 || c >= 0x7f) return true;
+  for (std::size_t i = 0; i < message.size();) {
+    const unsigned char c = static_cast<unsigned char>(message[i]);
+    if (c < 0x20 || c == 0x7f) return true;
+    if (c < 0x80) { ++i; continue; }
+    const std::size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 ? 2 : 0;
+    if (n == 0 || c > 0xF4 || i + n > message.size()) return true;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(message[i + k]) & 0xC0) != 0x80) return true;
+    if (c == 0xC2 && static_cast<unsigned char>(message[i + 1]) < 0xA0) return true;  // C1 controls
+    i += n;
+  }
   return false;
 }
 
