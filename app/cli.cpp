@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "app/settings/style_file.h"
+#include "app/man_page.h"
 #include "renderer/core/printable.h"
 
 namespace npr {
@@ -71,6 +72,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       ->envname("NPR_GPU");
   app.add_flag("--gl-info", o.glInfo, "Print the headless context's GL_VENDOR, GL_RENDERER, GL_VERSION and the EGL devices, and exit");
   app.add_flag("--version", o.version, "Print the version and exit");
+  bool manPageWanted = false;
+  app.add_flag("--man-page", manPageWanted, "Print the manual page (roff, generated from these options) and exit");
   app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)");
   app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
   app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
@@ -135,6 +138,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     return {std::nullopt, 0};
   } catch (const CLI::ParseError& e) {
     return {std::nullopt, fail(e.what())};
+  }
+  if (manPageWanted) {
+    std::printf("%s", manPage(app).c_str());
+    return {std::nullopt, 0};
   }
   if (naiveStencil)
     for (const char* key : {"stencil-scissor", "stencil-skip-empty", "stencil-masks-first"}) given[findSetting(key)] = "off";

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# End-to-end: the installed program. `cmake --install` into a temporary prefix, the prefix moved
+# elsewhere, then the moved binary run from another folder with no NPR_DATA_DIR: it must find its
+# data beside itself (--version says where), render every shipped style on its default model,
+# and (where this user may make a mount namespace) do so with the source tree hidden.
+set -u
+build="$1"; src="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fail=0
+unset NPR_DATA_DIR
+cmake --install "$build" --prefix "$tmp/prefix" >"$tmp/install.log" 2>&1 || { echo "FAIL: cmake --install"; cat "$tmp/install.log"; exit 1; }
+mv "$tmp/prefix" "$tmp/moved"
+viewer="$tmp/moved/bin/npr-viewer"
+data="$tmp/moved/share/npr-viewer"
+for f in share/man/man1/npr-viewer.1 share/applications/npr-viewer.desktop share/icons/hicolor/256x256/apps/npr-viewer.png \
+         share/npr-viewer/models/bunny.obj share/npr-viewer/palettes/crosshatch/crosshatch.palette; do
+  [ -s "$tmp/moved/$f" ] || { echo "FAIL: the install has no $f"; fail=1; }
+done
+grep -q '^\.SH OPTIONS' "$tmp/moved/share/man/man1/npr-viewer.1" || { echo "FAIL: the manual page has no OPTIONS"; fail=1; }
+grep -q 'tone\\-scale\|range\\-scale' "$tmp/moved/share/man/man1/npr-viewer.1" || { echo "FAIL: the manual page lacks the settings"; fail=1; }
+
+mkdir -p "$tmp/elsewhere" && cd "$tmp/elsewhere" || exit 1
+"$viewer" --version >"$tmp/version" 2>&1 || { echo "FAIL: --version"; fail=1; }
+grep -q "^npr-viewer [0-9]*\.[0-9]*\.[0-9]*" "$tmp/version" || { echo "FAIL: --version prints no version: $(cat "$tmp/version")"; fail=1; }
+grep -qx "data: $data" "$tmp/version" || { echo "FAIL: the moved tree does not use its own data: $(cat "$tmp/version")"; fail=1; }
+
+styles=0
+for style in "$data"/palettes/styles/*.style; do
+  name=$(basename "$style" .style)
+  if ! "$viewer" --headless --style "$name" --size 160x120 --screenshot "$tmp/elsewhere/$name.png" >"$tmp/out" 2>&1 || [ ! -s "$name.png" ]; then
+    echo "FAIL: the installed viewer cannot render the style $name:"; cat "$tmp/out"; fail=1
+  fi
+  styles=$((styles + 1))
+done
+[ "$styles" -ge 9 ] || { echo "FAIL: only $styles styles installed"; fail=1; }
+
+# The source tree out of reach: an empty folder mounted over it, in a mount namespace of our own.
+if unshare -rm true 2>/dev/null; then
+  unshare -rm bash -c "mount -t tmpfs none '$src' && '$viewer' --headless --style pencil --size 160x120 --screenshot '$tmp/hidden.png'" \
+    >"$tmp/out" 2>&1 || { echo "FAIL: with the source tree hidden:"; cat "$tmp/out"; fail=1; }
+  [ -s "$tmp/hidden.png" ] || { echo "FAIL: no frame with the source tree hidden"; fail=1; }
+  echo "rendered with the source tree hidden"
+else
+  echo "note: no mount namespace here (unshare -rm refused); the source tree stayed visible, --version showed it unused"
+fi
+echo "install: $styles styles rendered from the moved tree"
+exit $fail
