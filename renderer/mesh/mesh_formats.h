@@ -1,5 +1,5 @@
-// Our readers for the small mesh formats: PLY (ascii and binary, either byte order), OFF
-// (ascii) and STL (ascii and binary). OpenMesh's own readers crash, hang or exhaust memory on
+// Our readers for the mesh formats beside OBJ: PLY (ascii and binary, either byte order), OFF
+// (ascii), STL (ascii and binary) and glTF 2.0 (through tinygltf, every accessor checked here). OpenMesh's own readers crash, hang or exhaust memory on
 // small hostile files (a PLY property before its element, an OFF header alone, absurd element
 // counts), so every header is validated against the file's size before anything is allocated,
 // and OpenMesh only ever sees the triangles FaceBuilder accepted. Coordinates are read in
@@ -20,6 +20,8 @@ namespace npr {
 [[nodiscard]] Result<Mesh> parsePly(const std::string& name, std::string bytes);
 [[nodiscard]] Result<Mesh> parseOff(const std::string& name, std::string bytes);
 [[nodiscard]] Result<Mesh> parseStl(const std::string& name, std::string bytes);
+// glTF 2.0 (.gltf, .glb): the default scene flattened into one mesh (gltf_reader.cpp).
+[[nodiscard]] Result<Mesh> parseGltf(const std::string& name, std::string bytes);
 // OM is read from the file by OpenMesh in a child process; `seconds` bounds that process.
 [[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
 

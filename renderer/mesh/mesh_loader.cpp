@@ -51,8 +51,11 @@ Result<Mesh> loadMesh(const std::string& path) {
   else if (ext == ".ply") parse = parsePly;
   else if (ext == ".off") parse = parseOff;
   else if (ext == ".stl") parse = parseStl;
-  else if (ext != ".om") return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .ply, .off, .stl or .om)"};
-  if (std::optional<Mesh> cached = readMeshCache(path)) {
+  else if (ext == ".gltf" || ext == ".glb") parse = parseGltf;
+  else if (ext != ".om") return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .gltf, .glb, .ply, .off, .stl or .om)"};
+  // glTF names other files (buffers, images) that the cache's key does not cover.
+  const bool cacheable = parse != parseGltf;
+  if (std::optional<Mesh> cached = cacheable ? readMeshCache(path) : std::nullopt) {
     cached->report.load_ms = msSince(t0);
     return std::move(*cached);
   }
@@ -68,7 +71,7 @@ Result<Mesh> loadMesh(const std::string& path) {
   if (!m) return m;
   finalizeMesh(*m);
   m->report.load_ms = msSince(t0);
-  (void)writeMeshCache(path, *m);  // best effort: a read-only cache folder only costs the next load time
+  if (cacheable) (void)writeMeshCache(path, *m);  // best effort: a read-only cache folder only costs the next load time
   return m;
 }
 

@@ -1,0 +1,533 @@
+// The glTF 2.0 reader (.gltf with external or embedded buffers, .glb): see mesh_formats.h.
+// tinygltf (Debian's libtinygltf) parses the JSON and the GLB container; everything it hands
+// back is checked here before use (its validation is not trusted): every accessor and buffer
+// view against its buffer, every index against its vertex count, every node against cycles,
+// every number for finiteness. Files it asks for (buffers, images) pass the same input gate as
+// any model, through our file callbacks (never its path expansion), and images are decoded by
+// OpenImageIO (image_io.h), never by the loader's own decoder.
+//
+// This version flattens the file's default scene into one mesh: each node's meshes with the
+// node's world transform applied, materials mapped onto the OpenGL lighting model:
+//   ambient = diffuse = baseColorFactor.rgb * (1 - 0.75 metallic)   (a metal keeps some tone)
+//   specular = mix(0.04, baseColorFactor.rgb, metallic) * (1 - roughness)
+//   shininess = 2 / a^2 - 2 with a = roughness^2, clamped to GL's 0..128 (Phong's exponent
+//               for the same highlight width as a Beckmann lobe of that roughness)
+//   emission = emissiveFactor; baseColorTexture is the diffuse map (with KHR_texture_transform
+//   applied to the coordinates); KHR_materials_unlit emits the base colour (illum 0);
+//   alpha modes and double-sidedness are reported, drawn opaque and culled as every mesh.
+#include <tiny_gltf.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <optional>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "renderer/core/image_io.h"
+#include "renderer/core/input_file.h"
+#include "renderer/core/printable.h"
+#include "renderer/mesh/mesh_formats.h"
+#include "renderer/mesh/polygon_soup.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+namespace {
+
+// Bounds on what one file may make, whatever its counts say: instancing one mesh from many
+// nodes multiplies it, so the flattened scene is bounded, not only each accessor.
+constexpr std::uint64_t kMaxSceneTriangles = 50'000'000;
+constexpr int kMaxNodeDepth = 256;
+constexpr std::size_t kMaxTextures = 64;
+constexpr int kMaxTextureSide = 1024;
+
+// tinygltf's file callbacks: files go through our input gate; paths are joined, never
+// expanded by a shell (tinygltf's own expansion used wordexp, CVE-2022-3008).
+bool fileExists(const std::string& path, void*) { return static_cast<bool>(checkInputFile(path, InputKind::Mesh)); }
+std::string expandFilePath(const std::string& path, void*) { return path; }
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  Result<std::string> bytes = readInputFile(path, InputKind::Mesh);
+  if (!bytes) {
+    if (err) *err += bytes.error() + "\n";
+    return false;
+  }
+  out->assign(bytes->begin(), bytes->end());
+  return true;
+}
+bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "writing is not allowed\n";
+  return false;
+}
+// Images are kept as the file's bytes and decoded later by OpenImageIO.
+bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size, void*) {
+  if (size < 0) return false;
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = -1;
+  return true;
+}
+
+bool finite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+// A checked view of an accessor's elements: every element lies inside its buffer view and
+// buffer, whatever the offsets, stride and count claim.
+struct AccessorView {
+  const unsigned char* data = nullptr;
+  std::size_t stride = 0, count = 0;
+  int componentType = 0, components = 0;
+  bool normalized = false;
+
+  double component(std::size_t i, int c) const {
+    const unsigned char* p = data + i * stride;
+    switch (componentType) {
+      case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float f;
+        std::memcpy(&f, p + 4 * c, 4);
+        return f;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return normalized ? p[c] / 255.0 : p[c];
+      case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const double v = static_cast<signed char>(p[c]);
+        return normalized ? std::max(v / 127.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t v;
+        std::memcpy(&v, p + 2 * c, 2);
+        return normalized ? v / 65535.0 : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        std::int16_t v;
+        std::memcpy(&v, p + 2 * c, 2);
+        return normalized ? std::max(v / 32767.0, -1.0) : v;
+      }
+      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        std::uint32_t v;
+        std::memcpy(&v, p + 4 * c, 4);
+        return v;
+      }
+    }
+    return 0.0;
+  }
+  std::uint64_t index(std::size_t i) const { return static_cast<std::uint64_t>(component(i, 0)); }
+};
+
+int componentBytes(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+  }
+  return 0;
+}
+
+int typeComponents(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return 1;
+    case TINYGLTF_TYPE_VEC2: return 2;
+    case TINYGLTF_TYPE_VEC3: return 3;
+    case TINYGLTF_TYPE_VEC4: return 4;
+  }
+  return 0;
+}
+
+class GltfReader {
+ public:
+  GltfReader(const std::string& name, const tinygltf::Model& model, PolygonSoup& soup, LoadReport& report)
+      : name_(name), m_(model), soup_(soup), report_(report), warn_(report.warnings), faces_(soup, report, warn_) {}
+
+  Status read() {
+    for (const std::string& ext : m_.extensionsRequired)
+      if (ext != "KHR_texture_transform" && ext != "KHR_materials_unlit")
+        return fail("requires the extension " + printable(ext) + ", which this viewer does not read");
+    if (Status s = readMaterials(); !s) return s;
+    std::vector<int> roots;
+    if (!m_.scenes.empty()) {
+      const int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+      if (scene >= static_cast<int>(m_.scenes.size())) return fail("the default scene " + std::to_string(scene) + " does not exist");
+      roots = m_.scenes[static_cast<std::size_t>(scene)].nodes;
+    } else {
+      // No scene: every node that is no other node's child.
+      std::vector<char> child(m_.nodes.size(), 0);
+      for (const tinygltf::Node& n : m_.nodes)
+        for (int c : n.children)
+          if (c >= 0 && c < static_cast<int>(m_.nodes.size())) child[static_cast<std::size_t>(c)] = 1;
+      for (std::size_t i = 0; i < m_.nodes.size(); ++i)
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+    }
+    std::vector<char> visited(m_.nodes.size(), 0);
+    for (int root : roots)
+      if (Status s = visit(root, glm::dmat4(1.0), 0, visited); !s) return s;
+    if (skippedPrimitives_ > 0)
+      warn_.add(name_ + ": " + std::to_string(skippedPrimitives_) + " primitive(s) of points or lines not drawn (only triangles are)");
+    if (!m_.cameras.empty() || !m_.animations.empty() || !m_.skins.empty() || lights() > 0)
+      warn_.add(name_ + ": " + std::to_string(m_.cameras.size()) + " camera(s), " + std::to_string(lights()) + " light(s), " +
+                std::to_string(m_.animations.size()) + " animation(s) and " + std::to_string(m_.skins.size()) +
+                " skin(s) are not used yet: the scene is drawn in its rest pose with the viewer's camera and light");
+    report_.texture_coordinates = soup_.tracksTexcoords;
+    report_.vertex_colours = !soup_.colours.empty();
+    warn_.finish();
+    return okStatus();
+  }
+
+ private:
+  Error fail(const std::string& what) const { return Error{name_ + ": " + what}; }
+
+  std::size_t lights() const {
+    const auto it = m_.extensions.find("KHR_lights_punctual");
+    if (it == m_.extensions.end() || !it->second.Has("lights")) return 0;
+    const tinygltf::Value& l = it->second.Get("lights");
+    return l.IsArray() ? l.ArrayLen() : 0;
+  }
+
+  Result<AccessorView> accessor(int index, const std::string& what, std::initializer_list<int> types) const {
+    const std::string where = what + " (accessor " + std::to_string(index) + ")";
+    if (index < 0 || index >= static_cast<int>(m_.accessors.size())) return fail(where + " does not exist");
+    const tinygltf::Accessor& a = m_.accessors[static_cast<std::size_t>(index)];
+    if (a.sparse.isSparse) return fail(where + " is sparse, which this viewer does not read");
+    if (std::find(types.begin(), types.end(), a.type) == types.end()) return fail(where + " has the wrong type");
+    AccessorView v;
+    v.componentType = a.componentType;
+    v.components = typeComponents(a.type);
+    v.normalized = a.normalized;
+    const int cb = componentBytes(a.componentType);
+    if (cb == 0 || v.components == 0) return fail(where + " has an unknown component type");
+    v.count = a.count;
+    if (v.count == 0) return v;
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(m_.bufferViews.size()))
+      return fail(where + " names no buffer view (buffer view " + std::to_string(a.bufferView) + ")");
+    const tinygltf::BufferView& bv = m_.bufferViews[static_cast<std::size_t>(a.bufferView)];
+    if (bv.buffer < 0 || bv.buffer >= static_cast<int>(m_.buffers.size()))
+      return fail(where + ": its buffer view names buffer " + std::to_string(bv.buffer) + ", which does not exist");
+    const std::vector<unsigned char>& buffer = m_.buffers[static_cast<std::size_t>(bv.buffer)].data;
+    const std::uint64_t element = std::uint64_t(cb) * std::uint64_t(v.components);
+    const std::uint64_t stride = bv.byteStride ? bv.byteStride : element;
+    if (stride < element || stride > 252) return fail(where + ": byte stride " + std::to_string(bv.byteStride) + " is invalid");
+    // All in 64 bits, and the count bounded by the view before multiplying.
+    const std::uint64_t viewEnd = std::uint64_t(bv.byteOffset) + std::uint64_t(bv.byteLength);
+    if (bv.byteOffset > buffer.size() || bv.byteLength > buffer.size() || viewEnd > buffer.size())
+      return fail(where + ": its buffer view (bytes " + std::to_string(bv.byteOffset) + " + " + std::to_string(bv.byteLength) +
+                  ") runs past its buffer of " + std::to_string(buffer.size()) + " bytes");
+    if (a.byteOffset > bv.byteLength || std::uint64_t(a.count) > bv.byteLength / stride + 1 ||
+        std::uint64_t(a.byteOffset) + (std::uint64_t(a.count) - 1) * stride + element > bv.byteLength)
+      return fail(where + ": " + std::to_string(a.count) + " elements from byte " + std::to_string(a.byteOffset) +
+                  " run past its buffer view of " + std::to_string(bv.byteLength) + " bytes");
+    v.data = buffer.data() + bv.byteOffset + a.byteOffset;
+    v.stride = static_cast<std::size_t>(stride);
+    return v;
+  }
+
+  Status readMaterials() {
+    soup_.materials.clear();
+    for (std::size_t i = 0; i < m_.materials.size(); ++i) {
+      const tinygltf::Material& g = m_.materials[i];
+      const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+      MeshMaterial mat;
+      mat.name = g.name.empty() ? "material " + std::to_string(i) : g.name;
+      if (pbr.baseColorFactor.size() != 4 || !finite(pbr.baseColorFactor) || g.emissiveFactor.size() != 3 || !finite(g.emissiveFactor) ||
+          !std::isfinite(pbr.metallicFactor) || !std::isfinite(pbr.roughnessFactor))
+        return fail("material " + std::to_string(i) + " has a non-finite or malformed factor");
+      const glm::vec3 base = glm::clamp(glm::vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]), 0.0f, 1.0f);
+      const float metallic = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
+      const float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
+      mat.diffuse = base * (1.0f - 0.75f * metallic);
+      mat.ambient = mat.diffuse;
+      mat.specular = glm::mix(glm::vec3(0.04f), base, metallic) * (1.0f - roughness);
+      const float a = std::max(roughness * roughness, 1e-3f);
+      mat.shininess = std::clamp(2.0f / (a * a) - 2.0f, 0.0f, 128.0f);
+      if (mat.shininess < 1.0f) mat.specular = glm::vec3(0.0f);  // GL would light the whole side
+      mat.emission = glm::clamp(glm::vec3(g.emissiveFactor[0], g.emissiveFactor[1], g.emissiveFactor[2]), 0.0f, 1.0f);
+      mat.opacity = std::clamp(static_cast<float>(pbr.baseColorFactor[3]), 0.0f, 1.0f);
+      if (g.extensions.count("KHR_materials_unlit")) mat.illum = 0;
+      if (pbr.baseColorTexture.index >= 0) {
+        if (pbr.baseColorTexture.texCoord != 0)
+          warn_.add(name_ + ": material " + std::to_string(i) + "'s base colour uses texture coordinates " +
+                    std::to_string(pbr.baseColorTexture.texCoord) + "; only set 0 is read");
+        mat.diffuseMap = texture(pbr.baseColorTexture.index);
+        transforms_.push_back(textureTransform(pbr.baseColorTexture.extensions));
+      } else {
+        transforms_.push_back(glm::mat3(1.0f));
+      }
+      if (g.alphaMode == "BLEND" || g.alphaMode == "MASK")
+        warn_.add(name_ + ": material '" + printable(mat.name) + "' is " + (g.alphaMode == "BLEND" ? "blended" : "masked") + "; drawn opaque");
+      soup_.materials.push_back(std::move(mat));
+    }
+    // The default material for primitives that name none, last.
+    MeshMaterial fallback;
+    fallback.name = "(default)";
+    fallback.fromLightingState = true;
+    soup_.materials.push_back(fallback);
+    transforms_.push_back(glm::mat3(1.0f));
+    report_.materials = m_.materials.size();
+    return okStatus();
+  }
+
+  // KHR_texture_transform as a 3x3 matrix on (u, v, 1): translation * rotation * scale.
+  glm::mat3 textureTransform(const tinygltf::ExtensionMap& ext) {
+    const auto it = ext.find("KHR_texture_transform");
+    if (it == ext.end() || !it->second.IsObject()) return glm::mat3(1.0f);
+    const tinygltf::Value& t = it->second;
+    auto number = [](const tinygltf::Value& v, double fallback) { return v.IsNumber() && std::isfinite(v.GetNumberAsDouble()) ? v.GetNumberAsDouble() : fallback; };
+    auto pair = [&](const char* key, double fallback) {
+      glm::dvec2 out(fallback);
+      if (t.Has(key) && t.Get(key).IsArray() && t.Get(key).ArrayLen() == 2)
+        out = {number(t.Get(key).Get(0), fallback), number(t.Get(key).Get(1), fallback)};
+      return out;
+    };
+    const glm::dvec2 offset = pair("offset", 0.0), scale = pair("scale", 1.0);
+    const double r = t.Has("rotation") ? number(t.Get("rotation"), 0.0) : 0.0;
+    const glm::mat3 T(1, 0, 0, 0, 1, 0, float(offset.x), float(offset.y), 1);
+    const glm::mat3 R(float(std::cos(r)), float(-std::sin(r)), 0, float(std::sin(r)), float(std::cos(r)), 0, 0, 0, 1);
+    const glm::mat3 S(float(scale.x), 0, 0, 0, float(scale.y), 0, 0, 0, 1);
+    return T * R * S;
+  }
+
+  // The decoded image of texture `index` in soup_.textures, or -1 (reported missing).
+  int texture(int index) {
+    if (index < 0 || index >= static_cast<int>(m_.textures.size())) {
+      warn_.add(name_ + ": texture " + std::to_string(index) + " does not exist");
+      return -1;
+    }
+    const int source = m_.textures[static_cast<std::size_t>(index)].source;
+    if (const auto it = decoded_.find(source); it != decoded_.end()) return it->second;
+    int& slot = decoded_[source];
+    slot = -1;
+    if (source < 0 || source >= static_cast<int>(m_.images.size())) {
+      warn_.add(name_ + ": texture " + std::to_string(index) + " names image " + std::to_string(source) + ", which does not exist");
+      return -1;
+    }
+    const tinygltf::Image& img = m_.images[static_cast<std::size_t>(source)];
+    const std::string label = img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(source) : img.uri;
+    if (soup_.textures.size() >= kMaxTextures) {
+      warn_.add(name_ + ": more than " + std::to_string(kMaxTextures) + " images; '" + printable(label) + "' is not used");
+      return -1;
+    }
+    if (img.image.empty()) {
+      report_.textures_missing.push_back(label);
+      warn_.add(name_ + ": image '" + printable(label) + "' could not be read");
+      return -1;
+    }
+    // OpenImageIO reads files: the bytes go to a private temporary file with the extension
+    // their type implies, then through the same image path as every palette and texture.
+    const std::string ext = img.mimeType == "image/jpeg" || label.find(".jp") != std::string::npos ? ".jpg" : ".png";
+    const std::string temp = (fs::temp_directory_path() / ("npr-gltf-" + std::to_string(::getpid()) + "-" + std::to_string(source) + ext)).string();
+    Result<ImageRGBA8> decoded = Error{"cannot write a temporary file"};
+    if (std::FILE* f = std::fopen(temp.c_str(), "wb")) {
+      const bool written = std::fwrite(img.image.data(), 1, img.image.size(), f) == img.image.size();
+      std::fclose(f);
+      if (written) decoded = loadImage(temp, {kMaxTextureSide, kMaxTextureSide});
+      std::remove(temp.c_str());
+    }
+    if (!decoded) {
+      report_.textures_missing.push_back(label);
+      warn_.add(name_ + ": image '" + printable(label) + "' cannot be decoded; its material is drawn without it");
+      return -1;
+    }
+    slot = static_cast<int>(soup_.textures.size());
+    soup_.textures.push_back({label, std::move(*decoded)});
+    report_.textures_loaded.push_back(label);
+    return slot;
+  }
+
+  Result<glm::dmat4> localTransform(const tinygltf::Node& n, int index) const {
+    if (!n.matrix.empty()) {
+      if (n.matrix.size() != 16 || !finite(n.matrix)) return fail("node " + std::to_string(index) + " has a malformed or non-finite matrix");
+      return glm::make_mat4(n.matrix.data());
+    }
+    glm::dmat4 t(1.0);
+    if (!n.translation.empty()) {
+      if (n.translation.size() != 3 || !finite(n.translation)) return fail("node " + std::to_string(index) + " has a malformed translation");
+      t = glm::translate(t, glm::dvec3(n.translation[0], n.translation[1], n.translation[2]));
+    }
+    if (!n.rotation.empty()) {
+      if (n.rotation.size() != 4 || !finite(n.rotation)) return fail("node " + std::to_string(index) + " has a malformed rotation");
+      glm::dquat q(n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]);
+      const double len = glm::length(q);
+      if (!(len > 1e-12)) return fail("node " + std::to_string(index) + " has a zero rotation quaternion");
+      t = t * glm::mat4_cast(q / len);
+    }
+    if (!n.scale.empty()) {
+      if (n.scale.size() != 3 || !finite(n.scale)) return fail("node " + std::to_string(index) + " has a malformed scale");
+      t = glm::scale(t, glm::dvec3(n.scale[0], n.scale[1], n.scale[2]));
+    }
+    return t;
+  }
+
+  Status visit(int index, const glm::dmat4& parent, int depth, std::vector<char>& visited) {
+    if (index < 0 || index >= static_cast<int>(m_.nodes.size())) return fail("node " + std::to_string(index) + " does not exist");
+    if (visited[static_cast<std::size_t>(index)])
+      return fail("node " + std::to_string(index) + " is reached twice (a cycle, or a node with two parents)");
+    if (depth > kMaxNodeDepth) return fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
+    visited[static_cast<std::size_t>(index)] = 1;
+    const tinygltf::Node& n = m_.nodes[static_cast<std::size_t>(index)];
+    Result<glm::dmat4> local = localTransform(n, index);
+    if (!local) return Error{local.error()};
+    const glm::dmat4 world = parent * *local;
+    if (n.mesh >= 0) {
+      if (n.mesh >= static_cast<int>(m_.meshes.size())) return fail("node " + std::to_string(index) + " names mesh " + std::to_string(n.mesh) + ", which does not exist");
+      const tinygltf::Mesh& mesh = m_.meshes[static_cast<std::size_t>(n.mesh)];
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+        if (Status s = primitive(mesh.primitives[p], world, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(p)); !s) return s;
+    }
+    for (int c : n.children)
+      if (Status s = visit(c, world, depth + 1, visited); !s) return s;
+    return okStatus();
+  }
+
+  Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where) {
+    if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP && prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+      ++skippedPrimitives_;
+      return okStatus();
+    }
+    const auto pos = prim.attributes.find("POSITION");
+    if (pos == prim.attributes.end()) return fail(where + " has no POSITION");
+    Result<AccessorView> positions = accessor(pos->second, where + " POSITION", {TINYGLTF_TYPE_VEC3});
+    if (!positions) return Error{positions.error()};
+    if (positions->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !positions->normalized)
+      warn_.add(name_ + ": " + where + " has integer positions (KHR_mesh_quantization); read as they are stored");
+    std::optional<AccessorView> uv, colour;
+    if (const auto it = prim.attributes.find("TEXCOORD_0"); it != prim.attributes.end()) {
+      Result<AccessorView> a = accessor(it->second, where + " TEXCOORD_0", {TINYGLTF_TYPE_VEC2});
+      if (!a) return Error{a.error()};
+      if (a->count != positions->count) return fail(where + ": TEXCOORD_0 has " + std::to_string(a->count) + " elements for " + std::to_string(positions->count) + " positions");
+      uv = *a;
+    }
+    if (const auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end()) {
+      Result<AccessorView> a = accessor(it->second, where + " COLOR_0", {TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4});
+      if (!a) return Error{a.error()};
+      if (a->count != positions->count) return fail(where + ": COLOR_0 has " + std::to_string(a->count) + " elements for " + std::to_string(positions->count) + " positions");
+      colour = *a;
+    }
+    std::optional<AccessorView> indices;
+    if (prim.indices >= 0) {
+      Result<AccessorView> a = accessor(prim.indices, where + " indices", {TINYGLTF_TYPE_SCALAR});
+      if (!a) return Error{a.error()};
+      if (a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+          a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        return fail(where + ": indices must be unsigned integers");
+      indices = *a;
+    }
+    const std::size_t corners = indices ? indices->count : positions->count;
+    const std::uint64_t triangles = prim.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : (corners >= 3 ? corners - 2 : 0);
+    sceneTriangles_ += triangles;
+    if (sceneTriangles_ > kMaxSceneTriangles)
+      return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
+    int material = static_cast<int>(soup_.materials.size()) - 1;  // the default
+    if (prim.material >= 0) {
+      if (prim.material >= static_cast<int>(m_.materials.size())) return fail(where + " names material " + std::to_string(prim.material) + ", which does not exist");
+      material = prim.material;
+    }
+
+    // Vertices, in world space; a mirroring transform reverses the winding.
+    const std::size_t base = soup_.vertices.size();
+    for (std::size_t i = 0; i < positions->count; ++i) {
+      const glm::dvec4 p = world * glm::dvec4(positions->component(i, 0), positions->component(i, 1), positions->component(i, 2), 1.0);
+      if (!soup_.addVertex(glm::dvec3(p))) warn_.add(name_ + ": " + where + " vertex " + std::to_string(i) + ": non-finite position; faces using it are skipped");
+    }
+    const bool textured = uv && soup_.materials[static_cast<std::size_t>(material)].diffuseMap >= 0;
+    if (textured || soup_.tracksTexcoords) {
+      if (!soup_.tracksTexcoords) {
+        soup_.trackTexcoords();
+        soup_.texcoords.resize(base, glm::vec2(0.0f));
+      }
+      const glm::mat3& t = transforms_[static_cast<std::size_t>(material)];
+      for (std::size_t i = 0; i < positions->count; ++i) {
+        glm::vec2 c(0.0f);
+        if (textured) {
+          const glm::vec3 u = t * glm::vec3(float(uv->component(i, 0)), float(uv->component(i, 1)), 1.0f);
+          c = std::isfinite(u.x) && std::isfinite(u.y) ? glm::vec2(u.x, 1.0f - u.y) : glm::vec2(0.0f);  // glTF's v runs down
+        }
+        soup_.texcoords.push_back(c);
+      }
+    }
+    if (colour || !soup_.colours.empty()) {
+      soup_.colours.resize(base, glm::vec3(1.0f));
+      for (std::size_t i = 0; i < positions->count; ++i) {
+        glm::vec3 c(1.0f);
+        if (colour)
+          for (int k = 0; k < 3; ++k) {
+            const double v = colour->component(i, k);
+            c[k] = std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : 1.0f;
+          }
+        soup_.colours.push_back(c);
+      }
+    }
+    if (soup_.materials.size() > 1 && !soup_.tracksMaterials) soup_.trackMaterials();
+
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    auto corner = [&](std::size_t k) -> long long {
+      const std::uint64_t i = indices ? indices->index(k) : k;
+      return i < positions->count ? static_cast<long long>(base + i) : static_cast<long long>(soup_.vertices.size() + i);  // out of range: FaceBuilder refuses it, named
+    };
+    std::vector<long long> face(3);
+    std::vector<int> tex(3);
+    const auto add = [&](long long a, long long b, long long c, std::size_t number) {
+      face = mirrored ? std::vector<long long>{a, c, b} : std::vector<long long>{a, b, c};
+      for (int k = 0; k < 3; ++k) tex[static_cast<std::size_t>(k)] = textured ? static_cast<int>(face[static_cast<std::size_t>(k)]) : -1;
+      faces_.add(face, tex, static_cast<std::uint16_t>(material), (where + " triangle").c_str(), number);
+    };
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
+      for (std::size_t t = 0; t + 2 < corners + 0 && t / 3 < triangles; t += 3) add(corner(t), corner(t + 1), corner(t + 2), t / 3);
+    } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+      for (std::size_t t = 0; t + 2 < corners; ++t)
+        if (t % 2 == 0) add(corner(t), corner(t + 1), corner(t + 2), t);
+        else add(corner(t + 1), corner(t), corner(t + 2), t);
+    } else {
+      for (std::size_t t = 1; t + 1 < corners; ++t) add(corner(0), corner(t), corner(t + 1), t - 1);
+    }
+    return okStatus();
+  }
+
+  const std::string& name_;
+  const tinygltf::Model& m_;
+  PolygonSoup& soup_;
+  LoadReport& report_;
+  Warnings warn_;
+  FaceBuilder faces_;
+  std::vector<glm::mat3> transforms_;  // per material: its base colour map's texture transform
+  std::map<int, int> decoded_;         // glTF image -> soup_.textures
+  std::uint64_t sceneTriangles_ = 0;
+  std::size_t skippedPrimitives_ = 0;
+};
+
+}  // namespace
+
+Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keepImageBytes, nullptr);
+  loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, nullptr});
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
+  tinygltf::Model model;
+  std::string err, warn;
+  const std::string baseDir = fs::path(name).parent_path().string();
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  if (bytes.size() > std::size_t(std::numeric_limits<unsigned int>::max())) return Error{printable(name) + ": too large for the glTF reader"};
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                       static_cast<unsigned int>(bytes.size()), baseDir)
+                         : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned int>(bytes.size()), baseDir);
+  bytes = std::string();
+  if (!ok) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    return Error{name + ": not a readable glTF 2.0 file: " + printable(err.empty() ? std::string("the loader gave no reason") : err, 300)};
+  }
+  LoadReport report;
+  report.file = name;
+  PolygonSoup soup;
+  GltfReader reader(name, model, soup, report);
+  if (Status s = reader.read(); !s) return Error{s.error()};
+  model = tinygltf::Model();  // the buffers go before the mesh is built (peak memory)
+  return buildMesh(std::move(soup), std::move(report));
+}
+
+}  // namespace npr

@@ -1,0 +1,211 @@
+// CPU tier: the glTF 2.0 reader (renderer/mesh/gltf_reader.cpp). Hostile files the tests
+// write (each case refused with a message naming the file and what is wrong, never a crash or
+// a hang), and the Khronos sample models Debian's assimp-testmodels ships.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "renderer/mesh/mesh_loader.h"
+#include "support/test_util.h"
+
+namespace npr {
+namespace {
+
+using test::TempDir;
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned v = bytes[i] << 16 | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0) | (i + 2 < bytes.size() ? bytes[i + 2] : 0);
+    out += table[v >> 18 & 63];
+    out += table[v >> 12 & 63];
+    out += i + 1 < bytes.size() ? table[v >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? table[v & 63] : '=';
+  }
+  return out;
+}
+
+// A buffer with a unit right triangle's three float positions (bytes 0..35) and the indices
+// 0 1 2 as unsigned shorts (bytes 36..41, padded to 44).
+std::vector<unsigned char> triangleBuffer(float z = 0.0f) {
+  const float p[9] = {0, 0, z, 1, 0, z, 0, 1, z};
+  const std::uint16_t idx[4] = {0, 1, 2, 0};
+  std::vector<unsigned char> b(44);
+  std::memcpy(b.data(), p, 36);
+  std::memcpy(b.data() + 36, idx, 8);
+  return b;
+}
+
+// A glTF document around that buffer; the pieces can be replaced to make each hostile case.
+struct Doc {
+  std::string accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                              {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}])";
+  std::string bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}])";
+  std::string nodes = R"([{"mesh":0}])";
+  std::string scenes = R"([{"nodes":[0]}])";
+  std::string meshes = R"([{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}])";
+  std::string materials = "[]";
+  std::string extra;
+  std::vector<unsigned char> buffer = triangleBuffer();
+  std::string text() const {
+    return R"({"asset":{"version":"2.0"},"scene":0,"scenes":)" + scenes + R"(,"nodes":)" + nodes + R"(,"meshes":)" + meshes +
+           R"(,"materials":)" + materials + R"(,"accessors":)" + accessors + R"(,"bufferViews":)" + bufferViews +
+           R"(,"buffers":[{"byteLength":)" + std::to_string(buffer.size()) +
+           R"(,"uri":"data:application/octet-stream;base64,)" + base64(buffer) + R"("}])" + extra + "}";
+  }
+};
+
+Result<Mesh> load(const TempDir& d, const Doc& doc, const std::string& name = "case.gltf") { return loadMesh(d.write(name, doc.text())); }
+
+TEST(Gltf, AWrittenTriangleLoads) {
+  TempDir d;
+  auto m = load(d, Doc());
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 1u);
+  EXPECT_EQ(m->positions.size(), 3u);
+}
+
+TEST(Gltf, NodeTransformsPlaceTheMeshesAndMirroringKeepsTheWinding) {
+  TempDir d;
+  // Two instances of the triangle, one moved 10 along x and one mirrored in x: the flattened
+  // mesh spans both, and both face +z (the mirror reverses the winding back).
+  Doc doc;
+  doc.nodes = R"([{"children":[1,2]},{"mesh":0,"translation":[10,0,0]},{"mesh":0,"scale":[-1,1,1]}])";
+  auto m = load(d, doc);
+  ASSERT_TRUE(m) << m.error();
+  ASSERT_EQ(m->triangleCount(), 2u);
+  for (const glm::vec3& n : m->faceNormals) EXPECT_GT(n.z, 0.99f) << "a triangle faces away";
+  float minX = 1e9f, maxX = -1e9f;
+  for (const glm::vec3& p : m->positions) minX = std::min(minX, p.x), maxX = std::max(maxX, p.x);
+  // Normalised to the unit sphere: x spans -1..11 in the file, 12 units, about 2 radii here.
+  EXPECT_GT(maxX - minX, 1.9f);
+}
+
+TEST(Gltf, HostileFilesAreRefusedWithAMessageNamingWhatIsWrong) {
+  struct Case {
+    const char* what;
+    std::function<void(Doc&)> edit;
+    const char* expected;
+  };
+  const std::vector<Case> cases = {
+      {"accessor past its buffer view", [](Doc& d) { d.accessors = R"([{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3"},{"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}])"; },
+       "run past its buffer view"},
+      {"buffer view past its buffer", [](Doc& d) { d.bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":600}])"; },
+       "runs past its buffer"},
+      {"missing buffer", [](Doc& d) { d.bufferViews = R"([{"buffer":3,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}])"; },
+       "buffer 3, which does not exist"},
+      {"absurd count", [](Doc& d) { d.accessors = R"([{"bufferView":0,"componentType":5126,"count":4000000000,"type":"VEC3"},{"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}])"; },
+       "elements from byte"},
+      {"recursive nodes", [](Doc& d) { d.nodes = R"([{"mesh":0,"children":[1]},{"children":[0]}])"; }, "reached twice"},
+      {"a node naming itself", [](Doc& d) { d.nodes = R"([{"mesh":0,"children":[0]}])"; }, "reached twice"},
+      {"a missing node", [](Doc& d) { d.scenes = R"([{"nodes":[7]}])"; }, "node 7 does not exist"},
+      {"NaN in a matrix", [](Doc& d) { d.nodes = R"([{"mesh":0,"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1e999]}])"; }, ""},
+      {"a missing mesh", [](Doc& d) { d.nodes = R"([{"mesh":5}])"; }, "mesh 5, which does not exist"},
+      {"a missing accessor", [](Doc& d) { d.meshes = R"([{"primitives":[{"attributes":{"POSITION":9}}]}])"; }, "accessor 9) does not exist"},
+      {"positions of the wrong type", [](Doc& d) { d.meshes = R"([{"primitives":[{"attributes":{"POSITION":1}}]}])"; }, "wrong type"},
+      {"signed indices", [](Doc& d) { d.accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},{"bufferView":1,"componentType":5122,"count":3,"type":"SCALAR"}])"; },
+       "unsigned integers"},
+      // tinygltf reads a non-array "nodes" as no nodes: the scene then names a missing one.
+      {"wrong JSON types", [](Doc& d) { d.nodes = R"({"mesh":"zero"})"; }, "node 0 does not exist"},
+      {"a string where a number belongs", [](Doc& d) { d.accessors = R"([{"bufferView":0,"componentType":"float","count":3,"type":"VEC3"},{"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}])"; }, "glTF"},
+      {"a stride past the element", [](Doc& d) { d.bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36,"byteStride":4},{"buffer":0,"byteOffset":36,"byteLength":6}])"; },
+       ""},
+      {"a required extension", [](Doc& d) { d.extra = R"(,"extensionsRequired":["KHR_draco_mesh_compression"],"extensionsUsed":["KHR_draco_mesh_compression"])"; },
+       "requires the extension KHR_draco_mesh_compression"},
+  };
+  TempDir d;
+  for (const Case& c : cases) {
+    Doc doc;
+    c.edit(doc);
+    auto m = load(d, doc, "hostile.gltf");
+    ASSERT_FALSE(m) << c.what << ": loaded " << m->triangleCount() << " triangles";
+    EXPECT_TRUE(contains(m.error(), "hostile.gltf")) << c.what << ": " << m.error();
+    EXPECT_TRUE(contains(m.error(), c.expected)) << c.what << ": " << m.error();
+  }
+}
+
+TEST(Gltf, IndicesOutOfRangeSkipTheirTrianglesNamed) {
+  TempDir d;
+  Doc doc;
+  doc.buffer = triangleBuffer();
+  const std::uint16_t bad[3] = {0, 1, 7};
+  std::memcpy(doc.buffer.data() + 36, bad, 6);
+  auto m = load(d, doc);
+  ASSERT_FALSE(m);  // its only triangle is refused: nothing to draw
+  EXPECT_TRUE(contains(m.error(), "no faces") || contains(m.error(), "nothing to draw")) << m.error();
+}
+
+TEST(Gltf, NonFinitePositionsSkipTheirFaces) {
+  TempDir d;
+  Doc doc;
+  doc.buffer = triangleBuffer(std::nanf(""));
+  auto m = load(d, doc);
+  ASSERT_FALSE(m);
+}
+
+const std::string kSamples = "/usr/share/assimp/models/glTF2/";
+
+TEST(Gltf, KhronosBoxTexturedLoadsFromEveryContainer) {
+  for (const char* file : {"BoxTextured-glTF-Binary/BoxTextured.glb", "BoxTextured-glTF/BoxTextured.gltf",
+                           "BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+    auto m = loadMesh(kSamples + file);
+    ASSERT_TRUE(m) << file << ": " << m.error();
+    EXPECT_EQ(m->triangleCount(), 12u) << file;
+    EXPECT_EQ(m->report.textures_loaded.size(), 1u) << file;
+    EXPECT_EQ(m->textures.size(), 1u) << file;
+    EXPECT_TRUE(m->report.texture_coordinates) << file;
+    ASSERT_FALSE(m->materials.empty());
+    EXPECT_EQ(m->materials.front().diffuseMap, 0) << file;
+  }
+}
+
+TEST(Gltf, KhronosEngineHasItsPartsAndMaterials) {
+  auto m = loadMesh(kSamples + "2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_GT(m->triangleCount(), 100000u);
+  EXPECT_GE(m->report.materials, 2u);
+  EXPECT_FALSE(m->faceMaterials.empty());
+}
+
+TEST(Gltf, KhronosBrokenSamplesAreRefusedOrReadWithWarnings) {
+  // Each either loads (with what it could read) or is refused with a message; none crashes.
+  for (const char* file : {"RecursiveNodes/RecursiveNodes.gltf", "IndexOutOfRange/IndexOutOfRange.gltf",
+                           "IndexOutOfRange/AllIndicesOutOfRange.gltf", "MissingBin/BoxTextured.gltf",
+                           "BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "wrongTypes/badArray.gltf",
+                           "wrongTypes/badNumber.gltf", "wrongTypes/badObject.gltf", "wrongTypes/badString.gltf",
+                           "wrongTypes/badUint.gltf", "wrongTypes/badExtension.gltf", "SchemaFailures/sceneWrongType.gltf",
+                           "IncorrectVertexArrays/Cube.gltf", "issue_3269/texcoord_crash.gltf", "draco/2CylinderEngine.gltf",
+                           "TestNoRootNode/NoScene.gltf", "TestNoRootNode/SceneWithoutNodes.gltf"}) {
+    auto m = loadMesh(kSamples + file);
+    if (!m) {
+      EXPECT_TRUE(contains(m.error(), file)) << file << ": " << m.error();
+    }
+  }
+  auto recursive = loadMesh(kSamples + "RecursiveNodes/RecursiveNodes.gltf");
+  ASSERT_FALSE(recursive);
+  EXPECT_TRUE(contains(recursive.error(), "reached twice")) << recursive.error();
+  auto missing = loadMesh(kSamples + "MissingBin/BoxTextured.gltf");
+  ASSERT_FALSE(missing);
+  EXPECT_TRUE(contains(missing.error(), "BoxTextured0.bin") || contains(missing.error(), ".bin")) << missing.error();
+}
+
+TEST(Gltf, TextureTransformMovesTheCoordinates) {
+  auto m = loadMesh(kSamples + "textureTransform/TextureTransformTest.gltf");
+  ASSERT_TRUE(m) << m.error();
+  ASSERT_TRUE(m->report.texture_coordinates);
+  // The sample's planes use offsets, rotations and scales: the coordinates leave 0..1.
+  bool outside = false;
+  for (const glm::vec2& t : m->texcoords) outside = outside || t.x < -0.01f || t.x > 1.01f || t.y < -0.01f || t.y > 1.01f;
+  EXPECT_TRUE(outside);
+}
+
+}  // namespace
+}  // namespace npr
