@@ -297,6 +297,7 @@ Status Renderer::drawPart(FrameView& view, const Model* model, FrameContext& fra
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
+  programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
@@ -324,6 +325,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
 Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSettings& s, SelectionOutput output,
                                  const glm::ivec4& viewport) {
   stats_.startFrame();
+  programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   if (Status st = prepare(s); !st) return st;
   FrameView frame = frameView(camera, s, viewport, false);
@@ -338,6 +340,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
 
 Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   stats_.startFrame();
+  programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1 || scene_.empty()) return okStatus();
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
@@ -358,6 +361,7 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
 
 Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput output, const glm::ivec4& viewport) {
   stats_.startFrame();
+  programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
   clearViewport(viewport);
   Status result = okStatus();

@@ -17,11 +17,25 @@ Result<ShaderProgram*> ProgramCache::get(const ProgramVariant& variant, int& bui
   const ProgramSource src = programSource(variant);
   std::string key = keyOf(src);
   auto it = programs_.find(key);
-  if (it != programs_.end()) return &it->second;
+  if (it != programs_.end()) {
+    it->second.lastUse = frame_;
+    return &it->second.program;
+  }
   Result<ShaderProgram> p = ShaderProgram::build(src.vertexFile, src.fragmentFile, src.defines, src.geometryFile);
   if (!p) return Error{p.error()};
   ++builds;
-  return &programs_.emplace(std::move(key), std::move(*p)).first->second;
+  return &programs_.emplace(std::move(key), Entry{std::move(*p), frame_}).first->second.program;
+}
+
+void ProgramCache::startFrame() {
+  ++frame_;
+  while (programs_.size() > capacity_) {
+    auto oldest = programs_.begin();
+    for (auto it = programs_.begin(); it != programs_.end(); ++it)
+      if (it->second.lastUse < oldest->second.lastUse) oldest = it;
+    programs_.erase(oldest);
+    ++evictions_;
+  }
 }
 
 }  // namespace npr::gl

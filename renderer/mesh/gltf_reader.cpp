@@ -66,11 +66,30 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
   if (err) *err += "writing is not allowed\n";
   return false;
 }
-// Images are kept as the file's bytes and decoded later by OpenImageIO.
-bool keepImageBytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int, const unsigned char* bytes, int size, void*) {
-  if (size < 0) return false;
-  image->image.assign(bytes, bytes + size);
+// Images are kept as the file's bytes and decoded later by OpenImageIO. For an image in a
+// buffer view tinygltf hands over &buffer[byteOffset] with byteLength unchecked (found by
+// fuzz_gltf: a heap overflow), so the view is checked here and the bytes copied from the
+// model's buffer (`user`: the model being loaded; its buffers and views are read by then).
+bool keepImageBytes(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int, const unsigned char* bytes,
+                    int size, void* user) {
+  const auto* model = static_cast<const tinygltf::Model*>(user);
   image->width = image->height = -1;
+  if (image->bufferView >= 0) {
+    const auto refuse = [&](const std::string& why) {
+      if (err) *err += "image " + std::to_string(index) + ": " + why + "\n";
+      return false;
+    };
+    if (!model || image->bufferView >= static_cast<int>(model->bufferViews.size())) return refuse("its buffer view does not exist");
+    const tinygltf::BufferView& bv = model->bufferViews[static_cast<std::size_t>(image->bufferView)];
+    if (bv.buffer < 0 || bv.buffer >= static_cast<int>(model->buffers.size())) return refuse("its buffer does not exist");
+    const std::vector<unsigned char>& data = model->buffers[static_cast<std::size_t>(bv.buffer)].data;
+    if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset) return refuse("its buffer view runs past its buffer");
+    image->image.assign(data.begin() + static_cast<std::ptrdiff_t>(bv.byteOffset),
+                        data.begin() + static_cast<std::ptrdiff_t>(bv.byteOffset + bv.byteLength));
+    return true;
+  }
+  if (size < 0 || !bytes) return false;
+  image->image.assign(bytes, bytes + size);
   return true;
 }
 
@@ -505,10 +524,10 @@ class GltfReader {
 
 Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
   tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(keepImageBytes, nullptr);
+  tinygltf::Model model;
+  loader.SetImageLoader(keepImageBytes, &model);
   loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, nullptr});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
-  tinygltf::Model model;
   std::string err, warn;
   const std::string baseDir = fs::path(name).parent_path().string();
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;

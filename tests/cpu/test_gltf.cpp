@@ -151,6 +151,15 @@ TEST(Gltf, NonFinitePositionsSkipTheirFaces) {
   ASSERT_FALSE(m);
 }
 
+TEST(Gltf, AnImageViewPastItsBufferIsRefusedNotRead) {
+  // Found by fuzz_gltf: tinygltf handed the image callback a view's bytes unchecked (a heap
+  // overflow under ASan). The view is now checked before a byte is copied.
+  auto m = loadMesh(std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/gltf/glb-image-view-past-its-buffer.glb");
+  if (!m) {
+    EXPECT_TRUE(contains(m.error(), "glb-image-view-past-its-buffer.glb")) << m.error();
+  }
+}
+
 const std::string kSamples = "/usr/share/assimp/models/glTF2/";
 
 TEST(Gltf, KhronosBoxTexturedLoadsFromEveryContainer) {

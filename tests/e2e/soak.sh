@@ -95,10 +95,12 @@ done
 xdotool key --clearmodifiers 1; sleep 0.4
 
 start=$(date +%s); baseline_at=$((duration / 3)); [ $baseline_at -gt 60 ] && baseline_at=60
-baseline=""; actions=0; checks=0; drops_good=0
+baseline=""; actions=0; checks=0; drops_good=0; curve=""; next_sample=60
 while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   elapsed=$(( $(date +%s) - start ))
   [ -z "$baseline" ] && [ $elapsed -ge $baseline_at ] && baseline=$(rss)
+  # The curve: resident memory each minute, read the same way (README, the issue's notes).
+  if [ $elapsed -ge $next_sample ]; then curve="$curve $(( $(rss) / 1024 ))"; next_sample=$((next_sample + 60)); fi
   w=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $4; exit}'); w=${w:-480}
   h=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $5; exit}'); h=${h:-360}
   case $((RANDOM % 20)) in
@@ -125,6 +127,7 @@ if ! alive; then wait $pid; echo "FAIL: the viewer died (exit $?) after $actions
 [ -n "$baseline" ] || baseline=$final
 growth=$(( (final - baseline) * 1000 / (baseline > 0 ? baseline : 1) ))
 echo "soak: $actions actions in ${duration} s ($drops_good good drops, $checks failed-drop checks), RSS ${baseline} kB at ${baseline_at} s -> ${final} kB at the end (${growth} per mille)"
+[ -n "$curve" ] && echo "soak: RSS each minute (MB):$curve"
 [ $growth -le 50 ] || { echo "FAIL: resident memory grew by more than 5%"; fail=1; }
 [ $checks -gt 0 ] || { echo "FAIL: no failed drop was checked"; fail=1; }
 grep -c "not taken" "$tmp/drops.log" 2>/dev/null | grep -qx 0 || { echo "FAIL: some drops were not taken:"; grep "not taken" "$tmp/drops.log" | head; fail=1; }

@@ -65,6 +65,35 @@ TEST(ProgramCache, BuildsEachVariantOnce) {
   EXPECT_EQ(builds, 2);
 }
 
+TEST(ProgramCache, KeepsAtMostItsCapacityDroppingTheLeastRecentlyUsedBetweenFrames) {
+  gl::ProgramCache cache(2);
+  int builds = 0;
+  gl::MeshProgram normal, position, object;  // three different programs
+  normal.shading = gl::MeshShading::EyeNormal;
+  position.shading = gl::MeshShading::EyePosition;
+  object.shading = gl::MeshShading::EyeNormal;
+  object.occlusion = true;
+  // Within a frame nothing goes, whatever the count: pointers handed out stay valid.
+  cache.startFrame();
+  ASSERT_TRUE(cache.get(normal, builds));
+  cache.startFrame();
+  ASSERT_TRUE(cache.get(position, builds));
+  ASSERT_TRUE(cache.get(object, builds));
+  Result<gl::ShaderProgram*> stillValid = cache.get(position, builds);
+  ASSERT_TRUE(stillValid);
+  EXPECT_EQ(cache.size(), 3u);
+  EXPECT_EQ(builds, 3);
+  // The next frame drops the one unused longest (normal); the others are kept, not rebuilt.
+  cache.startFrame();
+  EXPECT_EQ(cache.size(), 2u);
+  EXPECT_EQ(cache.evictions(), 1u);
+  ASSERT_TRUE(cache.get(position, builds));
+  ASSERT_TRUE(cache.get(object, builds));
+  EXPECT_EQ(builds, 3);
+  ASSERT_TRUE(cache.get(normal, builds));
+  EXPECT_EQ(builds, 4);  // built again after it went
+}
+
 TEST(ShaderProgram, ACompileErrorNamesTheFileAndVariant) {
   // PALETTE_SIZE without a value makes palette.glsl's arrays invalid.
   Result<gl::ShaderProgram> p = gl::ShaderProgram::build("mesh.vert", "mesh.frag", {"PATH_PIXEL", "PALETTE_SIZE", "MATCH_INTENSITY"});
