@@ -59,7 +59,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::string size, camera;
   std::vector<std::string> paletteFor;
   std::string animate;
-  app.add_option("model", o.models, "Mesh files (OBJ, PLY, OFF, STL, OM); default models/bunny.obj");
+  app.add_option("model", o.models, "Mesh files (OBJ, glTF/GLB, PLY, OFF, STL, OM); default models/bunny.obj");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
   app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");

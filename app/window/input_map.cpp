@@ -58,7 +58,7 @@ const std::vector<Binding>& keyBindings() {
       {"F1 or Tab", "overlay"},
       {"H", "this help"},
       {"F12", "screenshot (PNG in the current folder)"},
-      {"Drop a file", "load a model (.obj .ply .off .stl .om) or palette (.palette)"},
+      {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette)"},
       {"Esc", "quit"},
   };
   return b;
