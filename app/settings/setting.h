@@ -91,4 +91,8 @@ const Setting* findSetting(const std::string& key);
 // Float text that parses back to the same float, as short as it can be.
 std::string formatFloat(float v);
 
+// `s` without leading and trailing blanks (spaces, tabs, line ends): what values and style
+// lines are compared as.
+std::string trimmed(const std::string& s);
+
 }  // namespace npr

@@ -25,17 +25,11 @@ std::optional<double> number(const std::string& s) {
   return v;
 }
 
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
 std::vector<std::string> splitCommas(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream ss(s);
   std::string part;
-  while (std::getline(ss, part, ',')) out.push_back(trim(part));
+  while (std::getline(ss, part, ',')) out.push_back(trimmed(part));
   if (!s.empty() && s.back() == ',') out.push_back("");
   return out;
 }
@@ -468,6 +462,12 @@ std::string formatFloat(float v) {
     if (std::strtof(buf, nullptr) == v) break;
   }
   return buf;
+}
+
+std::string trimmed(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r\n");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
 }
 
 }  // namespace npr

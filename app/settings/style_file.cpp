@@ -36,14 +36,6 @@ std::string resolvePalette(const std::string& name, const std::string& baseDirec
   return fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
 }
 
-namespace {
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r\n");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
-}  // namespace
-
 Result<Style> loadStyle(const std::string& path) {
   Result<std::string> text = readInputFile(path, InputKind::Palette);
   if (!text) return Error{text.error()};
@@ -57,11 +49,11 @@ Result<Style> loadStyle(const std::string& path) {
   Look scratch;  // every value is checked as it is read
   while (std::getline(in, raw)) {
     ++lineNo;
-    const std::string line = trim(raw);
+    const std::string line = trimmed(raw);
     if (line.empty() || line[0] == '#') continue;
     const std::string where = path + " line " + std::to_string(lineNo);
     const auto sp = line.find_first_of(" \t");
-    const std::string key = line.substr(0, sp), arg = sp == std::string::npos ? "" : trim(line.substr(sp));
+    const std::string key = line.substr(0, sp), arg = sp == std::string::npos ? "" : trimmed(line.substr(sp));
     if (key == "name") {
       st.name = arg;
       continue;
