@@ -15,6 +15,7 @@
 
 #include "app/settings/look.h"
 #include "app/settings/style_file.h"
+#include "renderer/gl/gl_info.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -202,6 +203,9 @@ void drawOverlay(Viewer& v) {
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
   if (st.surfaceBuffers) ImGui::Text("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
+  // What renders (the window's context never changes, so it is asked once).
+  static const GlInfo gl = currentGlInfo();
+  ImGui::TextWrapped("GL: %s, %s%s", gl.renderer.c_str(), gl.version.c_str(), gl.software ? " (software rasterizer)" : "");
   ImGui::Separator();
   ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
