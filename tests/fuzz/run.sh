@@ -21,9 +21,9 @@ if [ "${1:-}" = "--ci" ]; then mode=ci; shift
 elif [ $# -gt 0 ]; then seconds="$1"; shift; fi
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(obj mtl ply off stl om gltf palette image)
-# CI's inputs per harness: about 3 s each on this 2-core machine (the OM harness forks a
+# CI's inputs per harness: about 2 s each on this 2-core machine (the OM harness forks a
 # reader per input, the image ones decode whole images).
-declare -A RUNS=([gltf]=12000 [obj]=60000 [mtl]=60000 [ply]=150000 [off]=120000 [stl]=40000 [om]=60 [palette]=4000 [image]=900)
+declare -A RUNS=([gltf]=8000 [obj]=40000 [mtl]=40000 [ply]=100000 [off]=80000 [stl]=25000 [om]=40 [palette]=2500 [image]=600)
 jobs="${FUZZ_JOBS:-$(nproc)}"
 build="${FUZZ_BUILD_DIR:-build-fuzz}"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DNPR_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || exit 1
