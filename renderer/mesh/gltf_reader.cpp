@@ -489,15 +489,17 @@ class GltfReader {
       const std::uint64_t i = indices ? indices->index(k) : k;
       return i < positions->count ? static_cast<long long>(base + i) : static_cast<long long>(soup_.vertices.size() + i);  // out of range: FaceBuilder refuses it, named
     };
+    // Reused for every triangle (FaceBuilder takes the corners as scratch).
     std::vector<long long> face(3);
     std::vector<int> tex(3);
+    const std::string unit = where + " triangle";
     const auto add = [&](long long a, long long b, long long c, std::size_t number) {
-      face = mirrored ? std::vector<long long>{a, c, b} : std::vector<long long>{a, b, c};
-      for (int k = 0; k < 3; ++k) tex[static_cast<std::size_t>(k)] = textured ? static_cast<int>(face[static_cast<std::size_t>(k)]) : -1;
-      faces_.add(face, tex, static_cast<std::uint16_t>(material), (where + " triangle").c_str(), number);
+      face.assign({a, mirrored ? c : b, mirrored ? b : c});
+      for (std::size_t k = 0; k < 3; ++k) tex[k] = textured ? static_cast<int>(face[k]) : -1;
+      faces_.add(face, tex, static_cast<std::uint16_t>(material), unit.c_str(), number);
     };
     if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
-      for (std::size_t t = 0; t + 2 < corners + 0 && t / 3 < triangles; t += 3) add(corner(t), corner(t + 1), corner(t + 2), t / 3);
+      for (std::size_t t = 0; t + 2 < corners; t += 3) add(corner(t), corner(t + 1), corner(t + 2), t / 3);
     } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
       for (std::size_t t = 0; t + 2 < corners; ++t)
         if (t % 2 == 0) add(corner(t), corner(t + 1), corner(t + 2), t);
