@@ -59,7 +59,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::string size, camera;
   std::vector<std::string> paletteFor;
   std::string animate;
-  app.add_option("model", o.models, "Mesh files (OBJ, glTF/GLB, PLY, OFF, STL, OM); default models/bunny.obj");
+  app.add_option("model", o.models, "Mesh or scene files (OBJ, glTF/GLB, PLY, OFF, STL, OM), shown together; default models/bunny.obj");
+  std::string layout;
+  app.add_option("--layout", layout, "Several files: placed as their files place them (file, the default), or set apart in a row or a grid");
+  app.add_option("--camera-from-file", o.cameraFromFile, "View through the scene file's camera N (1 is the first; --info lists them)");
+  std::vector<std::string> objectPalette;
+  app.add_option("--object-palette", objectPalette,
+                 "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
   app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
@@ -77,7 +83,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)");
   app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
   app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
-  app.add_flag("--info", o.info, "Print the model's load report as one line of JSON and exit");
+  app.add_flag("--info", o.info, "Print each file's load report and scene (objects, cameras, lights, animations) as one line of JSON and exit");
   app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
   CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: the benchmark's (default benchmark-results) or --make-palette's");
@@ -198,6 +204,21 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     std::filesystem::create_directories(o.saveFrames, ec);
     if (ec || !std::filesystem::is_directory(o.saveFrames))
       return {std::nullopt, fail("--save-frames: cannot create the folder '" + o.saveFrames + "'" + (ec ? " (" + ec.message() + ")" : ""))};
+  }
+  if (!layout.empty()) {
+    const std::optional<Layout> l = parseLayout(layout);
+    if (!l) return {std::nullopt, fail("--layout must be file, row or grid, got '" + printable(layout) + "'")};
+    o.layout = *l;
+  }
+  if (o.cameraFromFile == 0 || o.cameraFromFile < -1) return {std::nullopt, fail("--camera-from-file counts from 1")};
+  for (const std::string& op : objectPalette) {
+    const std::size_t eq = op.rfind('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == op.size())
+      return {std::nullopt, fail("--object-palette must be OBJECT=FILE, got '" + printable(op) + "'")};
+    const std::string file = resolvePalette(op.substr(eq + 1), ".");
+    if (!std::filesystem::exists(file))
+      return {std::nullopt, fail("--object-palette " + printable(op.substr(0, eq)) + ": palette file '" + printable(file) + "' does not exist")};
+    o.objectPalettes.emplace_back(op.substr(0, eq), file);
   }
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');

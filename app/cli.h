@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "app/camera_animation.h"
+#include "app/scene_layout.h"
 #include "app/settings/look.h"
 #include "renderer/gl/gpu_choice.h"
 #include "renderer/lighting/lighting_state.h"
@@ -22,7 +23,10 @@ namespace npr {
 // What the command line asks for: the settings it names (rows of the settings table, applied
 // over the style and the palette's defaults) and the actions it takes.
 struct Options {
-  std::vector<std::string> models;  // the first is shown; --benchmark uses all
+  std::vector<std::string> models;  // shown together as one scene; --benchmark measures each
+  Layout layout = Layout::File;     // --layout: how several files are placed
+  int cameraFromFile = -1;          // --camera-from-file N: the scene's camera N (1-based; -1 none)
+  std::vector<std::pair<std::string, std::string>> objectPalettes;  // --object-palette OBJECT=FILE
   std::vector<std::string> palettes;
   std::vector<SettingValue> settings;  // in the table's order
   bool listPaths = false;

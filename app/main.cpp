@@ -13,7 +13,7 @@
 #include "app/settings/settings_reference.h"
 #include "app/window/window_viewer.h"
 #include "renderer/core/heap_policy.h"
-#include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/scene_loader.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/paths/path_table.h"
@@ -58,9 +58,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "npr-viewer: --info needs a MODEL file\n");
       return 2;
     }
-    npr::Result<npr::Mesh> m = npr::loadModel(o.models.front());
-    if (!m) return npr::reportFailure(m.error());
-    std::printf("%s\n", m->report.toJson().c_str());
+    // One line per file: its load report and its scene.
+    for (const std::string& model : o.models) {
+      npr::Result<npr::LoadedScene> s = npr::loadScene(model);
+      if (!s) return npr::reportFailure(s.error());
+      std::printf("%s\n", npr::sceneReportJson(*s).c_str());
+    }
     return 0;
   }
   if (!o.paletteInfo.empty()) {

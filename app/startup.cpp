@@ -6,11 +6,38 @@
 #include "app/settings/style_file.h"
 
 namespace npr {
+namespace {
+
+// --object-palette OBJECT=FILE: the object by name, or by its number from 1.
+Status setObjectPalette(ViewerState& state, Renderer& renderer, const std::string& object, const std::string& file) {
+  const auto& objects = state.scene.objects();
+  std::vector<std::size_t> chosen;
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (objects[i].name == object) chosen.push_back(i);
+  if (chosen.empty() && !object.empty() && object.find_first_not_of("0123456789") == std::string::npos && object.size() < 9) {
+    const std::size_t n = std::stoul(object);
+    if (n >= 1 && n <= objects.size()) chosen.push_back(n - 1);
+  }
+  if (chosen.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < objects.size() && i < 12; ++i) names += (i ? ", " : "") + objects[i].name;
+    return Error{"--object-palette: no object named '" + object + "' in " + state.scene.label() + " (its objects: " + names +
+                 (objects.size() > 12 ? ", ..." : "") + "; or give a number from 1 to " + std::to_string(objects.size()) + ")"};
+  }
+  for (std::size_t i : chosen)
+    if (Status s = state.scene.setPalette(i, file, renderer); !s) return Error{"--object-palette " + object + ": " + s.error()};
+  return okStatus();
+}
+
+}  // namespace
 
 Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   applyDefaultMaterial(renderer.lighting());
-  const std::string model = o.models.empty() ? defaultModelPath() : o.models.front();
-  if (Status s = state.loadModel(model, renderer); !s) return s;
+  state.scene.setLayout(o.layout, renderer);
+  const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
+  if (Status s = state.loadModels(models, false, renderer); !s) return s;
+  for (const auto& [object, file] : o.objectPalettes)
+    if (Status s = setObjectPalette(state, renderer, object, file); !s) return s;
   state.palettes = discoverPalettes();
   const std::string first = o.palettes.empty() ? defaultPalettePath() : o.palettes.front();
   for (const auto& p : o.palettes)

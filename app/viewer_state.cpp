@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "renderer/mesh/mesh_loader.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/core/printable.h"
 
@@ -39,29 +38,32 @@ void ViewerState::note(const std::string& raw) {
   if (messages.size() > 20) messages.erase(messages.begin());
 }
 
-Status ViewerState::loadModel(const std::string& path, Renderer& renderer) {
-  Result<Mesh> m = npr::loadModel(path);
-  if (!m) {
-    note("model not loaded: " + m.error());
-    return Error{m.error()};
+Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, Renderer& renderer) {
+  std::vector<std::string> warnings;
+  if (Status s = scene.load(paths, add, renderer, warnings); !s) {
+    note("model not loaded: " + s.error());
+    return s;
   }
-  mesh = std::make_unique<Mesh>(std::move(*m));
-  renderer.setMesh(mesh.get());
-  for (const auto& w : mesh->report.warnings) note(w);
-  camera.frame(mesh->radius);
+  for (const auto& w : warnings) note(w);
+  camera.frame(1.0f);  // the scene is fitted into the unit sphere
+  renderer.resetPattern();
   for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);
   return okStatus();
 }
 
 void ViewerState::noteMissingMaterial(const std::string& material) {
-  if (!mesh) return;
-  std::string names;
-  for (const MeshMaterial& m : mesh->materials) {
-    if (m.name == material) return;
-    if (!m.fromLightingState || m.name != "(default)") names += (names.empty() ? "" : ", ") + m.name;
-  }
-  note("no material named '" + material + "' in " + mesh->report.file + " for its palette" +
-       (names.empty() ? std::string(" (the model has no materials)") : " (its materials: " + names + ")"));
+  if (scene.empty()) return;
+  std::vector<std::string> names;
+  for (const ViewerObject& o : scene.objects())
+    for (const MeshMaterial& m : o.mesh->materials) {
+      if (m.name == material) return;
+      if ((!m.fromLightingState || m.name != "(default)") && std::find(names.begin(), names.end(), m.name) == names.end() && names.size() < 16)
+        names.push_back(m.name);
+    }
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  note("no material named '" + material + "' in " + scene.label() + " for its palette" +
+       (list.empty() ? std::string(" (the scene has no materials)") : " (its materials: " + list + ")"));
 }
 
 Status ViewerState::setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer) {

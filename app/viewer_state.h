@@ -1,4 +1,4 @@
-// What the viewer is showing: model, palette list, render settings, camera and light. Shared
+// What the viewer is showing: objects, palette list, render settings, camera and light. Shared
 // by the window, --headless and --benchmark, so all three render a scene the same way.
 // Loads are all-or-nothing: a file that fails to load leaves the current one in place.
 #pragma once
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/data_directory.h"
+#include "app/scene_objects.h"
 #include "renderer/core/camera.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/palette.h"
@@ -20,7 +21,7 @@ namespace npr {
 std::vector<std::string> discoverPalettes();
 
 struct ViewerState {
-  std::unique_ptr<Mesh> mesh;
+  SceneObjects scene;
   std::unique_ptr<Palette> palette;
   std::vector<std::string> palettes;  // what 1-9 and [ ] cycle through
   int paletteIndex = -1;
@@ -31,7 +32,10 @@ struct ViewerState {
   bool splitView = false;  // reference on the left, the chosen path on the right
   std::vector<std::string> messages;  // load errors and warnings, newest last, shown in the overlay
 
-  Status loadModel(const std::string& path, Renderer& renderer);
+  // Shows the files' objects in place of the scene (or beside it, `add`); the camera frames
+  // the new scene. A file that fails leaves the scene as it was.
+  Status loadModels(const std::vector<std::string>& paths, bool add, Renderer& renderer);
+  Status loadModel(const std::string& path, Renderer& renderer) { return loadModels({path}, false, renderer); }
   // Loads and selects a palette; the palette's own defaults (match mode, range scale) apply.
   Status loadPalette(const std::string& path, Renderer& renderer);
   Status selectPalette(int index, Renderer& renderer);

@@ -51,13 +51,37 @@ ModelId Renderer::addModel(const Mesh& mesh, const glm::mat4& transform) {
   return scene_.add(mesh, transform, stats_);
 }
 
-void Renderer::removeModel(ModelId id) { scene_.remove(id); }
+void Renderer::removeModel(ModelId id) {
+  if (const Model* m = scene_.find(id)) modelPalettes_.erase(m);
+  scene_.remove(id);
+}
+
+void Renderer::clearModels() {
+  modelPalettes_.clear();
+  ground_.reset();
+  scene_.clear();
+}
+
+Status Renderer::setModelPalette(ModelId id, const Palette& palette) {
+  const Model* m = scene_.find(id);
+  if (!m) return Error{"no model " + std::to_string(id) + " in the scene"};
+  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
+  if (!uploaded) return Error{uploaded.error()};
+  modelPalettes_[m] = std::move(*uploaded);
+  stats_.bufferUploads += 1;
+  return okStatus();
+}
+
+void Renderer::clearModelPalette(ModelId id) {
+  if (const Model* m = scene_.find(id)) modelPalettes_.erase(m);
+}
 
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
 
 void Renderer::setMesh(const Mesh* mesh) {
   ground_.reset();
   partsDirty_ = true;
+  modelPalettes_.clear();
   if (mesh && !mesh->indices.empty()) scene_.setOnly(*mesh, glm::mat4(1.0f), stats_);
   else scene_.clear();
 }
@@ -106,8 +130,10 @@ Status Renderer::prepare(const RenderSettings& s) {
       const auto it = materialPalettes_.find(material);
       return it == materialPalettes_.end() ? nullptr : it->second.get();
     };
-    scene_.forEach([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
+    scene_.forEachIncludingHidden([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
   }
+  for (auto& [model, p] : modelPalettes_)
+    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"an object's palette: " + st.error()};
   // Cel bands belong to the main palette (they are one fewer than its tones).
   for (auto& [name, p] : materialPalettes_)
     if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"palette of material '" + name + "': " + st.error()};
@@ -241,11 +267,12 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     frame.cullBackFaces = cullBackFaces;
     return drawPart(view, &model, frame, s.path);
   };
-  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), palette_.get());
+  GpuPalette* main = mainPaletteOf(model);
+  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), main);
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : palette_.get()); !st) return st;
+    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : main); !st) return st;
   return okStatus();
 }
 
@@ -374,7 +401,7 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
 bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) const {
   if (!palette_ || scene_.empty() || viewport.z < 1 || viewport.w < 1) return false;
   bool turnable = palette_->hasOrientedEntries();
-  for (const auto& [name, p] : materialPalettes_) turnable = turnable || p->hasOrientedEntries();
+  forEachExtraPalette([&](const GpuPalette& p) { turnable = turnable || p.hasOrientedEntries(); });
   const bool turned = turnable && s.orient.source != OrientSource::None;
   const bool object = s.pattern == PatternSpace::Object;
   // The stencil path's surface buffers: the stroke angle (field or light) and the object pattern.

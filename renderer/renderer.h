@@ -55,10 +55,18 @@ class Renderer {
   void removeModel(ModelId id);
   // False when there is no such model.
   bool setModelTransform(ModelId id, const glm::mat4& transform);
+  // A hidden model keeps everything derived from its mesh and is left out of every pass.
+  bool setModelVisible(ModelId id, bool visible) { return scene_.setVisible(id, visible); }
+  // The model's own palette, in place of the main one for its surfaces (every path; its
+  // materials' palettes still win). On failure, or for no such model, nothing changes.
+  [[nodiscard]] Status setModelPalette(ModelId id, const Palette& palette);
+  void clearModelPalette(ModelId id);
   std::size_t modelCount() const { return scene_.size(); }
   const Model* model(ModelId id) const { return scene_.find(id); }
   // A scene of one model, untransformed (nullptr or an empty mesh: an empty scene).
   void setMesh(const Mesh* mesh);
+  // An empty scene.
+  void clearModels();
   // Uploads the palette; on failure the current one stays in place.
   [[nodiscard]] Status setPalette(const Palette& palette);
   // Per-material palettes: faces of the material named `material` are drawn with `palette`
@@ -110,7 +118,7 @@ class Renderer {
   // The feature lines the frame shows for this camera, every model's in scene space, for
   // vector export.
   std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings);
-  // The first model's (tests and the overlay; a scene of one is the viewer's today).
+  // The first shown model's (tests and the overlay).
   const PatternTracker& patternTracker() const;
   // The main palette as the last frame drew it (null before one is set).
   const GpuPalette* palette() const { return palette_.get(); }
@@ -170,6 +178,12 @@ class Renderer {
   bool backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& settings);
 
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
+  std::map<const Model*, std::unique_ptr<GpuPalette>> modelPalettes_;
+  // The palette a model's surfaces are drawn with where no material palette applies.
+  GpuPalette* mainPaletteOf(const Model& model) const {
+    const auto it = modelPalettes_.find(&model);
+    return it == modelPalettes_.end() ? palette_.get() : it->second.get();
+  }
   std::unique_ptr<GpuPalette> shadowPalette_, occlusionPalette_;
   GpuPalette* controlPalette(ControlParameter parameter) const {
     return parameter == ControlParameter::Shadow ? shadowPalette_.get() : occlusionPalette_.get();
@@ -178,6 +192,7 @@ class Renderer {
   // control palettes (each frame gives them its pattern and orientation).
   template <class Fn>
   void forEachExtraPalette(Fn&& fn) const {
+    for (const auto& [model, p] : modelPalettes_) fn(*p);
     for (const auto& [name, p] : materialPalettes_) fn(*p);
     if (shadowPalette_) fn(*shadowPalette_);
     if (occlusionPalette_) fn(*occlusionPalette_);

@@ -80,7 +80,7 @@ int runHeadless(const Options& o) {
   if (gif) tellUser("turntable written to " + gifPath);
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
-               state.mesh->report.file.c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
+               state.scene.label().c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
                matchModeName(state.settings.match), ms[ms.size() / 2]);
   if (!o.svg.empty()) {
     const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};

@@ -70,8 +70,11 @@ void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
   v.state.camera.zoom(std::pow(0.88f, float(dy)), ndc, v.aspect());
 }
 
+// Models dropped together make one scene; with Shift held they join the scene shown.
 void onDrop(GLFWwindow* w, int count, const char** paths) {
-  for (int i = 0; i < count; ++i) loadDropped(*viewerOf(w), paths[i]);
+  const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  bool replaced = false;
+  for (int i = 0; i < count; ++i) replaced = loadDropped(*viewerOf(w), paths[i], shift || replaced) || replaced;
 }
 
 }  // namespace

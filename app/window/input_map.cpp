@@ -58,7 +58,7 @@ const std::vector<Binding>& keyBindings() {
       {"F1 or Tab", "overlay"},
       {"H", "this help"},
       {"F12", "screenshot (PNG in the current folder)"},
-      {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette)"},
+      {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette); with Shift, add the model to the scene"},
       {"Esc", "quit"},
   };
   return b;

@@ -128,23 +128,24 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
     }
   } else if (section == "path") {
     // Per-material palettes: a palette for each of the model's materials.
-    if (look.render.materials && s.mesh && !s.mesh->materials.empty() && ImGui::TreeNode("Material palettes")) {
-      const std::size_t shown = std::min<std::size_t>(s.mesh->materials.size(), 64);
+    const std::vector<std::string> materials = s.scene.materialNames(65);
+    if (look.render.materials && !materials.empty() && ImGui::TreeNode("Material palettes")) {
+      const std::size_t shown = std::min<std::size_t>(materials.size(), 64);
       for (std::size_t i = 0; i < shown; ++i) {
-        const MeshMaterial& m = s.mesh->materials[i];
+        const std::string& name = materials[i];
         ImGui::PushID(static_cast<int>(i));
-        const auto it = s.materialPalettes.find(m.name);
+        const auto it = s.materialPalettes.find(name);
         const std::string current = it == s.materialPalettes.end() ? "(main palette)" : fs::path(it->second).stem().string();
-        if (ImGui::BeginCombo(m.name.c_str(), current.c_str())) {
-          if (ImGui::Selectable("(main palette)", it == s.materialPalettes.end())) (void)s.setMaterialPalette(m.name, "", *v.renderer);
+        if (ImGui::BeginCombo(name.c_str(), current.c_str())) {
+          if (ImGui::Selectable("(main palette)", it == s.materialPalettes.end())) (void)s.setMaterialPalette(name, "", *v.renderer);
           for (const std::string& p : s.palettes)
             if (ImGui::Selectable(fs::path(p).stem().string().c_str(), it != s.materialPalettes.end() && it->second == p))
-              (void)s.setMaterialPalette(m.name, p, *v.renderer);
+              (void)s.setMaterialPalette(name, p, *v.renderer);
           ImGui::EndCombo();
         }
         ImGui::PopID();
       }
-      if (shown < s.mesh->materials.size()) ImGui::Text("... and %zu more materials", s.mesh->materials.size() - shown);
+      if (shown < materials.size()) ImGui::Text("... and more materials");
       ImGui::TreePop();
     }
   } else if (section == "orientation" && look.render.orient.source != OrientSource::None) {
@@ -175,6 +176,43 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
   }
 }
 
+// The scene's objects: shown or hidden, and each one's own palette (an object in wood grain
+// beside one in hatching), with where it sits in the scene.
+void drawObjectList(Viewer& v) {
+  ViewerState& s = v.state;
+  const auto& objects = s.scene.objects();
+  if (objects.size() < 2 || !ImGui::TreeNode("Objects")) return;
+  const std::size_t shown = std::min<std::size_t>(objects.size(), 256);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const ViewerObject& o = objects[i];
+    ImGui::PushID(static_cast<int>(i));
+    bool visible = o.visible;
+    if (ImGui::Checkbox("##shown", &visible)) s.scene.setVisible(i, visible, *v.renderer);
+    ImGui::SameLine();
+    const std::string current = o.palette.empty() ? "(main palette)" : fs::path(o.palette).stem().string();
+    if (ImGui::BeginCombo(o.name.c_str(), current.c_str())) {
+      if (ImGui::Selectable("(main palette)", o.palette.empty())) (void)s.scene.setPalette(i, "", *v.renderer);
+      for (const std::string& p : s.palettes)
+        if (ImGui::Selectable(fs::path(p).stem().string().c_str(), o.palette == p))
+          if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.note("palette of '" + o.name + "' not loaded: " + st.error());
+      ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered()) {
+      const glm::mat4 t = s.scene.toViewer(o.file) * o.inFile;
+      tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
+              std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)");
+    }
+    ImGui::PopID();
+  }
+  if (shown < objects.size()) ImGui::Text("... and %zu more objects", objects.size() - shown);
+  int layout = static_cast<int>(s.scene.layout());
+  if (s.scene.files().size() > 1 && ImGui::Combo("layout", &layout, "file\0row\0grid\0")) {
+    s.scene.setLayout(static_cast<Layout>(layout), *v.renderer);
+    v.renderer->resetPattern();
+  }
+  ImGui::TreePop();
+}
+
 }  // namespace
 
 void drawOverlay(Viewer& v) {
@@ -198,7 +236,7 @@ void drawOverlay(Viewer& v) {
   if (!h.empty()) ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms", 0.0f, 50.0f, ImVec2(-1, 40));
   ImGui::Text("CPU: shading %.2f ms, frame %.2f ms   GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
               st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
-  ImGui::Text("%zu triangles, %d non-empty buckets%s", s.mesh ? s.mesh->triangleCount() : 0, st.nonEmptyBuckets,
+  ImGui::Text("%zu triangles, %d non-empty buckets%s", s.scene.triangles(), st.nonEmptyBuckets,
               st.backFacesCulled ? ", closed: back faces dropped" : "");
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
@@ -207,7 +245,8 @@ void drawOverlay(Viewer& v) {
   static const GlInfo gl = currentGlInfo();
   ImGui::TextWrapped("GL: %s, %s%s", gl.renderer.c_str(), gl.version.c_str(), gl.software ? " (software rasterizer)" : "");
   ImGui::Separator();
-  ImGui::Text("model: %s", s.mesh ? fs::path(s.mesh->report.file).filename().c_str() : "-");
+  ImGui::Text("model: %s", s.scene.label().c_str());
+  drawObjectList(v);
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
   if (ImGui::BeginCombo("style", "choose a style")) {
     for (const std::string& file : discoverStyles())

@@ -67,7 +67,7 @@ void applyAction(Viewer& v, const KeyAction& a) {
       break;
     }
     case Action::ToggleSplit: s.splitView = !s.splitView; break;
-    case Action::FrameModel: s.camera.frame(s.mesh ? s.mesh->radius : 1.0f); r.resetPattern(); break;
+    case Action::FrameModel: s.camera.frame(1.0f); r.resetPattern(); break;  // the scene fits the unit sphere
     case Action::CyclePattern:
       s.settings.pattern = s.settings.pattern == PatternSpace::Screen     ? PatternSpace::Anchored
                            : s.settings.pattern == PatternSpace::Anchored ? PatternSpace::Object
@@ -85,16 +85,18 @@ void applyAction(Viewer& v, const KeyAction& a) {
     }
     case Action::ToggleVsync: v.vsync = !v.vsync; glfwSwapInterval(v.vsync ? 1 : 0); break;
     case Action::MoveLight: {
-      const float step = 0.1f * (s.mesh ? s.mesh->radius : 1.0f);
+      const float step = 0.1f;  // a tenth of the scene's radius
       s.light[a.param / 2] += (a.param % 2) ? step : -step;
       break;
     }
   }
 }
 
-void loadDropped(Viewer& v, const std::string& path) {
-  const Status st = isPaletteFile(path) ? v.state.loadPalette(path, *v.renderer) : v.state.loadModel(path, *v.renderer);
-  if (st) v.state.note("loaded " + path);
+bool loadDropped(Viewer& v, const std::string& path, bool add) {
+  const bool palette = isPaletteFile(path);
+  const Status st = palette ? v.state.loadPalette(path, *v.renderer) : v.state.loadModels({path}, add, *v.renderer);
+  if (st) v.state.note((add && !palette ? "added " : "loaded ") + path);
+  return st && !palette;
 }
 
 void takeScreenshot(Viewer& v, const fs::path& file) {

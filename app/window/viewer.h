@@ -42,8 +42,9 @@ struct Viewer {
 };
 
 void applyAction(Viewer& viewer, const KeyAction& action);
-// A dropped .palette (or palette folder) or model; a failure keeps the current one and is noted.
-void loadDropped(Viewer& viewer, const std::string& path);
+// A dropped .palette (or palette folder) or model (in place of the scene, or beside it with
+// `add`); a failure keeps the current one and is noted. True when a model was loaded.
+bool loadDropped(Viewer& viewer, const std::string& path, bool add);
 void takeScreenshot(Viewer& viewer, const std::filesystem::path& file);
 
 }  // namespace npr

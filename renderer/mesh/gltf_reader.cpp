@@ -6,8 +6,10 @@
 // any model, through our file callbacks (never its path expansion), and images are decoded by
 // OpenImageIO (image_io.h), never by the loader's own decoder.
 //
-// This version flattens the file's default scene into one mesh: each node's meshes with the
-// node's world transform applied, materials mapped onto the OpenGL lighting model:
+// The file's default scene is read either flattened into one mesh (parseGltf: each node's
+// meshes with the node's world transform applied) or as objects (parseGltfScene: one per node
+// with a mesh, each glTF mesh built once in its own space, with the scene's cameras and
+// KHR_lights_punctual lights). Materials are mapped onto the OpenGL lighting model:
 //   ambient = diffuse = baseColorFactor.rgb * (1 - 0.75 metallic)   (a metal keeps some tone)
 //   specular = mix(0.04, baseColorFactor.rgb, metallic) * (1 - roughness)
 //   shininess = 2 / a^2 - 2 with a = roughness^2, clamped to GL's 0..128 (Phong's exponent
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -163,14 +166,35 @@ int typeComponents(int type) {
 
 class GltfReader {
  public:
-  GltfReader(const std::string& name, const tinygltf::Model& model, PolygonSoup& soup, LoadReport& report)
-      : name_(name), m_(model), soup_(soup), report_(report), warn_(report.warnings), faces_(soup, report, warn_) {}
+  // Flatten: the whole scene in one mesh, every node's transform applied to its vertices.
+  // Objects: one mesh per glTF mesh in its own space (a mirrored copy where a node mirrors it),
+  // and one object per node that has a mesh.
+  enum class Mode { Flatten, Objects };
+
+  GltfReader(const std::string& name, const tinygltf::Model& model, LoadReport& report, Mode mode)
+      : name_(name), m_(model), report_(report), warn_(report.warnings), mode_(mode) {}
+
+  // A mesh being built: its soup, its report, and which of the file's materials and images it
+  // has taken so far (each mesh carries only those its primitives use).
+  struct Target {
+    PolygonSoup soup;
+    LoadReport report;
+    std::map<int, int> material, image;
+    std::unique_ptr<FaceBuilder> faces;
+  };
+  struct Object {
+    std::string name;
+    std::size_t target = 0;
+    glm::dmat4 world{1.0};
+  };
 
   Status read() {
     for (const std::string& ext : m_.extensionsRequired)
-      if (ext != "KHR_texture_transform" && ext != "KHR_materials_unlit")
+      if (ext != "KHR_texture_transform" && ext != "KHR_materials_unlit" && ext != "KHR_lights_punctual")
         return fail("requires the extension " + printable(ext) + ", which this viewer does not read");
     if (Status s = readMaterials(); !s) return s;
+    if (Status s = readLights(); !s) return s;
+    if (mode_ == Mode::Flatten) newTarget();
     std::vector<int> roots;
     if (!m_.scenes.empty()) {
       const int scene = m_.defaultScene >= 0 ? m_.defaultScene : 0;
@@ -190,24 +214,35 @@ class GltfReader {
       if (Status s = visit(root, glm::dmat4(1.0), 0, visited); !s) return s;
     if (skippedPrimitives_ > 0)
       warn_.add(name_ + ": " + std::to_string(skippedPrimitives_) + " primitive(s) of points or lines not drawn (only triangles are)");
-    if (!m_.cameras.empty() || !m_.animations.empty() || !m_.skins.empty() || lights() > 0)
-      warn_.add(name_ + ": " + std::to_string(m_.cameras.size()) + " camera(s), " + std::to_string(lights()) + " light(s), " +
-                std::to_string(m_.animations.size()) + " animation(s) and " + std::to_string(m_.skins.size()) +
-                " skin(s) are not used yet: the scene is drawn in its rest pose with the viewer's camera and light");
-    report_.texture_coordinates = soup_.tracksTexcoords;
-    report_.vertex_colours = !soup_.colours.empty();
+    if (mode_ == Mode::Flatten && (!m_.cameras.empty() || !lights_.empty()))
+      warn_.add(name_ + ": " + std::to_string(m_.cameras.size()) + " camera(s) and " + std::to_string(lights_.size()) +
+                " light(s) are not used when the file is read as one mesh");
+    if (!m_.animations.empty() || !m_.skins.empty())
+      warn_.add(name_ + ": " + std::to_string(m_.animations.size()) + " animation(s) and " + std::to_string(m_.skins.size()) +
+                " skin(s) are not played yet: the scene is drawn in its rest pose");
+    for (Target& t : targets_) {
+      t.report.texture_coordinates = t.soup.tracksTexcoords;
+      t.report.vertex_colours = !t.soup.colours.empty();
+      report_.texture_coordinates = report_.texture_coordinates || t.report.texture_coordinates;
+      report_.vertex_colours = report_.vertex_colours || t.report.vertex_colours;
+    }
     warn_.finish();
     return okStatus();
   }
 
+  std::deque<Target>& targets() { return targets_; }
+  const std::vector<Object>& objects() const { return objects_; }
+  std::vector<SceneCamera>& cameras() { return cameras_; }
+  std::vector<SceneLight> placedLights() const { return placedLights_; }
+
  private:
   Error fail(const std::string& what) const { return Error{name_ + ": " + what}; }
 
-  std::size_t lights() const {
-    const auto it = m_.extensions.find("KHR_lights_punctual");
-    if (it == m_.extensions.end() || !it->second.Has("lights")) return 0;
-    const tinygltf::Value& l = it->second.Get("lights");
-    return l.IsArray() ? l.ArrayLen() : 0;
+  Target& newTarget() {
+    Target& t = targets_.emplace_back();
+    t.report.file = name_;
+    t.faces = std::make_unique<FaceBuilder>(t.soup, t.report, warn_);
+    return t;
   }
 
   Result<AccessorView> accessor(int index, const std::string& what, std::initializer_list<int> types) const {
@@ -247,8 +282,9 @@ class GltfReader {
     return v;
   }
 
+  // The file's materials, mapped onto GL's (the formula atop this file), and the images their
+  // base colour maps use, decoded once; each mesh copies the ones it uses (localMaterial).
   Status readMaterials() {
-    soup_.materials.clear();
     for (std::size_t i = 0; i < m_.materials.size(); ++i) {
       const tinygltf::Material& g = m_.materials[i];
       const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
@@ -280,16 +316,39 @@ class GltfReader {
       }
       if (g.alphaMode == "BLEND" || g.alphaMode == "MASK")
         warn_.add(name_ + ": material '" + printable(mat.name) + "' is " + (g.alphaMode == "BLEND" ? "blended" : "masked") + "; drawn opaque");
-      soup_.materials.push_back(std::move(mat));
+      materials_.push_back(std::move(mat));
     }
     // The default material for primitives that name none, last.
     MeshMaterial fallback;
     fallback.name = "(default)";
     fallback.fromLightingState = true;
-    soup_.materials.push_back(fallback);
+    materials_.push_back(fallback);
     transforms_.push_back(glm::mat3(1.0f));
     report_.materials = m_.materials.size();
     return okStatus();
+  }
+
+  // The mesh's index of the file's material `g` (the default: the last), copied in with its
+  // image the first time the mesh uses it.
+  int localMaterial(Target& t, int g) {
+    if (const auto it = t.material.find(g); it != t.material.end()) return it->second;
+    MeshMaterial mat = materials_[static_cast<std::size_t>(g)];
+    if (mat.diffuseMap >= 0) {
+      const int file = mat.diffuseMap;
+      auto [it, added] = t.image.emplace(file, static_cast<int>(t.soup.textures.size()));
+      if (added) {
+        t.soup.textures.push_back(images_[static_cast<std::size_t>(file)]);
+        t.report.textures_loaded.push_back(images_[static_cast<std::size_t>(file)].path);
+      }
+      mat.diffuseMap = it->second;
+    }
+    const int local = static_cast<int>(t.soup.materials.size());
+    t.soup.materials.push_back(std::move(mat));
+    ++t.report.materials;
+    t.material.emplace(g, local);
+    // Before the first triangle: a mesh of one material keeps it too.
+    if (!t.soup.tracksMaterials) t.soup.trackMaterials();
+    return local;
   }
 
   // KHR_texture_transform as a 3x3 matrix on (u, v, 1): translation * rotation * scale.
@@ -312,7 +371,7 @@ class GltfReader {
     return T * R * S;
   }
 
-  // The decoded image of texture `index` in soup_.textures, or -1 (reported missing).
+  // The decoded image of texture `index` in images_, or -1 (reported missing).
   int texture(int index) {
     if (index < 0 || index >= static_cast<int>(m_.textures.size())) {
       warn_.add(name_ + ": texture " + std::to_string(index) + " does not exist");
@@ -328,7 +387,7 @@ class GltfReader {
     }
     const tinygltf::Image& img = m_.images[static_cast<std::size_t>(source)];
     const std::string label = img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(source) : img.uri;
-    if (soup_.textures.size() >= kMaxTextures) {
+    if (images_.size() >= kMaxTextures) {
       warn_.add(name_ + ": more than " + std::to_string(kMaxTextures) + " images; '" + printable(label) + "' is not used");
       return -1;
     }
@@ -353,10 +412,114 @@ class GltfReader {
       warn_.add(name_ + ": image '" + printable(label) + "' cannot be decoded; its material is drawn without it");
       return -1;
     }
-    slot = static_cast<int>(soup_.textures.size());
-    soup_.textures.push_back({label, std::move(*decoded)});
+    slot = static_cast<int>(images_.size());
+    images_.push_back({label, std::move(*decoded)});
     report_.textures_loaded.push_back(label);
     return slot;
+  }
+
+  // KHR_lights_punctual's lights (placed later by the nodes that name them); a malformed one
+  // is reported and left out.
+  Status readLights() {
+    const auto it = m_.extensions.find("KHR_lights_punctual");
+    if (it == m_.extensions.end() || !it->second.Has("lights")) return okStatus();
+    const tinygltf::Value& list = it->second.Get("lights");
+    if (!list.IsArray()) return fail("KHR_lights_punctual's lights is not an array");
+    auto number = [](const tinygltf::Value& v, const char* key, double fallback, bool& ok) {
+      if (!v.Has(key)) return fallback;
+      const tinygltf::Value& n = v.Get(key);
+      if (!n.IsNumber() || !std::isfinite(n.GetNumberAsDouble())) ok = false;
+      return n.IsNumber() ? n.GetNumberAsDouble() : fallback;
+    };
+    for (std::size_t i = 0; i < list.ArrayLen(); ++i) {
+      const tinygltf::Value& l = list.Get(static_cast<int>(i));
+      std::optional<SceneLight> light;
+      if (l.IsObject() && l.Has("type") && l.Get("type").IsString()) {
+        SceneLight s;
+        bool ok = true;
+        const std::string type = l.Get("type").Get<std::string>();
+        s.type = type == "point" ? SceneLight::Type::Point : type == "spot" ? SceneLight::Type::Spot : SceneLight::Type::Directional;
+        ok = type == "point" || type == "spot" || type == "directional";
+        if (l.Has("name") && l.Get("name").IsString()) s.name = l.Get("name").Get<std::string>();
+        if (l.Has("color")) {
+          const tinygltf::Value& c = l.Get("color");
+          if (!c.IsArray() || c.ArrayLen() != 3) ok = false;
+          else
+            for (int k = 0; k < 3; ++k) {
+              const tinygltf::Value& v = c.Get(k);
+              if (v.IsNumber() && std::isfinite(v.GetNumberAsDouble())) s.colour[k] = static_cast<float>(v.GetNumberAsDouble());
+              else ok = false;
+            }
+        }
+        s.intensity = static_cast<float>(number(l, "intensity", 1.0, ok));
+        s.range = static_cast<float>(number(l, "range", 0.0, ok));
+        if (l.Has("spot") && l.Get("spot").IsObject()) {
+          s.innerCone = static_cast<float>(number(l.Get("spot"), "innerConeAngle", 0.0, ok));
+          s.outerCone = static_cast<float>(number(l.Get("spot"), "outerConeAngle", 0.7853981633974483, ok));
+        }
+        ok = ok && std::isfinite(s.colour.x + s.colour.y + s.colour.z) && s.intensity >= 0.0f && s.range >= 0.0f && s.innerCone >= 0.0f &&
+             s.outerCone > s.innerCone && s.outerCone <= 1.5707964f;
+        if (ok) light = s;
+      }
+      if (!light) warn_.add(name_ + ": light " + std::to_string(i) + " of KHR_lights_punctual is malformed and left out");
+      lights_.push_back(light);
+    }
+    return okStatus();
+  }
+
+  // The camera of node `n` (placed at `world`), or a warning when it is malformed.
+  void addCamera(int index, const glm::dmat4& world) {
+    if (index >= static_cast<int>(m_.cameras.size())) {
+      warn_.add(name_ + ": a node names camera " + std::to_string(index) + ", which does not exist");
+      return;
+    }
+    const tinygltf::Camera& c = m_.cameras[static_cast<std::size_t>(index)];
+    SceneCamera s;
+    s.name = c.name.empty() ? "camera " + std::to_string(index) : c.name;
+    s.world = glm::mat4(world);
+    bool ok = true;
+    if (c.type == "perspective") {
+      const tinygltf::PerspectiveCamera& p = c.perspective;
+      s.yfov = static_cast<float>(p.yfov);
+      s.aspect = static_cast<float>(p.aspectRatio);
+      s.znear = static_cast<float>(p.znear);
+      s.zfar = static_cast<float>(p.zfar);
+      ok = std::isfinite(p.yfov) && p.yfov > 1e-4 && p.yfov < 3.1 && std::isfinite(p.aspectRatio) && p.aspectRatio >= 0.0 &&
+           std::isfinite(p.znear) && p.znear > 0.0 && std::isfinite(p.zfar) && (p.zfar == 0.0 || p.zfar > p.znear);
+    } else if (c.type == "orthographic") {
+      const tinygltf::OrthographicCamera& o = c.orthographic;
+      s.perspective = false;
+      s.xmag = static_cast<float>(o.xmag);
+      s.ymag = static_cast<float>(o.ymag);
+      s.znear = static_cast<float>(o.znear);
+      s.zfar = static_cast<float>(o.zfar);
+      ok = std::isfinite(o.xmag) && std::isfinite(o.ymag) && o.xmag != 0.0 && o.ymag != 0.0 && std::isfinite(o.znear) && o.znear >= 0.0 &&
+           std::isfinite(o.zfar) && o.zfar > o.znear;
+    } else {
+      ok = false;
+    }
+    const glm::mat4 w = s.world;
+    for (int k = 0; k < 4 && ok; ++k) ok = std::isfinite(w[k].x + w[k].y + w[k].z + w[k].w);
+    if (!ok) {
+      warn_.add(name_ + ": camera " + std::to_string(index) + " is malformed and left out");
+      return;
+    }
+    cameras_.push_back(s);
+  }
+
+  void placeLight(const tinygltf::Node& n, const glm::dmat4& world) {
+    const auto it = n.extensions.find("KHR_lights_punctual");
+    if (it == n.extensions.end() || !it->second.Has("light") || !it->second.Get("light").IsInt()) return;
+    const int index = it->second.Get("light").Get<int>();
+    if (index < 0 || index >= static_cast<int>(lights_.size())) {
+      warn_.add(name_ + ": a node names light " + std::to_string(index) + ", which does not exist");
+      return;
+    }
+    if (!lights_[static_cast<std::size_t>(index)]) return;  // reported as malformed already
+    SceneLight l = *lights_[static_cast<std::size_t>(index)];
+    l.world = glm::mat4(world);
+    if (l.name.empty()) l.name = "light " + std::to_string(index);
+    placedLights_.push_back(l);
   }
 
   Result<glm::dmat4> localTransform(const tinygltf::Node& n, int index) const {
@@ -395,16 +558,50 @@ class GltfReader {
     const glm::dmat4 world = parent * *local;
     if (n.mesh >= 0) {
       if (n.mesh >= static_cast<int>(m_.meshes.size())) return fail("node " + std::to_string(index) + " names mesh " + std::to_string(n.mesh) + ", which does not exist");
-      const tinygltf::Mesh& mesh = m_.meshes[static_cast<std::size_t>(n.mesh)];
-      for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
-        if (Status s = primitive(mesh.primitives[p], world, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(p)); !s) return s;
+      if (Status s = mesh(n, index, world); !s) return s;
     }
+    if (n.camera >= 0) addCamera(n.camera, world);
+    placeLight(n, world);
     for (int c : n.children)
       if (Status s = visit(c, world, depth + 1, visited); !s) return s;
     return okStatus();
   }
 
-  Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where) {
+  // Node `index`'s mesh: its primitives into the one mesh at its world transform (Flatten), or
+  // an object instancing the glTF mesh, built the first time a node uses it (Objects).
+  Status mesh(const tinygltf::Node& n, int index, const glm::dmat4& world) {
+    const tinygltf::Mesh& mesh = m_.meshes[static_cast<std::size_t>(n.mesh)];
+    auto build = [&](Target& t, const glm::dmat4& placement) -> Status {
+      for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
+        if (Status s = primitive(mesh.primitives[p], placement, "mesh " + std::to_string(n.mesh) + " primitive " + std::to_string(p), t); !s)
+          return s;
+      return okStatus();
+    };
+    if (mode_ == Mode::Flatten) return build(targets_.front(), world);
+    // A mirroring node gets a mirrored copy of the mesh (its winding reversed), so every
+    // object's transform keeps the orientation the renderer's culling assumes.
+    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    const glm::dmat4 mirror = mirrored ? glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) : glm::dmat4(1.0);
+    const auto key = std::make_pair(n.mesh, mirrored);
+    auto built = built_.find(key);
+    if (built == built_.end()) {
+      const std::uint64_t before = sceneTriangles_;
+      built = built_.emplace(key, std::make_pair(targets_.size(), std::uint64_t(0))).first;
+      if (Status s = build(newTarget(), mirror); !s) return s;
+      built->second.second = sceneTriangles_ - before;
+    } else {
+      // Drawn once more: the bound is on what the scene draws.
+      sceneTriangles_ += built->second.second;
+      if (sceneTriangles_ > kMaxSceneTriangles)
+        return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
+    }
+    std::string name = n.name.empty() ? (mesh.name.empty() ? "node " + std::to_string(index) : mesh.name) : n.name;
+    objects_.push_back({printable(name), built->second.first, world * mirror});
+    return okStatus();
+  }
+
+  Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t) {
+    PolygonSoup& soup = t.soup;
     if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP && prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
       ++skippedPrimitives_;
       return okStatus();
@@ -442,36 +639,37 @@ class GltfReader {
     sceneTriangles_ += triangles;
     if (sceneTriangles_ > kMaxSceneTriangles)
       return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
-    int material = static_cast<int>(soup_.materials.size()) - 1;  // the default
+    int fileMaterial = static_cast<int>(materials_.size()) - 1;  // the default
     if (prim.material >= 0) {
       if (prim.material >= static_cast<int>(m_.materials.size())) return fail(where + " names material " + std::to_string(prim.material) + ", which does not exist");
-      material = prim.material;
+      fileMaterial = prim.material;
     }
+    const int material = localMaterial(t, fileMaterial);
 
-    // Vertices, in world space; a mirroring transform reverses the winding.
-    const std::size_t base = soup_.vertices.size();
+    // Vertices, placed by `world`; a mirroring transform reverses the winding.
+    const std::size_t base = soup.vertices.size();
     for (std::size_t i = 0; i < positions->count; ++i) {
       const glm::dvec4 p = world * glm::dvec4(positions->component(i, 0), positions->component(i, 1), positions->component(i, 2), 1.0);
-      if (!soup_.addVertex(glm::dvec3(p))) warn_.add(name_ + ": " + where + " vertex " + std::to_string(i) + ": non-finite position; faces using it are skipped");
+      if (!soup.addVertex(glm::dvec3(p))) warn_.add(name_ + ": " + where + " vertex " + std::to_string(i) + ": non-finite position; faces using it are skipped");
     }
-    const bool textured = uv && soup_.materials[static_cast<std::size_t>(material)].diffuseMap >= 0;
-    if (textured || soup_.tracksTexcoords) {
-      if (!soup_.tracksTexcoords) {
-        soup_.trackTexcoords();
-        soup_.texcoords.resize(base, glm::vec2(0.0f));
+    const bool textured = uv && soup.materials[static_cast<std::size_t>(material)].diffuseMap >= 0;
+    if (textured || soup.tracksTexcoords) {
+      if (!soup.tracksTexcoords) {
+        soup.trackTexcoords();
+        soup.texcoords.resize(base, glm::vec2(0.0f));
       }
-      const glm::mat3& t = transforms_[static_cast<std::size_t>(material)];
+      const glm::mat3& tt = transforms_[static_cast<std::size_t>(fileMaterial)];
       for (std::size_t i = 0; i < positions->count; ++i) {
         glm::vec2 c(0.0f);
         if (textured) {
-          const glm::vec3 u = t * glm::vec3(float(uv->component(i, 0)), float(uv->component(i, 1)), 1.0f);
+          const glm::vec3 u = tt * glm::vec3(float(uv->component(i, 0)), float(uv->component(i, 1)), 1.0f);
           c = std::isfinite(u.x) && std::isfinite(u.y) ? glm::vec2(u.x, 1.0f - u.y) : glm::vec2(0.0f);  // glTF's v runs down
         }
-        soup_.texcoords.push_back(c);
+        soup.texcoords.push_back(c);
       }
     }
-    if (colour || !soup_.colours.empty()) {
-      soup_.colours.resize(base, glm::vec3(1.0f));
+    if (colour || !soup.colours.empty()) {
+      soup.colours.resize(base, glm::vec3(1.0f));
       for (std::size_t i = 0; i < positions->count; ++i) {
         glm::vec3 c(1.0f);
         if (colour)
@@ -479,15 +677,14 @@ class GltfReader {
             const double v = colour->component(i, k);
             c[k] = std::isfinite(v) ? std::clamp(static_cast<float>(v), 0.0f, 1.0f) : 1.0f;
           }
-        soup_.colours.push_back(c);
+        soup.colours.push_back(c);
       }
     }
-    if (soup_.materials.size() > 1 && !soup_.tracksMaterials) soup_.trackMaterials();
 
     const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     auto corner = [&](std::size_t k) -> long long {
       const std::uint64_t i = indices ? indices->index(k) : k;
-      return i < positions->count ? static_cast<long long>(base + i) : static_cast<long long>(soup_.vertices.size() + i);  // out of range: FaceBuilder refuses it, named
+      return i < positions->count ? static_cast<long long>(base + i) : static_cast<long long>(soup.vertices.size() + i);  // out of range: FaceBuilder refuses it, named
     };
     // Reused for every triangle (FaceBuilder takes the corners as scratch).
     std::vector<long long> face(3);
@@ -496,37 +693,42 @@ class GltfReader {
     const auto add = [&](long long a, long long b, long long c, std::size_t number) {
       face.assign({a, mirrored ? c : b, mirrored ? b : c});
       for (std::size_t k = 0; k < 3; ++k) tex[k] = textured ? static_cast<int>(face[k]) : -1;
-      faces_.add(face, tex, static_cast<std::uint16_t>(material), unit.c_str(), number);
+      t.faces->add(face, tex, static_cast<std::uint16_t>(material), unit.c_str(), number);
     };
     if (prim.mode == TINYGLTF_MODE_TRIANGLES) {
-      for (std::size_t t = 0; t + 2 < corners; t += 3) add(corner(t), corner(t + 1), corner(t + 2), t / 3);
+      for (std::size_t i = 0; i + 2 < corners; i += 3) add(corner(i), corner(i + 1), corner(i + 2), i / 3);
     } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-      for (std::size_t t = 0; t + 2 < corners; ++t)
-        if (t % 2 == 0) add(corner(t), corner(t + 1), corner(t + 2), t);
-        else add(corner(t + 1), corner(t), corner(t + 2), t);
+      for (std::size_t i = 0; i + 2 < corners; ++i)
+        if (i % 2 == 0) add(corner(i), corner(i + 1), corner(i + 2), i);
+        else add(corner(i + 1), corner(i), corner(i + 2), i);
     } else {
-      for (std::size_t t = 1; t + 1 < corners; ++t) add(corner(0), corner(t), corner(t + 1), t - 1);
+      for (std::size_t i = 1; i + 1 < corners; ++i) add(corner(0), corner(i), corner(i + 1), i - 1);
     }
     return okStatus();
   }
 
   const std::string& name_;
   const tinygltf::Model& m_;
-  PolygonSoup& soup_;
   LoadReport& report_;
   Warnings warn_;
-  FaceBuilder faces_;
-  std::vector<glm::mat3> transforms_;  // per material: its base colour map's texture transform
-  std::map<int, int> decoded_;         // glTF image -> soup_.textures
+  Mode mode_;
+  std::deque<Target> targets_;  // a deque: each FaceBuilder keeps references into its target
+  std::vector<Object> objects_;
+  std::map<std::pair<int, bool>, std::pair<std::size_t, std::uint64_t>> built_;  // (mesh, mirrored) -> (target, triangles)
+  std::vector<MeshMaterial> materials_;  // the file's, then the default
+  std::vector<glm::mat3> transforms_;    // per material: its base colour map's texture transform
+  std::vector<MeshTexture> images_;      // decoded base colour maps
+  std::map<int, int> decoded_;           // glTF image -> images_
+  std::vector<std::optional<SceneLight>> lights_;  // KHR_lights_punctual's, null where malformed
+  std::vector<SceneLight> placedLights_;
+  std::vector<SceneCamera> cameras_;
   std::uint64_t sceneTriangles_ = 0;
   std::size_t skippedPrimitives_ = 0;
 };
 
-}  // namespace
-
-Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
+// tinygltf's parse of the bytes, with our file and image callbacks.
+Status parseContainer(const std::string& name, std::string& bytes, tinygltf::Model& model) {
   tinygltf::TinyGLTF loader;
-  tinygltf::Model model;
   loader.SetImageLoader(keepImageBytes, &model);
   loader.SetFsCallbacks({fileExists, expandFilePath, readWholeFile, writeWholeFile, nullptr});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
@@ -542,13 +744,73 @@ Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     return Error{name + ": not a readable glTF 2.0 file: " + printable(err.empty() ? std::string("the loader gave no reason") : err, 300)};
   }
+  return okStatus();
+}
+
+}  // namespace
+
+Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
+  tinygltf::Model model;
+  if (Status s = parseContainer(name, bytes, model); !s) return Error{s.error()};
   LoadReport report;
   report.file = name;
-  PolygonSoup soup;
-  GltfReader reader(name, model, soup, report);
+  GltfReader reader(name, model, report, GltfReader::Mode::Flatten);
   if (Status s = reader.read(); !s) return Error{s.error()};
   model = tinygltf::Model();  // the buffers go before the mesh is built (peak memory)
-  return buildMesh(std::move(soup), std::move(report));
+  GltfReader::Target& t = reader.targets().front();
+  report.skipped_faces = t.report.skipped_faces;
+  report.polygons_triangulated = t.report.polygons_triangulated;
+  report.repeated_corner_faces = t.report.repeated_corner_faces;
+  return buildMesh(std::move(t.soup), std::move(report));
+}
+
+Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
+  tinygltf::Model model;
+  if (Status s = parseContainer(name, bytes, model); !s) return Error{s.error()};
+  LoadReport report;
+  report.file = name;
+  GltfReader reader(name, model, report, GltfReader::Mode::Objects);
+  if (Status s = reader.read(); !s) return Error{s.error()};
+  LoadedScene scene;
+  scene.file = name;
+  scene.animations = model.animations.size();
+  scene.skins = model.skins.size();
+  model = tinygltf::Model();
+  scene.cameras = std::move(reader.cameras());
+  scene.lights = reader.placedLights();
+  scene.warnings = report.warnings;
+  scene.report = report;
+  std::vector<std::shared_ptr<const Mesh>> meshes(reader.targets().size());
+  std::vector<glm::dmat4> unplace(reader.targets().size(), glm::dmat4(1.0));
+  for (std::size_t i = 0; i < reader.targets().size(); ++i) {
+    GltfReader::Target& t = reader.targets()[i];
+    Result<Mesh> m = buildMesh(std::move(t.soup), std::move(t.report));
+    if (!m) {
+      // A mesh with nothing to draw (every face refused) is left out, not the whole file.
+      scene.warnings.push_back(name + ": mesh " + std::to_string(i) + ": " + m.error());
+      continue;
+    }
+    finalizeMesh(*m);
+    // The loader centred and scaled the mesh; its object transform puts it back.
+    unplace[i] = glm::translate(glm::dmat4(1.0), m->report.original_centre) * glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / m->report.original_scale));
+    meshes[i] = std::make_shared<const Mesh>(std::move(*m));
+  }
+  for (const GltfReader::Object& o : reader.objects()) {
+    if (!meshes[o.target]) continue;
+    scene.objects.push_back({o.name, meshes[o.target], glm::mat4(o.world * unplace[o.target])});
+    scene.report.vertices += meshes[o.target]->positions.size();
+    scene.report.triangles += meshes[o.target]->triangleCount();
+  }
+  for (const auto& m : meshes)
+    if (m) {
+      scene.report.skipped_faces += m->report.skipped_faces;
+      scene.report.degenerate_triangles += m->report.degenerate_triangles;
+      scene.report.polygons_triangulated += m->report.polygons_triangulated;
+      scene.report.repeated_corner_faces += m->report.repeated_corner_faces;
+      scene.report.non_manifold_faces += m->report.non_manifold_faces;
+    }
+  if (scene.objects.empty()) return Error{name + ": the scene has no triangles to draw"};
+  return scene;
 }
 
 }  // namespace npr

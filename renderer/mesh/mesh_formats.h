@@ -11,6 +11,7 @@
 
 #include "renderer/core/result.h"
 #include "renderer/mesh/mesh.h"
+#include "renderer/mesh/scene_description.h"
 
 namespace npr {
 
@@ -22,6 +23,9 @@ namespace npr {
 [[nodiscard]] Result<Mesh> parseStl(const std::string& name, std::string bytes);
 // glTF 2.0 (.gltf, .glb): the default scene flattened into one mesh (gltf_reader.cpp).
 [[nodiscard]] Result<Mesh> parseGltf(const std::string& name, std::string bytes);
+// glTF 2.0 as a scene: one object per node with a mesh (meshes finalised, shared by the nodes
+// that instance them), the cameras and the lights, all in the file's space.
+[[nodiscard]] Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes);
 // OM is read from the file by OpenMesh in a child process; `seconds` bounds that process.
 [[nodiscard]] Result<Mesh> loadOm(const std::string& path, int seconds = 30);
 

@@ -201,7 +201,7 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
     }
     if (!soup.materials.empty()) {
       m.faceMaterials.resize(nf);
-      for (std::size_t f = 0; f < nf; ++f) m.faceMaterials[f] = soup.triangleMaterials[faceOrigin[f]];
+      for (std::size_t f = 0; f < nf; ++f) m.faceMaterials[f] = soup.tracksMaterials ? soup.triangleMaterials[faceOrigin[f]] : 0;
       m.materials = std::move(soup.materials);
       m.textures = std::move(soup.textures);
     }

@@ -1,5 +1,6 @@
 // The scene: the models the renderer draws, each with its own transform and derived caches
-// (model.h). Today's viewer is a scene of one model; the API adds, removes and moves them.
+// (model.h). The API adds, removes, moves, hides and shows them; a hidden model keeps its
+// caches and is skipped by every pass (forEach, placed, bounds and first see only the shown).
 #pragma once
 
 #include <cstdint>
@@ -56,32 +57,61 @@ class Scene {
     ++version_;
     return true;
   }
-  bool empty() const { return models_.empty(); }
+  // False when there is no such model.
+  bool setVisible(ModelId id, bool visible) {
+    for (auto& m : models_)
+      if (m.id == id) {
+        if (m.visible != visible) ++version_;
+        m.visible = visible;
+        return true;
+      }
+    return false;
+  }
+  // Whether no model is shown.
+  bool empty() const {
+    for (const auto& m : models_)
+      if (m.visible) return false;
+    return true;
+  }
   std::size_t size() const { return models_.size(); }
   // Changes whenever a model is added, removed or moved (for the caches of the whole scene).
   unsigned version() const { return version_; }
-  // Calls fn(Model&) for every model, in the order they were added.
+  // Calls fn(Model&) for every shown model, in the order they were added.
   template <class Fn>
   void forEach(Fn&& fn) {
-    for (auto& m : models_) fn(*m.model);
+    for (auto& m : models_)
+      if (m.visible) fn(*m.model);
   }
   template <class Fn>
   void forEach(Fn&& fn) const {
-    for (const auto& m : models_) fn(static_cast<const Model&>(*m.model));
+    for (const auto& m : models_)
+      if (m.visible) fn(static_cast<const Model&>(*m.model));
+  }
+  // Hidden ones too (what must hold for every model when it is shown again).
+  template <class Fn>
+  void forEachIncludingHidden(Fn&& fn) {
+    for (auto& m : models_) fn(*m.model);
   }
   // Every model's mesh with the camera placed by its transform (passes that see the whole scene).
   std::vector<PlacedMesh> placed(const CameraMatrices& camera) const {
     std::vector<PlacedMesh> meshes;
-    for (const auto& e : models_) meshes.push_back({&e.model->gpu(), e.model->placed(camera)});
+    for (const auto& e : models_)
+      if (e.visible) meshes.push_back({&e.model->gpu(), e.model->placed(camera)});
     return meshes;
   }
-  Model* first() { return models_.empty() ? nullptr : models_.front().model.get(); }
-  const Model* first() const { return models_.empty() ? nullptr : models_.front().model.get(); }
+  // The first shown model (null when none is).
+  Model* first() {
+    for (auto& m : models_)
+      if (m.visible) return m.model.get();
+    return nullptr;
+  }
+  const Model* first() const { return const_cast<Scene*>(this)->first(); }
   // A sphere holding every model (scene space).
   glm::vec4 bounds() const {
     glm::vec3 centre(0.0f);
     float radius = -1.0f;
     for (const auto& e : models_) {
+      if (!e.visible) continue;
       const glm::vec3 c(e.model->transform()[3]);
       const float r = e.model->sceneRadius();
       if (radius < 0.0f) {
@@ -105,6 +135,7 @@ class Scene {
   struct Entry {
     ModelId id;
     std::unique_ptr<Model> model;
+    bool visible = true;
   };
   std::vector<Entry> models_;
   ModelId nextId_ = 1;

@@ -1,0 +1,188 @@
+// The viewer's objects (see scene_objects.h).
+#include "app/scene_objects.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/mesh/scene_loader.h"
+#include "renderer/palette/palette.h"
+
+namespace npr {
+namespace fs = std::filesystem;
+namespace {
+
+// The sphere about the bounding box's centre holding every vertex of `objects` placed by
+// `placement(object)`: what the loader fits a single mesh by, so a scene fits as tightly.
+template <class Placement>
+glm::vec4 boundsOf(const std::vector<const ViewerObject*>& objects, Placement&& placement) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const ViewerObject* o : objects) {
+    const glm::mat4 t = placement(*o);
+    for (const glm::vec3& p : o->mesh->positions) {
+      const glm::vec3 q(t * glm::vec4(p, 1.0f));
+      lo = glm::min(lo, q);
+      hi = glm::max(hi, q);
+    }
+  }
+  if (!(lo.x <= hi.x)) return glm::vec4(0.0f, 0.0f, 0.0f, -1.0f);
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  float r2 = 0.0f;
+  for (const ViewerObject* o : objects) {
+    const glm::mat4 t = placement(*o);
+    for (const glm::vec3& p : o->mesh->positions) {
+      const glm::vec3 d = glm::vec3(t * glm::vec4(p, 1.0f)) - centre;
+      r2 = std::max(r2, glm::dot(d, d));
+    }
+  }
+  return glm::vec4(centre, std::sqrt(r2));
+}
+
+}  // namespace
+
+Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings) {
+  std::vector<LoadedScene> loaded;
+  for (const std::string& path : paths) {
+    Result<LoadedScene> s = loadScene(path);
+    if (!s) return Error{s.error()};
+    loaded.push_back(std::move(*s));
+  }
+  if (!add) {
+    renderer.clearModels();
+    objects_.clear();
+    files_.clear();
+  }
+  for (LoadedScene& s : loaded) {
+    for (const std::string& w : s.warnings) warnings.push_back(w);
+    const std::size_t file = files_.size();
+    files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), s.animations, glm::mat4(1.0f)});
+    for (SceneObject& o : s.objects) {
+      ViewerObject v;
+      v.name = o.name;
+      v.file = file;
+      v.mesh = std::move(o.mesh);
+      v.inFile = o.transform;
+      v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
+      objects_.push_back(std::move(v));
+    }
+  }
+  place(renderer);
+  return okStatus();
+}
+
+void SceneObjects::setLayout(Layout layout, Renderer& renderer) {
+  layout_ = layout;
+  place(renderer);
+}
+
+void SceneObjects::place(Renderer& renderer) {
+  std::vector<const ViewerObject*> all;
+  for (const ViewerObject& o : objects_) all.push_back(&o);
+  // Each file's bounding sphere in its own space (row and grid only).
+  std::vector<glm::vec4> fileBounds(files_.size(), glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
+  if (layout_ != Layout::File && files_.size() > 1)
+    for (std::size_t f = 0; f < files_.size(); ++f) {
+      std::vector<const ViewerObject*> mine;
+      for (const ViewerObject* o : all)
+        if (o->file == f) mine.push_back(o);
+      fileBounds[f] = boundsOf(mine, [](const ViewerObject& o) { return o.inFile; });
+    }
+  // Row and grid: every file scaled to a unit sphere and set two and a half radii apart,
+  // left to right (and top to bottom), centred on the origin.
+  const std::size_t n = files_.size();
+  const std::size_t columns = layout_ == Layout::Grid ? static_cast<std::size_t>(std::ceil(std::sqrt(double(n)))) : n;
+  const std::size_t rows = columns ? (n + columns - 1) / columns : 0;
+  for (std::size_t f = 0; f < n; ++f) {
+    glm::mat4& l = files_[f].layout;
+    const glm::vec4 b = fileBounds[f];
+    if (layout_ == Layout::File || n < 2 || !(b.w > 0.0f)) {
+      l = glm::mat4(1.0f);
+      continue;
+    }
+    const float spacing = 2.5f;
+    const glm::vec3 at((float(f % columns) - 0.5f * float(columns - 1)) * spacing, (0.5f * float(rows - 1) - float(f / columns)) * spacing, 0.0f);
+    l = glm::translate(glm::mat4(1.0f), at) * glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / b.w)) * glm::translate(glm::mat4(1.0f), -glm::vec3(b));
+  }
+  // The scene into the unit sphere. One object is drawn as loaded (its mesh is centred and
+  // scaled already): exactly, not through a product of transforms that rounds.
+  if (objects_.size() == 1) {
+    fit_ = glm::inverse(files_[objects_.front().file].layout * objects_.front().inFile);
+    renderer.setModelTransform(objects_.front().id, glm::mat4(1.0f));
+    return;
+  }
+  const glm::vec4 scene = boundsOf(all, [&](const ViewerObject& o) { return files_[o.file].layout * o.inFile; });
+  const float r = scene.w > 0.0f && std::isfinite(scene.w) ? scene.w : 1.0f;
+  fit_ = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / r)) * glm::translate(glm::mat4(1.0f), -glm::vec3(scene));
+  for (const ViewerObject& o : objects_) renderer.setModelTransform(o.id, toViewer(o.file) * o.inFile);
+}
+
+bool SceneObjects::setVisible(std::size_t object, bool visible, Renderer& renderer) {
+  if (object >= objects_.size()) return false;
+  objects_[object].visible = visible;
+  return renderer.setModelVisible(objects_[object].id, visible);
+}
+
+Status SceneObjects::setPalette(std::size_t object, const std::string& path, Renderer& renderer) {
+  if (object >= objects_.size()) return Error{"no object number " + std::to_string(object + 1) + " (the scene has " + std::to_string(objects_.size()) + ")"};
+  ViewerObject& o = objects_[object];
+  if (path.empty()) {
+    renderer.clearModelPalette(o.id);
+    o.palette.clear();
+    return okStatus();
+  }
+  Result<Palette> p = loadPalette(path);
+  if (!p) return Error{p.error()};
+  if (Status s = renderer.setModelPalette(o.id, *p); !s) return s;
+  o.palette = path;
+  return okStatus();
+}
+
+std::size_t SceneObjects::triangles() const {
+  std::size_t n = 0;
+  for (const ViewerObject& o : objects_) n += o.mesh->triangleCount();
+  return n;
+}
+
+std::vector<std::string> SceneObjects::materialNames(std::size_t limit) const {
+  std::vector<std::string> names;
+  for (const ViewerObject& o : objects_)
+    for (const MeshMaterial& m : o.mesh->materials) {
+      if (names.size() >= limit) return names;
+      if (m.fromLightingState && m.name == "(default)") continue;
+      if (std::find(names.begin(), names.end(), m.name) == names.end()) names.push_back(m.name);
+    }
+  return names;
+}
+
+std::string SceneObjects::label() const {
+  if (files_.empty()) return "-";
+  const std::string objects = std::to_string(objects_.size()) + (objects_.size() == 1 ? " object" : " objects");
+  if (files_.size() > 1) return std::to_string(files_.size()) + " files (" + objects + ")";
+  const std::string name = fs::path(files_.front().path).filename().string();
+  return objects_.size() == 1 ? name : name + " (" + objects + ")";
+}
+
+std::vector<SceneCamera> SceneObjects::cameras() const {
+  std::vector<SceneCamera> out;
+  for (std::size_t f = 0; f < files_.size(); ++f)
+    for (SceneCamera c : files_[f].cameras) {
+      c.world = toViewer(f) * c.world;
+      out.push_back(c);
+    }
+  return out;
+}
+
+std::vector<SceneLight> SceneObjects::lights() const {
+  std::vector<SceneLight> out;
+  for (std::size_t f = 0; f < files_.size(); ++f)
+    for (SceneLight l : files_[f].lights) {
+      l.world = toViewer(f) * l.world;
+      out.push_back(l);
+    }
+  return out;
+}
+
+}  // namespace npr

@@ -1,0 +1,74 @@
+// The objects the viewer shows, from one or more files: each with its name, its file, its
+// placement, whether it is shown and its own palette. Files are placed as in their own space
+// (--layout file) or set apart in a row or grid, and the whole scene is then fitted into the
+// unit sphere about the origin, which the camera, the light and the ground are sized for.
+// Loads are all-or-nothing: a file that fails leaves the scene as it was.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/scene_layout.h"
+#include "renderer/mesh/scene_description.h"
+#include "renderer/renderer.h"
+
+namespace npr {
+
+
+struct ViewerObject {
+  std::string name;
+  std::size_t file = 0;  // into SceneObjects::files()
+  std::shared_ptr<const Mesh> mesh;
+  glm::mat4 inFile{1.0f};  // the mesh's space to its file's
+  ModelId id = 0;
+  bool visible = true;
+  std::string palette;  // its own palette's file; empty: the main palette
+};
+
+struct SceneFile {
+  std::string path;
+  std::vector<SceneCamera> cameras;  // in the file's space
+  std::vector<SceneLight> lights;
+  std::size_t animations = 0;
+  glm::mat4 layout{1.0f};  // the file's space to the scene's (before the fit)
+};
+
+class SceneObjects {
+ public:
+  // Loads every file of `paths` and puts their objects in place of the scene's (or beside
+  // them, `add`). The files' warnings go to `warnings`. Nothing changes when one fails.
+  [[nodiscard]] Status load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings);
+  void setLayout(Layout layout, Renderer& renderer);
+  Layout layout() const { return layout_; }
+  bool setVisible(std::size_t object, bool visible, Renderer& renderer);
+  // Draws object `object` with the palette at `path` (empty: the main one again).
+  [[nodiscard]] Status setPalette(std::size_t object, const std::string& path, Renderer& renderer);
+
+  const std::vector<ViewerObject>& objects() const { return objects_; }
+  const std::vector<SceneFile>& files() const { return files_; }
+  bool empty() const { return objects_.empty(); }
+  // The first object's mesh (the overlay's material list), or null.
+  const Mesh* firstMesh() const { return objects_.empty() ? nullptr : objects_.front().mesh.get(); }
+  std::size_t triangles() const;
+  // The distinct names of the objects' materials (the default one left out), at most `limit`.
+  std::vector<std::string> materialNames(std::size_t limit) const;
+  // "bunny.obj", or "scene.glb (12 objects)", or "3 files (14 objects)".
+  std::string label() const;
+  // File space to the viewer's (the layout, then the fit into the unit sphere).
+  glm::mat4 toViewer(std::size_t file) const { return fit_ * files_[file].layout; }
+  // Every file's cameras and lights in the viewer's space, in file order.
+  std::vector<SceneCamera> cameras() const;
+  std::vector<SceneLight> lights() const;
+
+ private:
+  // Places every file by the layout, fits the scene and gives the renderer the transforms.
+  void place(Renderer& renderer);
+
+  std::vector<ViewerObject> objects_;
+  std::vector<SceneFile> files_;
+  Layout layout_ = Layout::File;
+  glm::mat4 fit_{1.0f};
+};
+
+}  // namespace npr
