@@ -63,6 +63,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::string layout;
   app.add_option("--layout", layout, "Several files: placed as their files place them (file, the default), or set apart in a row or a grid");
   app.add_option("--camera-from-file", o.cameraFromFile, "View through the scene file's camera N (1 is the first; --info lists them)");
+  app.add_flag("--file-lights,!--no-file-lights", o.fileLights,
+               "Light the scene with its file's lights (glTF KHR_lights_punctual) where it has any (default on)");
   std::vector<std::string> objectPalette;
   app.add_option("--object-palette", objectPalette,
                  "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
@@ -211,6 +213,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.layout = *l;
   }
   if (o.cameraFromFile == 0 || o.cameraFromFile < -1) return {std::nullopt, fail("--camera-from-file counts from 1")};
+  if (o.cameraFromFile > 0 && (!animate.empty() || o.turntable != 0 || !camera.empty()))
+    return {std::nullopt, fail("--camera-from-file is the file's own still view: leave out --camera, --animate and --turntable")};
   for (const std::string& op : objectPalette) {
     const std::size_t eq = op.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == op.size())

@@ -175,6 +175,10 @@ std::vector<SceneCamera> SceneObjects::cameras() const {
   return out;
 }
 
+float SceneObjects::fileUnits() const {
+  return files_.empty() ? 1.0f : glm::length(glm::vec3(toViewer(0)[0]));
+}
+
 std::vector<SceneLight> SceneObjects::lights() const {
   std::vector<SceneLight> out;
   for (std::size_t f = 0; f < files_.size(); ++f)

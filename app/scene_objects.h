@@ -60,6 +60,8 @@ class SceneObjects {
   // Every file's cameras and lights in the viewer's space, in file order.
   std::vector<SceneCamera> cameras() const;
   std::vector<SceneLight> lights() const;
+  // The length of one of the first file's units in the viewer's space.
+  float fileUnits() const;
 
  private:
   // Places every file by the layout, fits the scene and gives the renderer the transforms.

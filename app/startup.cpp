@@ -53,6 +53,9 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   for (const auto& [material, file] : o.materialPalettes)
     if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
   if (Status s = applySettings(o.settings, false, state, renderer); !s) return s;
+  state.fileLights = o.fileLights;
+  if (o.cameraFromFile > 0)
+    if (Status s = state.useFileCamera(o.cameraFromFile); !s) return Error{"--camera-from-file: " + s.error()};
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());
   state.noteIdleControlPalettes();
   if (!o.saveStyle.empty())

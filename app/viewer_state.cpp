@@ -6,8 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/core/printable.h"
+#include "app/file_lights.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -45,6 +48,11 @@ Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, 
     return s;
   }
   for (const auto& w : warnings) note(w);
+  const std::size_t lights = scene.lights().size();
+  if (lights > 0 && fileLights)
+    note(scene.label() + " is lit by its file's " + std::to_string(lights) + " light(s)" +
+         (lights > kMaxLights ? " (the " + std::to_string(kMaxLights) + " brightest)" : std::string()) + "; --no-file-lights for the viewer's");
+  fileCamera.reset();
   camera.frame(1.0f);  // the scene is fitted into the unit sphere
   renderer.resetPattern();
   for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);
@@ -149,6 +157,41 @@ Status ViewerState::selectPalette(int index, Renderer& renderer) {
   return loadPalette(palettes[static_cast<size_t>(index)], renderer);
 }
 
+CameraMatrices ViewerState::view(float aspect) const {
+  if (!fileCamera) return camera.matrices(aspect);
+  const SceneCamera& c = *fileCamera;
+  // The node's rotation without its scale; the scale (the fit of the scene, the file's own)
+  // applies to the camera's distances instead.
+  const glm::mat4& w = c.world;
+  const float scale = std::max(glm::length(glm::vec3(w[1])), 1e-12f);
+  const glm::vec3 back = glm::normalize(glm::vec3(w[2])), eye(w[3]);
+  const glm::vec3 right = glm::normalize(glm::cross(glm::vec3(w[1]), back));
+  const glm::vec3 up = glm::cross(back, right);
+  CameraMatrices m;
+  m.view = glm::lookAt(eye, eye - back, up);
+  // The scene lies inside the unit sphere about the origin: a far plane just past it, and a
+  // near plane no closer than depth precision allows for that far plane.
+  const float far = c.zfar > 0.0f ? c.zfar * scale : glm::length(eye) + 1.5f;
+  const float near = std::max(c.znear * scale, far * 1e-5f);
+  const float a = aspect > 0.0f && std::isfinite(aspect) ? aspect : 1.0f;
+  if (c.perspective) {
+    m.projection = glm::perspective(c.yfov, a, near, std::max(far, near * 2.0f));
+  } else {
+    const float h = std::abs(c.ymag) * scale;
+    m.projection = glm::ortho(-h * a, h * a, -h, h, c.znear * scale, std::max(far, c.znear * scale + 1e-3f));
+  }
+  return m;
+}
+
+Status ViewerState::useFileCamera(int number) {
+  const std::vector<SceneCamera> cameras = scene.cameras();
+  if (number < 1 || number > static_cast<int>(cameras.size()))
+    return Error{"no camera " + std::to_string(number) + " in " + scene.label() +
+                 (cameras.empty() ? std::string(" (it has none)") : " (it has " + std::to_string(cameras.size()) + ")")};
+  fileCamera = cameras[static_cast<std::size_t>(number - 1)];
+  return okStatus();
+}
+
 glm::vec3 ViewerState::lightWorldPosition(const CameraMatrices& camera) const {
   if (!lightFollowsCamera) return light;
   return glm::vec3(glm::inverse(camera.view) * glm::vec4(light, 1.0f));
@@ -156,6 +199,14 @@ glm::vec3 ViewerState::lightWorldPosition(const CameraMatrices& camera) const {
 
 Status ViewerState::applyLight(Renderer& renderer, const CameraMatrices& camera) const {
   LightingState& l = renderer.lighting();
+  if (litByFileLights()) {
+    fileLightsApplied_ = true;
+    return applyFileLights(scene.lights(), scene.fileUnits(), camera, l);
+  }
+  if (fileLightsApplied_) {
+    restoreViewerLight(l);
+    fileLightsApplied_ = false;
+  }
   const float pos[4] = {light.x, light.y, light.z, 1.0f};
   l.setModelView(lightFollowsCamera ? glm::mat4(1.0f) : camera.view);
   Status st = l.Lightfv(GL_LIGHT0, GL_POSITION, pos);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ struct ViewerState {
   int paletteIndex = -1;
   RenderSettings settings;
   OrbitCamera camera{30.0f, 20.0f, 3.0f};
+  // A scene file's camera in the viewer's space, looked through instead of the orbit camera
+  // until the view is moved (--camera-from-file, the overlay).
+  std::optional<SceneCamera> fileCamera;
+  // The scene files' lights in place of the viewer's (KHR_lights_punctual; --no-file-lights).
+  bool fileLights = true;
   glm::vec3 light{2.0f, 2.5f, 3.0f};  // scene space (model radius 1), or eye space when following
   bool lightFollowsCamera = false;
   bool splitView = false;  // reference on the left, the chosen path on the right
@@ -53,11 +59,21 @@ struct ViewerState {
   void note(const std::string& message);
   void noteMissingMaterial(const std::string& material);
 
+  // The view this frame is drawn from: the file's camera when one is chosen, else the orbit's.
+  CameraMatrices view(float aspect) const;
+  // Looks through the scene's camera `number` (from 1, as --info lists them).
+  Status useFileCamera(int number);
+
+  // Whether the frame is lit by the scene files' lights (there are some, and they are wanted).
+  bool litByFileLights() const { return fileLights && !scene.files().empty() && !scene.lights().empty(); }
   // Sets the light for this frame's view (OpenGL semantics: the position is transformed by
   // the modelview current when it is set). Fails, leaving the light where it was, when the
   // position is not finite.
   [[nodiscard]] Status applyLight(Renderer& renderer, const CameraMatrices& camera) const;
   glm::vec3 lightWorldPosition(const CameraMatrices& camera) const;
+
+ private:
+  mutable bool fileLightsApplied_ = false;  // the lighting state holds the files' lights
 };
 
 }  // namespace npr

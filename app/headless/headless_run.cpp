@@ -56,10 +56,10 @@ int runHeadless(const Options& o) {
     bakeProgress->update(f);
   });
   target->bind();
-  CameraMatrices lastCamera = state.camera.matrices(aspect);
+  CameraMatrices lastCamera = state.view(aspect);
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
-    const CameraMatrices cam = state.camera.matrices(aspect);
+    const CameraMatrices cam = state.view(aspect);
     lastCamera = cam;
     if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
     target->bind();

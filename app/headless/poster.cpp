@@ -42,7 +42,7 @@ int renderPoster(const Options& o, ViewerState& state, Renderer& renderer) {
   if (!out) return reportFailure(out.error());
   RenderSettings settings = state.settings;
   settings.pattern = PatternSpace::Screen;  // a still: the anchored frame would start at the screen's anyway
-  const CameraMatrices whole = state.camera.matrices(float(W) / float(H));
+  const CameraMatrices whole = state.view(float(W) / float(H));
   if (Status s = state.applyLight(renderer, whole); !s) return reportFailure("light: " + s.error());
   ProgressLine progress("poster " + std::to_string(W) + "x" + std::to_string(H) + " in " + std::to_string(columns * rows) + " tiles");
   for (int r = 0; r < rows; ++r) {

@@ -50,8 +50,10 @@ void onCursor(GLFWwindow* w, double x, double y) {
     const glm::vec3 delta(float(d.x) * scale, -float(d.y) * scale, 0.0f);
     s.light += s.lightFollowsCamera ? delta : camToWorld * delta;
   } else if (v.dragging[GLFW_MOUSE_BUTTON_LEFT]) {
+    s.fileCamera.reset();  // moving the view leaves the file's camera for the orbit camera
     s.camera.orbit(-float(d.x) * 0.4f, float(d.y) * 0.4f);
   } else if (v.dragging[GLFW_MOUSE_BUTTON_RIGHT] || v.dragging[GLFW_MOUSE_BUTTON_MIDDLE]) {
+    s.fileCamera.reset();
     s.camera.pan(glm::vec2(float(d.x) * 2.0f / float(ws.y) , -float(d.y) * 2.0f / float(ws.y)) * glm::vec2(1.0f / v.aspect(), 1.0f), v.aspect());
   }
 }
@@ -67,6 +69,7 @@ void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
   const double sceneWidth = std::max(1.0, double(ws.x) - (v.overlay ? double(v.panelWidth) : 0.0));
   glm::vec2 ndc(float(x / sceneWidth) * 2.0f - 1.0f, 1.0f - float(y / ws.y) * 2.0f);
   if (v.state.splitView) ndc.x = ndc.x < 0.0f ? ndc.x * 2.0f + 1.0f : ndc.x * 2.0f - 1.0f;
+  v.state.fileCamera.reset();
   v.state.camera.zoom(std::pow(0.88f, float(dy)), ndc, v.aspect());
 }
 

@@ -213,6 +213,26 @@ void drawObjectList(Viewer& v) {
   ImGui::TreePop();
 }
 
+// The scene files' cameras (looked through until the view is moved) and lights.
+void drawFileViews(Viewer& v) {
+  ViewerState& s = v.state;
+  const std::vector<SceneCamera> cameras = s.scene.cameras();
+  if (!cameras.empty()) {
+    const std::string current = s.fileCamera ? s.fileCamera->name : "orbit";
+    if (ImGui::BeginCombo("camera", current.c_str())) {
+      if (ImGui::Selectable("orbit", !s.fileCamera)) s.fileCamera.reset();
+      for (std::size_t i = 0; i < cameras.size() && i < 64; ++i) {
+        ImGui::PushID(static_cast<int>(i));
+        if (ImGui::Selectable(cameras[i].name.c_str(), s.fileCamera && s.fileCamera->name == cameras[i].name))
+          (void)s.useFileCamera(static_cast<int>(i) + 1);
+        ImGui::PopID();
+      }
+      ImGui::EndCombo();
+    }
+  }
+  if (!s.scene.lights().empty()) ImGui::Checkbox("the file's lights", &s.fileLights);
+}
+
 }  // namespace
 
 void drawOverlay(Viewer& v) {
@@ -247,6 +267,7 @@ void drawOverlay(Viewer& v) {
   ImGui::Separator();
   ImGui::Text("model: %s", s.scene.label().c_str());
   drawObjectList(v);
+  drawFileViews(v);
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
   if (ImGui::BeginCombo("style", "choose a style")) {
     for (const std::string& file : discoverStyles())

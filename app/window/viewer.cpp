@@ -67,14 +67,22 @@ void applyAction(Viewer& v, const KeyAction& a) {
       break;
     }
     case Action::ToggleSplit: s.splitView = !s.splitView; break;
-    case Action::FrameModel: s.camera.frame(1.0f); r.resetPattern(); break;  // the scene fits the unit sphere
+    case Action::FrameModel:  // the scene fits the unit sphere
+      s.fileCamera.reset();
+      s.camera.frame(1.0f);
+      r.resetPattern();
+      break;
     case Action::CyclePattern:
       s.settings.pattern = s.settings.pattern == PatternSpace::Screen     ? PatternSpace::Anchored
                            : s.settings.pattern == PatternSpace::Anchored ? PatternSpace::Object
                                                                           : PatternSpace::Screen;
       r.resetPattern();
       break;
-    case Action::ResetView: s.camera.reset(); r.resetPattern(); break;
+    case Action::ResetView:
+      s.fileCamera.reset();
+      s.camera.reset();
+      r.resetPattern();
+      break;
     case Action::ToggleLightFollow: {
       // Keep the light where it is on screen when switching: convert its position.
       const CameraMatrices cam = s.camera.matrices(v.aspect());

@@ -58,7 +58,7 @@ int runWindowViewer(const Options& o) {
 
     const glm::ivec2 fb = v.window->framebufferSize();
     const glm::ivec4 sceneView = v.sceneViewport();
-    const CameraMatrices cam = v.state.camera.matrices(v.aspect());
+    const CameraMatrices cam = v.state.view(v.aspect());
     // Where this frame's passes share the framebuffer's depth and stencil (the stencil path's
     // masks writing its per-pixel buffers as they mark, the turn resolve), which the window's
     // own cannot (they would draw the mesh once more for each buffer), the scene is drawn in a

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/scene_loader.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -214,6 +215,137 @@ TEST(Gltf, TextureTransformMovesTheCoordinates) {
   bool outside = false;
   for (const glm::vec2& t : m->texcoords) outside = outside || t.x < -0.01f || t.x > 1.01f || t.y < -0.01f || t.y > 1.01f;
   EXPECT_TRUE(outside);
+}
+
+// ---------------------------------------------------------------------------------------
+// The file as a scene (parseGltfScene through loadScene): objects, cameras, lights.
+
+Result<LoadedScene> loadAsScene(const TempDir& d, const Doc& doc, const std::string& name = "scene.gltf") {
+  return loadScene(d.write(name, doc.text()));
+}
+
+// The object's mesh put back where its file had it.
+std::vector<glm::vec3> placed(const SceneObject& o) {
+  std::vector<glm::vec3> out;
+  for (const glm::vec3& p : o.mesh->positions) out.push_back(glm::vec3(o.transform * glm::vec4(p, 1.0f)));
+  return out;
+}
+
+bool near(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-4f; }
+
+TEST(GltfScene, NodesBecomeObjectsSharingTheirMeshPlacedAsInTheFile) {
+  TempDir d;
+  Doc doc;
+  doc.nodes = R"([{"name":"left","mesh":0,"translation":[10,0,0]},{"mesh":0,"children":[2]},{"name":"child","mesh":0,"translation":[0,0,-3]}])";
+  doc.scenes = R"([{"nodes":[0,1]}])";
+  auto s = loadAsScene(d, doc);
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->objects.size(), 3u);
+  EXPECT_EQ(s->objects[0].name, "left");
+  EXPECT_EQ(s->objects[1].name, "node 1");
+  EXPECT_EQ(s->objects[2].name, "child");
+  // One glTF mesh instanced three times: one Mesh.
+  EXPECT_EQ(s->objects[0].mesh.get(), s->objects[1].mesh.get());
+  EXPECT_EQ(s->objects[1].mesh.get(), s->objects[2].mesh.get());
+  const glm::vec3 file[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const glm::vec3 offset[3] = {{10, 0, 0}, {0, 0, 0}, {0, 0, -3}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::vector<glm::vec3> at = placed(s->objects[k]);
+    ASSERT_EQ(at.size(), 3u);
+    for (const glm::vec3& want : file) {
+      bool found = false;
+      for (const glm::vec3& p : at) found = found || near(p, want + offset[k]);
+      EXPECT_TRUE(found) << "object " << k << " lacks the file's vertex at " << want.x + offset[k].x << ", " << want.y << ", " << want.z + offset[k].z;
+    }
+  }
+  EXPECT_EQ(s->report.triangles, 3u);
+  // The same file flattened has the same triangles.
+  auto flat = load(d, doc, "flat.gltf");
+  ASSERT_TRUE(flat) << flat.error();
+  EXPECT_EQ(flat->triangleCount(), s->report.triangles);
+}
+
+TEST(GltfScene, AMirroringNodeGetsAMirroredMeshAndAnUnmirroredTransform) {
+  TempDir d;
+  Doc doc;
+  doc.nodes = R"([{"mesh":0,"scale":[-1,1,1]},{"mesh":0,"translation":[3,0,0]}])";
+  doc.scenes = R"([{"nodes":[0,1]}])";
+  auto s = loadAsScene(d, doc);
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->objects.size(), 2u);
+  EXPECT_NE(s->objects[0].mesh.get(), s->objects[1].mesh.get()) << "the mirrored instance needs a mesh of its own";
+  for (const SceneObject& o : s->objects) {
+    EXPECT_GT(glm::determinant(glm::mat3(o.transform)), 0.0f) << o.name;
+    // Its triangle, placed, faces +z as in the file (the mirror reverses the winding back).
+    const std::vector<glm::vec3> p = placed(o);
+    const std::uint32_t* i = o.mesh->indices.data();
+    EXPECT_GT(glm::cross(p[i[1]] - p[i[0]], p[i[2]] - p[i[0]]).z, 0.0f) << o.name;
+  }
+  bool mirroredVertex = false;
+  for (const glm::vec3& p : placed(s->objects[0])) mirroredVertex = mirroredVertex || near(p, {-1, 0, 0});
+  EXPECT_TRUE(mirroredVertex);
+}
+
+TEST(GltfScene, CamerasAndLightsArePlacedByTheirNodesAndMalformedOnesNamed) {
+  TempDir d;
+  Doc doc;
+  doc.nodes = R"([{"mesh":0},{"camera":0,"translation":[0,0,5]},{"camera":1},{"translation":[0,4,0],"extensions":{"KHR_lights_punctual":{"light":0}}},
+                  {"extensions":{"KHR_lights_punctual":{"light":1}}},{"extensions":{"KHR_lights_punctual":{"light":7}}}])";
+  doc.scenes = R"([{"nodes":[0,1,2,3,4,5]}])";
+  doc.extra = R"(,"cameras":[{"type":"perspective","name":"front","perspective":{"yfov":0.6,"znear":0.1,"zfar":50}},
+                             {"type":"perspective","perspective":{"yfov":0,"znear":0.1}}],
+                 "extensionsUsed":["KHR_lights_punctual"],
+                 "extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot","name":"key","intensity":20,"color":[1,0.5,0.25],"spot":{"outerConeAngle":0.5}},
+                                                                 {"type":"point","intensity":-3}]}})";
+  auto s = loadAsScene(d, doc);
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->cameras.size(), 1u);
+  EXPECT_EQ(s->cameras[0].name, "front");
+  EXPECT_FLOAT_EQ(s->cameras[0].yfov, 0.6f);
+  EXPECT_TRUE(near(glm::vec3(s->cameras[0].world[3]), {0, 0, 5}));
+  ASSERT_EQ(s->lights.size(), 1u);
+  EXPECT_EQ(s->lights[0].name, "key");
+  EXPECT_EQ(s->lights[0].type, SceneLight::Type::Spot);
+  EXPECT_FLOAT_EQ(s->lights[0].intensity, 20.0f);
+  EXPECT_FLOAT_EQ(s->lights[0].outerCone, 0.5f);
+  EXPECT_TRUE(near(s->lights[0].colour, {1, 0.5f, 0.25f}));
+  EXPECT_TRUE(near(glm::vec3(s->lights[0].world[3]), {0, 4, 0}));
+  std::string all;
+  for (const std::string& w : s->warnings) all += w + "\n";
+  EXPECT_TRUE(contains(all, "camera 1 is malformed")) << all;
+  EXPECT_TRUE(contains(all, "light 1 of KHR_lights_punctual is malformed")) << all;
+  EXPECT_TRUE(contains(all, "names light 7, which does not exist")) << all;
+  // The report lists them.
+  const std::string json = sceneReportJson(*s);
+  EXPECT_TRUE(contains(json, R"("cameras":[{"name":"front","type":"perspective")")) << json;
+  EXPECT_TRUE(contains(json, R"("lights":[{"name":"key","type":"spot")")) << json;
+}
+
+TEST(GltfScene, TheEngineIsItsPartsWithTheFlattenedTriangles) {
+  const std::string file = kSamples + "2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  auto s = loadScene(file);
+  ASSERT_TRUE(s) << s.error();
+  auto flat = loadMesh(file);
+  ASSERT_TRUE(flat) << flat.error();
+  EXPECT_GT(s->objects.size(), 20u);
+  EXPECT_EQ(s->report.triangles, flat->triangleCount());
+  std::size_t textured = 0;
+  for (const SceneObject& o : s->objects) textured += o.mesh->materials.size();
+  EXPECT_GE(textured, s->objects.size()) << "every part keeps its material";
+  // Each part carries only the materials it uses.
+  for (const SceneObject& o : s->objects) EXPECT_LE(o.mesh->materials.size(), 3u) << o.name;
+}
+
+TEST(GltfScene, AnotherFormatIsOneObjectPlacedAsInItsFile) {
+  TempDir d;
+  const std::string obj = d.write("moved.obj", "v 10 0 0\nv 12 0 0\nv 10 2 0\nf 1 2 3\n");
+  auto s = loadScene(obj);
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->objects.size(), 1u);
+  EXPECT_EQ(s->objects[0].name, "moved");
+  bool found = false;
+  for (const glm::vec3& p : placed(s->objects[0])) found = found || near(p, {12, 0, 0});
+  EXPECT_TRUE(found);
 }
 
 }  // namespace

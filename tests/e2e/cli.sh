@@ -197,6 +197,28 @@ expect 2 "bad --stroke-density" -- "$viewer" --headless --strokes --stroke-densi
 expect 2 "bad --stroke-budget" -- "$viewer" --headless --strokes --stroke-budget -1
 expect 0 "--style painterly" -- "$viewer" --headless --size 96x96 --style painterly --screenshot "$tmp/painterly.png"
 
+# Scenes: several files at once, glTF nodes as objects, each object's own palette, the file's
+# camera; bad scene arguments are refused by name.
+G=/usr/share/assimp/models/glTF2
+expect 0 "--info on a glTF scene and an OBJ" -- "$viewer" --info "$G/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" "$src/models/bunny.obj"
+[ "$(wc -l < "$tmp/out")" = 2 ] || { echo "FAIL: --info of two files is not two lines"; fail=1; }
+head -1 "$tmp/out" | grep -q '"objects":\[{"name":' || { echo "FAIL: --info lists no objects: $(head -c 300 "$tmp/out")"; fail=1; }
+expect 0 "--info cameras" -- "$viewer" --info "$G/cameras/Cameras.gltf"
+grep -q '"cameras":\[{"name":"camera 0","type":"perspective"' "$tmp/out" || { echo "FAIL: --info cameras: $(cat "$tmp/out")"; fail=1; }
+expect 0 "two files, each object its own palette" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --screenshot "$tmp/row.png"
+expect 0 "--object-palette" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --object-palette teapot=wood --screenshot "$tmp/row-wood.png"
+cmp -s "$tmp/row.png" "$tmp/row-wood.png" && { echo "FAIL: --object-palette changes nothing"; fail=1; }
+expect 0 "--object-palette by number" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --object-palette 2=wood --screenshot "$tmp/row-wood2.png"
+cmp -s "$tmp/row-wood.png" "$tmp/row-wood2.png" || { echo "FAIL: --object-palette 2 is not the teapot"; fail=1; }
+expect 1 "--object-palette of no such object" -- "$viewer" --headless --size 64x64 "$src/models/bunny.obj" --object-palette kettle=wood
+grep -q "no object named 'kettle'.*its objects: bunny" "$tmp/err" || { echo "FAIL: unknown object message: $(cat "$tmp/err")"; fail=1; }
+expect 2 "bad --layout" -- "$viewer" --headless --layout diagonal
+grep -q -- "--layout must be file, row or grid" "$tmp/err" || { echo "FAIL: --layout message: $(cat "$tmp/err")"; fail=1; }
+expect 0 "--camera-from-file" -- "$viewer" --headless --size 96x96 "$G/cameras/Cameras.gltf" --camera-from-file 2 --screenshot "$tmp/ortho.png"
+expect 1 "--camera-from-file past the file's cameras" -- "$viewer" --headless --size 64x64 "$src/models/bunny.obj" --camera-from-file 3
+grep -q "no camera 3 in bunny.obj (it has none)" "$tmp/err" || { echo "FAIL: camera message: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--camera-from-file with --turntable" -- "$viewer" --headless "$G/cameras/Cameras.gltf" --camera-from-file 1 --turntable 4
+
 # The first run on a machine without a display (.ci/setup run): files it names, exit 0.
 (unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
   || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }

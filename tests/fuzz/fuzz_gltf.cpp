@@ -1,7 +1,9 @@
 // libFuzzer harness: the glTF reader (tinygltf's JSON and GLB parsing, then our checks of every
-// accessor, buffer view, node and material) on arbitrary bytes, JSON and GLB alike, never
-// crashes, hangs or leaks, and what it accepts is a mesh the renderer can draw (fuzz_mesh.h).
+// accessor, buffer view, node, material, camera and light) on arbitrary bytes, JSON and GLB
+// alike, read both flattened and as a scene, never crashes, hangs or leaks; what it accepts is
+// meshes the renderer can draw (fuzz_mesh.h) and finite object, camera and light transforms.
 // External files are looked up beside a folder that does not exist, so none is ever read.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -9,9 +11,33 @@
 #include "fuzz_mesh.h"
 #include "renderer/mesh/mesh_formats.h"
 
+namespace {
+bool finite(const glm::mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
   npr::Result<npr::Mesh> m = npr::parseGltf("/nonexistent-npr-fuzz/fuzz.gltf", bytes);
   npr::fuzz::checkMesh(m);
+  npr::Result<npr::LoadedScene> s = npr::parseGltfScene("/nonexistent-npr-fuzz/fuzz.gltf", bytes);
+  if (!s) {
+    if (s.error().empty()) __builtin_trap();
+    return 0;
+  }
+  if (s->objects.empty()) __builtin_trap();
+  for (const npr::SceneObject& o : s->objects) {
+    if (!o.mesh || o.mesh->indices.empty() || o.mesh->normals.size() != o.mesh->positions.size()) __builtin_trap();
+    for (std::uint32_t i : o.mesh->indices)
+      if (i >= o.mesh->positions.size()) __builtin_trap();
+  }
+  for (const npr::SceneCamera& c : s->cameras)
+    if (!finite(c.world) || !(c.znear >= 0.0f)) __builtin_trap();
+  for (const npr::SceneLight& l : s->lights)
+    if (!(l.intensity >= 0.0f) || !(l.outerCone > l.innerCone)) __builtin_trap();
   return 0;
 }

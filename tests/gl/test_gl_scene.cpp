@@ -5,6 +5,7 @@
 // pattern follows each model alone.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -207,6 +208,59 @@ TEST_F(SceneFixture, TheFramebufferIsAskedForBeforeTheFrame) {
   }
   EXPECT_GT(shared, 4);
   EXPECT_LT(shared, checked);
+}
+
+// Two spheres side by side, the right one with a palette of its own: on every path that draws
+// a palette the left is drawn exactly as without it and the right takes the other palette's
+// colours; hidden, the right one is gone and the left unchanged.
+TEST_F(SceneFixture, EachModelIsDrawnWithItsOwnPaletteAndCanBeHidden) {
+  const Mesh sphere = icosphere(3);
+  const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
+  const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
+  ASSERT_TRUE(r->setPalette(test::greyRamp(8)));
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 0.0f);
+  const ModelId a = r->addModel(sphere, left);
+  // Saturated pixels: the wood palette's; the grey ramp has none.
+  auto colourful = [](const ImageRGBA8& img, bool rightHalf) {
+    int n = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = rightHalf ? kSize / 2 : 0; x < (rightHalf ? kSize : kSize / 2); ++x) {
+        const unsigned char* p = &img.pixels[4 * (std::size_t(y) * kSize + std::size_t(x))];
+        n += std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) > 40;
+      }
+    return n;
+  };
+  auto leftHalfDiffers = [](const ImageRGBA8& x, const ImageRGBA8& y) {
+    int n = 0;
+    for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i)
+      if (int(i % kSize) < kSize / 2)
+        for (int c = 0; c < 3; ++c) n += x.pixels[4 * i + std::size_t(c)] != y.pixels[4 * i + std::size_t(c)];
+    return n;
+  };
+  for (const RenderPath path : {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
+    SCOPED_TRACE(renderPathName(path));
+    RenderSettings s;
+    s.path = path;
+    const ImageRGBA8 onlyLeft = test::renderImage(*r, cam, s, kSize, kSize);
+    const ModelId b = r->addModel(sphere, right);
+    const ImageRGBA8 shared = test::renderImage(*r, cam, s, kSize, kSize);
+    ASSERT_TRUE(r->setModelPalette(b, test::shippedPalette("wood")));
+    const ImageRGBA8 own = test::renderImage(*r, cam, s, kSize, kSize);
+    EXPECT_EQ(colourful(shared, true), 0);
+    EXPECT_GT(colourful(own, true), kSize * kSize / 20) << "the right sphere is not in wood";
+    EXPECT_EQ(colourful(own, false), 0) << "the left sphere took the wood palette";
+    EXPECT_EQ(leftHalfDiffers(own, shared), 0);
+    ASSERT_TRUE(r->setModelVisible(b, false));
+    const ImageRGBA8 hidden = test::renderImage(*r, cam, s, kSize, kSize);
+    EXPECT_EQ(test::countDiffering(hidden, onlyLeft), 0) << "a hidden model still shows";
+    ASSERT_TRUE(r->setModelVisible(b, true));
+    EXPECT_EQ(test::countDiffering(test::renderImage(*r, cam, s, kSize, kSize), own), 0) << "shown again, it is not as it was";
+    r->clearModelPalette(b);
+    EXPECT_EQ(test::countDiffering(test::renderImage(*r, cam, s, kSize, kSize), shared), 0);
+    r->removeModel(b);
+  }
+  EXPECT_FALSE(r->setModelPalette(a + 100, test::greyRamp(4)));
+  EXPECT_FALSE(r->setModelVisible(a + 100, false));
 }
 
 }  // namespace

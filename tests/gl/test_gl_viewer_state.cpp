@@ -2,6 +2,8 @@
 // that fails to load leaves the current one drawing exactly as before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "app/settings/style_file.h"
@@ -125,6 +127,110 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   EXPECT_FALSE(applyStyle(*brokenControl, other, *r));
   EXPECT_EQ(styleText(other, *r, "x"), before);
   r->clearControlPalette(ControlParameter::Shadow);
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// Scenes of several files: fitted into the unit sphere as a whole (the camera, light and
+// ground are sized for it), laid out apart on request, and a file that fails leaves the scene
+// as it was, drawing the same picture.
+using SceneStateFixture = test::RendererFixture;
+
+float sceneRadius(const ViewerState& state, float* nearest = nullptr) {
+  float far = 0.0f, close = 1e9f;
+  for (const ViewerObject& o : state.scene.objects()) {
+    const glm::mat4 t = state.scene.toViewer(o.file) * o.inFile;
+    for (const glm::vec3& p : o.mesh->positions) {
+      const float d = glm::length(glm::vec3(t * glm::vec4(p, 1.0f)));
+      far = std::max(far, d);
+      close = std::min(close, d);
+    }
+  }
+  if (nearest) *nearest = close;
+  return far;
+}
+
+TEST_F(SceneStateFixture, SeveralFilesAreOneSceneFittedToTheUnitSphere) {
+  ViewerState state;
+  ASSERT_TRUE(state.loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"), *r));
+  const std::vector<std::string> files = {sourcePath("models/bunny.obj"), sourcePath("models/teapot.obj")};
+  ASSERT_TRUE(state.loadModels(files, false, *r));
+  ASSERT_EQ(state.scene.objects().size(), 2u);
+  EXPECT_EQ(r->modelCount(), 2u);
+  EXPECT_NEAR(sceneRadius(state), 1.0f, 0.02f);
+  // In a row the two stand apart: the bunny left of the teapot, neither overlapping the other.
+  state.scene.setLayout(Layout::Row, *r);
+  EXPECT_NEAR(sceneRadius(state), 1.0f, 0.02f);
+  const auto& objects = state.scene.objects();
+  const float bunnyX = (state.scene.toViewer(objects[0].file) * objects[0].inFile)[3].x;
+  const float teapotX = (state.scene.toViewer(objects[1].file) * objects[1].inFile)[3].x;
+  EXPECT_LT(bunnyX + 0.3f, teapotX);
+
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  const ImageRGBA8 before = renderImage(*r, testCamera(1.0f), s, 96, 96);
+  test::TempDir d;
+  EXPECT_FALSE(state.loadModels({sourcePath("models/teapot.obj"), d.write("broken.obj", "v 0 0 0\n")}, true, *r));
+  EXPECT_FALSE(state.loadModels({d.write("broken.glb", "glTF nothing")}, false, *r));
+  ASSERT_EQ(state.scene.objects().size(), 2u);
+  EXPECT_EQ(r->modelCount(), 2u);
+  EXPECT_EQ(countDiffering(before, renderImage(*r, testCamera(1.0f), s, 96, 96)), 0);
+  // Added beside it, a third object; the scene is fitted again.
+  ASSERT_TRUE(state.loadModels({sourcePath("models/teapot.obj")}, true, *r));
+  EXPECT_EQ(state.scene.objects().size(), 3u);
+  EXPECT_NEAR(sceneRadius(state), 1.0f, 0.02f);
+}
+
+TEST_F(SceneStateFixture, TheFilesCameraAndLightsAreUsed) {
+  test::TempDir d;
+  // A unit square in z = 0 seen by a camera 4 units up the z axis, lit by a red directional
+  // light from +z.
+  const float p[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const std::uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+  std::string bin(reinterpret_cast<const char*>(p), 48);
+  bin.append(reinterpret_cast<const char*>(idx), 12);
+  d.write("square.bin", bin);
+  const std::string gltf = d.write("lit.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1,2]}],
+    "nodes":[{"mesh":0},{"camera":0,"translation":[0,0,4]},{"extensions":{"KHR_lights_punctual":{"light":0}}}],
+    "cameras":[{"type":"perspective","perspective":{"yfov":0.5,"znear":0.1,"zfar":20}}],
+    "extensionsUsed":["KHR_lights_punctual"],
+    "extensions":{"KHR_lights_punctual":{"lights":[{"type":"directional","color":[1,0,0],"intensity":3}]}},
+    "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+    "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[-1,-1,0],"max":[1,1,0]},
+                 {"bufferView":1,"componentType":5123,"count":6,"type":"SCALAR"}],
+    "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":12}],
+    "buffers":[{"uri":"square.bin","byteLength":60}]})");
+  ViewerState state;
+  ASSERT_TRUE(state.loadModels({gltf}, false, *r));
+  ASSERT_TRUE(state.useFileCamera(1));
+  EXPECT_FALSE(state.useFileCamera(2));
+  const CameraMatrices cam = state.view(1.0f);
+  // The square's centre is straight ahead: the middle of the picture.
+  const glm::vec4 clip = cam.projection * cam.view * glm::vec4(0, 0, 0, 1);
+  EXPECT_NEAR(clip.x / clip.w, 0.0f, 1e-4f);
+  EXPECT_NEAR(clip.y / clip.w, 0.0f, 1e-4f);
+  // Its corner (1, 1) in the file, fitted by the scene's scale, is where yfov 0.5 puts it.
+  const glm::vec4 corner = cam.projection * cam.view * glm::vec4(glm::vec3(state.scene.toViewer(0) * glm::vec4(1, 1, 0, 1)), 1.0f);
+  EXPECT_NEAR(corner.y / corner.w, 1.0f / (4.0f * std::tan(0.25f)), 1e-3f);
+  // Lit by the file's red light: the reference path shows a red square.
+  ASSERT_TRUE(state.applyLight(*r, cam));
+  EXPECT_TRUE(r->lighting().light(0).enabled);
+  EXPECT_NEAR(r->lighting().light(0).diffuse.r, 1.0f, 1e-6f);
+  EXPECT_NEAR(r->lighting().light(0).diffuse.g, 0.0f, 1e-6f);
+  for (int i = 1; i < kMaxLights; ++i) EXPECT_FALSE(r->lighting().light(i).enabled);
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  const ImageRGBA8 img = renderImage(*r, cam, s, 64, 64);
+  const unsigned char* centre = &img.pixels[4 * (32 * 64 + 32)];
+  EXPECT_GT(centre[0], centre[1] + 60) << "not lit red";
+  // Without them, the viewer's white light again.
+  state.fileLights = false;
+  ASSERT_TRUE(state.applyLight(*r, cam));
+  EXPECT_NEAR(r->lighting().light(0).diffuse.g, 1.0f, 1e-6f);
 }
 
 }  // namespace
