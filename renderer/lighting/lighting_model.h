@@ -47,7 +47,7 @@ struct PreparedLighting {
 };
 
 // `toSpace` maps eye space into the lighting space (identity for eye space; the inverse of a
-// rigid modelview for object space).
+// modelview that is a similarity for object space).
 template <class T>
 PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toSpace = glm::mat4(1.0f)) {
   using V3 = glm::vec<3, T>;
@@ -55,6 +55,7 @@ PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toS
   using V4 = glm::vec<4, T>;
   PreparedLighting<T> p;
   const M4 m(toSpace);
+  const T spaceScale = glm::length(V3(m[0]));
   const LightingFeatures f = s.features();
   p.lighting = f.lighting;
   p.unlit = V3(s.unlitColor());
@@ -110,6 +111,12 @@ PreparedLighting<T> prepareLighting(const LightingState& s, const glm::mat4& toS
     q.k0 = static_cast<T>(l.constantAttenuation);
     q.k1 = static_cast<T>(l.linearAttenuation);
     q.k2 = static_cast<T>(l.quadraticAttenuation);
+    // A space scaled from the eye's (a similarity's inverse) measures distances `spaceScale`
+    // times the eye's: the attenuation is the eye's.
+    if (std::abs(spaceScale - T(1)) > T(1e-6)) {
+      q.k1 /= spaceScale;
+      q.k2 /= spaceScale * spaceScale;
+    }
   }
   return p;
 }

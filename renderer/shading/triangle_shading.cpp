@@ -16,9 +16,11 @@ std::vector<glm::u8vec4> packFaceScale(const std::vector<glm::vec3>& scale) {
   return out;
 }
 
-bool isRigid(const glm::mat4& m) {
+bool isSimilarity(const glm::mat4& m) {
   const glm::mat3 r(m);
-  const glm::mat3 d = glm::transpose(r) * r - glm::mat3(1.0f);
+  const float s2 = glm::dot(r[0], r[0]);
+  if (!(s2 > 1e-12f) || !std::isfinite(s2) || glm::determinant(r) <= 0.0f) return false;
+  const glm::mat3 d = glm::transpose(r) * r / s2 - glm::mat3(1.0f);
   for (int c = 0; c < 3; ++c)
     for (int k = 0; k < 3; ++k)
       if (!(std::fabs(d[c][k]) < 1e-4f)) return false;
@@ -280,7 +282,7 @@ void shadeTriangles(const Mesh& mesh, const LightingState& lighting, const glm::
   const size_t nt = mesh.triangleCount();
   const int entries = matcher.size();
   out.entry.resize(nt);
-  const bool rigid = isRigid(modelView);
+  const bool rigid = isSimilarity(modelView);
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
   const int chunks = opt.threads > 0 ? opt.threads : workerCount();
   std::vector<std::vector<std::uint32_t>> counts(static_cast<size_t>(chunks), std::vector<std::uint32_t>(static_cast<size_t>(entries), 0));

@@ -63,7 +63,10 @@ void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, con
 // stencil path's scissor, from projectVertices' output. Needs the buckets.
 void computeBucketBounds(const std::vector<glm::vec2>& screen, const glm::ivec2& viewport, int threads, TriangleShading& shading);
 
-// True when `m` is a rotation plus a translation (within float rounding).
-bool isRigid(const glm::mat4& m);
+// True when `m` is a rotation, a uniform scale and a translation (within float rounding): then
+// lighting can be worked out in object space, where the per-triangle loop needs no matrix
+// work (angles are kept; prepareLighting rescales the attenuation for the scale). A scene's
+// objects are placed by such transforms.
+bool isSimilarity(const glm::mat4& m);
 
 }  // namespace npr

@@ -65,7 +65,7 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
 void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher,
                                   unsigned matcherId, FrameStats& stats, bool materials, const std::vector<float>* occlusion,
                                   float occlusionStrength) {
-  const bool rigid = isRigid(modelView);
+  const bool rigid = isSimilarity(modelView);
   materials = materials && mesh_->hasAppearance();
   const float* occ = occlusion && occlusion->size() == mesh_->positions.size() ? occlusion->data() : nullptr;
   if (!occ) occlusionStrength = 0.0f;

@@ -21,6 +21,7 @@ struct Scene {
   bool attenuated;  // positional with attenuation: the general loop
   bool specular;
   MatchMode mode;
+  float scale = 1.0f;  // the model's uniform scale in the modelview (a scene's object)
 };
 
 LightingState lightingFor(const Scene& sc) {
@@ -66,8 +67,11 @@ TEST_P(TriangleShadingTest, MatchesTheDoublePrecisionModelAtEveryCentroid) {
   const LightingState l = lightingFor(sc);
   auto matcher = PaletteMatcher::create(paletteFor(sc.mode), sc.mode, 1.0f);
   ASSERT_TRUE(matcher) << matcher.error();
-  // Rigid: the loops light in object space, the reference in eye space.
-  const glm::mat4 view = glm::lookAt(glm::vec3(1.5f, 1.0f, 2.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  // A similarity (rigid, or with the uniform scale of a scene's object): the loops light in
+  // object space, the reference in eye space.
+  const glm::mat4 view = glm::lookAt(glm::vec3(1.5f, 1.0f, 2.5f), glm::vec3(0.0f), glm::vec3(0, 1, 0)) *
+                         glm::scale(glm::mat4(1.0f), glm::vec3(sc.scale));
+  ASSERT_TRUE(isSimilarity(view));
   TriangleShadingOptions opt;
   opt.buildBuckets = true;
   opt.threads = 2;
@@ -82,7 +86,7 @@ TEST_P(TriangleShadingTest, MatchesTheDoublePrecisionModelAtEveryCentroid) {
   std::vector<int> seen(static_cast<size_t>(matcher->size()), 0);
   for (size_t i = 0; i < nt; ++i) {
     const glm::dvec3 pos = glm::dvec3(view * glm::vec4(mesh.faceCentroids[i], 1.0f));
-    const glm::dvec3 c = shade(ref, pos, normalMatrix * glm::dvec3(mesh.faceNormals[i]), false);
+    const glm::dvec3 c = shade(ref, pos, glm::normalize(normalMatrix * glm::dvec3(mesh.faceNormals[i])), false);
     const int want = matcher->match(glm::vec3(c));
     const int got = out.entry[i];
     seen[static_cast<size_t>(got)] = 1;
@@ -137,7 +141,9 @@ INSTANTIATE_TEST_SUITE_P(
                     Scene{"one point light, specular", 1, 1, false, true, MatchMode::Intensity},
                     Scene{"two point lights, no specular", 2, 2, false, false, MatchMode::Intensity},
                     Scene{"a point and a directional light, specular", 2, 1, false, true, MatchMode::Order},
-                    Scene{"two attenuated point lights (general loop)", 2, 2, true, true, MatchMode::Intensity}),
+                    Scene{"two attenuated point lights (general loop)", 2, 2, true, true, MatchMode::Intensity},
+                    Scene{"a point and a directional light, scaled by 0.4", 2, 1, false, true, MatchMode::Order, 0.4f},
+                    Scene{"two attenuated point lights, scaled by 2.5", 2, 2, true, true, MatchMode::Intensity, 2.5f}),
     [](const testing::TestParamInfo<Scene>& info) { return "Scene" + std::to_string(info.index); });
 
 // A material per face, in runs of every length from one face up (the loop takes the faces of
