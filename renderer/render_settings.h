@@ -144,6 +144,9 @@ struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
   float rangeScale = 1.0f;
+  // Fit the palette's levels onto the tones the visible surfaces show (palette/tone_range.h;
+  // the range scale then spreads about them). Off: the palette's own range, as the original.
+  bool autoToneRange = false;
   std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
   // Light each face with the model's own materials, vertex colours and texture maps (when it
   // has any); off: the lighting state's one material, as the original.

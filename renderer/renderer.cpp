@@ -132,17 +132,40 @@ Status Renderer::prepare(const RenderSettings& s) {
     };
     scene_.forEachIncludingHidden([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
   }
+  const std::optional<glm::vec2> target = toneTarget_;
   for (auto& [model, p] : modelPalettes_)
-    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"an object's palette: " + st.error()};
+    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"an object's palette: " + st.error()};
   // Cel bands belong to the main palette (they are one fewer than its tones).
   for (auto& [name, p] : materialPalettes_)
-    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"palette of material '" + name + "': " + st.error()};
+    if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"palette of material '" + name + "': " + st.error()};
   if (shadowPalette_)
-    if (Status st = shadowPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"shadow palette: " + st.error()};
+    if (Status st = shadowPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"shadow palette: " + st.error()};
   if (occlusionPalette_)
-    if (Status st = occlusionPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_); !st) return Error{"occlusion palette: " + st.error()};
-  if (palette_) return palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_);
+    if (Status st = occlusionPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"occlusion palette: " + st.error()};
+  if (palette_) return palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_, s.bands.empty() ? target : std::nullopt);
   return okStatus();
+}
+
+void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSettings& s) {
+  if (!s.autoToneRange || !s.bands.empty()) {
+    toneRange_.reset();
+    toneTarget_.reset();
+    return;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  // About 4096 triangles over the whole scene: enough for stable percentiles, a fraction of a
+  // millisecond on the CPU.
+  std::size_t models = 0;
+  scene_.forEach([&](const Model&) { ++models; });
+  const std::size_t budget = std::max<std::size_t>(256, 4096 / std::max<std::size_t>(models, 1));
+  toneSamples_.clear();
+  scene_.forEach([&](const Model& m) {
+    sampleTones(m.mesh(), lighting_, camera.view * m.transform(), camera.projection, s.materials, s.match, budget, toneSamples_);
+  });
+  // A quarter of the way to each new estimate per frame: settles in about ten frames and
+  // follows an orbit without pumping.
+  toneTarget_ = toneRange_.update(percentileRange(toneSamples_, 2.0f, 98.0f, 0.15f), 0.25f);
+  stats_.cpuToneMs = msSince(t0);
 }
 
 void Renderer::preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& s, const glm::ivec4& viewport) {
@@ -326,6 +349,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   stats_.startFrame();
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
+  updateToneRange(camera, s);
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
   FrameView frame = frameView(camera, s, viewport, true);
@@ -354,6 +378,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   stats_.startFrame();
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
+  updateToneRange(camera, s);
   if (Status st = prepare(s); !st) return st;
   FrameView frame = frameView(camera, s, viewport, false);
   if (Status st = prepareFeatures(frame); !st) return st;

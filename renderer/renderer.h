@@ -25,6 +25,7 @@
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/palette.h"
+#include "renderer/palette/tone_range.h"
 #include "renderer/passes/geometry_pass.h"
 #include "renderer/passes/turn_resolve_pass.h"
 #include "renderer/paths/path_table.h"
@@ -145,6 +146,9 @@ class Renderer {
                                   float pixels, const glm::ivec4& viewport);
 
   const FrameStats& stats() const { return stats_; }
+  // The automatic tone range the last frame fitted the palettes onto (query axis, 0..3), or
+  // none (--tone-range fixed).
+  std::optional<glm::vec2> toneRange() const { return toneTarget_; }
   // The matcher of the last frame (for tests and the benchmark's accuracy reference).
   const PaletteMatcher* matcher() const { return palette_ ? palette_->matcher() : nullptr; }
   // The first model's per-triangle shading (tests).
@@ -154,6 +158,11 @@ class Renderer {
   Renderer() = default;
   // Checks that `settings` can be drawn and brings the matchers and the models' parts up to date.
   Status prepare(const RenderSettings& settings);
+  // The automatic tone range for this view (settings.autoToneRange), into toneTarget_.
+  void updateToneRange(const CameraMatrices& camera, const RenderSettings& settings);
+  ToneRangeTracker toneRange_;
+  std::optional<glm::vec2> toneTarget_;
+  std::vector<ToneSample> toneSamples_;
   // What the features see of this frame.
   FrameView frameView(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport, bool colour);
   // Picks this frame's active features and runs their preparation (before the clear).

@@ -167,6 +167,10 @@ std::vector<Setting> buildTable() {
                                    [](Look& l) -> MatchMode& { return l.render.match; }));
   t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
+  t.push_back(choiceRow<bool>("tone-range", "tone range", "palette",
+                              "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
+                              "frames (the range scale spreads about them; not with band thresholds); fixed: the palette's own range",
+                              {{"fixed", false}, {"auto", true}}, [](Look& l) -> bool& { return l.render.autoToneRange; }));
   {
     Setting b = base("bands", "band thresholds", "palette",
                      "Cel band thresholds T1,T2,... on the match query axis [0,3], strictly ascending (one fewer than the palette's tones); none: the nearest level",

@@ -259,6 +259,8 @@ void drawOverlay(Viewer& v) {
   ImGui::Text("%zu triangles, %d non-empty buckets%s", s.scene.triangles(), st.nonEmptyBuckets,
               st.backFacesCulled ? ", closed: back faces dropped" : "");
   ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  if (const std::optional<glm::vec2> tone = v.renderer->toneRange())
+    ImGui::Text("tone range: lit tones %.2f..%.2f of 0..3 fill the palette (%.2f ms)", tone->x, tone->y, st.cpuToneMs);
   if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
   if (st.surfaceBuffers) ImGui::Text("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
   // What renders (the window's context never changes, so it is asked once).

@@ -17,6 +17,7 @@ struct FrameStats {
   int lines = 0;               // feature lines drawn
   double cpuLinesMs = 0.0;     // silhouette extraction
   double cpuPatternMs = 0.0;   // the anchored pattern's similarity fit
+  double cpuToneMs = 0.0;      // the automatic tone range's estimate (palette/tone_range.h)
   int patternSamples = 0;      // samples the fit used (visible in both frames)
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)

@@ -117,12 +117,14 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   return gp;
 }
 
-Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<float>& bands, FrameStats& stats) {
-  if (matcher_ && matcherKey_.mode == mode && matcherKey_.scale == scale && matcherKey_.bands == bands) return okStatus();
-  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, mode, scale, bands);
+Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<float>& bands, FrameStats& stats,
+                                 std::optional<glm::vec2> toneTarget) {
+  if (matcher_ && matcherKey_.mode == mode && matcherKey_.scale == scale && matcherKey_.bands == bands && matcherKey_.toneTarget == toneTarget)
+    return okStatus();
+  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, mode, scale, bands, toneTarget);
   if (!m) return Error{m.error()};
   matcher_ = std::move(*m);
-  matcherKey_ = {mode, scale, bands};
+  matcherKey_ = {mode, scale, bands, toneTarget};
   matcherId_ = nextMatcherId();
   ++stats.lutBuilds;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -36,7 +36,9 @@ class GpuPalette {
 
   // Brings the matcher and its lookup tables up to date; rebuilt only when one of the three
   // changed (counted in stats.lutBuilds and stats.bufferUploads).
-  [[nodiscard]] Status updateMatcher(MatchMode mode, float rangeScale, const std::vector<float>& bands, FrameStats& stats);
+  // `toneTarget`: the automatic tone range's query span (palette_matcher.h), or none.
+  [[nodiscard]] Status updateMatcher(MatchMode mode, float rangeScale, const std::vector<float>& bands, FrameStats& stats,
+                                     std::optional<glm::vec2> toneTarget = std::nullopt);
   // Null until updateMatcher succeeded once.
   const PaletteMatcher* matcher() const { return matcher_ ? &*matcher_ : nullptr; }
   // Unique across palettes and rebuilds: what per-triangle results computed with it are keyed by.
@@ -133,6 +135,7 @@ class GpuPalette {
     MatchMode mode = MatchMode::Intensity;
     float scale = 0;
     std::vector<float> bands;
+    std::optional<glm::vec2> toneTarget;
   } matcherKey_;
   unsigned matcherId_ = 0;
   gl::Texture lutIndex_, lutBlend_, lut3D_;

@@ -28,7 +28,7 @@ Status PaletteMatcher::validateRangeScale(float s) {
 }
 
 Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& averages, MatchMode mode, float scale,
-                                              const std::vector<float>& bands) {
+                                              const std::vector<float>& bands, std::optional<glm::vec2> toneTarget) {
   if (averages.empty()) return Error{"cannot match against an empty palette"};
   if (averages.size() > static_cast<size_t>(kMaxPaletteEntries))
     return Error{"palette has " + std::to_string(averages.size()) + " entries; at most " + std::to_string(kMaxPaletteEntries)};
@@ -38,7 +38,20 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
   m.mode_ = mode;
   m.n_ = static_cast<int>(averages.size());
   m.scale_ = scale;
-  const double s = scale;
+  if (toneTarget && !(std::isfinite(toneTarget->x) && std::isfinite(toneTarget->y) && toneTarget->y > toneTarget->x))
+    return Error{"a tone target must be a finite range lo < hi"};
+  // The 1D levels' range (sums of channels; order: entry positions), for the tone target's fit.
+  double levelLo = std::numeric_limits<double>::max(), levelHi = -levelLo;
+  for (std::size_t t = 0; t < averages.size(); ++t) {
+    const double v = mode == MatchMode::Order ? (double(t) + 0.5) * 3.0 / double(averages.size())
+                                              : double(averages[t].r) + averages[t].g + averages[t].b;
+    levelLo = std::min(levelLo, v);
+    levelHi = std::max(levelHi, v);
+  }
+  // A palette of one level has no range to fit: the target only moves it.
+  const double fit = toneTarget && levelHi > levelLo ? (double(toneTarget->y) - toneTarget->x) / (levelHi - levelLo) : 1.0;
+  const double shift = toneTarget ? 0.5 * (double(toneTarget->x) + toneTarget->y) - 0.5 * (levelLo + levelHi) : 0.0;
+  const double s = double(scale) * fit;
   if (mode == MatchMode::Colors) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const auto& a : averages) {
@@ -46,9 +59,10 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
       hi = glm::max(hi, glm::dvec3(a));
     }
     const glm::dvec3 mid = (lo + hi) * 0.5;
+    const glm::dvec3 centre = mid + glm::dvec3(shift / 3.0);
     // A huge scale pushes colours far out: clamp so squared distances stay finite in float.
     for (const auto& a : averages)
-      m.scaled_.push_back(glm::vec3(glm::clamp(mid + s * (glm::dvec3(a) - mid), glm::dvec3(-kFar), glm::dvec3(kFar))));
+      m.scaled_.push_back(glm::vec3(glm::clamp(centre + s * (glm::dvec3(a) - mid), glm::dvec3(-kFar), glm::dvec3(kFar))));
     // Candidate lists: entry t can be nearest somewhere in a cell only if its distance to the
     // cell's box is within the smallest farthest-distance of any entry to that box.
     const int C = kCells;
@@ -79,11 +93,12 @@ Result<PaletteMatcher> PaletteMatcher::create(const std::vector<glm::vec3>& aver
                                            : (double(t) + 0.5) * 3.0 / double(averages.size());
     const auto [mn, mx] = std::minmax_element(lv.begin(), lv.end());
     const double mid = mode == MatchMode::Order ? 1.5 : (*mn + *mx) * 0.5;
+    const double centre = (toneTarget ? 0.5 * (levelLo + levelHi) : mid) + shift;
     std::vector<int> order(averages.size());
     std::iota(order.begin(), order.end(), 0);
     std::vector<float> scaled(averages.size());
     for (size_t t = 0; t < lv.size(); ++t) {
-      const double v = mid + s * (lv[t] - mid);
+      const double v = centre + s * (lv[t] - (toneTarget ? 0.5 * (levelLo + levelHi) : mid));
       // A huge scale can push levels past float range: keep them finite and ordered.
       scaled[t] = static_cast<float>(std::clamp(v, -kFar, kFar));
     }

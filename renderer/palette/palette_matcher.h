@@ -12,12 +12,18 @@
 // (per channel for colours; 1.5 for order). S > 1 spreads a narrow palette over more of the
 // lighting range; S < 1 narrows it. Queries are not scaled.
 //
+// A tone target [lo, hi] on the query axis (the automatic tone range, tone_range.h) first
+// maps the palette's level range onto it: levels become c + S F (L - m) with c = (lo + hi) / 2
+// and F = (hi - lo) / (max - min), so the lit tones the model shows span the whole palette
+// (colours: every channel shifted by (c - the levels' midpoint) / 3). S then spreads about c.
+//
 // Ties (a query exactly between two levels, equal levels, equal distances) go to the lowest
 // palette index. Lit colours are in [0,1]; non-finite channels are taken as 0.
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,7 +48,7 @@ class PaletteMatcher {
   // [bands[k-1], bands[k]) instead of the span nearest its level; `smooth` blends only within
   // kBandEdge of a threshold, which antialiases the hard band edges (the 1D-ramp technique).
   static Result<PaletteMatcher> create(const std::vector<glm::vec3>& averages, MatchMode mode, float rangeScale,
-                                       const std::vector<float>& bands = {});
+                                       const std::vector<float>& bands = {}, std::optional<glm::vec2> toneTarget = std::nullopt);
   static constexpr float kBandEdge = 0.03f;
   static Status validateRangeScale(float s);
 

@@ -6,7 +6,7 @@
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
-//      [--static-light] [--occlusion] [--gpu-triangles] [--control]
+//      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -58,6 +58,7 @@ struct PathRow {
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
+  bool autoTone = false;                  // the automatic tone range (--tone-range)
   bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
   bool control = false;                   // control-image palettes drawn (--control)
   bool screenOcclusion = false;           // screen-space occlusion instead of the bake (--occlusion)
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
+    else if (!std::strcmp(argv[i], "--tone-range")) toneRange = true;
     else if (!std::strcmp(argv[i], "--gpu-triangles")) gpuTriangles = true;
     else if (!std::strcmp(argv[i], "--control")) control = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
@@ -92,13 +94,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
-                           "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices)\n");
+                           "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto))\n");
       return 2;
     }
   }
@@ -237,6 +239,12 @@ int main(int argc, char** argv) {
           paths.push_back(screen);
         }
       }
+      if (toneRange && pathInfo(p.path).usesPalette) {
+        PathRow on = p;
+        on.label += "+auto";
+        on.autoTone = true;
+        paths.push_back(on);
+      }
       if (gpuTriangles && (p.path == RenderPath::Triangle || p.path == RenderPath::Stencil)) {
         PathRow on = p;
         on.label += "+gpu-lit";
@@ -278,6 +286,7 @@ int main(int argc, char** argv) {
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
+        s.autoToneRange = paths[p].autoTone;
         s.controlPalettes = paths[p].control;
         if (paths[p].screenOcclusion) s.occlusionMethod = OcclusionMethod::Screen;
         s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;
