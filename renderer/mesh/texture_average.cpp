@@ -42,7 +42,9 @@ TextureAverager::TextureAverager(const ImageRGBA8& image) {
 glm::vec3 TextureAverager::whole() const { return levels_.back().texels[0]; }
 
 glm::vec3 TextureAverager::sample(const Level& l, glm::vec2 uv) const {
-  // Bilinear, repeating.
+  // Bilinear, repeating. The coordinate is wrapped into [0, 1) first: a far one (a texture
+  // transform's offset of 1e24, found by fuzz_gltf) must not overflow the texel index.
+  uv -= glm::floor(uv);
   const float fx = uv.x * float(l.width) - 0.5f, fy = uv.y * float(l.height) - 0.5f;
   const float x0f = std::floor(fx), y0f = std::floor(fy);
   const float tx = fx - x0f, ty = fy - y0f;
