@@ -63,6 +63,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::string layout;
   app.add_option("--layout", layout, "Several files: placed as their files place them (file, the default), or set apart in a row or a grid");
   app.add_option("--camera-from-file", o.cameraFromFile, "View through the scene file's camera N (1 is the first; --info lists them)");
+  app.add_flag("--split-objects", o.splitObjects, "OBJ files: each 'o' and 'g' group an object of its own (its own palette, visibility)");
   app.add_flag("--file-lights,!--no-file-lights", o.fileLights,
                "Light the scene with its file's lights (glTF KHR_lights_punctual) where it has any (default on)");
   std::vector<std::string> objectPalette;

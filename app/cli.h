@@ -26,7 +26,8 @@ struct Options {
   std::vector<std::string> models;  // shown together as one scene; --benchmark measures each
   Layout layout = Layout::File;     // --layout: how several files are placed
   int cameraFromFile = -1;
-  bool fileLights = true;           // --no-file-lights: the viewer's light even where the file has lights          // --camera-from-file N: the scene's camera N (1-based; -1 none)
+  bool fileLights = true;
+  bool splitObjects = false;        // --split-objects: OBJ groups as objects           // --no-file-lights: the viewer's light even where the file has lights          // --camera-from-file N: the scene's camera N (1-based; -1 none)
   std::vector<std::pair<std::string, std::string>> objectPalettes;  // --object-palette OBJECT=FILE
   std::vector<std::string> palettes;
   std::vector<SettingValue> settings;  // in the table's order

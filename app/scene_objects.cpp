@@ -46,7 +46,7 @@ glm::vec4 boundsOf(const std::vector<const ViewerObject*>& objects, Placement&& 
 Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings) {
   std::vector<LoadedScene> loaded;
   for (const std::string& path : paths) {
-    Result<LoadedScene> s = loadScene(path);
+    Result<LoadedScene> s = loadScene(path, SceneLoadOptions{split_});
     if (!s) return Error{s.error()};
     loaded.push_back(std::move(*s));
   }

@@ -39,6 +39,8 @@ class SceneObjects {
   // Loads every file of `paths` and puts their objects in place of the scene's (or beside
   // them, `add`). The files' warnings go to `warnings`. Nothing changes when one fails.
   [[nodiscard]] Status load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings);
+  // OBJ groups as objects in the loads that follow (--split-objects).
+  void setSplitObjects(bool split) { split_ = split; }
   void setLayout(Layout layout, Renderer& renderer);
   Layout layout() const { return layout_; }
   bool setVisible(std::size_t object, bool visible, Renderer& renderer);
@@ -70,6 +72,7 @@ class SceneObjects {
   std::vector<ViewerObject> objects_;
   std::vector<SceneFile> files_;
   Layout layout_ = Layout::File;
+  bool split_ = false;
   glm::mat4 fit_{1.0f};
 };
 

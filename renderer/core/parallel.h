@@ -14,7 +14,7 @@ inline int workerCount() { return static_cast<int>(std::max(1u, std::thread::har
 // fn(begin, end, chunkIndex) runs on `chunks` threads (the calling thread takes chunk 0).
 template <class Fn>
 void parallelChunks(std::size_t n, int chunks, Fn&& fn) {
-  chunks = std::max(1, std::min<int>(chunks, static_cast<int>((n + 4095) / 4096)));
+  chunks = std::max(1, std::min<int>(chunks, static_cast<int>((n + 32767) / 32768)));
   if (chunks == 1) {
     fn(std::size_t(0), n, 0);
     return;

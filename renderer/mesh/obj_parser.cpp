@@ -12,6 +12,7 @@
 
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
+#include "renderer/core/printable.h"
 #include "renderer/mesh/mtl_parser.h"
 
 #include "renderer/mesh/polygon_soup.h"
@@ -38,8 +39,13 @@ Status checkText(const std::string& path, const std::string& data) {
 
 class ObjParser {
  public:
-  ObjParser(const std::string& path, const std::string& text, PolygonSoup& soup, LoadReport& report)
-      : path_(path), text_(text), soup_(soup), report_(report), warn_(report.warnings), faces_(soup, report, warn_) {}
+  // `groups`: when given, each triangle's `o` or `g` group, named in `groupNames`.
+  ObjParser(const std::string& path, const std::string& text, PolygonSoup& soup, LoadReport& report,
+            std::vector<std::uint32_t>* groups = nullptr, std::vector<std::string>* groupNames = nullptr)
+      : path_(path), text_(text), soup_(soup), report_(report), warn_(report.warnings), faces_(soup, report, warn_), groups_(groups),
+        groupNames_(groupNames) {
+    if (groups_) groupNames_->assign(1, "(no group)");
+  }
 
   void parse() {
     const char* p = text_.data();
@@ -152,6 +158,21 @@ class ObjParser {
       if (allTex && !cornerTex_.empty() && !soup_.tracksTexcoords) soup_.trackTexcoords();
       if (!allTex) cornerTex_.clear();
       faces_.add(corners_, cornerTex_, currentMaterial_, "line", line);
+      if (groups_) groups_->resize(soup_.triangles.size(), currentGroup_);
+    } else if (groups_ && (key == "o" || key == "g")) {
+      // A group seen again continues its object.
+      std::string name = restOfLine(p, e);
+      if (name.empty()) name = "group " + std::to_string(groupNames_->size());
+      const auto it = std::find(groupNames_->begin(), groupNames_->end(), name);
+      if (it != groupNames_->end()) {
+        currentGroup_ = static_cast<std::uint32_t>(it - groupNames_->begin());
+      } else if (groupNames_->size() >= kMaxGroups) {
+        if (!groupsWarned_) warn_.add(where(line) + ": more than " + std::to_string(kMaxGroups) + " groups; the rest join the last");
+        groupsWarned_ = true;
+      } else {
+        currentGroup_ = static_cast<std::uint32_t>(groupNames_->size());
+        groupNames_->push_back(name);
+      }
     } else if (key == "usemtl") {
       useMaterial(restOfLine(p, e), line);
     } else if (key == "mtllib") {
@@ -313,6 +334,11 @@ class ObjParser {
   std::vector<std::string> firstUse_;  // where each material (after the default) was first used
   std::vector<MtlMaterial> library_;
   bool texWarned_ = false, materialsWarned_ = false;
+  static constexpr std::size_t kMaxGroups = 4096;
+  std::vector<std::uint32_t>* groups_;
+  std::vector<std::string>* groupNames_;
+  std::uint32_t currentGroup_ = 0;
+  bool groupsWarned_ = false;
 };
 
 }  // namespace
@@ -320,14 +346,15 @@ class ObjParser {
 namespace {
 
 // Parses into a soup; the caller may free the text before the mesh is built.
-Status parseInto(const std::string& path, const std::string& text, PolygonSoup& soup, LoadReport& report) {
+Status parseInto(const std::string& path, const std::string& text, PolygonSoup& soup, LoadReport& report,
+                 std::vector<std::uint32_t>* groups = nullptr, std::vector<std::string>* groupNames = nullptr) {
   if (Status s = checkText(path, text); !s) return s;
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) return Error{path + ": the file is empty"};
   report.file = path;
   soup.vertices.reserve(text.size() / 60);
   soup.vertexValid.reserve(text.size() / 60);
   soup.triangles.reserve(text.size() / 30);
-  ObjParser(path, text, soup, report).parse();
+  ObjParser(path, text, soup, report, groups, groupNames).parse();
   return okStatus();
 }
 
@@ -341,6 +368,29 @@ Result<Mesh> parseObj(const std::string& path, std::string text) {
   // would keep the buffer: libstdc++ moves a short string in by copying it.)
   std::string().swap(text);
   return buildMesh(std::move(soup), std::move(report));
+}
+
+Result<std::vector<ObjObject>> parseObjObjects(const std::string& path, std::string text) {
+  LoadReport report;
+  PolygonSoup soup;
+  std::vector<std::uint32_t> groups;
+  std::vector<std::string> names;
+  if (Status s = parseInto(path, text, soup, report, &groups, &names); !s) return Error{s.error()};
+  std::string().swap(text);
+  groups.resize(soup.triangles.size(), 0);
+  std::vector<PolygonSoup> parts = splitSoup(std::move(soup), groups, names.size());
+  std::vector<ObjObject> out;
+  for (std::size_t g = 0; g < parts.size(); ++g) {
+    if (parts[g].triangles.empty()) continue;
+    LoadReport r = report;
+    r.warnings.clear();  // the file's warnings are reported once, with the first object
+    if (out.empty()) r.warnings = report.warnings;
+    Result<Mesh> m = buildMesh(std::move(parts[g]), std::move(r));
+    if (!m) continue;  // a group of degenerate faces only: nothing to draw
+    out.push_back({printable(names[g]), std::move(*m)});
+  }
+  if (out.empty()) return Error{path + ": contains no faces that could be drawn"};
+  return out;
 }
 
 }  // namespace npr

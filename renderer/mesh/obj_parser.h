@@ -15,4 +15,13 @@ namespace npr {
 // mesh is built.
 [[nodiscard]] Result<Mesh> parseObj(const std::string& path, std::string text);
 
+// The file's `o` and `g` groups as meshes of their own (--split-objects), each centred and
+// scaled by the loader as any mesh (its report says how, so it can be placed back). A group
+// named again continues its object; faces before any group form "(no group)".
+struct ObjObject {
+  std::string name;
+  Mesh mesh;
+};
+[[nodiscard]] Result<std::vector<ObjObject>> parseObjObjects(const std::string& path, std::string text);
+
 }  // namespace npr

@@ -2,6 +2,7 @@
 #include "renderer/mesh/polygon_soup.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -160,6 +161,64 @@ bool FaceBuilder::add(std::vector<long long>& corners, const std::vector<int>& t
   for (std::size_t k = 0; k + 2 < tri.size(); k += 3)
     emit(static_cast<std::size_t>(tri[k]), static_cast<std::size_t>(tri[k + 1]), static_cast<std::size_t>(tri[k + 2]));
   return true;
+}
+
+std::vector<PolygonSoup> splitSoup(PolygonSoup soup, const std::vector<std::uint32_t>& group, std::size_t groups) {
+  std::vector<PolygonSoup> out(groups);
+  struct Maps {
+    std::unordered_map<int, int> vertex, texcoord, material, texture;
+  };
+  std::vector<Maps> maps(groups);
+  const bool tex = soup.tracksTexcoords && soup.triangleTexcoords.size() == soup.triangles.size();
+  const bool mats = soup.tracksMaterials && soup.triangleMaterials.size() == soup.triangles.size();
+  for (std::size_t t = 0; t < soup.triangles.size() && t < group.size(); ++t) {
+    const std::size_t g = group[t];
+    if (g >= groups) continue;
+    PolygonSoup& s = out[g];
+    Maps& m = maps[g];
+    std::array<int, 3> tri{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const int v = soup.triangles[t][k];
+      auto [it, added] = m.vertex.emplace(v, static_cast<int>(s.vertices.size()));
+      if (added) {
+        s.vertices.push_back(soup.vertices[static_cast<std::size_t>(v)]);
+        s.vertexValid.push_back(soup.vertexValid[static_cast<std::size_t>(v)]);
+        if (!soup.colours.empty()) s.colours.push_back(soup.colours[static_cast<std::size_t>(v)]);
+      }
+      tri[k] = it->second;
+    }
+    s.triangles.push_back(tri);
+    // Every triangle of a group is pushed here, so the per-triangle arrays stay in step.
+    if (tex) {
+      s.tracksTexcoords = true;
+      std::array<int, 3> tc{-1, -1, -1};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const int c = soup.triangleTexcoords[t][k];
+        if (c < 0) continue;
+        auto [it, added] = m.texcoord.emplace(c, static_cast<int>(s.texcoords.size()));
+        if (added) s.texcoords.push_back(soup.texcoords[static_cast<std::size_t>(c)]);
+        tc[k] = it->second;
+      }
+      s.triangleTexcoords.push_back(tc);
+    }
+    if (mats) {
+      s.tracksMaterials = true;
+      const int from = soup.triangleMaterials[t];
+      auto [it, added] = m.material.emplace(from, static_cast<int>(s.materials.size()));
+      if (added) {
+        MeshMaterial mat = soup.materials[static_cast<std::size_t>(from)];
+        for (int* map : {&mat.diffuseMap, &mat.opacityMap}) {
+          if (*map < 0) continue;
+          auto [tt, tAdded] = m.texture.emplace(*map, static_cast<int>(s.textures.size()));
+          if (tAdded) s.textures.push_back(soup.textures[static_cast<std::size_t>(*map)]);
+          *map = tt->second;
+        }
+        s.materials.push_back(std::move(mat));
+      }
+      s.triangleMaterials.push_back(static_cast<std::uint16_t>(it->second));
+    }
+  }
+  return out;
 }
 
 Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {

@@ -76,6 +76,11 @@ class FaceBuilder {
   std::vector<glm::dvec3> poly_;
 };
 
+// The soup's triangles split by `group` (one per triangle, each < groups): one soup per group
+// with only the vertices, texture coordinates, materials and texture maps its triangles use.
+// Groups without a triangle give empty soups. Takes the soup (peak memory).
+std::vector<PolygonSoup> splitSoup(PolygonSoup soup, const std::vector<std::uint32_t>& group, std::size_t groups);
+
 // Centres and scales the soup's positions into the unit sphere and builds the mesh (not yet
 // finalised: see loadMesh). Fails when there is no triangle to draw. Takes the soup so its
 // double-precision positions are freed as soon as they are converted (peak memory).

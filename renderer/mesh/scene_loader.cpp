@@ -12,6 +12,7 @@
 #include "renderer/core/json.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/obj_parser.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -48,7 +49,7 @@ std::string sceneReportJson(const LoadedScene& scene) {
   return o;
 }
 
-Result<LoadedScene> loadScene(const std::string& nameOrPath) {
+Result<LoadedScene> loadScene(const std::string& nameOrPath, const SceneLoadOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   std::string ext = fs::path(nameOrPath).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -59,6 +60,27 @@ Result<LoadedScene> loadScene(const std::string& nameOrPath) {
     if (bytes->empty()) return Error{nameOrPath + ": the file is empty"};
     Result<LoadedScene> scene = parseGltfScene(nameOrPath, std::move(*bytes));
     if (scene) scene->load_ms = scene->report.load_ms = msSince(t0);
+    return scene;
+  }
+  if (ext == ".obj" && options.splitObjects) {
+    if (Result<std::uintmax_t> f = checkInputFile(nameOrPath, InputKind::Mesh); !f) return Error{f.error()};
+    Result<std::string> bytes = readInputFile(nameOrPath, InputKind::Mesh);
+    if (!bytes) return Error{bytes.error()};
+    Result<std::vector<ObjObject>> parts = parseObjObjects(nameOrPath, std::move(*bytes));
+    if (!parts) return Error{parts.error()};
+    LoadedScene scene;
+    scene.file = nameOrPath;
+    scene.report = parts->front().mesh.report;
+    scene.report.vertices = scene.report.triangles = 0;
+    for (ObjObject& o : *parts) {
+      finalizeMesh(o.mesh);
+      scene.report.vertices += o.mesh.positions.size();
+      scene.report.triangles += o.mesh.triangleCount();
+      const glm::mat4 placement = filePlacement(o.mesh.report);
+      scene.objects.push_back({o.name, std::make_shared<const Mesh>(std::move(o.mesh)), placement});
+    }
+    scene.warnings = scene.report.warnings;
+    scene.load_ms = scene.report.load_ms = msSince(t0);
     return scene;
   }
   Result<Mesh> m = loadModel(nameOrPath);

@@ -10,7 +10,10 @@
 
 namespace npr {
 
-[[nodiscard]] Result<LoadedScene> loadScene(const std::string& nameOrPath);
+struct SceneLoadOptions {
+  bool splitObjects = false;  // OBJ: each `o` and `g` group an object of its own (--split-objects)
+};
+[[nodiscard]] Result<LoadedScene> loadScene(const std::string& nameOrPath, const SceneLoadOptions& options = {});
 
 // The scene's load report as one line of JSON (--info): the file's report with its objects,
 // cameras, lights, animations and skins.

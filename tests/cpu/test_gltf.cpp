@@ -348,5 +348,45 @@ TEST(GltfScene, AnotherFormatIsOneObjectPlacedAsInItsFile) {
   EXPECT_TRUE(found);
 }
 
+TEST(SceneLoader, ObjGroupsBecomeObjectsWithOnlyWhatTheyUse) {
+  TempDir d;
+  d.write("two.mtl", "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n");
+  const std::string obj = d.write("groups.obj",
+                                  "mtllib two.mtl\n"
+                                  "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 0 0\nv 6 0 0\nv 5 1 0\nv 1 1 0\n"
+                                  "f 1 2 3\n"                   // before any group
+                                  "o left\nusemtl red\nf 1 2 7\n"
+                                  "g right\nusemtl blue\nf 4 5 6\n"
+                                  "o left\nf 1 7 3\n");         // continues 'left'
+  auto s = loadScene(obj, SceneLoadOptions{true});
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->objects.size(), 3u);
+  EXPECT_EQ(s->objects[0].name, "(no group)");
+  EXPECT_EQ(s->objects[1].name, "left");
+  EXPECT_EQ(s->objects[2].name, "right");
+  EXPECT_EQ(s->objects[1].mesh->triangleCount(), 2u);
+  EXPECT_EQ(s->objects[2].mesh->triangleCount(), 1u);
+  EXPECT_EQ(s->report.triangles, 4u);
+  // Each keeps only the materials its faces use (OBJ's usemtl lasts across groups: 'left''s
+  // last face is blue).
+  ASSERT_EQ(s->objects[2].mesh->materials.size(), 1u);
+  EXPECT_EQ(s->objects[2].mesh->materials[0].name, "blue");
+  ASSERT_EQ(s->objects[1].mesh->materials.size(), 2u);
+  EXPECT_EQ(s->objects[1].mesh->materials[0].name, "red");
+  EXPECT_EQ(s->objects[1].mesh->materials[1].name, "blue");
+  ASSERT_EQ(s->objects[0].mesh->materials.size(), 1u);
+  EXPECT_EQ(s->objects[0].mesh->materials[0].name, "(default)");
+  // Placed back where the file had them.
+  bool found = false;
+  for (const glm::vec3& p : placed(s->objects[2])) found = found || near(p, {6, 0, 0});
+  EXPECT_TRUE(found);
+  for (const glm::vec3& p : placed(s->objects[1])) EXPECT_LT(p.x, 1.01f);
+  // Without the option: one object of all four triangles.
+  auto whole = loadScene(obj);
+  ASSERT_TRUE(whole) << whole.error();
+  ASSERT_EQ(whole->objects.size(), 1u);
+  EXPECT_EQ(whole->objects[0].mesh->triangleCount(), 4u);
+}
+
 }  // namespace
 }  // namespace npr

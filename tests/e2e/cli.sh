@@ -203,6 +203,8 @@ G=/usr/share/assimp/models/glTF2
 expect 0 "--info on a glTF scene and an OBJ" -- "$viewer" --info "$G/2CylinderEngine-glTF-Binary/2CylinderEngine.glb" "$src/models/bunny.obj"
 [ "$(wc -l < "$tmp/out")" = 2 ] || { echo "FAIL: --info of two files is not two lines"; fail=1; }
 head -1 "$tmp/out" | grep -q '"objects":\[{"name":' || { echo "FAIL: --info lists no objects: $(head -c 300 "$tmp/out")"; fail=1; }
+expect 0 "--info --split-objects" -- "$viewer" --info --split-objects /usr/share/assimp/models/OBJ/spider.obj
+grep -q '"name":"Bein1Li"' "$tmp/out" || { echo "FAIL: --split-objects does not list the spider's legs: $(head -c 300 "$tmp/out")"; fail=1; }
 expect 0 "--info cameras" -- "$viewer" --info "$G/cameras/Cameras.gltf"
 grep -q '"cameras":\[{"name":"camera 0","type":"perspective"' "$tmp/out" || { echo "FAIL: --info cameras: $(cat "$tmp/out")"; fail=1; }
 expect 0 "two files, each object its own palette" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --screenshot "$tmp/row.png"
