@@ -146,6 +146,52 @@ std::size_t SceneObjects::triangles() const {
   return n;
 }
 
+std::optional<std::size_t> SceneObjects::pick(const CameraMatrices& camera, const glm::vec2& ndc) const {
+  const glm::mat4 inv = glm::inverse(camera.projection * camera.view);
+  const glm::vec4 a = inv * glm::vec4(ndc, -1.0f, 1.0f), b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+  if (!(std::abs(a.w) > 0.0f) || !(std::abs(b.w) > 0.0f)) return std::nullopt;
+  const glm::vec3 from = glm::vec3(a) / a.w, to = glm::vec3(b) / b.w;
+  // The segment's parameter is the same in every object's own space (its transform is
+  // affine), so the nearest hit is compared across objects as it is.
+  float nearest = 2.0f;
+  std::optional<std::size_t> hit;
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    const ViewerObject& o = objects_[i];
+    if (!o.visible) continue;
+    const glm::mat4 toMesh = glm::inverse(toViewer(o.file) * o.inFile);
+    const glm::vec3 p(toMesh * glm::vec4(from, 1.0f)), q(toMesh * glm::vec4(to, 1.0f));
+    const glm::vec3 d = q - p;
+    const Mesh& m = *o.mesh;
+    for (std::size_t f = 0; f < m.triangleCount(); ++f) {
+      // Moller-Trumbore, both sides.
+      const glm::vec3 v0 = m.positions[m.indices[3 * f]], e1 = m.positions[m.indices[3 * f + 1]] - v0, e2 = m.positions[m.indices[3 * f + 2]] - v0;
+      const glm::vec3 h = glm::cross(d, e2);
+      const float det = glm::dot(e1, h);
+      if (std::abs(det) < 1e-12f) continue;
+      const glm::vec3 s = p - v0;
+      const float u = glm::dot(s, h) / det;
+      if (u < 0.0f || u > 1.0f) continue;
+      const glm::vec3 qv = glm::cross(s, e1);
+      const float v = glm::dot(d, qv) / det;
+      if (v < 0.0f || u + v > 1.0f) continue;
+      const float t = glm::dot(e2, qv) / det;
+      if (t >= 0.0f && t < nearest) {
+        nearest = t;
+        hit = i;
+      }
+    }
+  }
+  return hit;
+}
+
+glm::vec4 SceneObjects::sphere(std::size_t object) const {
+  const ViewerObject& o = objects_.at(object);
+  const glm::mat4 t = toViewer(o.file) * o.inFile;
+  float scale = 0.0f;
+  for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(t[c])));
+  return glm::vec4(glm::vec3(t[3]), o.mesh->radius * scale);
+}
+
 std::vector<std::string> SceneObjects::materialNames(std::size_t limit) const {
   std::vector<std::string> names;
   for (const ViewerObject& o : objects_)

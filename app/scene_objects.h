@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ class SceneObjects {
   // The first object's mesh (the overlay's material list), or null.
   const Mesh* firstMesh() const { return objects_.empty() ? nullptr : objects_.front().mesh.get(); }
   std::size_t triangles() const;
+  // The shown object whose surface the ray through `ndc` (-1..1) meets first, or none.
+  std::optional<std::size_t> pick(const CameraMatrices& camera, const glm::vec2& ndc) const;
+  // The object's bounding sphere in the viewer's space (centre, radius).
+  glm::vec4 sphere(std::size_t object) const;
   // The distinct names of the objects' materials (the default one left out), at most `limit`.
   std::vector<std::string> materialNames(std::size_t limit) const;
   // "bunny.obj", or "scene.glb (12 objects)", or "3 files (14 objects)".

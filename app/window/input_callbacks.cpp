@@ -27,13 +27,51 @@ void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
   applyAction(*viewerOf(w), *a);
 }
 
+// The cursor in the scene view's normalised device coordinates (left of the docked panel; in
+// split view, within the half it is over).
+glm::vec2 cursorNdc(const Viewer& v, double x, double y) {
+  const glm::ivec2 ws = v.window->windowSize();
+  const double sceneWidth = std::max(1.0, double(ws.x) - (v.overlay ? double(v.panelWidth) : 0.0));
+  glm::vec2 ndc(float(x / sceneWidth) * 2.0f - 1.0f, 1.0f - float(y / std::max(1, ws.y)) * 2.0f);
+  if (v.state.splitView) ndc.x = ndc.x < 0.0f ? ndc.x * 2.0f + 1.0f : ndc.x * 2.0f - 1.0f;
+  return ndc;
+}
+
+// Double-click: frames the object under the cursor (the whole scene where there is none).
+void frameObjectAt(Viewer& v, double x, double y) {
+  ViewerState& s = v.state;
+  const std::optional<std::size_t> hit = s.scene.pick(s.view(v.aspect()), cursorNdc(v, x, y));
+  s.fileCamera.reset();
+  if (hit) {
+    const glm::vec4 sphere = s.scene.sphere(*hit);
+    s.camera.frameSphere(glm::vec3(sphere), sphere.w);
+    s.note("framed " + s.scene.objects()[*hit].name + " (F frames the scene)");
+  } else {
+    s.camera.frame(1.0f);
+  }
+  v.renderer->resetPattern();
+}
+
 void onMouseButton(GLFWwindow* w, int button, int action, int mods) {
   Viewer& v = *viewerOf(w);
   if (action == GLFW_PRESS && ImGui::GetIO().WantCaptureMouse) return;
   if (button < 0 || button > 2) return;
   v.dragging[button] = action == GLFW_PRESS;
   if (button == GLFW_MOUSE_BUTTON_LEFT) v.lightDrag = action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL);
-  glfwGetCursorPos(w, &v.lastCursor.x, &v.lastCursor.y);
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS && !(mods & GLFW_MOD_CONTROL)) {
+    // Two presses within 0.35 s a few pixels apart (GLFW reports no double-clicks).
+    const double now = glfwGetTime();
+    if (now - v.lastClickTime < 0.35 && glm::length(glm::dvec2(x, y) - v.lastClick) < 5.0) {
+      frameObjectAt(v, x, y);
+      v.lastClickTime = -1.0;
+    } else {
+      v.lastClickTime = now;
+      v.lastClick = {x, y};
+    }
+  }
+  v.lastCursor = {x, y};
 }
 
 void onCursor(GLFWwindow* w, double x, double y) {
@@ -65,10 +103,7 @@ void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
   if (ws.x <= 0 || ws.y <= 0) return;
   double x = 0, y = 0;
   glfwGetCursorPos(w, &x, &y);
-  // Within the scene, left of the docked panel.
-  const double sceneWidth = std::max(1.0, double(ws.x) - (v.overlay ? double(v.panelWidth) : 0.0));
-  glm::vec2 ndc(float(x / sceneWidth) * 2.0f - 1.0f, 1.0f - float(y / ws.y) * 2.0f);
-  if (v.state.splitView) ndc.x = ndc.x < 0.0f ? ndc.x * 2.0f + 1.0f : ndc.x * 2.0f - 1.0f;
+  const glm::vec2 ndc = cursorNdc(v, x, y);
   v.state.fileCamera.reset();
   v.state.camera.zoom(std::pow(0.88f, float(dy)), ndc, v.aspect());
 }

@@ -53,12 +53,13 @@ const std::vector<Binding>& keyBindings() {
       {"P", "cycle render path"},
       {"B", "split view: reference beside the chosen path"},
       {"T", "pattern space: screen / anchored to the object"},
-      {"F / R", "frame the model / reset the view"},
+      {"F / R", "frame the scene / reset the view"},
       {"V", "vsync on/off"},
       {"F1 or Tab", "overlay"},
       {"H", "this help"},
       {"F12", "screenshot (PNG in the current folder)"},
       {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette); with Shift, add the model to the scene"},
+      {"Double-click", "frame the object under the cursor (F: the whole scene)"},
       {"Esc", "quit"},
   };
   return b;

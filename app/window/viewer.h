@@ -29,6 +29,8 @@ struct Viewer {
   int screenshotCount = 0;
   std::filesystem::path screenshotDir = ".";
   glm::dvec2 lastCursor{0.0};
+  glm::dvec2 lastClick{0.0};   // the last left press (double-click framing)
+  double lastClickTime = -1.0;
   bool dragging[3] = {false, false, false};
   bool lightDrag = false;
 

@@ -59,6 +59,12 @@ void OrbitCamera::frame(float radius) {
   homeDistance_ = distance_;
 }
 
+void OrbitCamera::frameSphere(const glm::vec3& centre, float radius) {
+  if (!std::isfinite(centre.x + centre.y + centre.z) || !(radius > 0.0f) || !std::isfinite(radius)) return;
+  target_ = centre;
+  distance_ = std::clamp(radius / std::sin(glm::radians(fovYDeg_) * 0.5f) * 1.05f, minDistance(), maxDistance());
+}
+
 void OrbitCamera::reset() {
   target_ = glm::vec3(0.0f);
   setYawPitchDistance(homeYaw_, homePitch_, homeDistance_);

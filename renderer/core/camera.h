@@ -25,6 +25,9 @@ class OrbitCamera {
   void zoom(float factor, const glm::vec2& cursorNdc, float aspect);
   // Frames a model of bounding radius `radius` centred at the origin.
   void frame(float radius);
+  // Looks at a sphere of the scene (a picked object) from the current direction, filling the
+  // view with it; the scene's radius (near and far planes) stays.
+  void frameSphere(const glm::vec3& centre, float radius);
   void reset();
 
   void setYawPitchDistance(float yawDeg, float pitchDeg, float distance);

@@ -179,6 +179,22 @@ TEST_F(SceneStateFixture, SeveralFilesAreOneSceneFittedToTheUnitSphere) {
   ASSERT_EQ(state.scene.objects().size(), 2u);
   EXPECT_EQ(r->modelCount(), 2u);
   EXPECT_EQ(countDiffering(before, renderImage(*r, testCamera(1.0f), s, 96, 96)), 0);
+  // Picking: the ray through the teapot's centre on screen meets the teapot; the corner of
+  // the view meets nothing; framing the picked object looks at its centre.
+  const CameraMatrices view = testCamera(1.0f);
+  const glm::vec4 teapot = state.scene.sphere(1);
+  const glm::vec4 clip = view.projection * view.view * glm::vec4(glm::vec3(teapot), 1.0f);
+  const std::optional<std::size_t> hit = state.scene.pick(view, glm::vec2(clip) / clip.w);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(*hit, 1u);
+  EXPECT_FALSE(state.scene.pick(view, glm::vec2(0.98f, 0.98f)));
+  state.scene.setVisible(1, false, *r);
+  EXPECT_FALSE(state.scene.pick(view, glm::vec2(clip) / clip.w)) << "a hidden object was picked";
+  state.scene.setVisible(1, true, *r);
+  state.camera.frameSphere(glm::vec3(teapot), teapot.w);
+  EXPECT_LT(glm::length(state.camera.target() - glm::vec3(teapot)), 1e-6f);
+  EXPECT_LT(state.camera.distance(), 3.0f);
+
   // Added beside it, a third object; the scene is fitted again.
   ASSERT_TRUE(state.loadModels({sourcePath("models/teapot.obj")}, true, *r));
   EXPECT_EQ(state.scene.objects().size(), 3u);
