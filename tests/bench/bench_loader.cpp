@@ -1,10 +1,16 @@
 // Loading an 871K-triangle, ~33 MB OBJ: our loader against tinyobjloader's parse of the same
 // file (the issue's yardstick; Debian's libtinyobjloader-dev, used by this benchmark only) and
-// OpenMesh's stock OBJ reader, and the peak memory of a process that loads it.
+// OpenMesh's stock OBJ reader, and the peak memory of a process that loads it. Then glTF: a
+// GLB of the same 871K triangles and a GLB of 256 nodes instancing 16 meshes, loaded as a
+// scene by ours and by assimp (Debian's libassimp-dev, this benchmark only) with the steps a
+// viewer needs of it (triangulated, identical vertices joined, smooth normals).
 // Run: build/tests/bench/bench_loader [--rounds N] [Google Benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <tiny_obj_loader.h>
@@ -19,7 +25,9 @@
 
 #include "bench_common.h"
 #include "renderer/core/elapsed.h"
+#include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/scene_loader.h"
 
 namespace npr::bench {
 namespace {
@@ -65,10 +73,100 @@ ChildFigures inFreshProcess(const char* what, const std::string& path) {
   return f;
 }
 
+// A GLB of `meshes`, each placed by the nodes that name it (`nodes`: mesh index and
+// translation): one buffer of float positions and 32-bit indices.
+void writeGlb(const std::string& path, const std::vector<const Mesh*>& meshes, const std::vector<std::pair<int, glm::vec3>>& nodes) {
+  std::string bin, json = R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[)";
+  for (std::size_t i = 0; i < nodes.size(); ++i) json += (i ? "," : "") + std::to_string(i);
+  json += R"(]}],"nodes":[)";
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const glm::vec3& t = nodes[i].second;
+    json += (i ? "," : "") + std::string(R"({"mesh":)") + std::to_string(nodes[i].first) + R"(,"translation":[)" + std::to_string(t.x) + "," +
+            std::to_string(t.y) + "," + std::to_string(t.z) + "]}";
+  }
+  std::string meshJson, accessors, views;
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const Mesh& mesh = *meshes[m];
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const std::size_t posAt = bin.size();
+    bin.append(reinterpret_cast<const char*>(mesh.positions.data()), mesh.positions.size() * sizeof(glm::vec3));
+    const std::size_t idxAt = bin.size();
+    bin.append(reinterpret_cast<const char*>(mesh.indices.data()), mesh.indices.size() * 4);
+    const std::string k = std::to_string(2 * m), k1 = std::to_string(2 * m + 1);
+    meshJson += (m ? "," : "") + std::string(R"({"primitives":[{"attributes":{"POSITION":)") + k + R"(},"indices":)" + k1 + "}]}";
+    accessors += (m ? "," : "") + std::string(R"({"bufferView":)") + k + R"(,"componentType":5126,"count":)" + std::to_string(mesh.positions.size()) +
+                 R"(,"type":"VEC3","min":[)" + std::to_string(lo.x) + "," + std::to_string(lo.y) + "," + std::to_string(lo.z) + R"(],"max":[)" +
+                 std::to_string(hi.x) + "," + std::to_string(hi.y) + "," + std::to_string(hi.z) + "]}," + R"({"bufferView":)" + k1 +
+                 R"(,"componentType":5125,"count":)" + std::to_string(mesh.indices.size()) + R"(,"type":"SCALAR"})";
+    views += (m ? "," : "") + std::string(R"({"buffer":0,"byteOffset":)") + std::to_string(posAt) + R"(,"byteLength":)" +
+             std::to_string(idxAt - posAt) + R"(},{"buffer":0,"byteOffset":)" + std::to_string(idxAt) + R"(,"byteLength":)" +
+             std::to_string(mesh.indices.size() * 4) + "}";
+  }
+  json += R"(],"meshes":[)" + meshJson + R"(],"accessors":[)" + accessors + R"(],"bufferViews":[)" + views + R"(],"buffers":[{"byteLength":)" +
+          std::to_string(bin.size()) + "}]}";
+  while (json.size() % 4) json += ' ';
+  while (bin.size() % 4) bin += '\0';
+  auto u32 = [](std::string& out, std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+  std::string glb = "glTF";
+  u32(glb, 2);
+  u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  u32(glb, static_cast<std::uint32_t>(json.size()));
+  glb += "JSON" + json;
+  u32(glb, static_cast<std::uint32_t>(bin.size()));
+  glb += std::string("BIN\0", 4) + bin;
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (f) {
+    std::fwrite(glb.data(), 1, glb.size(), f);
+    std::fclose(f);
+  }
+}
+
+// The two GLBs, written once into the temp folder.
+const std::string& largeGlbPath() {
+  static const std::string path = [] {
+    const auto p = (std::filesystem::temp_directory_path() / "npr-bench-torus-871k.glb").string();
+    if (!std::filesystem::exists(p)) writeGlb(p, {&largeMesh()}, {{0, glm::vec3(0.0f)}});
+    return p;
+  }();
+  return path;
+}
+const std::string& multiNodeGlbPath() {
+  static const std::string path = [] {
+    const auto p = (std::filesystem::temp_directory_path() / "npr-bench-256-nodes.glb").string();
+    if (!std::filesystem::exists(p)) {
+      std::vector<Mesh> spheres;
+      for (int i = 0; i < 16; ++i) spheres.push_back(icosphere(2 + i % 3));
+      std::vector<const Mesh*> meshes;
+      for (const Mesh& m : spheres) meshes.push_back(&m);
+      std::vector<std::pair<int, glm::vec3>> nodes;
+      for (int i = 0; i < 256; ++i) nodes.push_back({i % 16, glm::vec3(float(i % 16) * 2.5f, float(i / 16) * 2.5f, 0.0f)});
+      writeGlb(p, meshes, nodes);
+    }
+    return p;
+  }();
+  return path;
+}
+
+bool assimpLoad(const std::string& path, std::size_t& triangles) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals);
+  if (!scene) return false;
+  triangles = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i) triangles += scene->mMeshes[i]->mNumFaces;
+  return true;
+}
+
 // The child's side: one load, its time on stdout.
 int childLoad(const std::string& what, const std::string& path) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (what == "ours" || what == "cached") {
+  if (what == "scene") {
+    npr::Result<npr::LoadedScene> s = npr::loadScene(path);
+    if (!s) return 1;
+  } else if (what == "assimp") {
+    std::size_t t = 0;
+    if (!assimpLoad(path, t)) return 1;
+  } else if (what == "ours" || what == "cached") {
     npr::Result<npr::Mesh> m = npr::loadMesh(path);
     if (!m || m->report.from_cache != (what == "cached")) return 1;
   } else if (what == "tinyobjloader") {
@@ -185,6 +283,28 @@ int main(int argc, char** argv) {
                 "(0 ms means the reload did not come from the cache)\n", npr::bench::median(times), peak);
     std::filesystem::remove_all(dir);
     setenv("NPR_NO_MESH_CACHE", "1", 1);
+  }
+  // glTF: ours (as a scene) against assimp, each in fresh processes, alternating.
+  for (const std::string& glb : {npr::bench::largeGlbPath(), npr::bench::multiNodeGlbPath()}) {
+    std::vector<double> ours, theirs;
+    double oursPeak = 0.0, theirPeak = 0.0;
+    for (int r = 0; r < 5; ++r) {
+      const auto a = npr::bench::inFreshProcess("scene", glb);
+      const auto b = npr::bench::inFreshProcess("assimp", glb);
+      ours.push_back(a.ms);
+      theirs.push_back(b.ms);
+      oursPeak = std::max(oursPeak, a.peakMiB);
+      theirPeak = std::max(theirPeak, b.peakMiB);
+    }
+    npr::Result<npr::LoadedScene> s = npr::loadScene(glb);
+    std::size_t assimpTris = 0;
+    (void)npr::bench::assimpLoad(glb, assimpTris);
+    std::printf("%s (%.1f MB, %zu objects, %zu triangles; assimp %zu): ours %.0f ms median and %.0f MiB peak RSS, assimp %.0f ms and "
+                "%.0f MiB; ours / assimp = %.2f (5 fresh processes each, alternating)\n",
+                std::filesystem::path(glb).filename().c_str(), double(std::filesystem::file_size(glb)) / 1e6, s ? s->objects.size() : 0,
+                s ? std::size_t(s->report.triangles) : 0, assimpTris, npr::bench::median(ours), oursPeak, npr::bench::median(theirs),
+                theirPeak, npr::bench::median(ours) / npr::bench::median(theirs));
+    std::fflush(stdout);
   }
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
