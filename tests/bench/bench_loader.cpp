@@ -49,7 +49,9 @@ struct ChildFigures {
 
 // Peak resident memory and time of one load in a fresh process: this benchmark run again
 // with --child WHAT PATH (exec, not just fork: a forked child inherits the parent's heap and
-// pays copy-on-write faults instead of a new process's first touches).
+// pays copy-on-write faults instead of a new process's first touches). The child reports its
+// own peak (VmHWM, which exec starts afresh): the rusage of a forked child also counts the
+// parent's pages it held before exec, so every small load read as the parent's size.
 ChildFigures inFreshProcess(const char* what, const std::string& path) {
   int fds[2];
   if (pipe(fds) != 0) return {};
@@ -65,11 +67,10 @@ ChildFigures inFreshProcess(const char* what, const std::string& path) {
   char buf[64] = {0};
   const ssize_t n = read(fds[0], buf, sizeof buf - 1);
   close(fds[0]);
-  if (n > 0) f.ms = std::atof(buf);
+  double kib = 0.0;
+  if (n > 0 && std::sscanf(buf, "%lf %lf", &f.ms, &kib) == 2) f.peakMiB = kib / 1024.0;
   int status = 0;
-  rusage u{};
-  wait4(pid, &status, 0, &u);
-  f.peakMiB = double(u.ru_maxrss) / 1024.0;
+  waitpid(pid, &status, 0);
   return f;
 }
 
@@ -173,7 +174,15 @@ int childLoad(const std::string& what, const std::string& path) {
     std::size_t t = 0;
     if (!tinyObjParse(path, t)) return 1;
   }
-  std::printf("%.3f\n", npr::msSince(t0));
+  const double ms = npr::msSince(t0);
+  long hwm = 0;
+  if (std::FILE* f = std::fopen("/proc/self/status", "r")) {
+    char line[256];
+    while (std::fgets(line, sizeof line, f))
+      if (std::sscanf(line, "VmHWM: %ld kB", &hwm) == 1) break;
+    std::fclose(f);
+  }
+  std::printf("%.3f %ld\n", ms, hwm);
   return 0;
 }
 
