@@ -11,7 +11,10 @@ namespace npr {
 
 inline int workerCount() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
-// fn(begin, end, chunkIndex) runs on `chunks` threads (the calling thread takes chunk 0).
+// fn(begin, end, chunkIndex) runs on `chunks` threads (the calling thread takes chunk 0), at
+// most one per 32768 items: a thread is started per call, which cost more than it saved on the
+// per-triangle work of a scene's small objects (bench_scene, 16 objects of 20,480 triangles:
+// 1-4% of the frame against one per 4096).
 template <class Fn>
 void parallelChunks(std::size_t n, int chunks, Fn&& fn) {
   chunks = std::max(1, std::min<int>(chunks, static_cast<int>((n + 32767) / 32768)));
