@@ -23,7 +23,7 @@ harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(obj mtl ply off stl om gltf palette image)
 # CI's inputs per harness: about 2 s each on this 2-core machine (the OM harness forks a
 # reader per input, the image ones decode whole images).
-declare -A RUNS=([gltf]=8000 [obj]=40000 [mtl]=40000 [ply]=100000 [off]=80000 [stl]=25000 [om]=40 [palette]=2500 [image]=600)
+declare -A RUNS=([gltf]=2500 [obj]=25000 [mtl]=40000 [ply]=100000 [off]=80000 [stl]=25000 [om]=40 [palette]=2500 [image]=600)
 jobs="${FUZZ_JOBS:-$(nproc)}"
 build="${FUZZ_BUILD_DIR:-build-fuzz}"
 CC=clang CXX=clang++ cmake -S . -B "$build" -DNPR_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || exit 1
