@@ -69,6 +69,11 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::vector<std::string> objectPalette;
   app.add_option("--object-palette", objectPalette,
                  "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
+  app.add_option("--animation", o.playAnimation,
+                 "The scene's animation to play: its NAME, its NUMBER from 1 (--info lists them), all (the default) or none (the rest pose)");
+  app.add_option("--time", o.time, "Pose the scene at SECONDS of its animations' time (the first frame's, when it plays)");
+  app.add_flag("--play", o.play, "Play the scene's animations in the window from the start (space plays and pauses)");
+  app.add_option("--fps", o.fps, "Headless sequences (--frames, --turntable): scene frames per second, the clock's step per frame (default 30)");
   app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
   app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
   app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
@@ -247,6 +252,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.camera = glm::vec3(v[0], v[1], v[2]);
   }
   if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
+  if (!std::isfinite(o.time) || o.time < 0.0 || o.time > 1e6) return {std::nullopt, fail("--time must be 0..1000000 seconds")};
+  if (!std::isfinite(o.fps) || o.fps < 1.0 || o.fps > 1000.0) return {std::nullopt, fail("--fps must be 1..1000 frames per second")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.
   for (const auto& m : o.models)
     if (!o.info && m.rfind("generated:", 0) != 0 && !std::filesystem::exists(m)) return {std::nullopt, fail("model file '" + m + "' does not exist")};

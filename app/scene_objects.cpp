@@ -58,13 +58,15 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
   for (LoadedScene& s : loaded) {
     for (const std::string& w : s.warnings) warnings.push_back(w);
     const std::size_t file = files_.size();
-    files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), s.animations, glm::mat4(1.0f)});
+    files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), std::move(s.nodes), std::move(s.animations), glm::mat4(1.0f)});
     for (SceneObject& o : s.objects) {
       ViewerObject v;
       v.name = o.name;
       v.file = file;
       v.mesh = std::move(o.mesh);
       v.inFile = o.transform;
+      v.node = o.node;
+      v.afterNode = o.afterNode;
       v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
       objects_.push_back(std::move(v));
     }
@@ -108,15 +110,72 @@ void SceneObjects::place(Renderer& renderer) {
   }
   // The scene into the unit sphere. One object is drawn as loaded (its mesh is centred and
   // scaled already): exactly, not through a product of transforms that rounds.
+  posed_.valid = false;
   if (objects_.size() == 1) {
     fit_ = glm::inverse(files_[objects_.front().file].layout * objects_.front().inFile);
+    objects_.front().placed = glm::mat4(1.0f);
     renderer.setModelTransform(objects_.front().id, glm::mat4(1.0f));
     return;
   }
   const glm::vec4 scene = boundsOf(all, [&](const ViewerObject& o) { return files_[o.file].layout * o.inFile; });
   const float r = scene.w > 0.0f && std::isfinite(scene.w) ? scene.w : 1.0f;
   fit_ = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / r)) * glm::translate(glm::mat4(1.0f), -glm::vec3(scene));
-  for (const ViewerObject& o : objects_) renderer.setModelTransform(o.id, toViewer(o.file) * o.inFile);
+  for (ViewerObject& o : objects_) {
+    o.placed = toViewer(o.file) * o.inFile;
+    renderer.setModelTransform(o.id, o.placed);
+  }
+}
+
+std::vector<SceneObjects::AnimationRef> SceneObjects::animations() const {
+  std::vector<AnimationRef> out;
+  for (std::size_t f = 0; f < files_.size(); ++f)
+    for (std::size_t a = 0; a < files_[f].animations.size(); ++a) out.push_back({f, a, &files_[f].animations[a]});
+  return out;
+}
+
+std::vector<std::string> SceneObjects::animationNames() const {
+  std::vector<std::string> names;
+  for (const AnimationRef& a : animations()) names.push_back(a.animation->name);
+  return names;
+}
+
+double SceneObjects::animationLength(const AnimationChoice& choice) const {
+  const std::vector<AnimationRef> all = animations();
+  double end = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (choice.which == AnimationChoice::Which::All || (choice.which == AnimationChoice::Which::One && choice.one == i))
+      end = std::max(end, double(all[i].animation->end));
+  return end;
+}
+
+void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& renderer) {
+  if (posed_.valid && posed_.choice == choice && posed_.time == time) return;
+  posed_ = {choice, time, true};
+  std::size_t number = 0;  // the scene-order number of each file's first animation
+  for (std::size_t f = 0; f < files_.size(); ++f) {
+    const SceneFile& file = files_[f];
+    if (file.animations.empty()) continue;
+    std::vector<const SceneAnimation*> playing, every;
+    for (std::size_t a = 0; a < file.animations.size(); ++a, ++number) {
+      every.push_back(&file.animations[a]);
+      if (choice.which == AnimationChoice::Which::All || (choice.which == AnimationChoice::Which::One && choice.one == number))
+        playing.push_back(&file.animations[a]);
+    }
+    // Objects any of the file's animations moves are posed (at rest when none of them plays).
+    const std::vector<char> moves = animatedNodes(file.nodes, every);
+    poseNodes(file.nodes, playing, static_cast<float>(time), world_);
+    for (ViewerObject& o : objects_) {
+      if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world_.size()) || !moves[static_cast<std::size_t>(o.node)]) continue;
+      const glm::mat4 placed = toViewer(f) * world_[static_cast<std::size_t>(o.node)] * o.afterNode;
+      // A pose that overflows (keys of 1e30 scaled by 1e30) is not drawn: the last one stays.
+      bool finite = true;
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(placed[c][r]);
+      if (!finite) continue;
+      o.placed = placed;
+      renderer.setModelPose(o.id, o.placed);
+    }
+  }
 }
 
 bool SceneObjects::setVisible(std::size_t object, bool visible, Renderer& renderer) {
@@ -158,7 +217,7 @@ std::optional<std::size_t> SceneObjects::pick(const CameraMatrices& camera, cons
   for (std::size_t i = 0; i < objects_.size(); ++i) {
     const ViewerObject& o = objects_[i];
     if (!o.visible) continue;
-    const glm::mat4 toMesh = glm::inverse(toViewer(o.file) * o.inFile);
+    const glm::mat4 toMesh = glm::inverse(o.placed);
     const glm::vec3 p(toMesh * glm::vec4(from, 1.0f)), q(toMesh * glm::vec4(to, 1.0f));
     const glm::vec3 d = q - p;
     const Mesh& m = *o.mesh;
@@ -186,7 +245,7 @@ std::optional<std::size_t> SceneObjects::pick(const CameraMatrices& camera, cons
 
 glm::vec4 SceneObjects::sphere(std::size_t object) const {
   const ViewerObject& o = objects_.at(object);
-  const glm::mat4 t = toViewer(o.file) * o.inFile;
+  const glm::mat4& t = o.placed;
   float scale = 0.0f;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(t[c])));
   return glm::vec4(glm::vec3(t[3]), o.mesh->radius * scale);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/animation_playback.h"
 #include "app/scene_layout.h"
 #include "renderer/mesh/scene_description.h"
 #include "renderer/renderer.h"
@@ -21,7 +22,10 @@ struct ViewerObject {
   std::string name;
   std::size_t file = 0;  // into SceneObjects::files()
   std::shared_ptr<const Mesh> mesh;
-  glm::mat4 inFile{1.0f};  // the mesh's space to its file's
+  glm::mat4 inFile{1.0f};  // the mesh's space to its file's, at rest
+  int node = -1;           // its file's node (animated ones move it)
+  glm::mat4 afterNode{1.0f};  // inFile = the node's world transform * afterNode
+  glm::mat4 placed{1.0f};  // the mesh's space to the viewer's, as drawn now (posed)
   ModelId id = 0;
   bool visible = true;
   std::string palette;  // its own palette's file; empty: the main palette
@@ -31,7 +35,8 @@ struct SceneFile {
   std::string path;
   std::vector<SceneCamera> cameras;  // in the file's space
   std::vector<SceneLight> lights;
-  std::size_t animations = 0;
+  std::vector<SceneNode> nodes;
+  std::vector<SceneAnimation> animations;
   glm::mat4 layout{1.0f};  // the file's space to the scene's (before the fit)
 };
 
@@ -70,6 +75,19 @@ class SceneObjects {
   // The length of one of the first file's units in the viewer's space.
   float fileUnits() const;
 
+  // Every file's animations in scene order (what --animation numbers), with their names.
+  struct AnimationRef {
+    std::size_t file = 0, index = 0;
+    const SceneAnimation* animation = nullptr;
+  };
+  std::vector<AnimationRef> animations() const;
+  std::vector<std::string> animationNames() const;
+  // The scene time the clock loops over for `choice`: the latest last keyframe (0: nothing moves).
+  double animationLength(const AnimationChoice& choice) const;
+  // Poses the animated objects at the clock's time with the chosen animations (the rest pose
+  // for the others); nothing is done when the time and choice are those of the last pose.
+  void pose(const AnimationChoice& choice, double time, Renderer& renderer);
+
  private:
   // Places every file by the layout, fits the scene and gives the renderer the transforms.
   void place(Renderer& renderer);
@@ -79,6 +97,12 @@ class SceneObjects {
   Layout layout_ = Layout::File;
   bool split_ = false;
   glm::mat4 fit_{1.0f};
+  struct PoseKey {
+    AnimationChoice choice;
+    double time = 0.0;
+    bool valid = false;
+  } posed_;
+  std::vector<glm::mat4> world_;  // scratch: one file's posed nodes
 };
 
 }  // namespace npr

@@ -55,6 +55,14 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
     if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
   if (Status s = applySettings(o.settings, false, state, renderer); !s) return s;
   state.fileLights = o.fileLights;
+  if (!o.playAnimation.empty()) {
+    Result<AnimationChoice> choice = parseAnimationChoice(o.playAnimation, state.scene.animationNames());
+    if (!choice) return Error{choice.error()};
+    state.playback.choice = *choice;
+  }
+  state.playback.time = o.time;
+  state.playback.playing = o.play;
+  state.poseScene(renderer);
   if (o.cameraFromFile > 0)
     if (Status s = state.useFileCamera(o.cameraFromFile); !s) return Error{"--camera-from-file: " + s.error()};
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());

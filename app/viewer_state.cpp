@@ -53,6 +53,10 @@ Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, 
     note(scene.label() + " is lit by its file's " + std::to_string(lights) + " light(s)" +
          (lights > kMaxLights ? " (the " + std::to_string(kMaxLights) + " brightest)" : std::string()) + "; --no-file-lights for the viewer's");
   fileCamera.reset();
+  // A new scene plays all its animations from the start (a choice of the old one means nothing).
+  playback.choice = {};
+  playback.time = 0.0;
+  poseScene(renderer);
   camera.frame(1.0f);  // the scene is fitted into the unit sphere
   renderer.resetPattern();
   for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);

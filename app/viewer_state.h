@@ -36,6 +36,8 @@ struct ViewerState {
   glm::vec3 light{2.0f, 2.5f, 3.0f};  // scene space (model radius 1), or eye space when following
   bool lightFollowsCamera = false;
   bool splitView = false;  // reference on the left, the chosen path on the right
+  // The scene's clock: which animations play and when (--animation, --time, --play, space).
+  Playback playback;
   std::vector<std::string> messages;  // load errors and warnings, newest last, shown in the overlay
 
   // Shows the files' objects in place of the scene (or beside it, `add`); the camera frames
@@ -61,6 +63,10 @@ struct ViewerState {
 
   // The view this frame is drawn from: the file's camera when one is chosen, else the orbit's.
   CameraMatrices view(float aspect) const;
+  // Poses the scene at the clock's time (cheap when neither the time nor the choice changed).
+  void poseScene(Renderer& renderer) { scene.pose(playback.choice, playback.time, renderer); }
+  // The scene time the clock loops over (0: nothing plays).
+  double animationLength() const { return scene.animationLength(playback.choice); }
   // Looks through the scene's camera `number` (from 1, as --info lists them).
   Status useFileCamera(int number);
 

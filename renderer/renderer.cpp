@@ -77,6 +77,7 @@ void Renderer::clearModelPalette(ModelId id) {
 }
 
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
+bool Renderer::setModelPose(ModelId id, const glm::mat4& transform) { return scene_.pose(id, transform); }
 
 void Renderer::setMesh(const Mesh* mesh) {
   ground_.reset();
@@ -220,7 +221,7 @@ void Renderer::prepareOrientation(const RenderSettings& s) {
 
 Model* Renderer::prepareGround() {
   if (scene_.empty()) return nullptr;
-  if (ground_ && groundVersion_ == scene_.version()) return ground_.get();
+  if (ground_ && groundVersion_ == scene_.layoutVersion()) return ground_.get();
   // Under the scene's lowest point, about the origin, holding every model.
   float lowest = std::numeric_limits<float>::infinity();
   scene_.forEach([&](const Model& m) {
@@ -233,7 +234,7 @@ Model* Renderer::prepareGround() {
   const glm::vec4 bounds = scene_.bounds();
   groundMesh_ = groundPlane(std::isfinite(lowest) ? lowest : -1.0f, glm::length(glm::vec3(bounds)) + bounds.w);
   ground_ = std::make_unique<Model>(groundMesh_, glm::mat4(1.0f), stats_, false);
-  groundVersion_ = scene_.version();
+  groundVersion_ = scene_.layoutVersion();
   return ground_.get();
 }
 

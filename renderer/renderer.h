@@ -56,6 +56,8 @@ class Renderer {
   void removeModel(ModelId id);
   // False when there is no such model.
   bool setModelTransform(ModelId id, const glm::mat4& transform);
+  // An animation's move: as setModelTransform, but the ground stays where the layout put it.
+  bool setModelPose(ModelId id, const glm::mat4& transform);
   // A hidden model keeps everything derived from its mesh and is left out of every pass.
   bool setModelVisible(ModelId id, bool visible) { return scene_.setVisible(id, visible); }
   // The model's own palette, in place of the main one for its surfaces (every path; its

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -40,12 +41,16 @@ int runHeadless(const Options& o) {
   if (!target) return reportFailure(target.error());
   const int frames = std::max(1, o.frames);
   const float aspect = float(o.size.x) / float(o.size.y);
+  // A sequence of an animated scene moves it: the clock steps 1/fps scene seconds per frame.
+  const bool moving = frames > 1 && state.animationLength() > 0.0;
+  if (moving) state.playback.playing = true;
+  const int gifFps = moving ? static_cast<int>(std::lround(o.fps)) : 30;
   std::vector<double> ms;
   // A turntable also goes into an animated GIF, frame by frame (30 frames a second, looping).
   std::optional<AnimationWriter> gif;
   const std::string gifPath = o.turntable ? (std::filesystem::path(o.saveFrames) / "turntable.gif").string() : std::string();
   if (o.turntable) {
-    Result<AnimationWriter> w = AnimationWriter::open(gifPath, o.size.x, o.size.y, frames, 30);
+    Result<AnimationWriter> w = AnimationWriter::open(gifPath, o.size.x, o.size.y, frames, gifFps);
     if (!w) return reportFailure(w.error());
     gif = std::move(*w);
   }
@@ -59,6 +64,7 @@ int runHeadless(const Options& o) {
   CameraMatrices lastCamera = state.view(aspect);
   for (int f = 0; f < frames; ++f) {
     const auto t0 = std::chrono::steady_clock::now();
+    state.poseScene(*renderer);
     const CameraMatrices cam = state.view(aspect);
     lastCamera = cam;
     if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
@@ -75,6 +81,7 @@ int runHeadless(const Options& o) {
     }
     if (frames > 1) progress.update(double(f + 1) / frames);
     stepCameraAnimation(state.camera, o.animation, o.size);
+    if (moving) state.playback.advance(1.0 / o.fps, state.animationLength());
   }
   if (!o.saveFrames.empty()) tellUser(std::to_string(frames) + " frame(s) written to " + o.saveFrames);
   if (gif) tellUser("turntable written to " + gifPath);

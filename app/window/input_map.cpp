@@ -29,6 +29,7 @@ std::optional<KeyAction> actionForKey(int key, int mods) {
     case GLFW_KEY_L: return KeyAction{Action::ToggleLightFollow};
     case GLFW_KEY_V: return KeyAction{Action::ToggleVsync};
     case GLFW_KEY_T: return KeyAction{Action::CyclePattern};
+    case GLFW_KEY_SPACE: return KeyAction{Action::TogglePlay};
     case GLFW_KEY_A: return KeyAction{Action::MoveLight, 0};
     case GLFW_KEY_D: return KeyAction{Action::MoveLight, 1};
     case GLFW_KEY_S: return KeyAction{Action::MoveLight, 2};
@@ -55,6 +56,7 @@ const std::vector<Binding>& keyBindings() {
       {"T", "pattern space: screen / anchored to the object"},
       {"F / R", "frame the scene / reset the view"},
       {"V", "vsync on/off"},
+      {"Space", "play / pause the scene's animations"},
       {"F1 or Tab", "overlay"},
       {"H", "this help"},
       {"F12", "screenshot (PNG in the current folder)"},

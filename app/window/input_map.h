@@ -11,7 +11,7 @@ enum class Action {
   Quit, ToggleOverlay, ToggleHelp, Screenshot,
   SelectPalette,  // param: palette number, 0-based
   NextPalette, PreviousPalette, CycleMatch, RangeScaleUp, RangeScaleDown, CyclePath, ToggleSplit,
-  FrameModel, ResetView, ToggleLightFollow, ToggleVsync, CyclePattern,
+  FrameModel, ResetView, ToggleLightFollow, ToggleVsync, CyclePattern, TogglePlay,
   MoveLight,      // param: axis * 2 + (positive ? 1 : 0); axis 0 = x, 1 = y, 2 = z
 };
 

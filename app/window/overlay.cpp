@@ -198,7 +198,7 @@ void drawObjectList(Viewer& v) {
       ImGui::EndCombo();
     }
     if (ImGui::IsItemHovered()) {
-      const glm::mat4 t = s.scene.toViewer(o.file) * o.inFile;
+      const glm::mat4& t = o.placed;
       tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
               std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)");
     }
@@ -231,6 +231,35 @@ void drawFileViews(Viewer& v) {
     }
   }
   if (!s.scene.lights().empty()) ImGui::Checkbox("the file's lights", &s.fileLights);
+}
+
+// The scene's clock: which animation plays, play and pause (space), scrubbing and speed.
+void drawTimeline(Viewer& v) {
+  ViewerState& s = v.state;
+  const std::vector<std::string> names = s.scene.animationNames();
+  if (names.empty()) return;
+  Playback& p = s.playback;
+  const std::string current = p.choice.which == AnimationChoice::Which::All    ? "all"
+                              : p.choice.which == AnimationChoice::Which::None ? "none (rest pose)"
+                                                                               : names[std::min(p.choice.one, names.size() - 1)];
+  if (ImGui::BeginCombo("animation", current.c_str())) {
+    if (ImGui::Selectable("all", p.choice.which == AnimationChoice::Which::All)) p.choice = {};
+    if (ImGui::Selectable("none (rest pose)", p.choice.which == AnimationChoice::Which::None)) p.choice = {AnimationChoice::Which::None, 0};
+    for (std::size_t i = 0; i < names.size() && i < 256; ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      if (ImGui::Selectable(names[i].c_str(), p.choice == AnimationChoice{AnimationChoice::Which::One, i}))
+        p.choice = {AnimationChoice::Which::One, i};
+      ImGui::PopID();
+    }
+    ImGui::EndCombo();
+  }
+  const double length = s.animationLength();
+  if (ImGui::Button(p.playing ? "pause (space)" : "play (space)")) applyAction(v, {Action::TogglePlay});
+  ImGui::SameLine();
+  float time = static_cast<float>(p.time);
+  if (ImGui::SliderFloat("##time", &time, 0.0f, static_cast<float>(std::max(length, 1e-3)), "%.2f s")) p.time = time;
+  float speed = static_cast<float>(p.speed);
+  if (ImGui::SliderFloat("speed", &speed, 0.05f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic)) p.speed = speed;
 }
 
 }  // namespace
@@ -270,6 +299,7 @@ void drawOverlay(Viewer& v) {
   ImGui::Text("model: %s", s.scene.label().c_str());
   drawObjectList(v);
   drawFileViews(v);
+  drawTimeline(v);
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
   if (ImGui::BeginCombo("style", "choose a style")) {
     for (const std::string& file : discoverStyles())

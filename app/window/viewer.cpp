@@ -92,6 +92,10 @@ void applyAction(Viewer& v, const KeyAction& a) {
       break;
     }
     case Action::ToggleVsync: v.vsync = !v.vsync; glfwSwapInterval(v.vsync ? 1 : 0); break;
+    case Action::TogglePlay:
+      if (v.state.animationLength() > 0.0) v.state.playback.playing = !v.state.playback.playing;
+      else v.state.note("nothing to play: " + v.state.scene.label() + " has no animation that moves it");
+      break;
     case Action::MoveLight: {
       const float step = 0.1f;  // a tenth of the scene's radius
       s.light[a.param / 2] += (a.param % 2) ? step : -step;

@@ -58,6 +58,7 @@ int runWindowViewer(const Options& o) {
 
     const glm::ivec2 fb = v.window->framebufferSize();
     const glm::ivec4 sceneView = v.sceneViewport();
+    v.state.poseScene(*v.renderer);
     const CameraMatrices cam = v.state.view(v.aspect());
     // Where this frame's passes share the framebuffer's depth and stencil (the stencil path's
     // masks writing its per-pixel buffers as they mark, the turn resolve), which the window's
@@ -123,6 +124,7 @@ int runWindowViewer(const Options& o) {
     stepCameraAnimation(v.state.camera, o.animation, fb);
     glfwSwapBuffers(w);
     const auto now = std::chrono::steady_clock::now();
+    v.state.playback.advance(std::chrono::duration<double>(now - last).count(), v.state.animationLength());
     v.timer.add(std::chrono::duration<double>(now - start).count(), std::chrono::duration<double, std::milli>(now - last).count());
     last = now;
     if (lastFrame) break;

@@ -37,6 +37,7 @@
 
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
+#include "renderer/core/json.h"
 #include "renderer/core/printable.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/polygon_soup.h"
@@ -51,6 +52,8 @@ constexpr std::uint64_t kMaxSceneTriangles = 50'000'000;
 constexpr int kMaxNodeDepth = 256;
 constexpr std::size_t kMaxTextures = 64;
 constexpr int kMaxTextureSide = 1024;
+// Keyframe values over every channel (each copies its sampler's, and samplers may be shared).
+constexpr std::uint64_t kMaxAnimationKeys = 4'000'000;
 
 // tinygltf's file callbacks: files go through our input gate; paths are joined, never
 // expanded by a shell (tinygltf's own expansion used wordexp, CVE-2022-3008).
@@ -186,6 +189,8 @@ class GltfReader {
     std::string name;
     std::size_t target = 0;
     glm::dmat4 world{1.0};
+    int node = -1;             // into nodes()
+    glm::dmat4 mirror{1.0};    // after the node's world transform
   };
 
   Status read() {
@@ -211,15 +216,17 @@ class GltfReader {
     }
     std::vector<char> visited(m_.nodes.size(), 0);
     for (int root : roots)
-      if (Status s = visit(root, glm::dmat4(1.0), 0, visited); !s) return s;
+      if (Status s = visit(root, glm::dmat4(1.0), -1, 0, visited); !s) return s;
     if (skippedPrimitives_ > 0)
       warn_.add(name_ + ": " + std::to_string(skippedPrimitives_) + " primitive(s) of points or lines not drawn (only triangles are)");
     if (mode_ == Mode::Flatten && (!m_.cameras.empty() || !lights_.empty()))
       warn_.add(name_ + ": " + std::to_string(m_.cameras.size()) + " camera(s) and " + std::to_string(lights_.size()) +
                 " light(s) are not used when the file is read as one mesh");
-    if (!m_.animations.empty() || !m_.skins.empty())
-      warn_.add(name_ + ": " + std::to_string(m_.animations.size()) + " animation(s) and " + std::to_string(m_.skins.size()) +
-                " skin(s) are not played yet: the scene is drawn in its rest pose");
+    if (mode_ == Mode::Flatten && !m_.animations.empty())
+      warn_.add(name_ + ": " + std::to_string(m_.animations.size()) + " animation(s) are not played when the file is read as one mesh");
+    if (mode_ == Mode::Objects) readAnimations();
+    if (!m_.skins.empty())
+      warn_.add(name_ + ": " + std::to_string(m_.skins.size()) + " skin(s) are not applied yet: skinned meshes are drawn in their bind pose");
     for (Target& t : targets_) {
       t.report.texture_coordinates = t.soup.tracksTexcoords;
       t.report.vertex_colours = !t.soup.colours.empty();
@@ -234,6 +241,8 @@ class GltfReader {
   const std::vector<Object>& objects() const { return objects_; }
   std::vector<SceneCamera>& cameras() { return cameras_; }
   std::vector<SceneLight> placedLights() const { return placedLights_; }
+  std::vector<SceneNode>& nodes() { return nodes_; }
+  std::vector<SceneAnimation>& animations() { return animations_; }
 
  private:
   Error fail(const std::string& what) const { return Error{name_ + ": " + what}; }
@@ -546,7 +555,7 @@ class GltfReader {
     return t;
   }
 
-  Status visit(int index, const glm::dmat4& parent, int depth, std::vector<char>& visited) {
+  Status visit(int index, const glm::dmat4& parent, int parentNode, int depth, std::vector<char>& visited) {
     if (index < 0 || index >= static_cast<int>(m_.nodes.size())) return fail("node " + std::to_string(index) + " does not exist");
     if (visited[static_cast<std::size_t>(index)])
       return fail("node " + std::to_string(index) + " is reached twice (a cycle, or a node with two parents)");
@@ -556,20 +565,32 @@ class GltfReader {
     Result<glm::dmat4> local = localTransform(n, index);
     if (!local) return Error{local.error()};
     const glm::dmat4 world = parent * *local;
+    // The node as animation sees it (its fields checked by localTransform).
+    const int node = static_cast<int>(nodes_.size());
+    if (mode_ == Mode::Objects) {
+      SceneNode& out = nodes_.emplace_back();
+      out.name = printable(n.name);
+      out.parent = parentNode;
+      if (!n.matrix.empty()) out.matrix = glm::mat4(glm::make_mat4(n.matrix.data()));
+      if (n.translation.size() == 3) out.translation = glm::vec3(n.translation[0], n.translation[1], n.translation[2]);
+      if (n.rotation.size() == 4) out.rotation = glm::normalize(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
+      if (n.scale.size() == 3) out.scale = glm::vec3(n.scale[0], n.scale[1], n.scale[2]);
+      nodeOf_[index] = node;
+    }
     if (n.mesh >= 0) {
       if (n.mesh >= static_cast<int>(m_.meshes.size())) return fail("node " + std::to_string(index) + " names mesh " + std::to_string(n.mesh) + ", which does not exist");
-      if (Status s = mesh(n, index, world); !s) return s;
+      if (Status s = mesh(n, index, node, world); !s) return s;
     }
     if (n.camera >= 0) addCamera(n.camera, world);
     placeLight(n, world);
     for (int c : n.children)
-      if (Status s = visit(c, world, depth + 1, visited); !s) return s;
+      if (Status s = visit(c, world, node, depth + 1, visited); !s) return s;
     return okStatus();
   }
 
   // Node `index`'s mesh: its primitives into the one mesh at its world transform (Flatten), or
   // an object instancing the glTF mesh, built the first time a node uses it (Objects).
-  Status mesh(const tinygltf::Node& n, int index, const glm::dmat4& world) {
+  Status mesh(const tinygltf::Node& n, int index, int node, const glm::dmat4& world) {
     const tinygltf::Mesh& mesh = m_.meshes[static_cast<std::size_t>(n.mesh)];
     auto build = [&](Target& t, const glm::dmat4& placement) -> Status {
       for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
@@ -596,8 +617,104 @@ class GltfReader {
         return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
     }
     std::string name = n.name.empty() ? (mesh.name.empty() ? "node " + std::to_string(index) : mesh.name) : n.name;
-    objects_.push_back({printable(name), built->second.first, world * mirror});
+    objects_.push_back({printable(name), built->second.first, world * mirror, node, mirror});
     return okStatus();
+  }
+
+  // The file's animations: each checked whole, and one that breaks a rule refused with a
+  // warning naming it and the rule (the scene stays, static where it would have moved).
+  void readAnimations() {
+    std::size_t morphChannels = 0;
+    for (std::size_t i = 0; i < m_.animations.size(); ++i) {
+      const tinygltf::Animation& a = m_.animations[i];
+      const std::string label = "animation " + std::to_string(i) + (a.name.empty() ? std::string() : " '" + printable(a.name) + "'");
+      Result<SceneAnimation> read = readAnimation(a, morphChannels);
+      if (!read) {
+        warn_.add(name_ + ": " + label + " is not played: " + read.error());
+        continue;
+      }
+      read->name = a.name.empty() ? "animation " + std::to_string(i + 1) : printable(a.name);
+      animations_.push_back(std::move(*read));
+    }
+    if (morphChannels > 0)
+      warn_.add(name_ + ": " + std::to_string(morphChannels) + " morph target weight channel(s) are not played yet (the meshes keep their rest shape)");
+  }
+
+  Result<SceneAnimation> readAnimation(const tinygltf::Animation& a, std::size_t& morphChannels) {
+    SceneAnimation out;
+    if (a.channels.empty()) return Error{"it has no channels"};
+    bool first = true;
+    for (std::size_t c = 0; c < a.channels.size(); ++c) {
+      const tinygltf::AnimationChannel& ch = a.channels[c];
+      const std::string where = "channel " + std::to_string(c);
+      if (ch.target_path == "weights") {
+        ++morphChannels;
+        continue;
+      }
+      AnimationChannel channel;
+      if (ch.target_path == "translation") channel.property = AnimatedProperty::Translation;
+      else if (ch.target_path == "rotation") channel.property = AnimatedProperty::Rotation;
+      else if (ch.target_path == "scale") channel.property = AnimatedProperty::Scale;
+      else return Error{where + " animates '" + printable(ch.target_path, 40) + "' (translation, rotation, scale or weights are glTF's)"};
+      if (ch.target_node < 0 || ch.target_node >= static_cast<int>(m_.nodes.size()))
+        return Error{where + " names node " + std::to_string(ch.target_node) + ", which does not exist"};
+      const auto node = nodeOf_.find(ch.target_node);
+      if (node == nodeOf_.end()) continue;  // a node outside the default scene: nothing drawn moves
+      if (nodes_[static_cast<std::size_t>(node->second)].matrix)
+        return Error{where + " animates node " + std::to_string(ch.target_node) + ", which is given by a matrix (glTF allows animating only TRS nodes)"};
+      channel.node = node->second;
+      if (ch.sampler < 0 || ch.sampler >= static_cast<int>(a.samplers.size()))
+        return Error{where + " names sampler " + std::to_string(ch.sampler) + ", which does not exist"};
+      const tinygltf::AnimationSampler& sampler = a.samplers[static_cast<std::size_t>(ch.sampler)];
+      if (sampler.interpolation == "STEP") channel.interpolation = Interpolation::Step;
+      else if (sampler.interpolation == "CUBICSPLINE") channel.interpolation = Interpolation::CubicSpline;
+      else if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty()) channel.interpolation = Interpolation::Linear;
+      else return Error{where + ": interpolation '" + printable(sampler.interpolation, 40) + "' is not STEP, LINEAR or CUBICSPLINE"};
+      // The accessor's message without the file's name, which the warning gives once.
+      const auto unnamed = [&](const std::string& e) { return Error{e.rfind(name_ + ": ", 0) == 0 ? e.substr(name_.size() + 2) : e}; };
+      Result<AccessorView> input = accessor(sampler.input, where + "'s keyframe times", {TINYGLTF_TYPE_SCALAR});
+      if (!input) return unnamed(input.error());
+      if (input->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) return Error{where + "'s keyframe times are not floats"};
+      if (input->count == 0) return Error{where + " has no keyframes"};
+      const bool rotation = channel.property == AnimatedProperty::Rotation;
+      Result<AccessorView> output = accessor(sampler.output, where + "'s values", {rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3});
+      if (!output) return unnamed(output.error());
+      const std::size_t perKey = channel.interpolation == Interpolation::CubicSpline ? 3 : 1;
+      if (output->count != input->count * perKey)
+        return Error{where + " has " + std::to_string(input->count) + " keyframe times but " + std::to_string(output->count) + " values (" +
+                     (perKey == 3 ? "a cubic spline needs three per time" : "one per time") + ")"};
+      // Channels copy their sampler's keys: bounded over the file, however often one is shared.
+      animationKeys_ += output->count;
+      if (animationKeys_ > kMaxAnimationKeys) return Error{"the file's animations hold more than " + std::to_string(kMaxAnimationKeys) + " keyframe values"};
+      channel.times.resize(input->count);
+      for (std::size_t k = 0; k < input->count; ++k) {
+        const double t = input->component(k, 0);
+        if (!std::isfinite(t)) return Error{where + ": keyframe time " + std::to_string(k) + " is not finite"};
+        channel.times[k] = static_cast<float>(t);
+        if (k > 0 && !(channel.times[k] > channel.times[k - 1]))
+          return Error{where + ": keyframe times do not increase (time " + std::to_string(k) + " is " + json::number(t) + " after " +
+                       json::number(channel.times[k - 1]) + ")"};
+      }
+      channel.values.resize(output->count);
+      for (std::size_t k = 0; k < output->count; ++k) {
+        glm::vec4 v(0.0f);
+        for (int j = 0; j < output->components; ++j) {
+          const double x = output->component(k, j);
+          if (!std::isfinite(x)) return Error{where + ": value " + std::to_string(k) + " is not finite"};
+          v[j] = static_cast<float>(x);
+        }
+        channel.values[k] = v;
+      }
+      if (rotation && channel.interpolation != Interpolation::CubicSpline)
+        for (const glm::vec4& q : channel.values)
+          if (!(glm::length(q) > 1e-6f)) return Error{where + ": a rotation is the zero quaternion"};
+      out.start = first ? channel.times.front() : std::min(out.start, channel.times.front());
+      out.end = first ? channel.times.back() : std::max(out.end, channel.times.back());
+      first = false;
+      out.channels.push_back(std::move(channel));
+    }
+    if (out.channels.empty()) return Error{"it moves nothing this viewer draws (its channels drive morph weights or nodes outside the scene)"};
+    return out;
   }
 
   Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t) {
@@ -722,6 +839,10 @@ class GltfReader {
   std::vector<std::optional<SceneLight>> lights_;  // KHR_lights_punctual's, null where malformed
   std::vector<SceneLight> placedLights_;
   std::vector<SceneCamera> cameras_;
+  std::vector<SceneNode> nodes_;             // Objects: the visited nodes, parents first
+  std::map<int, int> nodeOf_;                // the file's node -> nodes_
+  std::vector<SceneAnimation> animations_;
+  std::uint64_t animationKeys_ = 0;
   std::uint64_t sceneTriangles_ = 0;
   std::size_t skippedPrimitives_ = 0;
 };
@@ -773,11 +894,12 @@ Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
   if (Status s = reader.read(); !s) return Error{s.error()};
   LoadedScene scene;
   scene.file = name;
-  scene.animations = model.animations.size();
   scene.skins = model.skins.size();
   model = tinygltf::Model();
   scene.cameras = std::move(reader.cameras());
   scene.lights = reader.placedLights();
+  scene.nodes = std::move(reader.nodes());
+  scene.animations = std::move(reader.animations());
   scene.warnings = report.warnings;
   scene.report = report;
   std::vector<std::shared_ptr<const Mesh>> meshes(reader.targets().size());
@@ -797,7 +919,7 @@ Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
   }
   for (const GltfReader::Object& o : reader.objects()) {
     if (!meshes[o.target]) continue;
-    scene.objects.push_back({o.name, meshes[o.target], glm::mat4(o.world * unplace[o.target])});
+    scene.objects.push_back({o.name, meshes[o.target], glm::mat4(o.world * unplace[o.target]), o.node, glm::mat4(o.mirror * unplace[o.target])});
     scene.report.vertices += meshes[o.target]->positions.size();
     scene.report.triangles += meshes[o.target]->triangleCount();
   }

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/animation/node_animation.h"
 #include "renderer/mesh/mesh.h"
 
 namespace npr {
@@ -18,8 +19,13 @@ namespace npr {
 struct SceneObject {
   std::string name;                  // the node's name, or the file's for a one-mesh file
   std::shared_ptr<const Mesh> mesh;  // finalised; shared by the nodes that instance one glTF mesh
-  // The mesh's own space (centred and scaled into the unit sphere by the loader) to the file's.
+  // The mesh's own space (centred and scaled into the unit sphere by the loader) to the file's,
+  // in the rest pose.
   glm::mat4 transform{1.0f};
+  // The node that places it (into LoadedScene::nodes; -1: placed by `transform` alone) and
+  // what follows the node's world transform: transform = world(node) * afterNode.
+  int node = -1;
+  glm::mat4 afterNode{1.0f};
 };
 
 struct SceneCamera {
@@ -50,7 +56,11 @@ struct LoadedScene {
   std::vector<SceneObject> objects;
   std::vector<SceneCamera> cameras;
   std::vector<SceneLight> lights;
-  std::size_t animations = 0, skins = 0;
+  // The default scene's nodes (parents first) and the animations that move them; animations
+  // the reader refused are left out, named in `warnings`.
+  std::vector<SceneNode> nodes;
+  std::vector<SceneAnimation> animations;
+  std::size_t skins = 0;
   // The file's warnings (each object's mesh keeps its own report too).
   std::vector<std::string> warnings;
   // The file's load report: materials, textures found and missing, warnings; vertices and

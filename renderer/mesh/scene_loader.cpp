@@ -45,7 +45,13 @@ std::string sceneReportJson(const LoadedScene& scene) {
     const char* type = l.type == SceneLight::Type::Point ? "point" : l.type == SceneLight::Type::Spot ? "spot" : "directional";
     o += (i ? "," : "") + std::string("{\"name\":") + json::string(l.name) + ",\"type\":\"" + type + "\",\"intensity\":" + json::number(l.intensity) + "}";
   }
-  o += "],\"animations\":" + std::to_string(scene.animations) + ",\"skins\":" + std::to_string(scene.skins) + "}";
+  o += "],\"animations\":[";
+  for (std::size_t i = 0; i < scene.animations.size(); ++i) {
+    const SceneAnimation& a = scene.animations[i];
+    o += (i ? "," : "") + std::string("{\"name\":") + json::string(a.name) + ",\"start\":" + json::number(a.start) + ",\"end\":" + json::number(a.end) +
+         ",\"channels\":" + std::to_string(a.channels.size()) + "}";
+  }
+  o += "],\"skins\":" + std::to_string(scene.skins) + "}";
   return o;
 }
 

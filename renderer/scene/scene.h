@@ -19,6 +19,7 @@ class Scene {
   ModelId add(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
     models_.push_back({nextId_, std::make_unique<Model>(mesh, transform, stats)});
     ++version_;
+    ++layoutVersion_;
     return nextId_++;
   }
   // A scene of one model showing `mesh`: the present model reused when there is exactly one.
@@ -29,6 +30,7 @@ class Scene {
     }
     models_.front().model->reset(mesh, transform, stats);
     ++version_;
+    ++layoutVersion_;
     return models_.front().id;
   }
   bool remove(ModelId id) {
@@ -36,6 +38,7 @@ class Scene {
       if (it->id == id) {
         models_.erase(it);
         ++version_;
+        ++layoutVersion_;
         return true;
       }
     return false;
@@ -43,6 +46,7 @@ class Scene {
   void clear() {
     models_.clear();
     ++version_;
+    ++layoutVersion_;
   }
   Model* find(ModelId id) {
     for (auto& m : models_)
@@ -55,13 +59,24 @@ class Scene {
     if (!m) return false;
     m->setTransform(transform);
     ++version_;
+    ++layoutVersion_;
+    return true;
+  }
+  // A move of the animation: as setTransform, but the scene's layout (what the ground is
+  // sized and placed by) stays, so the ground does not follow a jumping character.
+  bool pose(ModelId id, const glm::mat4& transform) {
+    Model* m = find(id);
+    if (!m) return false;
+    if (m->transform() == transform) return true;
+    m->setTransform(transform);
+    ++version_;
     return true;
   }
   // False when there is no such model.
   bool setVisible(ModelId id, bool visible) {
     for (auto& m : models_)
       if (m.id == id) {
-        if (m.visible != visible) ++version_;
+        if (m.visible != visible) ++version_, ++layoutVersion_;
         m.visible = visible;
         return true;
       }
@@ -74,8 +89,11 @@ class Scene {
     return true;
   }
   std::size_t size() const { return models_.size(); }
-  // Changes whenever a model is added, removed or moved (for the caches of the whole scene).
+  // Changes whenever a model is added, removed, shown, hidden or moved (for the caches of the
+  // whole scene: shadow maps).
   unsigned version() const { return version_; }
+  // Changes as version() does except for animation's moves (pose).
+  unsigned layoutVersion() const { return layoutVersion_; }
   // Calls fn(Model&) for every shown model, in the order they were added.
   template <class Fn>
   void forEach(Fn&& fn) {
@@ -139,7 +157,7 @@ class Scene {
   };
   std::vector<Entry> models_;
   ModelId nextId_ = 1;
-  unsigned version_ = 0;
+  unsigned version_ = 0, layoutVersion_ = 0;
 };
 
 }  // namespace npr

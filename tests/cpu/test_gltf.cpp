@@ -385,5 +385,110 @@ TEST(SceneLoader, ObjGroupsBecomeObjectsWithOnlyWhatTheyUse) {
   EXPECT_EQ(whole->objects[0].mesh->triangleCount(), 4u);
 }
 
+// The triangle's document with an animation of node 0 ("mover", a child of node 1 at x = 5):
+// keyframe times at buffer byte 44 (accessor 2), values after them (accessor 3). `times` and
+// `values` as floats; the sampler's interpolation and the channel's path replaceable.
+struct AnimatedDoc : Doc {
+  AnimatedDoc(std::vector<float> times, std::vector<float> values, int valueComponents, const std::string& path = "translation",
+              const std::string& interpolation = "LINEAR") {
+    const std::size_t t0 = buffer.size(), v0 = t0 + 4 * times.size();
+    buffer.resize(v0 + 4 * values.size());
+    std::memcpy(buffer.data() + t0, times.data(), 4 * times.size());
+    std::memcpy(buffer.data() + v0, values.data(), 4 * values.size());
+    const char* type = valueComponents == 4 ? "VEC4" : "VEC3";
+    accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                    {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},
+                    {"bufferView":2,"componentType":5126,"count":)" + std::to_string(times.size()) + R"(,"type":"SCALAR"},
+                    {"bufferView":3,"componentType":5126,"count":)" + std::to_string(values.size() / valueComponents) + R"(,"type":")" + type + R"("}])";
+    bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6},
+                      {"buffer":0,"byteOffset":)" + std::to_string(t0) + R"(,"byteLength":)" + std::to_string(4 * times.size()) + R"(},
+                      {"buffer":0,"byteOffset":)" + std::to_string(v0) + R"(,"byteLength":)" + std::to_string(4 * values.size()) + "}]";
+    nodes = R"([{"name":"mover","mesh":0},{"name":"parent","translation":[5,0,0],"children":[0]},{"name":"still","mesh":0,"translation":[0,0,-4]}])";
+    scenes = R"([{"nodes":[1,2]}])";
+    channel = R"({"sampler":0,"target":{"node":0,"path":")" + path + R"("}})";
+    sampler = R"({"input":2,"output":3,"interpolation":")" + interpolation + R"("})";
+  }
+  std::string channel, sampler;
+  std::string withAnimation() {
+    extra = R"(,"animations":[{"name":"slide","channels":[)" + channel + R"(],"samplers":[)" + sampler + "]}]";
+    return text();
+  }
+};
+
+TEST(GltfScene, AnimationsAreReadWithTheNodesTheyMove) {
+  TempDir d;
+  AnimatedDoc doc({0.0f, 2.0f}, {0, 0, 0, 4, 0, 0}, 3);
+  auto s = loadScene(d.write("anim.gltf", doc.withAnimation()));
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->animations.size(), 1u);
+  EXPECT_EQ(s->animations[0].name, "slide");
+  EXPECT_FLOAT_EQ(s->animations[0].end, 2.0f);
+  ASSERT_EQ(s->nodes.size(), 3u);
+  // Parents first: the parent, its child, the second root.
+  EXPECT_EQ(s->nodes[0].name, "parent");
+  EXPECT_EQ(s->nodes[1].parent, 0);
+  ASSERT_EQ(s->objects.size(), 2u);
+  const SceneObject& mover = s->objects[0];
+  EXPECT_EQ(mover.name, "mover");
+  ASSERT_EQ(mover.node, 1);
+  EXPECT_EQ(s->animations[0].channels[0].node, 1);
+  // The rest pose is the object's transform; posed at t = 1 it has slid 2 along x.
+  std::vector<glm::mat4> world;
+  poseNodes(s->nodes, {}, 0.0f, world);
+  const glm::mat4 rest = world[1] * mover.afterNode;
+  for (int c = 0; c < 4; ++c) EXPECT_TRUE(near(glm::vec3(rest[c]), glm::vec3(mover.transform[c])));
+  poseNodes(s->nodes, {&s->animations[0]}, 1.0f, world);
+  const glm::vec3 moved = glm::vec3((world[1] * mover.afterNode)[3]) - glm::vec3(mover.transform[3]);
+  EXPECT_TRUE(near(moved, {2, 0, 0})) << moved.x << " " << moved.y << " " << moved.z;
+  EXPECT_EQ(s->objects[1].node, 2);
+  // --info lists it.
+  EXPECT_TRUE(contains(sceneReportJson(*s), R"("animations":[{"name":"slide","start":0,"end":2,"channels":1}])")) << sceneReportJson(*s);
+}
+
+TEST(GltfScene, BadAnimationDataIsRefusedNamedAndTheSceneStillLoadsStill) {
+  struct Case {
+    const char* what;
+    std::function<void(AnimatedDoc&)> spoil;
+    std::vector<float> times;
+    std::vector<float> values;
+    int components;
+    std::string expect;
+  };
+  const std::vector<float> xyz = {0, 0, 0, 1, 0, 0, 2, 0, 0};
+  const std::vector<Case> cases = {
+      {"times not increasing", [](AnimatedDoc&) {}, {0.0f, 1.0f, 1.0f}, xyz, 3, "keyframe times do not increase"},
+      {"NaN time", [](AnimatedDoc&) {}, {0.0f, NAN, 2.0f}, xyz, 3, "keyframe time 1 is not finite"},
+      {"counts disagree", [](AnimatedDoc&) {}, {0.0f, 1.0f}, xyz, 3, "2 keyframe times but 3 values"},
+      {"cubic counts", [](AnimatedDoc& d) { d.sampler = R"({"input":2,"output":3,"interpolation":"CUBICSPLINE"})"; }, {0.0f, 1.0f, 2.0f}, xyz, 3,
+       "a cubic spline needs three per time"},
+      {"NaN value", [](AnimatedDoc&) {}, {0.0f, 1.0f, 2.0f}, {0, 0, 0, NAN, 0, 0, 2, 0, 0}, 3, "value 1 is not finite"},
+      {"node missing", [](AnimatedDoc& d) { d.channel = R"({"sampler":0,"target":{"node":9,"path":"translation"}})"; }, {0.0f, 1.0f, 2.0f}, xyz, 3,
+       "names node 9, which does not exist"},
+      {"sampler missing", [](AnimatedDoc& d) { d.channel = R"({"sampler":4,"target":{"node":0,"path":"translation"}})"; }, {0.0f, 1.0f, 2.0f}, xyz, 3,
+       "names sampler 4"},
+      {"matrix node", [](AnimatedDoc& d) { d.nodes = R"([{"mesh":0,"matrix":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]},{"translation":[5,0,0],"children":[0]},{"mesh":0}])"; },
+       {0.0f, 1.0f, 2.0f}, xyz, 3, "given by a matrix"},
+      {"interpolation", [](AnimatedDoc& d) { d.sampler = R"({"input":2,"output":3,"interpolation":"BOUNCY"})"; }, {0.0f, 1.0f, 2.0f}, xyz, 3,
+       "interpolation 'BOUNCY'"},
+      {"rotation as vec3", [](AnimatedDoc& d) { d.channel = R"({"sampler":0,"target":{"node":0,"path":"rotation"}})"; }, {0.0f, 1.0f, 2.0f}, xyz, 3,
+       "has the wrong type"},
+      {"zero quaternion", [](AnimatedDoc& d) { d.channel = R"({"sampler":0,"target":{"node":0,"path":"rotation"}})"; }, {0.0f, 1.0f},
+       {0, 0, 0, 1, 0, 0, 0, 0}, 4, "zero quaternion"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    TempDir d;
+    AnimatedDoc doc(c.times, c.values, c.components);
+    c.spoil(doc);
+    auto s = loadScene(d.write("bad.gltf", doc.withAnimation()));
+    ASSERT_TRUE(s) << s.error();  // the scene loads ...
+    EXPECT_EQ(s->objects.size(), 2u);
+    EXPECT_TRUE(s->animations.empty());  // ... without the animation, named in a warning
+    bool named = false;
+    for (const std::string& w : s->warnings) named = named || (contains(w, "bad.gltf: animation 0 'slide' is not played") && contains(w, c.expect));
+    EXPECT_TRUE(named) << "no warning naming '" << c.expect << "'";
+  }
+}
+
 }  // namespace
 }  // namespace npr

@@ -221,6 +221,22 @@ expect 1 "--camera-from-file past the file's cameras" -- "$viewer" --headless --
 grep -q "no camera 3 in bunny.obj (it has none)" "$tmp/err" || { echo "FAIL: camera message: $(cat "$tmp/err")"; fail=1; }
 expect 2 "--camera-from-file with --turntable" -- "$viewer" --headless "$G/cameras/Cameras.gltf" --camera-from-file 1 --turntable 4
 
+# Animation: the scene's clock moves the animated objects in headless sequences (1/--fps per
+# frame), --animation none holds the rest pose, --time poses a still; bad values are refused.
+P="$src/models/pendulum.gltf"
+expect 0 "--info animations" -- "$viewer" --info "$P"
+grep -q '"animations":\[{"name":"swing and bounce","start":0,"end":2,"channels":3}\]' "$tmp/out" || { echo "FAIL: --info animations: $(tail -c 200 "$tmp/out")"; fail=1; }
+expect 0 "an animated sequence" -- "$viewer" --headless --size 96x72 "$P" --frames 3 --fps 4 --save-frames "$tmp/anim"
+cmp -s "$tmp/anim/frame-0000.png" "$tmp/anim/frame-0001.png" && { echo "FAIL: an animated scene does not move between frames"; fail=1; }
+expect 0 "--animation none" -- "$viewer" --headless --size 96x72 "$P" --frames 2 --animation none --save-frames "$tmp/rest"
+cmp -s "$tmp/rest/frame-0000.png" "$tmp/rest/frame-0001.png" || { echo "FAIL: --animation none moves"; fail=1; }
+expect 0 "--time" -- "$viewer" --headless --size 96x72 "$P" --time 0.25 --screenshot "$tmp/quarter.png"
+cmp -s "$tmp/quarter.png" "$tmp/anim/frame-0001.png" || { echo "FAIL: --time 0.25 is not the sequence's second frame at --fps 4"; fail=1; }
+expect 1 "--animation of no such animation" -- "$viewer" --headless --size 64x64 "$P" --animation walk
+grep -q "no animation named 'walk' (the scene's: swing and bounce" "$tmp/err" || { echo "FAIL: --animation message: $(cat "$tmp/err")"; fail=1; }
+expect 2 "negative --time" -- "$viewer" --headless "$P" --time -1
+expect 2 "zero --fps" -- "$viewer" --headless "$P" --fps 0
+
 # The first run on a machine without a display (.ci/setup run): files it names, exit 0.
 (unset DISPLAY WAYLAND_DISPLAY; bash "$src/.ci/first_run.sh" "$viewer" "$tmp/first") > "$tmp/first.log" 2>&1 \
   || { echo "FAIL: first run: $(tail -3 "$tmp/first.log")"; fail=1; }

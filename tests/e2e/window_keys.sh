@@ -2,9 +2,11 @@
 # End-to-end: the real viewer in a window under Xvfb, driven with xdotool. Hides the overlay
 # (F1), takes screenshots (F12) and checks that each action changes the image as it should:
 # palette switch, match mode, path, light movement; that an unchanged scene gives the same
-# image twice; and that Esc closes the viewer with exit status 0.
+# image twice; that Esc closes the viewer with exit status 0; and that space plays and pauses
+# an animated scene.
 set -u
 viewer="$1"
+src=$(cd "$(dirname "$0")/../.." && pwd)
 if [ -z "${DISPLAY:-}" ]; then exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$@"; fi
 tmp=$(mktemp -d); trap 'kill $pid 2>/dev/null; rm -rf "$tmp"' EXIT
 cd "$tmp"
@@ -44,5 +46,26 @@ if kill -0 $pid 2>/dev/null; then echo "FAIL: Esc did not close the viewer"; fai
   [ $status = 0 ] || { echo "FAIL: exit status $status"; cat "$tmp/log"; fail=1; }
 fi
 grep -q "OpenGL error" "$tmp/log" && { echo "FAIL: GL errors"; cat "$tmp/log"; fail=1; }
+
+# Space plays and pauses an animated scene: still while paused, moving while it plays.
+mkdir "$tmp/animated" && cd "$tmp/animated" && n=0
+"$viewer" --size 480x360 "$src/models/pendulum.gltf" >"$tmp/log2" 2>&1 &
+pid=$!
+wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
+[ -n "$wid" ] || { echo "FAIL: no viewer window for the animated scene"; cat "$tmp/log2"; exit 1; }
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+sleep 1
+xdotool key --clearmodifiers F1; sleep 0.5
+shot; shot
+same "npr-screenshot-$((n - 1)).png" "npr-screenshot-$n.png" || { echo "FAIL: a paused animation moved"; fail=1; }
+xdotool key --clearmodifiers space; sleep 0.3
+shot; shot; check_changed "playing (space)"
+xdotool key --clearmodifiers space; sleep 0.3
+shot; shot
+same "npr-screenshot-$((n - 1)).png" "npr-screenshot-$n.png" || { echo "FAIL: space did not pause the animation"; fail=1; }
+xdotool key --clearmodifiers Escape
+for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+kill -0 $pid 2>/dev/null && { echo "FAIL: Esc did not close the animated viewer"; fail=1; }
+grep -q "OpenGL error" "$tmp/log2" && { echo "FAIL: GL errors (animated)"; cat "$tmp/log2"; fail=1; }
 [ $fail = 0 ] && echo "window: all checks passed ($n screenshots)"
 exit $fail

@@ -39,5 +39,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!finite(c.world) || !(c.znear >= 0.0f)) __builtin_trap();
   for (const npr::SceneLight& l : s->lights)
     if (!(l.intensity >= 0.0f) || !(l.outerCone > l.innerCone)) __builtin_trap();
+  // Animations keep node_animation.h's invariants, and posing them at their ends and middle
+  // runs (the viewer drops a pose that overflows; see SceneObjects::pose).
+  for (std::size_t i = 0; i < s->nodes.size(); ++i)
+    if (s->nodes[i].parent >= static_cast<int>(i)) __builtin_trap();
+  for (const npr::SceneObject& o : s->objects)
+    if (o.node >= static_cast<int>(s->nodes.size())) __builtin_trap();
+  std::vector<const npr::SceneAnimation*> all;
+  for (const npr::SceneAnimation& a : s->animations) {
+    if (a.channels.empty() || !(a.end >= a.start)) __builtin_trap();
+    for (const npr::AnimationChannel& c : a.channels) {
+      if (c.node < 0 || c.node >= static_cast<int>(s->nodes.size()) || c.times.empty()) __builtin_trap();
+      const std::size_t perKey = c.interpolation == npr::Interpolation::CubicSpline ? 3 : 1;
+      if (c.values.size() != perKey * c.times.size()) __builtin_trap();
+      for (std::size_t k = 1; k < c.times.size(); ++k)
+        if (!(c.times[k] > c.times[k - 1])) __builtin_trap();
+    }
+    all.push_back(&a);
+  }
+  std::vector<glm::mat4> world;
+  for (const npr::SceneAnimation* a : all)
+    for (float t : {a->start, 0.5f * (a->start + a->end), a->end}) npr::poseNodes(s->nodes, all, t, world);
   return 0;
 }

@@ -249,5 +249,62 @@ TEST_F(SceneStateFixture, TheFilesCameraAndLightsAreUsed) {
   EXPECT_NEAR(r->lighting().light(0).diffuse.g, 1.0f, 1e-6f);
 }
 
+TEST_F(SceneStateFixture, AnimationPosesWhatItMovesCarriesChildrenAndLeavesTheRestStill) {
+  ViewerState state;
+  ASSERT_TRUE(state.loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"), *r));
+  ASSERT_TRUE(state.loadModels({sourcePath("models/pendulum.gltf")}, false, *r));
+  ASSERT_EQ(state.scene.animationNames(), std::vector<std::string>{"swing and bounce"});
+  EXPECT_NEAR(state.animationLength(), 2.0, 1e-6);
+  const auto& objects = state.scene.objects();
+  ASSERT_EQ(objects.size(), 5u);  // base, arm, bob, ball, growing box
+  auto origin = [&](std::size_t i) { return glm::vec3(objects[i].placed[3]); };
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  const ImageRGBA8 atStart = renderImage(*r, testCamera(1.0f), s, 96, 96);
+  std::vector<glm::mat4> start;
+  for (const ViewerObject& o : objects) start.push_back(o.placed);
+  const float armToBob = glm::length(origin(2) - origin(1));
+
+  state.playback.time = 0.5;
+  state.poseScene(*r);
+  EXPECT_EQ(objects[0].placed, start[0]) << "the base has no animation and moved";
+  for (std::size_t i = 1; i < 5; ++i) EXPECT_NE(objects[i].placed, start[i]) << objects[i].name << " did not move";
+  // The bob is the arm's child: carried rigidly, at the same distance from the arm.
+  EXPECT_NEAR(glm::length(origin(2) - origin(1)), armToBob, 1e-5f);
+  // At 0.5 s the swing passes through the bottom: the bob straight under the pivot, the arm
+  // vertical (the pivot's rotation is the identity there).
+  EXPECT_NEAR(origin(1).x, origin(2).x, 1e-5f);
+  EXPECT_GT(countDiffering(atStart, renderImage(*r, testCamera(1.0f), s, 96, 96)), 100);
+
+  // None: the rest pose, as the file places the nodes without animation.
+  state.playback.choice = {AnimationChoice::Which::None, 0};
+  state.poseScene(*r);
+  for (const ViewerObject& o : objects) {
+    const glm::mat4 rest = state.scene.toViewer(o.file) * o.inFile;
+    for (int c = 0; c < 4; ++c) EXPECT_LT(glm::length(glm::vec4(o.placed[c] - rest[c])), 1e-5f) << o.name;
+  }
+  // Back to the start: the same picture as before.
+  state.playback.choice = {};
+  state.playback.time = 0.0;
+  state.poseScene(*r);
+  EXPECT_EQ(countDiffering(atStart, renderImage(*r, testCamera(1.0f), s, 96, 96)), 0);
+
+  // The clock loops over the animation's length; a paused one stays.
+  state.playback.time = 1.9;
+  state.playback.playing = true;
+  state.playback.advance(0.2, state.animationLength());
+  EXPECT_NEAR(state.playback.time, 0.1, 1e-9);
+  state.playback.playing = false;
+  state.playback.advance(0.2, state.animationLength());
+  EXPECT_NEAR(state.playback.time, 0.1, 1e-9);
+  // --animation by name, number, all, none; a wrong one is named with the choices.
+  EXPECT_TRUE(parseAnimationChoice("swing and bounce", state.scene.animationNames()));
+  EXPECT_EQ(parseAnimationChoice("1", state.scene.animationNames())->one, 0u);
+  const Result<AnimationChoice> wrong = parseAnimationChoice("walk", state.scene.animationNames());
+  ASSERT_FALSE(wrong);
+  EXPECT_NE(wrong.error().find("swing and bounce"), std::string::npos) << wrong.error();
+  EXPECT_FALSE(parseAnimationChoice("2", state.scene.animationNames()));
+}
+
 }  // namespace
 }  // namespace npr

@@ -1,0 +1,103 @@
+// CPU tier: node animation (renderer/animation/node_animation.h): channels sampled at and
+// between their keyframes against values worked out by hand (step, linear, slerp, cubic
+// spline), and poses carried from parents to children.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "renderer/animation/node_animation.h"
+
+namespace npr {
+namespace {
+
+AnimationChannel channel(AnimatedProperty p, Interpolation i, std::vector<float> times, std::vector<glm::vec4> values) {
+  AnimationChannel c;
+  c.property = p;
+  c.interpolation = i;
+  c.times = std::move(times);
+  c.values = std::move(values);
+  return c;
+}
+
+void expectNear(const glm::vec4& got, const glm::vec4& want, float tolerance = 1e-5f) {
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(got[k], want[k], tolerance) << "component " << k;
+}
+
+TEST(NodeAnimation, StepHoldsEachKeyUntilTheNext) {
+  const AnimationChannel c = channel(AnimatedProperty::Translation, Interpolation::Step, {1.0f, 2.0f, 4.0f},
+                                     {{1, 0, 0, 0}, {2, 0, 0, 0}, {3, 0, 0, 0}});
+  expectNear(sampleChannel(c, 0.0f), {1, 0, 0, 0});  // before the first key: the first
+  expectNear(sampleChannel(c, 1.0f), {1, 0, 0, 0});
+  expectNear(sampleChannel(c, 1.99f), {1, 0, 0, 0});
+  expectNear(sampleChannel(c, 2.0f), {2, 0, 0, 0});
+  expectNear(sampleChannel(c, 3.5f), {2, 0, 0, 0});
+  expectNear(sampleChannel(c, 9.0f), {3, 0, 0, 0});  // after the last: the last
+}
+
+TEST(NodeAnimation, LinearInterpolatesBetweenKeys) {
+  const AnimationChannel c = channel(AnimatedProperty::Scale, Interpolation::Linear, {0.0f, 2.0f, 3.0f},
+                                     {{1, 1, 1, 0}, {3, 5, 1, 0}, {3, 5, 0, 0}});
+  expectNear(sampleChannel(c, 0.5f), {1.5f, 2.0f, 1.0f, 0.0f});
+  expectNear(sampleChannel(c, 2.0f), {3, 5, 1, 0});
+  expectNear(sampleChannel(c, 2.25f), {3.0f, 5.0f, 0.75f, 0.0f});
+}
+
+TEST(NodeAnimation, LinearRotationIsASlerpAtConstantAngularSpeed) {
+  // From the identity to 90 degrees about z: a quarter of the way is 22.5 degrees, where a
+  // normalised lerp of the quaternions would give 19.5.
+  const float h = std::sqrt(0.5f);
+  const AnimationChannel c = channel(AnimatedProperty::Rotation, Interpolation::Linear, {0.0f, 1.0f}, {{0, 0, 0, 1}, {0, 0, h, h}});
+  const float half = glm::radians(22.5f) / 2.0f;
+  expectNear(sampleChannel(c, 0.25f), {0.0f, 0.0f, std::sin(half), std::cos(half)});
+  // The shorter way round when the keys' quaternions lie in opposite hemispheres.
+  const AnimationChannel flipped = channel(AnimatedProperty::Rotation, Interpolation::Linear, {0.0f, 1.0f}, {{0, 0, 0, 1}, {0, 0, -h, -h}});
+  const glm::vec4 q = sampleChannel(flipped, 0.5f);
+  const float angle = 2.0f * std::acos(std::min(1.0f, std::abs(q.w)));
+  EXPECT_NEAR(glm::degrees(angle), 45.0f, 1e-3f);
+}
+
+TEST(NodeAnimation, CubicSplineIsGltfsHermiteForm) {
+  // Keys at t = 1 and 3 (dt 2): values 0 and 10, out-tangent of the first 4, in-tangent of the
+  // second -2. At s = 0.5: h00 = 0.5, h10 = 0.125, h01 = 0.5, h11 = -0.125, so
+  // p = 0.5*0 + 0.125*(2*4) + 0.5*10 - 0.125*(2*-2) = 1 + 5 + 0.5 = 6.5.
+  const AnimationChannel c = channel(AnimatedProperty::Translation, Interpolation::CubicSpline, {1.0f, 3.0f},
+                                     {{9, 0, 0, 0}, {0, 0, 0, 0}, {4, 0, 0, 0}, {-2, 0, 0, 0}, {10, 0, 0, 0}, {7, 0, 0, 0}});
+  EXPECT_NEAR(sampleChannel(c, 2.0f).x, 6.5f, 1e-5f);
+  // At the keys, the keys' values (the tangents 9 and 7 play no part outside).
+  EXPECT_NEAR(sampleChannel(c, 1.0f).x, 0.0f, 1e-6f);
+  EXPECT_NEAR(sampleChannel(c, 3.0f).x, 10.0f, 1e-6f);
+  EXPECT_NEAR(sampleChannel(c, 0.0f).x, 0.0f, 1e-6f);
+  // s = 0.25: h00 = 0.84375, h10 = 0.140625, h01 = 0.15625, h11 = -0.046875:
+  // 0 + 0.140625*8 + 1.5625 - 0.046875*(-4) = 1.125 + 1.5625 + 0.1875 = 2.875.
+  EXPECT_NEAR(sampleChannel(c, 1.5f).x, 2.875f, 1e-5f);
+}
+
+TEST(NodeAnimation, APoseCarriesParentsToChildrenAndLeavesUndrivenNodesAtRest) {
+  std::vector<SceneNode> nodes(3);
+  nodes[0].translation = {5, 0, 0};
+  nodes[1].parent = 0;
+  nodes[1].translation = {0, 1, 0};
+  nodes[2].translation = {0, 0, 7};  // a second root, not animated
+  SceneAnimation a;
+  AnimationChannel c = channel(AnimatedProperty::Translation, Interpolation::Linear, {0.0f, 1.0f}, {{0, 0, 0, 0}, {10, 0, 0, 0}});
+  c.node = 0;
+  a.channels.push_back(c);
+  std::vector<glm::mat4> world;
+  poseNodes(nodes, {&a}, 0.5f, world);
+  ASSERT_EQ(world.size(), 3u);
+  EXPECT_NEAR(world[0][3].x, 5.0f, 1e-6f);
+  EXPECT_NEAR(world[1][3].x, 5.0f, 1e-6f);
+  EXPECT_NEAR(world[1][3].y, 1.0f, 1e-6f);
+  EXPECT_NEAR(world[2][3].z, 7.0f, 1e-6f);
+  poseNodes(nodes, {}, 0.5f, world);  // nothing plays: the rest pose
+  EXPECT_NEAR(world[1][3].x, 5.0f, 1e-6f);
+  poseNodes(nodes, {}, 0.0f, world);
+  EXPECT_NEAR(world[0][3].x, 5.0f, 1e-6f);
+  const std::vector<char> moved = animatedNodes(nodes, {&a});
+  EXPECT_EQ(moved, (std::vector<char>{1, 1, 0}));
+}
+
+}  // namespace
+}  // namespace npr
