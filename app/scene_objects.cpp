@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/animation/deformation.h"
 #include "renderer/mesh/scene_loader.h"
 #include "renderer/palette/palette.h"
 
@@ -58,7 +59,8 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
   for (LoadedScene& s : loaded) {
     for (const std::string& w : s.warnings) warnings.push_back(w);
     const std::size_t file = files_.size();
-    files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), std::move(s.nodes), std::move(s.animations), glm::mat4(1.0f)});
+    files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), std::move(s.nodes), std::move(s.animations), std::move(s.skins), false,
+                      glm::mat4(1.0f)});
     for (SceneObject& o : s.objects) {
       ViewerObject v;
       v.name = o.name;
@@ -67,7 +69,14 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       v.inFile = o.transform;
       v.node = o.node;
       v.afterNode = o.afterNode;
-      v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
+      v.skin = o.skin;
+      if (!v.mesh->deformation.empty()) {
+        v.posed = std::make_shared<Mesh>(*v.mesh);
+        v.id = renderer.addDeformingModel(*v.mesh, *v.posed);
+        files_.back().deforms = true;
+      } else {
+        v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
+      }
       objects_.push_back(std::move(v));
     }
   }
@@ -126,6 +135,25 @@ void SceneObjects::place(Renderer& renderer) {
   }
 }
 
+void SceneObjects::deform(ViewerObject& o, const SceneFile& file, Renderer& renderer) {
+  // Skinned: each joint's matrix taken into the mesh's own space (afterNode puts the mesh in
+  // the file's, where joints and inverse bind matrices live).
+  jointMatrices_.clear();
+  if (o.skin >= 0 && o.skin < static_cast<int>(file.skins.size())) {
+    const SceneSkin& skin = file.skins[static_cast<std::size_t>(o.skin)];
+    const glm::mat4 toMesh = glm::inverse(o.afterNode);
+    for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+      const int node = skin.joints[j];
+      const glm::mat4 joint = node >= 0 && node < static_cast<int>(nodePose_.world.size()) ? nodePose_.world[static_cast<std::size_t>(node)] : glm::mat4(1.0f);
+      jointMatrices_.push_back(toMesh * joint * skin.inverseBind[j] * o.afterNode);
+    }
+  }
+  static const std::vector<float> none;
+  const std::vector<float>& weights = o.node >= 0 && o.node < static_cast<int>(nodePose_.weights.size()) ? nodePose_.weights[static_cast<std::size_t>(o.node)] : none;
+  deformMesh(*o.mesh, jointMatrices_, weights, *o.posed);
+  renderer.modelGeometryChanged(o.id);
+}
+
 std::vector<SceneObjects::AnimationRef> SceneObjects::animations() const {
   std::vector<AnimationRef> out;
   for (std::size_t f = 0; f < files_.size(); ++f)
@@ -154,7 +182,7 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
   std::size_t number = 0;  // the scene-order number of each file's first animation
   for (std::size_t f = 0; f < files_.size(); ++f) {
     const SceneFile& file = files_[f];
-    if (file.animations.empty()) continue;
+    if (file.animations.empty() && !file.deforms) continue;
     std::vector<const SceneAnimation*> playing, every;
     for (std::size_t a = 0; a < file.animations.size(); ++a, ++number) {
       every.push_back(&file.animations[a]);
@@ -163,10 +191,13 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
     }
     // Objects any of the file's animations moves are posed (at rest when none of them plays).
     const std::vector<char> moves = animatedNodes(file.nodes, every);
-    poseNodes(file.nodes, playing, static_cast<float>(time), world_);
+    poseNodes(file.nodes, playing, static_cast<float>(time), nodePose_);
+    const std::vector<glm::mat4>& world = nodePose_.world;
     for (ViewerObject& o : objects_) {
-      if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world_.size()) || !moves[static_cast<std::size_t>(o.node)]) continue;
-      const glm::mat4 placed = toViewer(f) * world_[static_cast<std::size_t>(o.node)] * o.afterNode;
+      if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world.size())) continue;
+      if (o.posed) deform(o, file, renderer);
+      if (o.skin >= 0 || !moves[static_cast<std::size_t>(o.node)]) continue;
+      const glm::mat4 placed = toViewer(f) * world[static_cast<std::size_t>(o.node)] * o.afterNode;
       // A pose that overflows (keys of 1e30 scaled by 1e30) is not drawn: the last one stays.
       bool finite = true;
       for (int c = 0; c < 4; ++c)

@@ -12,6 +12,7 @@
 
 #include "app/animation_playback.h"
 #include "app/scene_layout.h"
+#include "renderer/animation/node_animation.h"
 #include "renderer/mesh/scene_description.h"
 #include "renderer/renderer.h"
 
@@ -24,7 +25,9 @@ struct ViewerObject {
   std::shared_ptr<const Mesh> mesh;
   glm::mat4 inFile{1.0f};  // the mesh's space to its file's, at rest
   int node = -1;           // its file's node (animated ones move it)
-  glm::mat4 afterNode{1.0f};  // inFile = the node's world transform * afterNode
+  glm::mat4 afterNode{1.0f};  // inFile = the node's world transform * afterNode (skinned: inFile = afterNode)
+  int skin = -1;           // into its file's skins: placed by its joints
+  std::shared_ptr<Mesh> posed;  // a deforming object's posed copy of `mesh`, what the renderer draws
   glm::mat4 placed{1.0f};  // the mesh's space to the viewer's, as drawn now (posed)
   ModelId id = 0;
   bool visible = true;
@@ -37,6 +40,8 @@ struct SceneFile {
   std::vector<SceneLight> lights;
   std::vector<SceneNode> nodes;
   std::vector<SceneAnimation> animations;
+  std::vector<SceneSkin> skins;
+  bool deforms = false;  // an object of it is skinned or has morph targets
   glm::mat4 layout{1.0f};  // the file's space to the scene's (before the fit)
 };
 
@@ -91,6 +96,8 @@ class SceneObjects {
  private:
   // Places every file by the layout, fits the scene and gives the renderer the transforms.
   void place(Renderer& renderer);
+  // Deforms a deforming object's posed mesh to the file's current node pose.
+  void deform(ViewerObject& o, const SceneFile& file, Renderer& renderer);
 
   std::vector<ViewerObject> objects_;
   std::vector<SceneFile> files_;
@@ -102,7 +109,8 @@ class SceneObjects {
     double time = 0.0;
     bool valid = false;
   } posed_;
-  std::vector<glm::mat4> world_;  // scratch: one file's posed nodes
+  NodePose nodePose_;              // scratch: one file's posed nodes
+  std::vector<glm::mat4> jointMatrices_;
 };
 
 }  // namespace npr

@@ -79,6 +79,20 @@ void Renderer::clearModelPalette(ModelId id) {
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
 bool Renderer::setModelPose(ModelId id, const glm::mat4& transform) { return scene_.pose(id, transform); }
 
+ModelId Renderer::addDeformingModel(const Mesh& rest, const Mesh& posed, const glm::mat4& transform) {
+  const ModelId id = addModel(posed, transform);
+  if (Model* m = scene_.find(id)) m->setRestMesh(rest);
+  return id;
+}
+
+bool Renderer::modelGeometryChanged(ModelId id) {
+  Model* m = scene_.find(id);
+  if (!m) return false;
+  m->geometryChanged(stats_);
+  scene_.touch();
+  return true;
+}
+
 void Renderer::setMesh(const Mesh* mesh) {
   ground_.reset();
   partsDirty_ = true;

@@ -2,18 +2,23 @@
 #include "renderer/animation/node_animation.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace npr {
 namespace {
 
-glm::quat toQuat(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
-glm::vec4 fromQuat(const glm::quat& q) { return glm::vec4(q.x, q.y, q.z, q.w); }
+glm::quat toQuat(const float* v) { return glm::quat(v[3], v[0], v[1], v[2]); }
 
-glm::vec4 normalisedRotation(const glm::vec4& v) {
-  const float len = glm::length(v);
-  return len > 1e-12f ? v / len : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+void normaliseRotation(float* v) {
+  const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
+  if (len > 1e-12f) {
+    for (int i = 0; i < 4; ++i) v[i] /= len;
+  } else {
+    v[0] = v[1] = v[2] = 0.0f;
+    v[3] = 1.0f;
+  }
 }
 
 }  // namespace
@@ -23,57 +28,86 @@ glm::mat4 SceneNode::local() const {
   return glm::translate(glm::mat4(1.0f), translation) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), scale);
 }
 
-glm::vec4 sampleChannel(const AnimationChannel& c, float time) {
+void sampleChannel(const AnimationChannel& c, float time, float* out) {
+  const std::size_t w = static_cast<std::size_t>(c.width);
   const bool cubic = c.interpolation == Interpolation::CubicSpline;
   const bool rotation = c.property == AnimatedProperty::Rotation;
-  // The value of key k (the middle of a cubic spline's three).
-  const auto value = [&](std::size_t k) { return c.values[cubic ? 3 * k + 1 : k]; };
+  // Key k's value (the middle of a cubic spline's three), its in- and out-tangents.
+  const auto value = [&](std::size_t k) { return &c.values[(cubic ? 3 * k + 1 : k) * w]; };
+  const auto copy = [&](const float* v) {
+    std::copy(v, v + w, out);
+    if (rotation) normaliseRotation(out);
+  };
   const std::size_t n = c.times.size();
-  if (n == 0) return glm::vec4(0.0f);
-  if (!(time > c.times.front())) return rotation ? normalisedRotation(value(0)) : value(0);
-  if (time >= c.times.back()) return rotation ? normalisedRotation(value(n - 1)) : value(n - 1);
+  if (n == 0 || c.values.size() < n * w * (cubic ? 3 : 1)) {
+    std::fill(out, out + w, 0.0f);
+    return;
+  }
+  if (!(time > c.times.front())) return copy(value(0));
+  if (time >= c.times.back()) return copy(value(n - 1));
   // times[k] <= time < times[k + 1]
   const std::size_t k = static_cast<std::size_t>(std::upper_bound(c.times.begin(), c.times.end(), time) - c.times.begin()) - 1;
-  const float t0 = c.times[k], t1 = c.times[k + 1];
-  const float dt = t1 - t0;
-  const float s = std::clamp((time - t0) / dt, 0.0f, 1.0f);
+  const float dt = c.times[k + 1] - c.times[k];
+  const float s = std::clamp((time - c.times[k]) / dt, 0.0f, 1.0f);
   switch (c.interpolation) {
-    case Interpolation::Step: return rotation ? normalisedRotation(value(k)) : value(k);
+    case Interpolation::Step: return copy(value(k));
     case Interpolation::Linear:
-      if (rotation) return fromQuat(glm::normalize(glm::slerp(glm::normalize(toQuat(value(k))), glm::normalize(toQuat(value(k + 1))), s)));
-      return glm::mix(value(k), value(k + 1), s);
+      if (rotation) {
+        const glm::quat q = glm::normalize(glm::slerp(glm::normalize(toQuat(value(k))), glm::normalize(toQuat(value(k + 1))), s));
+        out[0] = q.x, out[1] = q.y, out[2] = q.z, out[3] = q.w;
+        return;
+      }
+      for (std::size_t i = 0; i < w; ++i) out[i] = value(k)[i] + s * (value(k + 1)[i] - value(k)[i]);
+      return;
     case Interpolation::CubicSpline: {
       // glTF's Hermite form: p0 = v_k, m0 = dt * out-tangent_k, p1 = v_k+1, m1 = dt * in-tangent_k+1.
-      const glm::vec4 p0 = c.values[3 * k + 1], m0 = dt * c.values[3 * k + 2];
-      const glm::vec4 p1 = c.values[3 * (k + 1) + 1], m1 = dt * c.values[3 * (k + 1)];
+      const float* p0 = value(k);
+      const float* m0 = &c.values[(3 * k + 2) * w];
+      const float* p1 = value(k + 1);
+      const float* m1 = &c.values[3 * (k + 1) * w];
       const float s2 = s * s, s3 = s2 * s;
-      const glm::vec4 p = (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
-      return rotation ? normalisedRotation(p) : p;
+      const float h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
+      for (std::size_t i = 0; i < w; ++i) out[i] = h00 * p0[i] + h10 * dt * m0[i] + h01 * p1[i] + h11 * dt * m1[i];
+      if (rotation) normaliseRotation(out);
+      return;
     }
   }
-  return value(k);
 }
 
-void poseNodes(const std::vector<SceneNode>& nodes, const std::vector<const SceneAnimation*>& animations, float time,
-               std::vector<glm::mat4>& world) {
+glm::vec4 sampleChannel(const AnimationChannel& c, float time) {
+  float v[4] = {0, 0, 0, 0};
+  if (c.width > 4) return glm::vec4(0.0f);
+  sampleChannel(c, time, v);
+  return glm::vec4(v[0], v[1], v[2], v[3]);
+}
+
+void poseNodes(const std::vector<SceneNode>& nodes, const std::vector<const SceneAnimation*>& animations, float time, NodePose& pose) {
   // The animated properties over the rest ones; later animations win where two drive one.
   std::vector<SceneNode> posed = nodes;
+  float v[4];
   for (const SceneAnimation* a : animations)
     for (const AnimationChannel& c : a->channels) {
       if (c.node < 0 || c.node >= static_cast<int>(posed.size())) continue;
       SceneNode& n = posed[static_cast<std::size_t>(c.node)];
-      const glm::vec4 v = sampleChannel(c, time);
+      if (c.property == AnimatedProperty::Weights) {
+        if (static_cast<std::size_t>(c.width) == n.weights.size()) sampleChannel(c, time, n.weights.data());
+        continue;
+      }
+      sampleChannel(c, time, v);
       switch (c.property) {
-        case AnimatedProperty::Translation: n.translation = glm::vec3(v); break;
+        case AnimatedProperty::Translation: n.translation = glm::vec3(v[0], v[1], v[2]); break;
         case AnimatedProperty::Rotation: n.rotation = toQuat(v); break;
-        case AnimatedProperty::Scale: n.scale = glm::vec3(v); break;
+        case AnimatedProperty::Scale: n.scale = glm::vec3(v[0], v[1], v[2]); break;
+        case AnimatedProperty::Weights: break;
       }
     }
-  world.resize(nodes.size());
+  pose.world.resize(nodes.size());
+  pose.weights.resize(nodes.size());
   for (std::size_t i = 0; i < posed.size(); ++i) {
     const glm::mat4 local = posed[i].local();
     const int p = posed[i].parent;
-    world[i] = p >= 0 && p < static_cast<int>(i) ? world[static_cast<std::size_t>(p)] * local : local;
+    pose.world[i] = p >= 0 && p < static_cast<int>(i) ? pose.world[static_cast<std::size_t>(p)] * local : local;
+    pose.weights[i] = std::move(posed[i].weights);
   }
 }
 

@@ -72,5 +72,11 @@ inline void uploadBuffer(const Buffer& buffer, const void* data, std::size_t byt
   glBufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), data, usage);
   glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
+// New contents for the first `bytes` of a buffer already that large (a posed mesh's vertices).
+inline void updateBuffer(const Buffer& buffer, const void* data, std::size_t bytes) {
+  glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.id());
+  glBufferSubData(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+}
 
 }  // namespace npr::gl

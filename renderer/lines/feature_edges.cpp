@@ -31,7 +31,8 @@ std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
 FeatureEdges::FeatureEdges(const Mesh& m) {
   WeldedPositions weld = weldPositions(m.positions);
   positions_ = std::move(weld.positions);
-  const std::vector<std::uint32_t>& remap = weld.remap;
+  remap_ = std::move(weld.remap);
+  const std::vector<std::uint32_t>& remap = remap_;
   // Halfedge adjacency on the welded faces; doubled and degenerate faces dropped.
   TriMesh welded;
   welded.reserve(positions_.size(), m.triangleCount() * 3 / 2, m.triangleCount());
@@ -55,19 +56,12 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
   }
   errlog.enable();
 
-  faceNormals_.resize(welded.n_faces());
-  facePlanes_.resize(welded.n_faces());
+  faceVertices_.resize(3 * welded.n_faces());
   for (auto fh : welded.faces()) {
-    std::uint32_t v[3];
     int k = 0;
-    for (auto fv : welded.fv_range(fh)) v[k++] = std::uint32_t(fv.idx());
-    const glm::vec3 a = positions_[v[0]], b = positions_[v[1]], c = positions_[v[2]];
-    const glm::vec3 cr = glm::cross(b - a, c - a);
-    const float len = glm::length(cr);
-    const glm::vec3 n = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
-    faceNormals_[size_t(fh.idx())] = n;
-    facePlanes_[size_t(fh.idx())] = glm::vec4(n, -glm::dot(n, (a + b + c) / 3.0f));
+    for (auto fv : welded.fv_range(fh)) faceVertices_[3 * size_t(fh.idx()) + size_t(k++)] = std::uint32_t(fv.idx());
   }
+  updatePlanes();
   std::unordered_set<std::uint64_t> junction;
   for (const auto& f : refused)
     for (int k = 0; k < 3; ++k) junction.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
@@ -91,6 +85,29 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
     boundary_.insert(boundary_.end(), {std::uint32_t(k >> 32), std::uint32_t(k & 0xFFFFFFFFu)});
     ++junctionCount_;
   }
+}
+
+void FeatureEdges::updatePlanes() {
+  const size_t nf = faceVertices_.size() / 3;
+  faceNormals_.resize(nf);
+  facePlanes_.resize(nf);
+  parallelChunks(nf, workerCount(), [&](size_t b, size_t e, int) {
+    for (size_t f = b; f < e; ++f) {
+      const glm::vec3 a = positions_[faceVertices_[3 * f]], bb = positions_[faceVertices_[3 * f + 1]], c = positions_[faceVertices_[3 * f + 2]];
+      const glm::vec3 cr = glm::cross(bb - a, c - a);
+      const float len = glm::length(cr);
+      const glm::vec3 n = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
+      faceNormals_[f] = n;
+      facePlanes_[f] = glm::vec4(n, -glm::dot(n, (a + bb + c) / 3.0f));
+    }
+  });
+}
+
+void FeatureEdges::updatePositions(const Mesh& mesh) {
+  if (mesh.positions.size() != remap_.size()) return;
+  for (size_t i = 0; i < remap_.size(); ++i) positions_[remap_[i]] = mesh.positions[i];
+  updatePlanes();
+  creaseAngle_ = -1.0f;  // the static lines' ends moved
 }
 
 const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegrees) {

@@ -28,6 +28,9 @@ struct FeatureLine {
 class FeatureEdges {
  public:
   explicit FeatureEdges(const Mesh& mesh);
+  // `mesh` (the one built from, deformed since: same vertices and faces) moved: positions and
+  // face planes follow; the edges, their adjacency and kinds stay.
+  void updatePositions(const Mesh& mesh);
 
   // Creases and boundaries: computed once per mesh (and when the threshold changes).
   const std::vector<FeatureLine>& staticLines(float creaseAngleDegrees);
@@ -41,7 +44,11 @@ class FeatureEdges {
   std::size_t junctionEdges() const { return junctionCount_; }
 
  private:
+  void updatePlanes();  // face normals and planes from positions_
+
   std::vector<glm::vec3> positions_;       // welded
+  std::vector<std::uint32_t> remap_;       // mesh vertex -> welded
+  std::vector<std::uint32_t> faceVertices_;  // 3 welded vertices per welded face
   std::vector<glm::vec3> faceNormals_;     // per welded face
   std::vector<glm::vec4> facePlanes_;      // normal, -dot(normal, centroid)
   std::vector<std::uint32_t> manifoldEnds_;   // 2 welded vertices per interior edge

@@ -17,6 +17,12 @@ void LinePass::setMesh(const Mesh* mesh) {
   staticCount_ = creaseCount_ = silhouetteCount_ = 0;
 }
 
+void LinePass::geometryChanged() {
+  if (edges_ && mesh_) edges_->updatePositions(*mesh_);
+  uploadedCreaseAngle_ = -1.0f;
+  silhouetteEye_ = glm::vec3(NAN);
+}
+
 Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, gl::ProgramCache& programs,
                       FrameStats& stats) {
   if (!ls.objectSpace() || !mesh_) return okStatus();

@@ -24,6 +24,8 @@ class LinePass {
  public:
   // Forgets the previous mesh's lines (they are rebuilt on the next draw).
   void setMesh(const Mesh* mesh);
+  // The mesh was deformed in place: the lines follow (their edges are not searched again).
+  void geometryChanged();
   [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
   // The object-space lines `draw` shows for this camera and these settings (silhouettes,

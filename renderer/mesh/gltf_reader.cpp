@@ -30,6 +30,8 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
+#include <tuple>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -54,6 +56,8 @@ constexpr std::size_t kMaxTextures = 64;
 constexpr int kMaxTextureSide = 1024;
 // Keyframe values over every channel (each copies its sampler's, and samplers may be shared).
 constexpr std::uint64_t kMaxAnimationKeys = 4'000'000;
+constexpr std::size_t kMaxMorphTargets = 64;
+constexpr std::size_t kMaxJoints = 4096;
 
 // tinygltf's file callbacks: files go through our input gate; paths are joined, never
 // expanded by a shell (tinygltf's own expansion used wordexp, CVE-2022-3008).
@@ -163,6 +167,7 @@ int typeComponents(int type) {
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
+    case TINYGLTF_TYPE_MAT4: return 16;
   }
   return 0;
 }
@@ -184,6 +189,8 @@ class GltfReader {
     LoadReport report;
     std::map<int, int> material, image;
     std::unique_ptr<FaceBuilder> faces;
+    int mesh = -1, skin = -1;      // the file's mesh and the skin it is built for (-1: none)
+    std::string deformProblem;     // the first bad skin or morph datum: drawn at rest, named
   };
   struct Object {
     std::string name;
@@ -191,6 +198,7 @@ class GltfReader {
     glm::dmat4 world{1.0};
     int node = -1;             // into nodes()
     glm::dmat4 mirror{1.0};    // after the node's world transform
+    int skin = -1;             // the file's skin
   };
 
   Status read() {
@@ -224,9 +232,12 @@ class GltfReader {
                 " light(s) are not used when the file is read as one mesh");
     if (mode_ == Mode::Flatten && !m_.animations.empty())
       warn_.add(name_ + ": " + std::to_string(m_.animations.size()) + " animation(s) are not played when the file is read as one mesh");
-    if (mode_ == Mode::Objects) readAnimations();
-    if (!m_.skins.empty())
-      warn_.add(name_ + ": " + std::to_string(m_.skins.size()) + " skin(s) are not applied yet: skinned meshes are drawn in their bind pose");
+    if (mode_ == Mode::Objects) {
+      readSkins();
+      readAnimations();
+    } else if (!m_.skins.empty()) {
+      warn_.add(name_ + ": " + std::to_string(m_.skins.size()) + " skin(s) are not applied when the file is read as one mesh");
+    }
     for (Target& t : targets_) {
       t.report.texture_coordinates = t.soup.tracksTexcoords;
       t.report.vertex_colours = !t.soup.colours.empty();
@@ -243,12 +254,22 @@ class GltfReader {
   std::vector<SceneLight> placedLights() const { return placedLights_; }
   std::vector<SceneNode>& nodes() { return nodes_; }
   std::vector<SceneAnimation>& animations() { return animations_; }
+  std::vector<SceneSkin>& skins() { return skins_; }
+  // The file's skin -> skins(), for the skins that were read (the others refused, named).
+  const std::map<int, int>& skinOf() const { return skinOf_; }
 
  private:
   Error fail(const std::string& what) const { return Error{name_ + ": " + what}; }
 
-  Target& newTarget() {
+  Target& newTarget(int mesh = -1, int skin = -1) {
     Target& t = targets_.emplace_back();
+    t.mesh = mesh;
+    t.skin = skin;
+    if (mode_ == Mode::Objects && mesh >= 0) {
+      const tinygltf::Mesh& g = m_.meshes[static_cast<std::size_t>(mesh)];
+      t.soup.skinned = skin >= 0;
+      t.soup.morphTargets = g.primitives.empty() ? 0 : std::min<std::size_t>(g.primitives.front().targets.size(), kMaxMorphTargets);
+    }
     t.report.file = name_;
     t.faces = std::make_unique<FaceBuilder>(t.soup, t.report, warn_);
     return t;
@@ -557,8 +578,11 @@ class GltfReader {
 
   Status visit(int index, const glm::dmat4& parent, int parentNode, int depth, std::vector<char>& visited) {
     if (index < 0 || index >= static_cast<int>(m_.nodes.size())) return fail("node " + std::to_string(index) + " does not exist");
-    if (visited[static_cast<std::size_t>(index)])
-      return fail("node " + std::to_string(index) + " is reached twice (a cycle, or a node with two parents)");
+    if (visited[static_cast<std::size_t>(index)]) {
+      // Not the whole file: the node is drawn where it was first reached, the rest loads.
+      warn_.add(name_ + ": node " + std::to_string(index) + " is reached twice (a cycle, or a node with two parents); its second place is left out");
+      return okStatus();
+    }
     if (depth > kMaxNodeDepth) return fail("the node hierarchy is deeper than " + std::to_string(kMaxNodeDepth));
     visited[static_cast<std::size_t>(index)] = 1;
     const tinygltf::Node& n = m_.nodes[static_cast<std::size_t>(index)];
@@ -575,6 +599,15 @@ class GltfReader {
       if (n.translation.size() == 3) out.translation = glm::vec3(n.translation[0], n.translation[1], n.translation[2]);
       if (n.rotation.size() == 4) out.rotation = glm::normalize(glm::quat(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2])));
       if (n.scale.size() == 3) out.scale = glm::vec3(n.scale[0], n.scale[1], n.scale[2]);
+      // Morph weights at rest: the node's, else its mesh's, else zero, one per target.
+      if (n.mesh >= 0 && n.mesh < static_cast<int>(m_.meshes.size())) {
+        const tinygltf::Mesh& g = m_.meshes[static_cast<std::size_t>(n.mesh)];
+        const std::size_t targets = g.primitives.empty() ? 0 : std::min<std::size_t>(g.primitives.front().targets.size(), kMaxMorphTargets);
+        const std::vector<double>& given = n.weights.size() == targets ? n.weights : g.weights;
+        out.weights.assign(targets, 0.0f);
+        if (given.size() == targets)
+          for (std::size_t k = 0; k < targets; ++k) out.weights[k] = std::isfinite(given[k]) ? static_cast<float>(given[k]) : 0.0f;
+      }
       nodeOf_[index] = node;
     }
     if (n.mesh >= 0) {
@@ -599,16 +632,19 @@ class GltfReader {
       return okStatus();
     };
     if (mode_ == Mode::Flatten) return build(targets_.front(), world);
+    // A skinned node is placed by its joints alone (glTF ignores its own transform).
+    const int skin = n.skin >= 0 && n.skin < static_cast<int>(m_.skins.size()) && skinUsable(n.skin) ? n.skin : -1;
+    const glm::dmat4 placement = skin >= 0 ? glm::dmat4(1.0) : world;
     // A mirroring node gets a mirrored copy of the mesh (its winding reversed), so every
     // object's transform keeps the orientation the renderer's culling assumes.
-    const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+    const bool mirrored = glm::determinant(glm::dmat3(placement)) < 0.0;
     const glm::dmat4 mirror = mirrored ? glm::scale(glm::dmat4(1.0), glm::dvec3(-1.0, 1.0, 1.0)) : glm::dmat4(1.0);
-    const auto key = std::make_pair(n.mesh, mirrored);
+    const auto key = std::make_tuple(n.mesh, mirrored, skin);
     auto built = built_.find(key);
     if (built == built_.end()) {
       const std::uint64_t before = sceneTriangles_;
       built = built_.emplace(key, std::make_pair(targets_.size(), std::uint64_t(0))).first;
-      if (Status s = build(newTarget(), mirror); !s) return s;
+      if (Status s = build(newTarget(n.mesh, skin), mirror); !s) return s;
       built->second.second = sceneTriangles_ - before;
     } else {
       // Drawn once more: the bound is on what the scene draws.
@@ -617,18 +653,17 @@ class GltfReader {
         return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
     }
     std::string name = n.name.empty() ? (mesh.name.empty() ? "node " + std::to_string(index) : mesh.name) : n.name;
-    objects_.push_back({printable(name), built->second.first, world * mirror, node, mirror});
+    objects_.push_back({printable(name), built->second.first, placement * mirror, node, mirror, skin});
     return okStatus();
   }
 
   // The file's animations: each checked whole, and one that breaks a rule refused with a
   // warning naming it and the rule (the scene stays, static where it would have moved).
   void readAnimations() {
-    std::size_t morphChannels = 0;
     for (std::size_t i = 0; i < m_.animations.size(); ++i) {
       const tinygltf::Animation& a = m_.animations[i];
       const std::string label = "animation " + std::to_string(i) + (a.name.empty() ? std::string() : " '" + printable(a.name) + "'");
-      Result<SceneAnimation> read = readAnimation(a, morphChannels);
+      Result<SceneAnimation> read = readAnimation(a);
       if (!read) {
         warn_.add(name_ + ": " + label + " is not played: " + read.error());
         continue;
@@ -636,23 +671,78 @@ class GltfReader {
       read->name = a.name.empty() ? "animation " + std::to_string(i + 1) : printable(a.name);
       animations_.push_back(std::move(*read));
     }
-    if (morphChannels > 0)
-      warn_.add(name_ + ": " + std::to_string(morphChannels) + " morph target weight channel(s) are not played yet (the meshes keep their rest shape)");
   }
 
-  Result<SceneAnimation> readAnimation(const tinygltf::Animation& a, std::size_t& morphChannels) {
+  // Whether skin `k` can be read at all (its joints exist); readSkins checks the rest.
+  bool skinUsable(int k) const {
+    const tinygltf::Skin& skin = m_.skins[static_cast<std::size_t>(k)];
+    if (skin.joints.empty() || skin.joints.size() > kMaxJoints) return false;
+    return std::all_of(skin.joints.begin(), skin.joints.end(), [&](int j) { return j >= 0 && j < static_cast<int>(m_.nodes.size()); });
+  }
+
+  // The skins the scene's objects use, each checked whole; a refused one is named and its
+  // objects drawn in their bind pose.
+  void readSkins() {
+    std::set<int> used;
+    for (const Object& o : objects_)
+      if (o.skin >= 0) used.insert(o.skin);
+    for (std::size_t k = 0; k < m_.skins.size(); ++k) {
+      const tinygltf::Skin& g = m_.skins[k];
+      const std::string label = "skin " + std::to_string(k) + (g.name.empty() ? std::string() : " '" + printable(g.name) + "'");
+      if (!skinUsable(static_cast<int>(k))) {
+        warn_.add(name_ + ": " + label + " is not applied: " +
+                  (g.joints.empty() ? std::string("it has no joints")
+                   : g.joints.size() > kMaxJoints ? "it has more than " + std::to_string(kMaxJoints) + " joints"
+                                                  : std::string("a joint names a node that does not exist")));
+        continue;
+      }
+      if (!used.count(static_cast<int>(k))) continue;
+      Result<SceneSkin> read = readSkin(g);
+      if (!read) {
+        warn_.add(name_ + ": " + label + " is not applied: " + read.error() + "; its meshes are drawn in their bind pose");
+        continue;
+      }
+      read->name = g.name.empty() ? "skin " + std::to_string(k + 1) : printable(g.name);
+      skinOf_[static_cast<int>(k)] = static_cast<int>(skins_.size());
+      skins_.push_back(std::move(*read));
+    }
+  }
+
+  Result<SceneSkin> readSkin(const tinygltf::Skin& g) {
+    SceneSkin out;
+    for (int j : g.joints) {
+      const auto node = nodeOf_.find(j);
+      if (node == nodeOf_.end()) return Error{"its joint node " + std::to_string(j) + " is not in the scene"};
+      out.joints.push_back(node->second);
+    }
+    // glTF: without inverse bind matrices every joint's is the identity.
+    out.inverseBind.assign(g.joints.size(), glm::mat4(1.0f));
+    if (g.inverseBindMatrices >= 0) {
+      Result<AccessorView> ibm = accessor(g.inverseBindMatrices, "inverse bind matrices", {TINYGLTF_TYPE_MAT4});
+      if (!ibm) return Error{ibm.error().rfind(name_ + ": ", 0) == 0 ? ibm.error().substr(name_.size() + 2) : ibm.error()};
+      if (ibm->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) return Error{"its inverse bind matrices are not floats"};
+      if (ibm->count < g.joints.size())
+        return Error{"it has " + std::to_string(g.joints.size()) + " joints but " + std::to_string(ibm->count) + " inverse bind matrices"};
+      for (std::size_t j = 0; j < g.joints.size(); ++j)
+        for (int c = 0; c < 16; ++c) {
+          const double v = ibm->component(j, c);
+          if (!std::isfinite(v)) return Error{"inverse bind matrix " + std::to_string(j) + " is not finite"};
+          out.inverseBind[j][c / 4][c % 4] = static_cast<float>(v);
+        }
+    }
+    return out;
+  }
+
+  Result<SceneAnimation> readAnimation(const tinygltf::Animation& a) {
     SceneAnimation out;
     if (a.channels.empty()) return Error{"it has no channels"};
     bool first = true;
     for (std::size_t c = 0; c < a.channels.size(); ++c) {
       const tinygltf::AnimationChannel& ch = a.channels[c];
       const std::string where = "channel " + std::to_string(c);
-      if (ch.target_path == "weights") {
-        ++morphChannels;
-        continue;
-      }
       AnimationChannel channel;
-      if (ch.target_path == "translation") channel.property = AnimatedProperty::Translation;
+      if (ch.target_path == "weights") channel.property = AnimatedProperty::Weights;
+      else if (ch.target_path == "translation") channel.property = AnimatedProperty::Translation;
       else if (ch.target_path == "rotation") channel.property = AnimatedProperty::Rotation;
       else if (ch.target_path == "scale") channel.property = AnimatedProperty::Scale;
       else return Error{where + " animates '" + printable(ch.target_path, 40) + "' (translation, rotation, scale or weights are glTF's)"};
@@ -663,6 +753,10 @@ class GltfReader {
       if (nodes_[static_cast<std::size_t>(node->second)].matrix)
         return Error{where + " animates node " + std::to_string(ch.target_node) + ", which is given by a matrix (glTF allows animating only TRS nodes)"};
       channel.node = node->second;
+      const bool weights = channel.property == AnimatedProperty::Weights;
+      const std::size_t targets = nodes_[static_cast<std::size_t>(node->second)].weights.size();
+      if (weights && targets == 0) return Error{where + " animates the morph weights of node " + std::to_string(ch.target_node) + ", whose mesh has no morph targets"};
+      channel.width = weights ? static_cast<int>(targets) : channel.property == AnimatedProperty::Rotation ? 4 : 3;
       if (ch.sampler < 0 || ch.sampler >= static_cast<int>(a.samplers.size()))
         return Error{where + " names sampler " + std::to_string(ch.sampler) + ", which does not exist"};
       const tinygltf::AnimationSampler& sampler = a.samplers[static_cast<std::size_t>(ch.sampler)];
@@ -677,12 +771,15 @@ class GltfReader {
       if (input->componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) return Error{where + "'s keyframe times are not floats"};
       if (input->count == 0) return Error{where + " has no keyframes"};
       const bool rotation = channel.property == AnimatedProperty::Rotation;
-      Result<AccessorView> output = accessor(sampler.output, where + "'s values", {rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3});
+      Result<AccessorView> output = accessor(sampler.output, where + "'s values",
+                                             {weights ? TINYGLTF_TYPE_SCALAR : rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3});
       if (!output) return unnamed(output.error());
-      const std::size_t perKey = channel.interpolation == Interpolation::CubicSpline ? 3 : 1;
+      // Weights: one scalar per morph target per value.
+      const std::size_t perKey = (channel.interpolation == Interpolation::CubicSpline ? 3 : 1) * (weights ? targets : 1);
       if (output->count != input->count * perKey)
         return Error{where + " has " + std::to_string(input->count) + " keyframe times but " + std::to_string(output->count) + " values (" +
-                     (perKey == 3 ? "a cubic spline needs three per time" : "one per time") + ")"};
+                     (channel.interpolation == Interpolation::CubicSpline ? "a cubic spline needs three per time" : "one per time") +
+                     (weights ? ", times " + std::to_string(targets) + " morph targets" : std::string()) + ")"};
       // Channels copy their sampler's keys: bounded over the file, however often one is shared.
       animationKeys_ += output->count;
       if (animationKeys_ > kMaxAnimationKeys) return Error{"the file's animations hold more than " + std::to_string(kMaxAnimationKeys) + " keyframe values"};
@@ -695,26 +792,103 @@ class GltfReader {
           return Error{where + ": keyframe times do not increase (time " + std::to_string(k) + " is " + json::number(t) + " after " +
                        json::number(channel.times[k - 1]) + ")"};
       }
-      channel.values.resize(output->count);
-      for (std::size_t k = 0; k < output->count; ++k) {
-        glm::vec4 v(0.0f);
+      channel.values.resize(output->count * static_cast<std::size_t>(output->components));
+      for (std::size_t k = 0; k < output->count; ++k)
         for (int j = 0; j < output->components; ++j) {
           const double x = output->component(k, j);
           if (!std::isfinite(x)) return Error{where + ": value " + std::to_string(k) + " is not finite"};
-          v[j] = static_cast<float>(x);
+          channel.values[k * static_cast<std::size_t>(output->components) + static_cast<std::size_t>(j)] = static_cast<float>(x);
         }
-        channel.values[k] = v;
-      }
       if (rotation && channel.interpolation != Interpolation::CubicSpline)
-        for (const glm::vec4& q : channel.values)
-          if (!(glm::length(q) > 1e-6f)) return Error{where + ": a rotation is the zero quaternion"};
+        for (std::size_t k = 0; k < output->count; ++k) {
+          const float* q = &channel.values[4 * k];
+          if (!(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3] > 1e-12f)) return Error{where + ": a rotation is the zero quaternion"};
+        }
       out.start = first ? channel.times.front() : std::min(out.start, channel.times.front());
       out.end = first ? channel.times.back() : std::max(out.end, channel.times.back());
       first = false;
       out.channels.push_back(std::move(channel));
     }
-    if (out.channels.empty()) return Error{"it moves nothing this viewer draws (its channels drive morph weights or nodes outside the scene)"};
+    if (out.channels.empty()) return Error{"it moves nothing this viewer draws (its channels drive nodes outside the scene)"};
     return out;
+  }
+
+  // The primitive's skin weights and morph targets into the soup's per-vertex deformation
+  // (zero where absent: the vertex stays at rest). Bad data does not fail the file: the first
+  // problem is kept (Target::deformProblem) and the mesh is drawn at rest, named.
+  void readDeformation(const tinygltf::Primitive& prim, const glm::dmat3& placement, std::size_t count, const std::string& where, Target& t) {
+    PolygonSoup& soup = t.soup;
+    const std::size_t width = soup.deformWidth();
+    const std::size_t first = soup.deform.size() / width;
+    soup.deform.resize((first + count) * width, 0.0f);
+    const auto problem = [&](const std::string& what) {
+      if (t.deformProblem.empty()) t.deformProblem = where + ": " + what;
+    };
+    const auto unnamed = [&](const std::string& e) { return e.rfind(name_ + ": ", 0) == 0 ? e.substr(name_.size() + 2) : e; };
+    if (soup.skinned) {
+      const std::size_t joints = m_.skins[static_cast<std::size_t>(t.skin)].joints.size();
+      const auto j = prim.attributes.find("JOINTS_0"), w = prim.attributes.find("WEIGHTS_0");
+      if (j == prim.attributes.end() || w == prim.attributes.end()) {
+        problem("a skinned primitive without JOINTS_0 and WEIGHTS_0");
+      } else {
+        Result<AccessorView> ja = accessor(j->second, where + " JOINTS_0", {TINYGLTF_TYPE_VEC4});
+        Result<AccessorView> wa = accessor(w->second, where + " WEIGHTS_0", {TINYGLTF_TYPE_VEC4});
+        if (!ja) return problem(unnamed(ja.error()));
+        if (!wa) return problem(unnamed(wa.error()));
+        if (ja->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && ja->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)
+          return problem("JOINTS_0 must be unsigned bytes or shorts");
+        if (ja->count != count || wa->count != count)
+          return problem("JOINTS_0 and WEIGHTS_0 have " + std::to_string(ja->count) + " and " + std::to_string(wa->count) + " elements for " +
+                         std::to_string(count) + " positions");
+        std::size_t renormalised = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+          float* v = &soup.deform[(first + i) * width];
+          float sum = 0.0f;
+          for (int k = 0; k < 4; ++k) {
+            const double weight = wa->component(i, k);
+            if (!std::isfinite(weight) || weight < 0.0) return problem("vertex " + std::to_string(i) + " has a weight that is negative or not finite");
+            const std::uint64_t joint = static_cast<std::uint64_t>(ja->component(i, k));
+            if (weight > 0.0 && joint >= joints)
+              return problem("vertex " + std::to_string(i) + " names joint " + std::to_string(joint) + ", past the skin's " + std::to_string(joints));
+            v[k] = weight > 0.0 ? static_cast<float>(joint) : 0.0f;
+            v[4 + k] = static_cast<float>(weight);
+            sum += v[4 + k];
+          }
+          // glTF says the weights sum to one; a small drift (quantised weights) is normalised,
+          // a vertex with none stays at rest.
+          if (sum > 0.0f && std::abs(sum - 1.0f) > 1e-3f) {
+            if (std::abs(sum - 1.0f) > 0.01f) ++renormalised;
+            for (int k = 0; k < 4; ++k) v[4 + k] /= sum;
+          }
+        }
+        if (renormalised > 0)
+          warn_.add(name_ + ": " + where + ": " + std::to_string(renormalised) + " vertices' skin weights do not sum to one; normalised");
+        if (prim.attributes.count("JOINTS_1")) warn_.add(name_ + ": " + where + ": only the first four joint influences per vertex are read");
+      }
+    }
+    if (soup.morphTargets == 0) return;
+    if (prim.targets.size() != soup.morphTargets)
+      return problem("it has " + std::to_string(prim.targets.size()) + " morph targets where its mesh's first primitive has " +
+                     std::to_string(soup.morphTargets));
+    const std::size_t base = soup.skinned ? 8 : 0;
+    for (std::size_t k = 0; k < soup.morphTargets; ++k)
+      for (const char* attribute : {"POSITION", "NORMAL"}) {
+        const auto a = prim.targets[k].find(attribute);
+        if (a == prim.targets[k].end()) continue;
+        Result<AccessorView> deltas = accessor(a->second, where + " morph target " + std::to_string(k) + " " + attribute, {TINYGLTF_TYPE_VEC3});
+        if (!deltas) return problem(unnamed(deltas.error()));
+        if (deltas->count != count)
+          return problem("morph target " + std::to_string(k) + " " + attribute + " has " + std::to_string(deltas->count) + " elements for " +
+                         std::to_string(count) + " positions");
+        const std::size_t at = base + 6 * k + (attribute[0] == 'N' ? 3 : 0);
+        for (std::size_t i = 0; i < count; ++i) {
+          const glm::dvec3 d = placement * glm::dvec3(deltas->component(i, 0), deltas->component(i, 1), deltas->component(i, 2));
+          if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z))
+            return problem("morph target " + std::to_string(k) + " " + attribute + " " + std::to_string(i) + " is not finite");
+          float* v = &soup.deform[(first + i) * width + at];
+          v[0] = static_cast<float>(d.x), v[1] = static_cast<float>(d.y), v[2] = static_cast<float>(d.z);
+        }
+      }
   }
 
   Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t) {
@@ -798,6 +972,8 @@ class GltfReader {
       }
     }
 
+    if (mode_ == Mode::Objects && soup.deformWidth() > 0) readDeformation(prim, glm::dmat3(world), positions->count, where, t);
+
     const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
     auto corner = [&](std::size_t k) -> long long {
       const std::uint64_t i = indices ? indices->index(k) : k;
@@ -831,7 +1007,7 @@ class GltfReader {
   Mode mode_;
   std::deque<Target> targets_;  // a deque: each FaceBuilder keeps references into its target
   std::vector<Object> objects_;
-  std::map<std::pair<int, bool>, std::pair<std::size_t, std::uint64_t>> built_;  // (mesh, mirrored) -> (target, triangles)
+  std::map<std::tuple<int, bool, int>, std::pair<std::size_t, std::uint64_t>> built_;  // (mesh, mirrored, skin) -> (target, triangles)
   std::vector<MeshMaterial> materials_;  // the file's, then the default
   std::vector<glm::mat3> transforms_;    // per material: its base colour map's texture transform
   std::vector<MeshTexture> images_;      // decoded base colour maps
@@ -842,6 +1018,8 @@ class GltfReader {
   std::vector<SceneNode> nodes_;             // Objects: the visited nodes, parents first
   std::map<int, int> nodeOf_;                // the file's node -> nodes_
   std::vector<SceneAnimation> animations_;
+  std::vector<SceneSkin> skins_;
+  std::map<int, int> skinOf_;
   std::uint64_t animationKeys_ = 0;
   std::uint64_t sceneTriangles_ = 0;
   std::size_t skippedPrimitives_ = 0;
@@ -882,7 +1060,11 @@ Result<Mesh> parseGltf(const std::string& name, std::string bytes) {
   report.skipped_faces = t.report.skipped_faces;
   report.polygons_triangulated = t.report.polygons_triangulated;
   report.repeated_corner_faces = t.report.repeated_corner_faces;
-  return buildMesh(std::move(t.soup), std::move(report));
+  std::string firstWarning = report.warnings.empty() ? std::string() : report.warnings.front();
+  Result<Mesh> mesh = buildMesh(std::move(t.soup), std::move(report));
+  // Nothing to draw: the file's first warning often says why.
+  if (!mesh && !firstWarning.empty()) return Error{mesh.error() + " (" + firstWarning + ")"};
+  return mesh;
 }
 
 Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
@@ -894,12 +1076,12 @@ Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
   if (Status s = reader.read(); !s) return Error{s.error()};
   LoadedScene scene;
   scene.file = name;
-  scene.skins = model.skins.size();
   model = tinygltf::Model();
   scene.cameras = std::move(reader.cameras());
   scene.lights = reader.placedLights();
   scene.nodes = std::move(reader.nodes());
   scene.animations = std::move(reader.animations());
+  scene.skins = std::move(reader.skins());
   scene.warnings = report.warnings;
   scene.report = report;
   std::vector<std::shared_ptr<const Mesh>> meshes(reader.targets().size());
@@ -913,13 +1095,25 @@ Result<LoadedScene> parseGltfScene(const std::string& name, std::string bytes) {
       continue;
     }
     finalizeMesh(*m);
+    // Bad skin or morph data, or a skin refused whole: the mesh is drawn at rest, named.
+    if (!m->deformation.empty()) {
+      if (!t.deformProblem.empty()) {
+        scene.warnings.push_back(name + ": mesh " + std::to_string(t.mesh) + " is drawn at rest: " + t.deformProblem);
+        m->deformation = MeshDeformation{};
+      } else if (t.skin >= 0 && !reader.skinOf().count(t.skin)) {
+        m->deformation.joints.clear();
+        m->deformation.weights.clear();
+      }
+    }
     // The loader centred and scaled the mesh; its object transform puts it back.
     unplace[i] = glm::translate(glm::dmat4(1.0), m->report.original_centre) * glm::scale(glm::dmat4(1.0), glm::dvec3(1.0 / m->report.original_scale));
     meshes[i] = std::make_shared<const Mesh>(std::move(*m));
   }
   for (const GltfReader::Object& o : reader.objects()) {
     if (!meshes[o.target]) continue;
-    scene.objects.push_back({o.name, meshes[o.target], glm::mat4(o.world * unplace[o.target]), o.node, glm::mat4(o.mirror * unplace[o.target])});
+    const auto skin = reader.skinOf().find(o.skin);
+    const int skinIndex = skin != reader.skinOf().end() && meshes[o.target]->deformation.skinned() ? skin->second : -1;
+    scene.objects.push_back({o.name, meshes[o.target], glm::mat4(o.world * unplace[o.target]), o.node, glm::mat4(o.mirror * unplace[o.target]), skinIndex});
     scene.report.vertices += meshes[o.target]->positions.size();
     scene.report.triangles += meshes[o.target]->triangleCount();
   }

@@ -76,6 +76,12 @@ void GpuMesh::upload(const Mesh& mesh) {
   bindStreams(*this);
 }
 
+void GpuMesh::updateGeometry(const Mesh& mesh) {
+  if (!positions_.id() || mesh.positions.size() != vertexCount_ || mesh.normals.size() != vertexCount_) return;
+  gl::updateBuffer(positions_, mesh.positions.data(), vertexCount_ * sizeof(glm::vec3));
+  gl::updateBuffer(normals_, mesh.normals.data(), vertexCount_ * sizeof(glm::vec3));
+}
+
 void GpuMesh::uploadPart(const GpuMesh& base, const Mesh& part) {
   clear();
   if (part.indices.empty() || !base.vao_.id()) return;

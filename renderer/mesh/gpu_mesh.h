@@ -33,6 +33,9 @@ class GpuMesh {
   void uploadPart(const GpuMesh& base, const Mesh& part);
   void shareStreamsOf(const GpuMesh& base);
   void clear();
+  // `mesh` (the one uploaded, deformed since) has new positions and normals: they alone are
+  // sent again, into the same buffers.
+  void updateGeometry(const Mesh& mesh);
   // The hatching direction field, one vector per vertex (attribute 6; orientation/
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);

@@ -11,6 +11,7 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include "renderer/core/image.h"
 
@@ -63,6 +64,18 @@ struct MeshTexture {
   ImageRGBA8 image;  // as stored (no colour conversion, as fixed-function GL sampled)
 };
 
+// How a mesh deforms (glTF skins and morph targets), per vertex of the mesh; empty when it does
+// not. The deformed copy is made by animation/deformation.h.
+struct MeshDeformation {
+  std::vector<glm::u16vec4> joints;  // into the object's skin's joints (SceneSkin)
+  std::vector<glm::vec4> weights;    // non-negative, summing to 1; all zero: the vertex stays at rest
+  // Per morph target: position deltas (in the mesh's centred and scaled space) and normal deltas.
+  std::vector<std::vector<glm::vec3>> targetPositions, targetNormals;
+  bool skinned() const { return !joints.empty(); }
+  std::size_t targets() const { return targetPositions.size(); }
+  bool empty() const { return !skinned() && targetPositions.empty(); }
+};
+
 struct Mesh {
   // Structure of arrays, for upload and for cache-friendly per-triangle work.
   std::vector<glm::vec3> positions;       // per vertex, centred and scaled
@@ -88,6 +101,7 @@ struct Mesh {
   // per-triangle paths modulate ambient and diffuse by, and averaged around each vertex the
   // per-vertex paths (finalizeMesh fills it; empty when no material has a map).
   std::vector<glm::vec3> faceTints;
+  MeshDeformation deformation;
   LoadReport report;
 
   std::size_t triangleCount() const { return indices.size() / 3; }

@@ -38,6 +38,8 @@ std::vector<std::uint32_t> splitVertices(PolygonSoup& soup) {
   std::vector<char> valid;
   std::vector<glm::vec3> colours;
   std::vector<glm::vec2> texcoords;
+  std::vector<float> deform;
+  const std::size_t width = soup.deform.empty() ? 0 : soup.deformWidth();
   const bool tex = soup.tracksTexcoords && !soup.texcoords.empty();
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -51,6 +53,7 @@ std::vector<std::uint32_t> splitVertices(PolygonSoup& soup) {
         valid.push_back(soup.vertexValid[v]);
         if (!soup.colours.empty()) colours.push_back(soup.colours[v]);
         if (tex) texcoords.push_back(tc >= 0 ? soup.texcoords[static_cast<std::size_t>(tc)] : glm::vec2(0.0f));
+        if (width) deform.insert(deform.end(), soup.deform.begin() + std::ptrdiff_t(v * width), soup.deform.begin() + std::ptrdiff_t((v + 1) * width));
       }
       soup.triangles[t][static_cast<std::size_t>(k)] = static_cast<int>(it->second);
     }
@@ -59,6 +62,7 @@ std::vector<std::uint32_t> splitVertices(PolygonSoup& soup) {
   soup.vertexValid = std::move(valid);
   soup.colours = std::move(colours);
   soup.texcoords = std::move(texcoords);
+  soup.deform = std::move(deform);
   soup.triangleTexcoords = {};
   return source;
 }
@@ -227,7 +231,7 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
                  " vertices, but no face that could be used); nothing to draw"};
   Mesh m;
   m.report = std::move(report);
-  const bool appearance = soup.tracksTexcoords || soup.tracksMaterials || !soup.colours.empty();
+  const bool appearance = soup.tracksTexcoords || soup.tracksMaterials || !soup.colours.empty() || !soup.deform.empty();
   if (!appearance) {
     std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
     soup.vertices = {};
@@ -257,6 +261,28 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
     if (!soup.texcoords.empty()) {
       m.texcoords.resize(nv);
       for (std::size_t i = 0; i < nv; ++i) m.texcoords[i] = soup.texcoords[vertexOrigin[i]];
+    }
+    if (const std::size_t width = soup.deformWidth(); width > 0 && soup.deform.size() >= width * (soup.deform.size() / width)) {
+      MeshDeformation& d = m.deformation;
+      const float scale = static_cast<float>(m.report.original_scale);  // file units to the mesh's
+      if (soup.skinned) {
+        d.joints.resize(nv);
+        d.weights.resize(nv);
+      }
+      d.targetPositions.assign(soup.morphTargets, std::vector<glm::vec3>(nv));
+      d.targetNormals.assign(soup.morphTargets, std::vector<glm::vec3>(nv));
+      for (std::size_t i = 0; i < nv; ++i) {
+        const float* v = &soup.deform[std::size_t(vertexOrigin[i]) * width];
+        if (soup.skinned) {
+          d.joints[i] = glm::u16vec4(v[0], v[1], v[2], v[3]);
+          d.weights[i] = glm::vec4(v[4], v[5], v[6], v[7]);
+          v += 8;
+        }
+        for (std::size_t t = 0; t < soup.morphTargets; ++t, v += 6) {
+          d.targetPositions[t][i] = scale * glm::vec3(v[0], v[1], v[2]);
+          d.targetNormals[t][i] = glm::vec3(v[3], v[4], v[5]);
+        }
+      }
     }
     if (!soup.materials.empty()) {
       m.faceMaterials.resize(nf);

@@ -30,6 +30,13 @@ struct PolygonSoup {
   std::vector<std::uint16_t> triangleMaterials;
   std::vector<MeshMaterial> materials;  // what triangleMaterials index
   std::vector<MeshTexture> textures;
+  // Deformation (glTF): per vertex `deformWidth()` floats, the skin's four joints and four
+  // weights when `skinned`, then per morph target a position delta and a normal delta (file
+  // units); empty when the mesh does not deform. buildMesh makes MeshDeformation of them.
+  std::vector<float> deform;
+  bool skinned = false;
+  std::size_t morphTargets = 0;
+  std::size_t deformWidth() const { return (skinned ? 8 : 0) + 6 * morphTargets; }
 
   // Starts per-triangle texture coordinates / materials, giving the triangles so far none / 0.
   void trackTexcoords() { triangleTexcoords.resize(triangles.size(), {-1, -1, -1}); tracksTexcoords = true; }

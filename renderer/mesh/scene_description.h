@@ -26,6 +26,17 @@ struct SceneObject {
   // what follows the node's world transform: transform = world(node) * afterNode.
   int node = -1;
   glm::mat4 afterNode{1.0f};
+  // Its skin (into LoadedScene::skins; -1: none). A skinned object is placed by its joints
+  // alone, as glTF says: transform = afterNode, whatever its node's transform.
+  int skin = -1;
+};
+
+// A glTF skin: its joints (into LoadedScene::nodes) and their inverse bind matrices (file
+// space to each joint's, in the bind pose).
+struct SceneSkin {
+  std::string name;
+  std::vector<int> joints;
+  std::vector<glm::mat4> inverseBind;
 };
 
 struct SceneCamera {
@@ -60,7 +71,7 @@ struct LoadedScene {
   // the reader refused are left out, named in `warnings`.
   std::vector<SceneNode> nodes;
   std::vector<SceneAnimation> animations;
-  std::size_t skins = 0;
+  std::vector<SceneSkin> skins;
   // The file's warnings (each object's mesh keeps its own report too).
   std::vector<std::string> warnings;
   // The file's load report: materials, textures found and missing, warnings; vertices and

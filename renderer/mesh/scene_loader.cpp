@@ -51,7 +51,7 @@ std::string sceneReportJson(const LoadedScene& scene) {
     o += (i ? "," : "") + std::string("{\"name\":") + json::string(a.name) + ",\"start\":" + json::number(a.start) + ",\"end\":" + json::number(a.end) +
          ",\"channels\":" + std::to_string(a.channels.size()) + "}";
   }
-  o += "],\"skins\":" + std::to_string(scene.skins) + "}";
+  o += "],\"skins\":" + std::to_string(scene.skins.size()) + "}";
   return o;
 }
 

@@ -8,7 +8,8 @@
 
 namespace npr {
 
-Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bool appearance) : mesh_(&mesh), transform_(transform) {
+Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bool appearance)
+    : mesh_(&mesh), rest_(&mesh), transform_(transform) {
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
   strokes_.setMesh(mesh_);
@@ -22,6 +23,8 @@ Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bo
 
 void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
   mesh_ = &mesh;
+  rest_ = &mesh;
+  ++geometryVersion_;
   transform_ = transform;
   field_.reset();
   occlusion_.reset();
@@ -33,6 +36,31 @@ void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stat
   gpu_.upload(mesh);
   materials_.upload(mesh);
   stats.bufferUploads += 3;
+}
+
+void Model::geometryChanged(FrameStats& stats) {
+  ++geometryVersion_;
+  gpu_.updateGeometry(*mesh_);
+  triangles_.geometryChanged();
+  lines_.geometryChanged();
+  stats.bufferUploads += 1;
+  // Parts hold copies of the vertices and their own faces' centroids and normals.
+  for (auto& p : parts_) {
+    Mesh& part = p->mesh;
+    if (part.positions.size() != mesh_->positions.size()) continue;
+    part.positions = mesh_->positions;
+    part.normals = mesh_->normals;
+    for (std::size_t f = 0; f < part.triangleCount(); ++f) {
+      const std::uint32_t* id = &part.indices[3 * f];
+      const glm::vec3 a = part.positions[id[0]], b = part.positions[id[1]], c = part.positions[id[2]];
+      const glm::vec3 cr = glm::cross(b - a, c - a);
+      const float len = glm::length(cr);
+      part.faceCentroids[f] = (a + b + c) / 3.0f;
+      part.faceNormals[f] = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
+    }
+    part.radius = mesh_->radius;
+    p->triangles.geometryChanged();
+  }
 }
 
 float Model::pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const {
@@ -48,7 +76,7 @@ float Model::sceneRadius() const {
 
 const DirectionField& Model::directionField(FrameStats& stats) {
   if (!field_) {
-    field_ = computeDirectionField(*mesh_);
+    field_ = computeDirectionField(*rest_);
     stats.cpuFieldMs = field_->ms;
     gpu_.uploadDirections(field_->directions);
     for (auto& p : parts_) p->gpu.shareStreamsOf(gpu_);  // parts draw through the model's streams

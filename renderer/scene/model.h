@@ -40,6 +40,14 @@ class Model {
   void reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats);
 
   const Mesh& mesh() const { return *mesh_; }
+  // A deforming model draws a posed copy of its mesh (`mesh`, updated in place) and keeps what
+  // is attached to the surface from the rest mesh: the hatching direction field is computed
+  // on it. `rest` must outlive the model; by default the drawn mesh is its own rest.
+  void setRestMesh(const Mesh& rest) { rest_ = &rest; }
+  // The drawn mesh was deformed in place: its GPU copy, lighting, lines and parts follow;
+  // what is computed once per mesh (edges, direction field, materials) is kept.
+  void geometryChanged(FrameStats& stats);
+  unsigned geometryVersion() const { return geometryVersion_; }
   // Model space to the scene's (world) space.
   const glm::mat4& transform() const { return transform_; }
   void setTransform(const glm::mat4& transform) { transform_ = transform; }
@@ -90,6 +98,8 @@ class Model {
   void uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats);
 
   const Mesh* mesh_;
+  const Mesh* rest_;
+  unsigned geometryVersion_ = 0;
   glm::mat4 transform_;
   GpuMesh gpu_;
   GpuMaterials materials_;

@@ -72,6 +72,9 @@ class Scene {
     ++version_;
     return true;
   }
+  // A model's geometry changed in place (animation): what covers the whole scene (shadow
+  // maps) is drawn again; the layout stays.
+  void touch() { ++version_; }
   // False when there is no such model.
   bool setVisible(ModelId id, bool visible) {
     for (auto& m : models_)

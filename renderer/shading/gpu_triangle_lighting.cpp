@@ -18,6 +18,13 @@ void GpuTriangleLighting::setMesh(const Mesh* mesh) {
   occlusionFrom_ = nullptr;
 }
 
+void GpuTriangleLighting::geometryChanged() {
+  if (!mesh_ || !vao_.id()) return;
+  const std::size_t nt = mesh_->triangleCount();
+  gl::updateBuffer(centroids_, mesh_->faceCentroids.data(), nt * sizeof(glm::vec3));
+  gl::updateBuffer(normals_, mesh_->faceNormals.data(), nt * sizeof(glm::vec3));
+}
+
 Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::ProgramCache& programs, FrameStats& stats,
                                   std::vector<std::uint8_t>& entries) {
   if (!mesh_ || mesh_->triangleCount() == 0) return okStatus();

@@ -36,6 +36,8 @@ struct GpuTriangleLightingInputs {
 class GpuTriangleLighting {
  public:
   void setMesh(const Mesh* mesh);
+  // The mesh's faces moved (a posed mesh): their centroids and normals are sent again.
+  void geometryChanged();
   // One entry per triangle of the mesh into `entries`.
   [[nodiscard]] Status shade(const GpuTriangleLightingInputs& in, gl::ProgramCache& programs, FrameStats& stats,
                              std::vector<std::uint8_t>& entries);

@@ -48,6 +48,13 @@ bool sameLighting(const PreparedLighting<float>& a, const PreparedLighting<float
 
 }  // namespace
 
+void TriangleShadingCache::geometryChanged() {
+  ++meshId_;
+  key_.valid = false;
+  boundsValid_ = false;
+  gpu_.geometryChanged();
+}
+
 void TriangleShadingCache::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   faceScale_.clear();

@@ -25,6 +25,9 @@ class TriangleShadingCache {
  public:
   // Forgets everything computed for the previous mesh.
   void setMesh(const Mesh* mesh);
+  // The mesh was deformed in place (a posed mesh): lighting, buckets and bounds are worked out
+  // again; what depends only on its materials is kept.
+  void geometryChanged();
   // Entries and buckets for this frame, and the bucketed index buffer.
   // `materials`: light each face with the mesh's own material (when it has any).
   // `occlusion`: baked ambient occlusion per vertex (shadows/occlusion_bake.h), scaling each

@@ -12,12 +12,15 @@
 namespace npr {
 namespace {
 
-AnimationChannel channel(AnimatedProperty p, Interpolation i, std::vector<float> times, std::vector<glm::vec4> values) {
+// A channel of width 3 (4 for rotations) from values given as vec4s.
+AnimationChannel channel(AnimatedProperty p, Interpolation i, std::vector<float> times, const std::vector<glm::vec4>& values) {
   AnimationChannel c;
   c.property = p;
   c.interpolation = i;
   c.times = std::move(times);
-  c.values = std::move(values);
+  c.width = p == AnimatedProperty::Rotation ? 4 : 3;
+  for (const glm::vec4& v : values)
+    for (int k = 0; k < c.width; ++k) c.values.push_back(v[k]);
   return c;
 }
 
@@ -84,19 +87,41 @@ TEST(NodeAnimation, APoseCarriesParentsToChildrenAndLeavesUndrivenNodesAtRest) {
   AnimationChannel c = channel(AnimatedProperty::Translation, Interpolation::Linear, {0.0f, 1.0f}, {{0, 0, 0, 0}, {10, 0, 0, 0}});
   c.node = 0;
   a.channels.push_back(c);
-  std::vector<glm::mat4> world;
-  poseNodes(nodes, {&a}, 0.5f, world);
-  ASSERT_EQ(world.size(), 3u);
-  EXPECT_NEAR(world[0][3].x, 5.0f, 1e-6f);
-  EXPECT_NEAR(world[1][3].x, 5.0f, 1e-6f);
-  EXPECT_NEAR(world[1][3].y, 1.0f, 1e-6f);
-  EXPECT_NEAR(world[2][3].z, 7.0f, 1e-6f);
-  poseNodes(nodes, {}, 0.5f, world);  // nothing plays: the rest pose
-  EXPECT_NEAR(world[1][3].x, 5.0f, 1e-6f);
-  poseNodes(nodes, {}, 0.0f, world);
-  EXPECT_NEAR(world[0][3].x, 5.0f, 1e-6f);
+  NodePose pose;
+  poseNodes(nodes, {&a}, 0.5f, pose);
+  ASSERT_EQ(pose.world.size(), 3u);
+  EXPECT_NEAR(pose.world[0][3].x, 5.0f, 1e-6f);
+  EXPECT_NEAR(pose.world[1][3].x, 5.0f, 1e-6f);
+  EXPECT_NEAR(pose.world[1][3].y, 1.0f, 1e-6f);
+  EXPECT_NEAR(pose.world[2][3].z, 7.0f, 1e-6f);
+  poseNodes(nodes, {}, 0.5f, pose);  // nothing plays: the rest pose
+  EXPECT_NEAR(pose.world[1][3].x, 5.0f, 1e-6f);
+  poseNodes(nodes, {}, 0.0f, pose);
+  EXPECT_NEAR(pose.world[0][3].x, 5.0f, 1e-6f);
   const std::vector<char> moved = animatedNodes(nodes, {&a});
   EXPECT_EQ(moved, (std::vector<char>{1, 1, 0}));
+}
+
+TEST(NodeAnimation, MorphWeightsAreSampledWholeAndRestWhereUndriven) {
+  std::vector<SceneNode> nodes(2);
+  nodes[0].weights = {0.0f, 0.0f, 0.25f};
+  nodes[1].weights = {0.5f};
+  SceneAnimation a;
+  AnimationChannel c;
+  c.node = 0;
+  c.property = AnimatedProperty::Weights;
+  c.width = 3;
+  c.times = {0.0f, 1.0f};
+  c.values = {0, 0, 0, 1, 0.5f, 0};
+  a.channels.push_back(c);
+  NodePose pose;
+  poseNodes(nodes, {&a}, 0.5f, pose);
+  EXPECT_EQ(pose.weights[0], (std::vector<float>{0.5f, 0.25f, 0.0f}));
+  EXPECT_EQ(pose.weights[1], std::vector<float>{0.5f});
+  float w[3];
+  sampleChannel(c, 2.0f, w);
+  EXPECT_EQ(w[0], 1.0f);
+  EXPECT_EQ(w[1], 0.5f);
 }
 
 }  // namespace

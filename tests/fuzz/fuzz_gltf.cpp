@@ -51,14 +51,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const npr::AnimationChannel& c : a.channels) {
       if (c.node < 0 || c.node >= static_cast<int>(s->nodes.size()) || c.times.empty()) __builtin_trap();
       const std::size_t perKey = c.interpolation == npr::Interpolation::CubicSpline ? 3 : 1;
-      if (c.values.size() != perKey * c.times.size()) __builtin_trap();
+      if (c.width < 1 || c.values.size() != perKey * c.times.size() * static_cast<std::size_t>(c.width)) __builtin_trap();
       for (std::size_t k = 1; k < c.times.size(); ++k)
         if (!(c.times[k] > c.times[k - 1])) __builtin_trap();
     }
     all.push_back(&a);
   }
-  std::vector<glm::mat4> world;
+  npr::NodePose pose;
   for (const npr::SceneAnimation* a : all)
-    for (float t : {a->start, 0.5f * (a->start + a->end), a->end}) npr::poseNodes(s->nodes, all, t, world);
+    for (float t : {a->start, 0.5f * (a->start + a->end), a->end}) npr::poseNodes(s->nodes, all, t, pose);
   return 0;
 }

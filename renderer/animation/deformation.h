@@ -1,0 +1,23 @@
+// The posed copy of a deforming mesh (glTF morph targets and skins), made on the CPU whenever
+// the pose changes, so that every render path, the feature lines, the shadows and the SVG
+// export draw the same posed surface. Morph targets first (positions and normals plus the
+// weighted deltas), then linear blend skinning: each vertex by the weighted sum of its four
+// joints' matrices, normals by the same sum's linear part, renormalised (exact for rigid and
+// uniformly scaled joints). Runs over the vertices and faces in parallel.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/mesh/mesh.h"
+
+namespace npr {
+
+// Writes `posed`'s positions, normals, face centroids, face normals and radius from `rest`
+// (whose copy `posed` is, arrays sized alike) deformed by morph `weights` (one per target;
+// missing ones zero) and, for a skinned mesh, `joints`: per skin joint, the mesh's rest space
+// to its posed space. Vertices whose weights are all zero keep their morphed rest position.
+void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed);
+
+}  // namespace npr
