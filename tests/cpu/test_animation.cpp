@@ -1,13 +1,18 @@
 // CPU tier: node animation (renderer/animation/node_animation.h): channels sampled at and
 // between their keyframes against values worked out by hand (step, linear, slerp, cubic
-// spline), and poses carried from parents to children.
+// spline), and poses carried from parents to children; and deformation (deformation.h):
+// a skinned cylinder bent against a linear blend skinning reference, morph targets between
+// known shapes.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/animation/deformation.h"
 #include "renderer/animation/node_animation.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "support/skinned_cylinder.h"
 
 namespace npr {
 namespace {
@@ -122,6 +127,62 @@ TEST(NodeAnimation, MorphWeightsAreSampledWholeAndRestWhereUndriven) {
   sampleChannel(c, 2.0f, w);
   EXPECT_EQ(w[0], 1.0f);
   EXPECT_EQ(w[1], 0.5f);
+}
+
+TEST(Deformation, ASkinnedCylinderBendsAsLinearBlendSkinningSays) {
+  const Mesh rest = test::skinnedCylinder(32, 30);
+  Mesh posed = rest;
+  for (float degrees : {0.0f, 45.0f, 90.0f}) {
+    deformMesh(rest, test::bendJoints(degrees), {}, posed);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < rest.positions.size(); ++i)
+      worst = std::max(worst, glm::length(glm::dvec3(posed.positions[i]) - test::referenceBend(rest, i, degrees)));
+    EXPECT_LT(worst, 1e-5) << degrees << " degrees";
+  }
+  // Bent 90 degrees, the head's rim point (0.5, 0.75, 0) is at (-0.75, 0.5, 0) and its normal
+  // (nx, ny, nz) turned to (-ny, nx, nz); the foot has not moved.
+  for (std::size_t i = 0; i < rest.positions.size(); ++i) {
+    if (glm::length(rest.positions[i] - glm::vec3(0.5f, 0.75f, 0.0f)) < 1e-6f) {
+      EXPECT_LT(glm::length(posed.positions[i] - glm::vec3(-0.75f, 0.5f, 0.0f)), 1e-5f);
+      const glm::vec3 n = rest.normals[i];
+      EXPECT_LT(glm::length(posed.normals[i] - glm::vec3(-n.y, n.x, n.z)), 1e-5f);
+    }
+    if (rest.positions[i].y < -0.7f) EXPECT_EQ(posed.positions[i], rest.positions[i]);
+  }
+  // Faces follow their vertices; the radius still bounds the surface.
+  for (std::size_t f = 0; f < rest.triangleCount(); ++f) {
+    const std::uint32_t* id = &rest.indices[3 * f];
+    const glm::vec3 c = (posed.positions[id[0]] + posed.positions[id[1]] + posed.positions[id[2]]) / 3.0f;
+    ASSERT_LT(glm::length(posed.faceCentroids[f] - c), 1e-5f);
+  }
+  for (const glm::vec3& p : posed.positions) EXPECT_LE(glm::length(p), posed.radius + 1e-5f);
+}
+
+TEST(Deformation, MorphTargetsBlendBetweenKnownShapes) {
+  // A sphere and, as its one target, the sphere squashed to half its height.
+  Mesh rest = icosphere(2);
+  rest.deformation.targetPositions.assign(1, std::vector<glm::vec3>(rest.positions.size()));
+  rest.deformation.targetNormals.assign(1, std::vector<glm::vec3>(rest.positions.size(), glm::vec3(0.0f)));
+  for (std::size_t i = 0; i < rest.positions.size(); ++i) rest.deformation.targetPositions[0][i] = glm::vec3(0.0f, -0.5f * rest.positions[i].y, 0.0f);
+  Mesh posed = rest;
+  for (float w : {0.0f, 0.5f, 1.0f}) {
+    deformMesh(rest, {}, {w}, posed);
+    for (std::size_t i = 0; i < rest.positions.size(); ++i) {
+      const glm::vec3 want = rest.positions[i] * glm::vec3(1.0f, 1.0f - 0.5f * w, 1.0f);
+      ASSERT_LT(glm::length(posed.positions[i] - want), 1e-6f) << "weight " << w << " vertex " << i;
+    }
+  }
+  // Weights the mesh has no target for change nothing.
+  deformMesh(rest, {}, {0.0f, 7.0f}, posed);
+  EXPECT_EQ(posed.positions, rest.positions);
+}
+
+TEST(Deformation, AVertexWithNoWeightStaysAtRest) {
+  Mesh rest = test::skinnedCylinder(8, 4);
+  rest.deformation.weights[0] = glm::vec4(0.0f);
+  Mesh posed = rest;
+  deformMesh(rest, test::bendJoints(90.0f), {}, posed);
+  EXPECT_EQ(posed.positions[0], rest.positions[0]);
 }
 
 }  // namespace

@@ -500,5 +500,122 @@ TEST(GltfScene, BadAnimationDataIsRefusedNamedAndTheSceneStillLoadsStill) {
   }
 }
 
+// The triangle skinned to two joint nodes: JOINTS_0 (unsigned bytes, buffer byte 44) and
+// WEIGHTS_0 (floats, byte 56), and two inverse bind matrices (byte 104). `joints` and
+// `weights` give each vertex's first two influences.
+struct SkinnedDoc : Doc {
+  SkinnedDoc(const std::vector<std::uint8_t>& joints, const std::vector<float>& weights, int inverseBindMatrices = 2) {
+    buffer.resize(104 + 128, 0);
+    for (std::size_t v = 0; v < 3; ++v) {
+      buffer[44 + 4 * v] = joints[2 * v];
+      buffer[44 + 4 * v + 1] = joints[2 * v + 1];
+      const float w[4] = {weights[2 * v], weights[2 * v + 1], 0.0f, 0.0f};
+      std::memcpy(buffer.data() + 56 + 16 * v, w, 16);
+    }
+    const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    std::memcpy(buffer.data() + 104, identity, 64);
+    std::memcpy(buffer.data() + 168, identity, 64);
+    accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                    {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},
+                    {"bufferView":2,"componentType":5121,"count":3,"type":"VEC4"},
+                    {"bufferView":3,"componentType":5126,"count":3,"type":"VEC4"},
+                    {"bufferView":4,"componentType":5126,"count":)" + std::to_string(inverseBindMatrices) + R"(,"type":"MAT4"}])";
+    bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6},
+                      {"buffer":0,"byteOffset":44,"byteLength":12},{"buffer":0,"byteOffset":56,"byteLength":48},
+                      {"buffer":0,"byteOffset":104,"byteLength":128}])";
+    meshes = R"([{"primitives":[{"attributes":{"POSITION":0,"JOINTS_0":2,"WEIGHTS_0":3},"indices":1}]}])";
+    nodes = R"([{"name":"skinned","mesh":0,"skin":0,"translation":[100,0,0]},{"name":"root","children":[2]},{"name":"tip","translation":[0,0,1]}])";
+    scenes = R"([{"nodes":[0,1]}])";
+    extra = R"(,"skins":[{"joints":[1,2],"inverseBindMatrices":4}])";
+  }
+};
+
+TEST(GltfScene, SkinsAreReadWithTheirJointsAndTheSkinnedNodesOwnTransformIgnored) {
+  TempDir d;
+  // Vertex 0 on the root, vertex 1 on the tip, vertex 2 half and half.
+  SkinnedDoc doc({0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 0.5f, 0.5f});
+  auto s = loadScene(d.write("skinned.gltf", doc.text()));
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->skins.size(), 1u);
+  ASSERT_EQ(s->objects.size(), 1u);
+  const SceneObject& o = s->objects[0];
+  EXPECT_EQ(o.skin, 0);
+  const MeshDeformation& def = o.mesh->deformation;
+  ASSERT_TRUE(def.skinned());
+  ASSERT_EQ(s->skins[0].joints.size(), 2u);
+  EXPECT_EQ(s->nodes[static_cast<std::size_t>(s->skins[0].joints[1])].name, "tip");
+  // glTF ignores a skinned node's transform: the object is where its joints put it (the
+  // node's translation of 100 plays no part).
+  EXPECT_LT(std::abs(o.transform[3].x), 2.0f);
+  // Each mesh vertex keeps its file vertex's influences.
+  for (std::size_t i = 0; i < o.mesh->positions.size(); ++i) {
+    const glm::vec3 file = glm::vec3(o.transform * glm::vec4(o.mesh->positions[i], 1.0f));
+    const glm::vec4 w = def.weights[i];
+    if (near(file, {0, 0, 0})) EXPECT_EQ(w, glm::vec4(1, 0, 0, 0));
+    if (near(file, {1, 0, 0})) EXPECT_EQ(w.y * def.joints[i].y + w.x * def.joints[i].x, 1.0f);  // all on joint 1
+    if (near(file, {0, 1, 0})) EXPECT_EQ(w, glm::vec4(0.5f, 0.5f, 0, 0));
+  }
+  EXPECT_TRUE(contains(sceneReportJson(*s), R"("skins":1)"));
+}
+
+TEST(GltfScene, BadSkinDataIsNamedAndTheMeshDrawnAtRest) {
+  struct Case {
+    const char* what;
+    std::vector<std::uint8_t> joints;
+    std::vector<float> weights;
+    int matrices;
+    std::string expect;
+  };
+  const std::vector<Case> cases = {
+      {"joint out of range", {0, 0, 5, 0, 0, 1}, {1, 0, 1, 0, 0.5f, 0.5f}, 2, "vertex 1 names joint 5, past the skin's 2"},
+      {"negative weight", {0, 0, 1, 0, 0, 1}, {1, 0, -1, 0, 0.5f, 0.5f}, 2, "vertex 1 has a weight that is negative or not finite"},
+      {"NaN weight", {0, 0, 1, 0, 0, 1}, {1, 0, NAN, 0, 0.5f, 0.5f}, 2, "vertex 1 has a weight that is negative or not finite"},
+      {"too few inverse bind matrices", {0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 0.5f, 0.5f}, 1, "has 2 joints but 1 inverse bind matrices"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    TempDir d;
+    SkinnedDoc doc(c.joints, c.weights, c.matrices);
+    auto s = loadScene(d.write("bad-skin.gltf", doc.text()));
+    ASSERT_TRUE(s) << s.error();
+    ASSERT_EQ(s->objects.size(), 1u);
+    EXPECT_EQ(s->objects[0].skin, -1);
+    EXPECT_FALSE(s->objects[0].mesh->deformation.skinned());
+    bool named = false;
+    for (const std::string& w : s->warnings) named = named || (contains(w, "bad-skin.gltf") && contains(w, c.expect));
+    EXPECT_TRUE(named) << "no warning naming '" << c.expect << "'";
+  }
+  // Weights that do not sum to one are normalised, and said so.
+  TempDir d;
+  SkinnedDoc drift({0, 0, 1, 0, 0, 1}, {1, 0, 1, 0, 0.25f, 0.25f});
+  auto s = loadScene(d.write("drift.gltf", drift.text()));
+  ASSERT_TRUE(s) << s.error();
+  bool said = false;
+  for (const std::string& w : s->warnings) said = said || contains(w, "1 vertices' skin weights do not sum to one; normalised");
+  EXPECT_TRUE(said);
+  for (const glm::vec4& w : s->objects[0].mesh->deformation.weights) EXPECT_NEAR(w.x + w.y + w.z + w.w, 1.0f, 1e-6f);
+}
+
+TEST(GltfScene, KhronosSkinAndMorphSamplesPlay) {
+  // simple_skin: a strip whose upper joint turns; AnimatedMorphCube: two targets' weights.
+  auto skin = loadScene(kSamples + "simple_skin/simple_skin.gltf");
+  ASSERT_TRUE(skin) << skin.error();
+  ASSERT_EQ(skin->objects.size(), 1u);
+  ASSERT_EQ(skin->skins.size(), 1u);
+  EXPECT_TRUE(skin->warnings.empty()) << skin->warnings.front();
+  ASSERT_EQ(skin->animations.size(), 1u);
+  auto morph = loadScene(kSamples + "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
+  ASSERT_TRUE(morph) << morph.error();
+  ASSERT_EQ(morph->animations.size(), 1u);
+  EXPECT_EQ(morph->animations[0].channels[0].property, AnimatedProperty::Weights);
+  EXPECT_EQ(morph->animations[0].channels[0].width, 2);
+  EXPECT_EQ(morph->objects[0].mesh->deformation.targets(), 2u);
+  NodePose pose;
+  poseNodes(morph->nodes, {&morph->animations[0]}, 0.0f, pose);
+  const std::vector<float> atStart = pose.weights[static_cast<std::size_t>(morph->objects[0].node)];
+  poseNodes(morph->nodes, {&morph->animations[0]}, 2.0f, pose);
+  EXPECT_NE(pose.weights[static_cast<std::size_t>(morph->objects[0].node)], atStart);
+}
+
 }  // namespace
 }  // namespace npr

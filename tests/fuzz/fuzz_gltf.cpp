@@ -45,6 +45,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (s->nodes[i].parent >= static_cast<int>(i)) __builtin_trap();
   for (const npr::SceneObject& o : s->objects)
     if (o.node >= static_cast<int>(s->nodes.size())) __builtin_trap();
+  for (const npr::SceneSkin& k : s->skins) {
+    if (k.joints.empty() || k.inverseBind.size() != k.joints.size()) __builtin_trap();
+    for (int j : k.joints)
+      if (j < 0 || j >= static_cast<int>(s->nodes.size())) __builtin_trap();
+  }
+  for (const npr::SceneObject& o : s->objects) {
+    const npr::MeshDeformation& d = o.mesh->deformation;
+    const std::size_t nv = o.mesh->positions.size();
+    if (o.skin >= static_cast<int>(s->skins.size()) || (o.skin >= 0 && !d.skinned())) __builtin_trap();
+    if (d.skinned() && (d.joints.size() != nv || d.weights.size() != nv)) __builtin_trap();
+    for (std::size_t t = 0; t < d.targets(); ++t)
+      if (d.targetPositions[t].size() != nv || d.targetNormals[t].size() != nv) __builtin_trap();
+  }
   std::vector<const npr::SceneAnimation*> all;
   for (const npr::SceneAnimation& a : s->animations) {
     if (a.channels.empty() || !(a.end >= a.start)) __builtin_trap();
