@@ -8,7 +8,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/animation/deformation.h"
 #include "renderer/mesh/scene_loader.h"
 #include "renderer/palette/palette.h"
 
@@ -70,13 +69,8 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       v.node = o.node;
       v.afterNode = o.afterNode;
       v.skin = o.skin;
-      if (!v.mesh->deformation.empty()) {
-        v.posed = std::make_shared<Mesh>(*v.mesh);
-        v.id = renderer.addDeformingModel(*v.mesh, *v.posed);
-        files_.back().deforms = true;
-      } else {
-        v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
-      }
+      v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
+      if (!v.mesh->deformation.empty()) files_.back().deforms = true;
       objects_.push_back(std::move(v));
     }
   }
@@ -150,8 +144,7 @@ void SceneObjects::deform(ViewerObject& o, const SceneFile& file, Renderer& rend
   }
   static const std::vector<float> none;
   const std::vector<float>& weights = o.node >= 0 && o.node < static_cast<int>(nodePose_.weights.size()) ? nodePose_.weights[static_cast<std::size_t>(o.node)] : none;
-  deformMesh(*o.mesh, jointMatrices_, weights, *o.posed);
-  renderer.modelGeometryChanged(o.id);
+  renderer.setModelDeformation(o.id, jointMatrices_, weights);
 }
 
 std::vector<SceneObjects::AnimationRef> SceneObjects::animations() const {
@@ -195,7 +188,7 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
     const std::vector<glm::mat4>& world = nodePose_.world;
     for (ViewerObject& o : objects_) {
       if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world.size())) continue;
-      if (o.posed) deform(o, file, renderer);
+      if (!o.mesh->deformation.empty()) deform(o, file, renderer);
       if (o.skin >= 0 || !moves[static_cast<std::size_t>(o.node)]) continue;
       const glm::mat4 placed = toViewer(f) * world[static_cast<std::size_t>(o.node)] * o.afterNode;
       // A pose that overflows (keys of 1e30 scaled by 1e30) is not drawn: the last one stays.

@@ -27,7 +27,6 @@ struct ViewerObject {
   int node = -1;           // its file's node (animated ones move it)
   glm::mat4 afterNode{1.0f};  // inFile = the node's world transform * afterNode (skinned: inFile = afterNode)
   int skin = -1;           // into its file's skins: placed by its joints
-  std::shared_ptr<Mesh> posed;  // a deforming object's posed copy of `mesh`, what the renderer draws
   glm::mat4 placed{1.0f};  // the mesh's space to the viewer's, as drawn now (posed)
   ModelId id = 0;
   bool visible = true;

@@ -79,16 +79,10 @@ void Renderer::clearModelPalette(ModelId id) {
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
 bool Renderer::setModelPose(ModelId id, const glm::mat4& transform) { return scene_.pose(id, transform); }
 
-ModelId Renderer::addDeformingModel(const Mesh& rest, const Mesh& posed, const glm::mat4& transform) {
-  const ModelId id = addModel(posed, transform);
-  if (Model* m = scene_.find(id)) m->setRestMesh(rest);
-  return id;
-}
-
-bool Renderer::modelGeometryChanged(ModelId id) {
+bool Renderer::setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
   Model* m = scene_.find(id);
   if (!m) return false;
-  m->geometryChanged(stats_);
+  m->deform(joints, weights, stats_);
   scene_.touch();
   return true;
 }

@@ -58,12 +58,10 @@ class Renderer {
   bool setModelTransform(ModelId id, const glm::mat4& transform);
   // An animation's move: as setModelTransform, but the ground stays where the layout put it.
   bool setModelPose(ModelId id, const glm::mat4& transform);
-  // A deforming model: it draws `posed` (a copy of `rest` that the caller deforms in place and
-  // then reports with modelGeometryChanged) and keeps what is attached to the surface from
-  // `rest`. Both must outlive the model.
-  ModelId addDeformingModel(const Mesh& rest, const Mesh& posed, const glm::mat4& transform = glm::mat4(1.0f));
-  // The posed mesh of model `id` was deformed in place (false: no such model).
-  bool modelGeometryChanged(ModelId id);
+  // Poses a model whose mesh deforms (Mesh::deformation): morph `weights` and skin `joints`
+  // (per joint, the mesh's rest space to its posed space; animation/deformation.h). False
+  // when there is no such model; a mesh that does not deform ignores it.
+  bool setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights);
   // A hidden model keeps everything derived from its mesh and is left out of every pass.
   bool setModelVisible(ModelId id, bool visible) { return scene_.setVisible(id, visible); }
   // The model's own palette, in place of the main one for its surfaces (every path; its

@@ -8,7 +8,8 @@
 
 namespace npr {
 
-void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed) {
+void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed,
+                const std::vector<glm::vec3>* restTangents, std::vector<glm::vec3>* posedTangents) {
   const MeshDeformation& d = rest.deformation;
   const std::size_t nv = rest.positions.size(), nf = rest.triangleCount();
   posed.positions.resize(nv);
@@ -20,12 +21,15 @@ void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const st
   for (std::size_t t = 0; t < d.targets() && t < weights.size(); ++t)
     if (weights[t] != 0.0f && std::isfinite(weights[t])) active.push_back(t);
   const bool skinned = d.skinned() && d.joints.size() == nv && d.weights.size() == nv && !joints.empty();
+  const bool tangents = restTangents && posedTangents && restTangents->size() == nv;
+  if (tangents) posedTangents->resize(nv);
   const int chunks = workerCount();
   std::vector<float> radius2(static_cast<std::size_t>(chunks), 0.0f);
   parallelChunks(nv, chunks, [&](std::size_t b, std::size_t e, int c) {
     float r2 = 0.0f;
     for (std::size_t i = b; i < e; ++i) {
       glm::vec3 p = rest.positions[i], n = rest.normals[i];
+      glm::vec3 tangent = tangents ? (*restTangents)[i] : glm::vec3(0.0f);
       for (std::size_t t : active) {
         p += weights[t] * d.targetPositions[t][i];
         n += weights[t] * d.targetNormals[t][i];
@@ -38,8 +42,10 @@ void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const st
           const glm::mat4 m = w.x * at(j.x) + w.y * at(j.y) + w.z * at(j.z) + w.w * at(j.w);
           p = glm::vec3(m * glm::vec4(p, 1.0f));
           n = glm::mat3(m) * n;
+          tangent = glm::mat3(m) * tangent;
         }
       }
+      if (tangents) (*posedTangents)[i] = tangent;
       const float len = glm::length(n);
       posed.positions[i] = p;
       posed.normals[i] = len > 0.0f && std::isfinite(len) ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);

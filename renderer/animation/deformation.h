@@ -18,6 +18,9 @@ namespace npr {
 // (whose copy `posed` is, arrays sized alike) deformed by morph `weights` (one per target;
 // missing ones zero) and, for a skinned mesh, `joints`: per skin joint, the mesh's rest space
 // to its posed space. Vertices whose weights are all zero keep their morphed rest position.
-void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed);
+// `restTangents` (per vertex, optional: the hatching direction field) are carried by the same
+// skin into `posedTangents`, so the strokes stay across the surface as it bends.
+void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed,
+                const std::vector<glm::vec3>* restTangents = nullptr, std::vector<glm::vec3>* posedTangents = nullptr);
 
 }  // namespace npr

@@ -20,6 +20,9 @@ struct FrameStats {
   double cpuToneMs = 0.0;      // the automatic tone range's estimate (palette/tone_range.h)
   int patternSamples = 0;      // samples the fit used (visible in both frames)
   double cpuFieldMs = 0.0;     // the hatching direction field, on the frame that computed it
+  // Per-mesh caches computed this frame (the direction field, the feature edges' adjacency,
+  // the strokes' seeds): a new mesh or setting's, never a new pose's (animation/deformation.h).
+  int meshCachesBuilt = 0;
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
   int shadowLayers = 0;        // shadow map layers in use (one per light, six for a point light among the casters)
   // Per-pixel surface buffers that a mesh pass writes beside its colour, sharing the bound

@@ -27,7 +27,10 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
                       FrameStats& stats) {
   if (!ls.objectSpace() || !mesh_) return okStatus();
   const auto t0 = std::chrono::steady_clock::now();
-  if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
+  if (!edges_) {
+    edges_ = std::make_unique<FeatureEdges>(*mesh_);
+    ++stats.meshCachesBuilt;
+  }
   if (!vao_) {
     vao_ = gl::createVertexArray();
     staticLines_ = gl::createBuffer();

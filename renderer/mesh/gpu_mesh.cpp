@@ -128,6 +128,10 @@ void GpuMesh::bindStreams(const GpuMesh& source) {
 
 void GpuMesh::uploadDirections(const std::vector<glm::vec3>& directions) {
   if (!vao_.id() || directions.size() != vertexCount_) return;
+  if (directions_.id()) {  // a posed mesh's field, again: the same buffer
+    gl::updateBuffer(directions_, directions.data(), directions.size() * sizeof(glm::vec3));
+    return;
+  }
   directions_ = staticBuffer(directions.data(), directions.size() * sizeof(glm::vec3));
   glBindVertexArray(vao_.id());
   floatAttribute(6, directions_, 3);

@@ -4,17 +4,33 @@
 #include <algorithm>
 #include <cmath>
 
+#include "renderer/animation/deformation.h"
 #include "renderer/mesh/mesh_subset.h"
 
 namespace npr {
 
+void Model::adopt(const Mesh& mesh) {
+  rest_ = &mesh;
+  posed_.reset();
+  poseJoints_.clear();
+  poseWeights_.clear();
+  posedDirections_.clear();
+  if (!mesh.deformation.empty() && !mesh.indices.empty()) {
+    // A copy whose positions and normals are rewritten in place: everything derived from the
+    // drawn mesh is derived once, from it, and only moves with the pose.
+    posed_ = std::make_unique<Mesh>(mesh);
+  }
+  mesh_ = posed_ ? posed_.get() : &mesh;
+}
+
 Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bool appearance)
     : mesh_(&mesh), rest_(&mesh), transform_(transform) {
+  adopt(mesh);
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
   strokes_.setMesh(mesh_);
   patterns_.setMesh(mesh_);
-  gpu_.upload(mesh);
+  gpu_.upload(*mesh_);
   stats.bufferUploads += 1;
   if (!appearance) return;
   materials_.upload(mesh);
@@ -22,9 +38,7 @@ Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bo
 }
 
 void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
-  mesh_ = &mesh;
-  rest_ = &mesh;
-  ++geometryVersion_;
+  adopt(mesh);
   transform_ = transform;
   field_.reset();
   occlusion_.reset();
@@ -33,13 +47,18 @@ void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stat
   lines_.setMesh(mesh_);
   strokes_.setMesh(mesh_);
   patterns_.setMesh(mesh_);
-  gpu_.upload(mesh);
+  gpu_.upload(*mesh_);
   materials_.upload(mesh);
   stats.bufferUploads += 3;
 }
 
-void Model::geometryChanged(FrameStats& stats) {
-  ++geometryVersion_;
+void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights, FrameStats& stats) {
+  if (!posed_) return;
+  poseJoints_ = joints;
+  poseWeights_ = weights;
+  const bool field = field_ && field_->directions.size() == rest_->positions.size();
+  deformMesh(*rest_, joints, weights, *posed_, field ? &field_->directions : nullptr, &posedDirections_);
+  if (field) gpu_.uploadDirections(posedDirections_);
   gpu_.updateGeometry(*mesh_);
   triangles_.geometryChanged();
   lines_.geometryChanged();
@@ -77,8 +96,15 @@ float Model::sceneRadius() const {
 const DirectionField& Model::directionField(FrameStats& stats) {
   if (!field_) {
     field_ = computeDirectionField(*rest_);
+    ++stats.meshCachesBuilt;
     stats.cpuFieldMs = field_->ms;
-    gpu_.uploadDirections(field_->directions);
+    if (posed_ && rest_->deformation.skinned() && !poseJoints_.empty()) {
+      // Computed on the rest mesh, drawn carried by the current pose.
+      deformMesh(*rest_, poseJoints_, poseWeights_, *posed_, &field_->directions, &posedDirections_);
+      gpu_.uploadDirections(posedDirections_);
+    } else {
+      gpu_.uploadDirections(field_->directions);
+    }
     for (auto& p : parts_) p->gpu.shareStreamsOf(gpu_);  // parts draw through the model's streams
     stats.bufferUploads += 1;
   }

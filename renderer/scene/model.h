@@ -39,15 +39,16 @@ class Model {
   // (opening one file after another keeps the allocations of the first).
   void reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats);
 
+  // The mesh drawn: for a mesh that deforms (skins, morph targets), the model's own posed copy.
   const Mesh& mesh() const { return *mesh_; }
-  // A deforming model draws a posed copy of its mesh (`mesh`, updated in place) and keeps what
-  // is attached to the surface from the rest mesh: the hatching direction field is computed
-  // on it. `rest` must outlive the model; by default the drawn mesh is its own rest.
-  void setRestMesh(const Mesh& rest) { rest_ = &rest; }
-  // The drawn mesh was deformed in place: its GPU copy, lighting, lines and parts follow;
-  // what is computed once per mesh (edges, direction field, materials) is kept.
-  void geometryChanged(FrameStats& stats);
-  unsigned geometryVersion() const { return geometryVersion_; }
+  // The mesh as given, in its rest pose: what is attached to the surface is computed on it
+  // (the hatching direction field) and carried by the deformation.
+  const Mesh& restMesh() const { return *rest_; }
+  // Poses a deforming mesh: morph `weights`, and `joints` (per skin joint, the mesh's rest space
+  // to its posed space). The GPU copy, lighting, lines, parts and the direction field follow;
+  // what is computed once per mesh (edges, the field itself, materials) is kept. Nothing
+  // happens for a mesh that does not deform.
+  void deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights, FrameStats& stats);
   // Model space to the scene's (world) space.
   const glm::mat4& transform() const { return transform_; }
   void setTransform(const glm::mat4& transform) { transform_ = transform; }
@@ -97,9 +98,14 @@ class Model {
  private:
   void uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats);
 
+  void adopt(const Mesh& mesh);  // mesh_ and rest_ for a new mesh (a posed copy when it deforms)
+
   const Mesh* mesh_;
   const Mesh* rest_;
-  unsigned geometryVersion_ = 0;
+  std::unique_ptr<Mesh> posed_;           // a deforming mesh's posed copy
+  std::vector<glm::mat4> poseJoints_;     // the pose last given (the field is carried by it)
+  std::vector<float> poseWeights_;
+  std::vector<glm::vec3> posedDirections_;
   glm::mat4 transform_;
   GpuMesh gpu_;
   GpuMaterials materials_;

@@ -71,6 +71,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   const bool withField = directions.size() == mesh_->positions.size();
   if (density != seededDensity_ || budget != seededBudget_ || withField != seededWithField_) {
     const StrokeSeeding seeding = seedStrokes(*mesh_, density, budget, directions);
+    ++stats.meshCachesBuilt;
     static_assert(sizeof(StrokeParticle) == 11 * sizeof(float), "the instance layout below reads 11 floats per stroke");
     gl::uploadBuffer(instances_, seeding.particles.data(), seeding.particles.size() * sizeof(StrokeParticle), GL_STATIC_DRAW);
     glBindVertexArray(vao_.id());

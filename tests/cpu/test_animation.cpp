@@ -147,7 +147,9 @@ TEST(Deformation, ASkinnedCylinderBendsAsLinearBlendSkinningSays) {
       const glm::vec3 n = rest.normals[i];
       EXPECT_LT(glm::length(posed.normals[i] - glm::vec3(-n.y, n.x, n.z)), 1e-5f);
     }
-    if (rest.positions[i].y < -0.7f) EXPECT_EQ(posed.positions[i], rest.positions[i]);
+    if (rest.positions[i].y < -0.7f) {
+      EXPECT_EQ(posed.positions[i], rest.positions[i]);
+    }
   }
   // Faces follow their vertices; the radius still bounds the surface.
   for (std::size_t f = 0; f < rest.triangleCount(); ++f) {
@@ -156,6 +158,19 @@ TEST(Deformation, ASkinnedCylinderBendsAsLinearBlendSkinningSays) {
     ASSERT_LT(glm::length(posed.faceCentroids[f] - c), 1e-5f);
   }
   for (const glm::vec3& p : posed.positions) EXPECT_LE(glm::length(p), posed.radius + 1e-5f);
+  // Tangents (the hatching direction field) are carried by the same skin: along y at rest,
+  // along -x on the head bent 90 degrees, unchanged at the foot.
+  const std::vector<glm::vec3> along(rest.positions.size(), glm::vec3(0.0f, 1.0f, 0.0f));
+  std::vector<glm::vec3> carried;
+  deformMesh(rest, test::bendJoints(90.0f), {}, posed, &along, &carried);
+  ASSERT_EQ(carried.size(), rest.positions.size());
+  for (std::size_t i = 0; i < rest.positions.size(); ++i) {
+    if (rest.positions[i].y > 0.5f) {
+      EXPECT_LT(glm::length(carried[i] - glm::vec3(-1.0f, 0.0f, 0.0f)), 1e-5f);
+    } else if (rest.positions[i].y < -0.5f) {
+      EXPECT_EQ(carried[i], along[i]);
+    }
+  }
 }
 
 TEST(Deformation, MorphTargetsBlendBetweenKnownShapes) {

@@ -2,7 +2,8 @@
 // puts it (the same picture as its mesh moved there), the nearest surface wins across models,
 // one model casts shadows and screen-space occlusion on another, each keeps its own caches
 // (a removed model takes only its own with it; unchanged frames do no work), and the anchored
-// pattern follows each model alone.
+// pattern follows each model alone. A deforming model draws its pose in every path exactly as a
+// static copy of that pose, without computing a per-mesh cache again.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,8 +12,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_env.h"
+#include "renderer/animation/deformation.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "support/analytic_surfaces.h"
+#include "support/skinned_cylinder.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -261,6 +264,48 @@ TEST_F(SceneFixture, EachModelIsDrawnWithItsOwnPaletteAndCanBeHidden) {
   }
   EXPECT_FALSE(r->setModelPalette(a + 100, test::greyRamp(4)));
   EXPECT_FALSE(r->setModelVisible(a + 100, false));
+}
+
+TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
+  const Mesh rest = test::skinnedCylinder(48, 40);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  Mesh copy = rest;  // the bent pose as a mesh that does not deform
+  deformMesh(rest, test::bendJoints(60.0f), {}, copy);
+  copy.deformation = MeshDeformation{};
+  for (const PathInfo& path : renderPaths()) {
+    if (!path.userSelectable) continue;
+    SCOPED_TRACE(path.name);
+    RenderSettings s;
+    s.path = path.id;
+    s.lines.silhouettes = true;
+    s.lines.creases = true;
+    s.orient.source = OrientSource::Light;
+    r->clearModels();
+    const ModelId id = r->addModel(rest);
+    (void)test::renderImage(*r, cam, s, kSize, kSize);  // at rest: every cache is built
+    // Bent 60 degrees: drawn exactly as the static copy of that pose is.
+    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(60.0f), {}));
+    const ImageRGBA8 bent = test::renderImage(*r, cam, s, kSize, kSize);
+    EXPECT_EQ(r->stats().meshCachesBuilt, 0);
+    r->clearModels();
+    (void)r->addModel(copy);
+    EXPECT_EQ(test::countDiffering(bent, test::renderImage(*r, cam, s, kSize, kSize)), 0) << "the posed model is not drawn as its pose";
+    // Strokes along the curvature: the field is computed once, on the rest pose, and carried by
+    // the skin; posing computes no per-mesh cache again.
+    s.orient.source = OrientSource::Curvature;
+    r->clearModels();
+    const ModelId curved = r->addModel(rest);
+    (void)test::renderImage(*r, cam, s, kSize, kSize);
+    const DirectionField* field = r->model(curved)->directionFieldIfComputed();
+    ASSERT_NE(field, nullptr);
+    for (float degrees : {30.0f, 60.0f, 90.0f}) {
+      ASSERT_TRUE(r->setModelDeformation(curved, test::bendJoints(degrees), {}));
+      (void)test::renderImage(*r, cam, s, kSize, kSize);
+      EXPECT_EQ(r->stats().meshCachesBuilt, 0);
+      EXPECT_EQ(r->model(curved)->directionFieldIfComputed(), field);
+    }
+  }
 }
 
 }  // namespace
