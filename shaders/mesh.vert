@@ -49,6 +49,15 @@ out vec2 vStrokeDirection;  // unit, on screen; zero: none
 
 #include "pattern_vertex.glsl"
 
+#ifdef PATTERN_REST
+// A deforming mesh's rest pose (GpuMesh): where the object-space pattern is read, so it stays
+// on the surface as the surface bends.
+layout(location = 8) in vec3 aRestPosition;
+layout(location = 9) in vec3 aRestNormal;
+out vec3 vRestPosition;
+out vec3 vRestNormal;
+#endif
+
 #ifdef GROUND_SHADOW_MAP
 out vec2 vGroundXZ;  // where the ground's shadow texture is read (lighting.glsl)
 #endif
@@ -74,6 +83,10 @@ void main() {
   setPatternCoordinate(gl_Position);
   vPosition = eye.xyz;
   vNormal = uNormalMatrix * aNormal;
+#ifdef PATTERN_REST
+  vRestPosition = aRestPosition;
+  vRestNormal = aRestNormal;
+#endif
 #ifdef GROUND_SHADOW_MAP
   vGroundXZ = aPosition.xz;
 #endif

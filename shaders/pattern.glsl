@@ -89,12 +89,20 @@ vec3 mappedCoordinate() {
 // From the eye-space position and normal every mesh pass interpolates (mesh.frag declares
 // them): no varyings of its own, which on the 871K mesh cost vertex work.
 uniform mat4 uEyeToObject;    // the view's inverse: rigid, so object units are eye units
+#ifdef PATTERN_REST
+in vec3 vRestPosition;        // a deforming mesh's rest pose (mesh.vert)
+in vec3 vRestNormal;
+#endif
 uniform float uPixelSize;     // object units per pixel at eye depth 1
 uniform float uPatternScale;  // pixels per texel
 // The coordinate in texels of level 0 and whether it is the fine octave's.
 vec2 objectCoordinate(out bool fine) {
   // Only axes within 0.15 of the nearest share: elsewhere one projection, unbroken.
-#ifdef PATTERN_FACE_NORMAL
+#if defined(PATTERN_REST)
+  // A deforming mesh: the rest pose's surface point and normal (mesh.vert passes them on), so
+  // the pattern stays on the surface as it bends.
+  vec3 n = abs(vRestNormal);
+#elif defined(PATTERN_FACE_NORMAL)
   // Passes that light per triangle or per vertex have no other use for the normal: the face's
   // own, from the position's screen derivatives, spares interpolating three values per vertex
   // (on the 871K mesh, most of what the object pattern cost them).
@@ -117,7 +125,11 @@ vec2 objectCoordinate(out bool fine) {
   int bits = floatBitsToInt(clamp(-vPosition.z * uPixelSize * uPatternScale, 1e-30, 1e30));
   float texels = intBitsToFloat(0x7E800000 - (bits & 0x7F800000));  // coarse texels per object unit
   float through = 2.0 - intBitsToFloat((bits & 0x007FFFFF) | 0x3F800000);
+#ifdef PATTERN_REST
+  vec3 p = vRestPosition;
+#else
   vec3 p = (uEyeToObject * vec4(vPosition, 1.0)).xyz;
+#endif
   // Dissolved in blocks of 8 fine texels: a stroke is broken at most every few pixels.
   ivec3 cell = ivec3(floor(p * (2.0 * texels / 8.0)));
   uint h = patternHash(cell.xy ^ ivec2(cell.z * 7919, cell.z * 104729));

@@ -20,6 +20,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
   if (p.pattern != PatternMapping::Screen) d.push_back(patternDefine(p.pattern));
   if (p.filtered) d.push_back("PATTERN_FILTERED");
+  if (p.patternRest && p.pattern == PatternMapping::Object) d.push_back("PATTERN_REST");
   if (p.patternPerVertex && mapsScreenPosition(p.pattern)) d.push_back("PATTERN_FROM_VERTEX");
   if (p.orientBins > 0) {
     d.push_back("ORIENTED");

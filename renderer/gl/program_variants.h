@@ -36,6 +36,7 @@ struct PaletteVariant {
   int orientBins = 0;            // lookups turned along the stroke angle in this many steps (0: never)
   bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
   bool patternPerVertex = false;  // an anchored or scaled pattern's coordinate interpolated from the vertices
+  bool patternRest = false;       // the object pattern read on a deforming mesh's rest pose (attributes 8-9)
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).

@@ -58,6 +58,8 @@ void GpuMesh::clear() {
   mapAverages_.reset();
   directions_.reset();
   occlusion_.reset();
+  restPositions_.reset();
+  restNormals_.reset();
   runs_.clear();
   shared_ = nullptr;
   triangleCount_ = 0;
@@ -70,6 +72,10 @@ void GpuMesh::upload(const Mesh& mesh) {
   vertexCount_ = mesh.positions.size();
   positions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
   normals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  if (!mesh.deformation.empty()) {  // uploaded at rest: kept as the rest pose
+    restPositions_ = staticBuffer(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+    restNormals_ = staticBuffer(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  }
   if (mesh.hasAppearance()) uploadAppearance(mesh);
   uploadIndices(mesh);
   vao_ = gl::createVertexArray();
@@ -121,6 +127,10 @@ void GpuMesh::bindStreams(const GpuMesh& source) {
   }
   if (source.directions_.id()) floatAttribute(6, source.directions_, 3);
   if (source.occlusion_.id()) floatAttribute(7, source.occlusion_, 1);
+  if (source.restPositions_.id()) {
+    floatAttribute(8, source.restPositions_, 3);
+    floatAttribute(9, source.restNormals_, 3);
+  }
   shared_ = &source == this ? nullptr : &source;
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
   glBindVertexArray(0);

@@ -1,6 +1,6 @@
 // A mesh on the GPU: positions and normals (attributes 0 and 1 of mesh.vert; with an
 // appearance also colours, texture coordinates, material indices and map averages, 2-5; the hatching
-// direction field, 6; baked ambient occlusion, 7), its index
+// direction field, 6; baked ambient occlusion, 7; a deforming mesh's rest pose, 8-9), its index
 // buffer, and the vertex array that binds them. Draws the whole mesh or a range of triangles
 // of another index buffer over the same vertices (the per-triangle paths' buckets).
 #pragma once
@@ -36,6 +36,9 @@ class GpuMesh {
   // `mesh` (the one uploaded, deformed since) has new positions and normals: they alone are
   // sent again, into the same buffers.
   void updateGeometry(const Mesh& mesh);
+  // Whether the mesh deforms: its rest pose is kept beside the drawn one (attributes 8 and 9 of
+  // mesh.vert's PATTERN_REST variant), uploaded once.
+  bool deforms() const { return restPositions_.id() != 0 || (shared_ && shared_->deforms()); }
   // The hatching direction field, one vector per vertex (attribute 6; orientation/
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);
@@ -65,6 +68,7 @@ class GpuMesh {
   // Points the vertex array at `source`'s streams (this mesh's own, or a part's model's).
   void bindStreams(const GpuMesh& source);
   gl::Buffer positions_, normals_, indices_, colours_, texcoords_, materials_, mapAverages_, directions_, occlusion_;
+  gl::Buffer restPositions_, restNormals_;
   std::vector<MaterialRun> runs_;
   const GpuMesh* shared_ = nullptr;  // a part's: whose vertex streams it draws through
   std::size_t vertexCount_ = 0;

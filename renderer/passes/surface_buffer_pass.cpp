@@ -66,7 +66,7 @@ Status SurfaceBufferPass::draw(FrameContext& f, const glm::ivec4& meshRect) {
   } else {
     gl::MeshProgram variant;
     variant.shading = gl::MeshShading::PatternCoordinate;
-    variant.palette = f.palette->variant(f.settings.match);
+    variant.palette = f.paletteVariant();
     variant.palette->orientBins = 0;
     variant.palette->filtered = false;
     st = drawMesh(f, variant, true);

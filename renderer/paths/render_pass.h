@@ -73,6 +73,7 @@ struct FrameContext {
   gl::PaletteVariant paletteVariant(const GpuPalette* p = nullptr) const {
     gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
+    v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
     return v;
   }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.

@@ -57,7 +57,7 @@ Status StencilPath::draw(FrameContext& f) {
   if (buffersFromMasks) {
     maskVariant.stroke = angleBuffer ? stroke : gl::StrokeSource::None;
     if (objectPattern) {
-      maskVariant.palette = f.palette->variant(s.match);
+      maskVariant.palette = f.paletteVariant();
       maskVariant.palette->orientBins = 0;
       maskVariant.palette->filtered = false;
     }

@@ -308,5 +308,106 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
   }
 }
 
+// The object pattern on a bending surface: each surface point keeps its texel as the skinned
+// cylinder bends 90 degrees (it is read at the rest pose's point, so by construction; this
+// measures it). A palette whose one layer spells each texel's index in its colour; surface
+// points are the mesh's vertices, followed through the bend from the geometry, read where they
+// project while visible (their pixel's eye depth theirs) and facing the camera, compared frame
+// to frame within one octave of the pattern. Screen-space hatching, for scale.
+TEST_F(SceneFixture, TheObjectPatternStaysOnABendingSurface) {
+  Palette coded;
+  PaletteEntry e;
+  auto spell = [](int size, std::uint8_t level, int step) {
+    ImageRGBA8 img{size, size, std::vector<std::uint8_t>(std::size_t(size) * size * 4)};
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        std::uint8_t* t = &img.pixels[(std::size_t(j) * size + i) * 4];
+        t[0] = std::uint8_t(i * step), t[1] = std::uint8_t(j * step), t[2] = level, t[3] = 255;
+      }
+    return img;
+  };
+  e.image = spell(64, 0, 4);
+  e.mips = {spell(32, 255, 8)};
+  coded.entries = {e};
+  ASSERT_TRUE(r->setPalette(coded));
+  const Mesh rest = test::skinnedCylinder(64, 60);
+  const ModelId id = r->addModel(rest);
+  const int w = 200, h = 200, frames = 16;
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  const float pixelSize = 2.0f / (cam.projection[1][1] * float(h));  // object units per pixel at depth 1
+  Mesh posed = rest;
+  for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil, RenderPath::Triangle}) {
+    double share[2] = {0.0, 0.0};
+    for (PatternSpace space : {PatternSpace::Screen, PatternSpace::Object}) {
+      RenderSettings s;
+      s.path = path;
+      s.pattern = space;
+      std::vector<glm::ivec3> before(rest.positions.size(), glm::ivec3(-1));
+      std::vector<int> octaveBefore(rest.positions.size(), 0);
+      int compared = 0, changed = 0;
+      double slidTexels = 0.0;
+      for (int f = 0; f <= frames; ++f) {
+        const float degrees = 90.0f * float(f) / float(frames);
+        ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(degrees), {}));
+        deformMesh(rest, test::bendJoints(degrees), {}, posed);
+        const ImageRGBA8 img = test::renderImage(*r, cam, s, w, h);
+        const ImageRGBA32F eye = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+        for (std::size_t v = 0; v < rest.positions.size(); ++v) {
+          const glm::vec4 pe = cam.view * glm::vec4(posed.positions[v], 1.0f);
+          const glm::vec4 c = cam.projection * pe;
+          const int x = int(std::floor((c.x / c.w * 0.5f + 0.5f) * w)), y = int(std::floor((c.y / c.w * 0.5f + 0.5f) * h));
+          glm::ivec3 code(-1);
+          // The octave the point's depth gives (texels 2^k object units wide; pattern.glsl):
+          // compared only within one, as crossing one changes every texel by design.
+          int octave = 0;
+          std::frexp(-pe.z * pixelSize, &octave);
+          // Seen from the front (at grazing angles a pixel's rounding spans many texels).
+          const glm::vec3 ne = glm::normalize(glm::mat3(cam.view) * posed.normals[v]);
+          const bool facing = glm::dot(ne, -glm::normalize(glm::vec3(pe))) > 0.5f;
+          if (facing && x >= 1 && y >= 1 && x < w - 1 && y < h - 1) {
+            const float* g = &eye.pixels[(std::size_t(y) * w + std::size_t(x)) * 4];
+            if (g[3] > 0.0f && std::abs(g[2] - pe.z) < 0.02f) {
+              const std::uint8_t* t = &img.pixels[(std::size_t(h - 1 - y) * w + std::size_t(x)) * 4];
+              code = glm::ivec3(t[0], t[1], t[2]);
+              // Compared with the last frame's texel where both saw it at one octave; within a
+              // pixel of where it projects (the projection rounds).
+              if (before[v].x >= 0 && before[v].z == code.z && octaveBefore[v] == octave) {
+                bool found = false;
+                for (int dy = -1; dy <= 1 && !found; ++dy)
+                  for (int dx = -1; dx <= 1 && !found; ++dx) {
+                    const std::uint8_t* n = &img.pixels[(std::size_t(h - 1 - y - dy) * w + std::size_t(x + dx)) * 4];
+                    found = n[0] == before[v].x && n[1] == before[v].y;
+                  }
+                ++compared;
+                changed += !found;
+                if (!found) {
+                  // How far, in texels (a level's 64 or 32 wrap around).
+                  const int step = code.z ? 8 : 4, period = code.z ? 32 : 64;
+                  const auto apart = [&](int a, int b) {
+                    const int d = std::abs(a - b) / step;
+                    return std::min(d, period - d);
+                  };
+                  slidTexels += std::hypot(apart(code.x, before[v].x), apart(code.y, before[v].y));
+                }
+              }
+            }
+          }
+          before[v] = code;
+          octaveBefore[v] = octave;
+        }
+      }
+      share[space == PatternSpace::Object] = compared ? double(changed) / compared : 1.0;
+      // Texels are 1 to 2 pixels wide: 1.5 on average.
+      std::printf("bending 90 degrees over %d frames, %s, %s pattern: %.4f of the visible surface points changed texel per frame, "
+                  "slide %.3f px per point per frame (%d compared)\n",
+                  frames, pathInfo(path).name, patternSpaceName(space), share[space == PatternSpace::Object],
+                  compared ? 1.5 * slidTexels / compared : 0.0, compared);
+      ASSERT_GT(compared, 1000);
+    }
+    EXPECT_LT(share[1], 0.01) << pathInfo(path).name;
+    EXPECT_LT(share[1] * 10.0, share[0]) << pathInfo(path).name;
+  }
+}
+
 }  // namespace
 }  // namespace npr
