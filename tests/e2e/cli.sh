@@ -232,6 +232,15 @@ expect 0 "--animation none" -- "$viewer" --headless --size 96x72 "$P" --frames 2
 cmp -s "$tmp/rest/frame-0000.png" "$tmp/rest/frame-0001.png" || { echo "FAIL: --animation none moves"; fail=1; }
 expect 0 "--time" -- "$viewer" --headless --size 96x72 "$P" --time 0.25 --screenshot "$tmp/quarter.png"
 cmp -s "$tmp/quarter.png" "$tmp/anim/frame-0001.png" || { echo "FAIL: --time 0.25 is not the sequence's second frame at --fps 4"; fail=1; }
+# A skinned mesh moves in every path, with no GL error (the run fails on one).
+for path in stencil triangle vertex pixel smooth; do
+  expect 0 "skinned, $path" -- "$viewer" --headless --size 96x96 "$src/models/bending_tube.gltf" --path $path --pattern object --lines silhouette \
+    --frames 2 --fps 2 --save-frames "$tmp/tube-$path"
+  cmp -s "$tmp/tube-$path/frame-0000.png" "$tmp/tube-$path/frame-0001.png" && { echo "FAIL: the skinned tube does not bend ($path)"; fail=1; }
+done
+expect 0 "--svg of a pose" -- "$viewer" --headless --size 96x96 "$src/models/bending_tube.gltf" --time 1 --lines silhouette --svg "$tmp/bent.svg"
+expect 0 "--svg at rest" -- "$viewer" --headless --size 96x96 "$src/models/bending_tube.gltf" --time 0 --lines silhouette --svg "$tmp/straight.svg"
+cmp -s "$tmp/bent.svg" "$tmp/straight.svg" && { echo "FAIL: the SVG does not show the pose"; fail=1; }
 expect 1 "--animation of no such animation" -- "$viewer" --headless --size 64x64 "$P" --animation walk
 grep -q "no animation named 'walk' (the scene's: swing and bounce" "$tmp/err" || { echo "FAIL: --animation message: $(cat "$tmp/err")"; fail=1; }
 expect 2 "negative --time" -- "$viewer" --headless "$P" --time -1

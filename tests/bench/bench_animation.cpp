@@ -1,0 +1,121 @@
+// A deforming mesh against the same mesh still, per path: a torus skinned to two joints and
+// bent a little further every frame, and the same torus with one morph target whose weight
+// changes every frame, against it static (headless, interleaved: one frame of each in turn).
+// The pose is made on the CPU (animation/deformation.h) before each frame; its time is reported
+// beside the frame's and counted in the ratio. The light stays, so a static mesh's per-triangle
+// paths reuse their lighting while a deforming one's light every triangle every frame: their
+// ratio is the whole per-triangle cost of animation.
+// Run: build/tests/bench/bench_animation [--size WxH] [--frames N] [--quick]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/benchmark/interleaved_timing.h"
+#include "bench_common.h"
+#include "renderer/animation/deformation.h"
+#include "renderer/core/heap_policy.h"
+#include "renderer/gl/headless_context.h"
+#include "renderer/gl/offscreen_target.h"
+#include "renderer/mesh/mesh_generators.h"
+#include "renderer/renderer.h"
+
+using namespace npr;
+
+namespace {
+
+// Two joints across x: the right half turns about z around the middle.
+Mesh skinned(Mesh m) {
+  m.deformation.joints.assign(m.positions.size(), glm::u16vec4(0, 1, 0, 0));
+  for (const glm::vec3& p : m.positions) {
+    const float w = std::clamp((p.x + 0.2f) / 0.4f, 0.0f, 1.0f);
+    m.deformation.weights.push_back(glm::vec4(1.0f - w, w, 0.0f, 0.0f));
+  }
+  return m;
+}
+
+// One target: every vertex pushed out along its normal by a tenth of the radius.
+Mesh morphing(Mesh m) {
+  m.deformation.targetPositions.assign(1, {});
+  m.deformation.targetNormals.assign(1, std::vector<glm::vec3>(m.positions.size(), glm::vec3(0.0f)));
+  for (const glm::vec3& n : m.normals) m.deformation.targetPositions[0].push_back(0.1f * n);
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  npr::keepFreedHeapMemory();
+  std::optional<bench::ImageBenchArgs> args = bench::parseImageBenchArgs(argc, argv, "bench_animation");
+  if (!args) return 2;
+  auto gpu = gpuRequestFromEnvironment();
+  if (!gpu) {
+    std::fprintf(stderr, "%s\n", gpu.error().c_str());
+    return 2;
+  }
+  auto ctx = HeadlessContext::create(false, *gpu);
+  if (!ctx) {
+    std::fprintf(stderr, "%s\n", ctx.error().c_str());
+    return 1;
+  }
+  auto target = OffscreenTarget::create(args->width, args->height);
+  if (!target) return 1;
+  auto palette = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
+  if (!palette) return 1;
+  std::printf("# bench_animation: %s, %dx%d, %d frames, median ms (interleaved); deform: the CPU pose before the frame\n",
+              (*ctx)->info().line().c_str(), args->width, args->height, args->frames);
+  std::printf("%-9s %-9s %9s %9s %9s %9s %9s %9s %8s %8s\n", "vertices", "path", "static", "skinned", "deform", "morphing", "deform",
+              "", "skin x", "morph x");
+  const std::vector<RenderPath> paths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth};
+  // Tori of about 100K and 871K vertices.
+  const std::vector<int> sides = args->quick ? std::vector<int>{100} : std::vector<int>{317, 933};
+  for (int side : sides) {
+    const Mesh still = torus(side, side);
+    const Mesh skin = skinned(still), morph = morphing(still);
+    auto rs = Renderer::create(), rk = Renderer::create(), rm = Renderer::create();
+    if (!rs || !rk || !rm) return 1;
+    for (Renderer* r : {rs->get(), rk->get(), rm->get()}) {
+      applyDefaultMaterial(r->lighting());
+      if (!r->setPalette(*palette)) return 1;
+    }
+    (*rs)->addModel(still);
+    const ModelId k = (*rk)->addModel(skin);
+    const ModelId m = (*rm)->addModel(morph);
+    OrbitCamera cam(20.0f, 25.0f, 3.0f);
+    cam.frame(1.0f);
+    const CameraMatrices matrices = cam.matrices(float(args->width) / float(args->height));
+    std::vector<std::vector<double>> deformMs(3 * paths.size());
+    int failed = 0, call = 0;
+    const std::vector<FrameTiming> t = timeInterleaved(**rs, *target, 3 * paths.size(), args->frames, 2,
+        [&](std::size_t config, int round) {
+          RenderSettings s;
+          s.path = paths[config / 3];
+          Renderer* r = config % 3 == 0 ? rs->get() : config % 3 == 1 ? rk->get() : rm->get();
+          const float phase = 0.05f * float(call++);
+          const auto t0 = std::chrono::steady_clock::now();
+          if (config % 3 == 1) {
+            const std::vector<glm::mat4> joints = {glm::mat4(1.0f), glm::rotate(glm::mat4(1.0f), 0.5f * std::sin(phase), glm::vec3(0, 0, 1))};
+            if (!r->setModelDeformation(k, joints, {})) ++failed;
+          } else if (config % 3 == 2) {
+            if (!r->setModelDeformation(m, {}, {0.5f + 0.5f * std::sin(phase)})) ++failed;
+          }
+          if (round >= 0) deformMs[config].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+          return TimedFrame{matrices, s, r};
+        }, failed);
+    if (failed) {
+      std::fprintf(stderr, "bench_animation: %d frame(s) failed\n", failed);
+      return 1;
+    }
+    for (std::size_t p = 0; p < paths.size(); ++p) {
+      const double base = t[3 * p].medianMs, sk = t[3 * p + 1].medianMs, mo = t[3 * p + 2].medianMs;
+      const double dk = median(deformMs[3 * p + 1]), dm = median(deformMs[3 * p + 2]);
+      std::printf("%-9zu %-9s %9.2f %9.2f %9.2f %9.2f %9.2f %9s %7.2fx %7.2fx\n", still.positions.size(), renderPathName(paths[p]), base, sk, dk, mo, dm, "",
+                  (sk + dk) / base, (mo + dm) / base);
+    }
+    std::fflush(stdout);
+  }
+  return 0;
+}
