@@ -62,6 +62,7 @@ void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float
   gpu_.updateGeometry(*mesh_);
   triangles_.geometryChanged();
   lines_.geometryChanged();
+  strokes_.geometryChanged();
   stats.bufferUploads += 1;
   // Parts hold copies of the vertices and their own faces' centroids and normals.
   for (auto& p : parts_) {
@@ -109,6 +110,11 @@ const DirectionField& Model::directionField(FrameStats& stats) {
     stats.bufferUploads += 1;
   }
   return *field_;
+}
+
+const std::vector<glm::vec3>& Model::surfaceDirections(FrameStats& stats) {
+  const DirectionField& f = directionField(stats);
+  return posed_ && posedDirections_.size() == f.directions.size() ? posedDirections_ : f.directions;
 }
 
 Status Model::startOcclusionBake() {

@@ -73,6 +73,8 @@ class Model {
   // The hatching direction field: computed and uploaded (to the parts too) the first time.
   const DirectionField& directionField(FrameStats& stats);
   const DirectionField* directionFieldIfComputed() const { return field_ ? &*field_ : nullptr; }
+  // The field's directions on the mesh as drawn: carried by the pose when the mesh deforms.
+  const std::vector<glm::vec3>& surfaceDirections(FrameStats& stats);
   // The occlusion bake: started the first time, advanced by `step`; uploaded when done.
   OcclusionBake* occlusionBake() { return occlusion_.get(); }
   const OcclusionBake* occlusionBake() const { return occlusion_.get(); }

@@ -44,6 +44,9 @@ void BrushStrokePass::setMesh(const Mesh* mesh) {
   seededDensity_ = -1.0f;
   seededBudget_ = -1;
   count_ = 0;
+  particles_.clear();
+  anchors_.clear();
+  moved_ = false;
 }
 
 Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings& st, const LightingState& lighting, const GpuPalette& palette,
@@ -86,12 +89,21 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
       glVertexAttribDivisor(a, 1);
     }
     count_ = seeding.particles.size();
+    particles_ = seeding.particles;
+    anchors_ = seeding.anchors;
+    moved_ = false;
     seedMs_ = seeding.ms;
     seededDensity_ = density;
     seededBudget_ = budget;
     seededWithField_ = withField;
     ++stats.bufferUploads;
   }
+  if (moved_ && count_ > 0) {
+    placeStrokes(*mesh_, withField ? directions : std::vector<glm::vec3>{}, anchors_, particles_);
+    gl::updateBuffer(instances_, particles_.data(), particles_.size() * sizeof(StrokeParticle));
+    ++stats.bufferUploads;
+  }
+  moved_ = false;
   if (count_ == 0) return okStatus();
 
   const gl::PaletteVariant pv = palette.matchingVariant(match);

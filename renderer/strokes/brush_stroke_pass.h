@@ -27,6 +27,9 @@ class BrushStrokePass {
  public:
   // Forgets the previous mesh's strokes (seeded again on the next draw).
   void setMesh(const Mesh* mesh);
+  // The mesh deformed in place: the strokes are put back on it where they were seeded (their
+  // triangle and barycentric place), not seeded again.
+  void geometryChanged() { moved_ = true; }
   // `directions`: the mesh's direction field (one per vertex) or empty. Seeds first when the
   // mesh, density or budget changed since the last seeding.
   [[nodiscard]] Status draw(const CameraMatrices& camera, const StrokeSettings& strokes, const LightingState& lighting,
@@ -37,6 +40,9 @@ class BrushStrokePass {
 
  private:
   const Mesh* mesh_ = nullptr;
+  std::vector<StrokeParticle> particles_;  // as uploaded, with where each sits
+  std::vector<StrokeAnchor> anchors_;
+  bool moved_ = false;  // the mesh deformed since the particles were placed
   float seededDensity_ = -1.0f;
   int seededBudget_ = -1;
   bool seededWithField_ = false;

@@ -14,7 +14,12 @@ namespace {
 
 struct Candidate {
   glm::vec3 position, normal, direction;
+  StrokeAnchor anchor;
 };
+
+// The particle's place on the surface at (face, u, v): what seeding and re-placing share.
+void placeAt(const Mesh& mesh, const std::vector<glm::vec3>& directions, const StrokeAnchor& a, glm::vec3& position, glm::vec3& normal,
+             glm::vec3& direction);
 
 // Cells of a uniform grid, hashed: the accepted points near a candidate.
 class PointGrid {
@@ -52,6 +57,33 @@ glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
 
 }  // namespace
 
+namespace {
+void placeAt(const Mesh& mesh, const std::vector<glm::vec3>& directions, const StrokeAnchor& a, glm::vec3& position, glm::vec3& normal,
+             glm::vec3& direction) {
+  const float u = a.u, v = a.v, w = 1.0f - u - v;
+  const std::uint32_t i0 = mesh.indices[3 * a.face], i1 = mesh.indices[3 * a.face + 1], i2 = mesh.indices[3 * a.face + 2];
+  position = w * mesh.positions[i0] + u * mesh.positions[i1] + v * mesh.positions[i2];
+  const glm::vec3 faceNormal = glm::cross(mesh.positions[i1] - mesh.positions[i0], mesh.positions[i2] - mesh.positions[i0]);
+  normal = unitOr(w * mesh.normals[i0] + u * mesh.normals[i1] + v * mesh.normals[i2], unitOr(faceNormal, glm::vec3(0, 0, 1)));
+  direction = glm::vec3(0.0f);
+  if (directions.size() == mesh.positions.size()) {
+    // The nearest corner's direction: a cross field's neighbours may disagree in sign, so
+    // directions are not averaged.
+    const std::uint32_t nearest = w >= u && w >= v ? i0 : (u >= v ? i1 : i2);
+    const glm::vec3 d = directions[nearest];
+    direction = unitOr(d - normal * glm::dot(d, normal), glm::vec3(0.0f));
+  }
+}
+}  // namespace
+
+void placeStrokes(const Mesh& mesh, const std::vector<glm::vec3>& directions, const std::vector<StrokeAnchor>& anchors,
+                  std::vector<StrokeParticle>& particles) {
+  for (std::size_t i = 0; i < particles.size() && i < anchors.size(); ++i) {
+    if (3 * std::size_t(anchors[i].face) + 2 >= mesh.indices.size()) continue;
+    placeAt(mesh, directions, anchors[i], particles[i].position, particles[i].normal, particles[i].direction);
+  }
+}
+
 StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std::vector<glm::vec3>& directions) {
   const auto t0 = std::chrono::steady_clock::now();
   StrokeSeeding out;
@@ -84,19 +116,8 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
     const std::size_t tri = std::min(t, triangles - 1);
     float u = unit(rng), v = unit(rng);
     if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-    const float w = 1.0f - u - v;
-    const std::uint32_t i0 = mesh.indices[3 * tri], i1 = mesh.indices[3 * tri + 1], i2 = mesh.indices[3 * tri + 2];
-    cand.position = w * mesh.positions[i0] + u * mesh.positions[i1] + v * mesh.positions[i2];
-    const glm::vec3 faceNormal = glm::cross(mesh.positions[i1] - mesh.positions[i0], mesh.positions[i2] - mesh.positions[i0]);
-    cand.normal = unitOr(w * mesh.normals[i0] + u * mesh.normals[i1] + v * mesh.normals[i2], unitOr(faceNormal, glm::vec3(0, 0, 1)));
-    cand.direction = glm::vec3(0.0f);
-    if (haveDirections) {
-      // The nearest corner's direction: a cross field's neighbours may disagree in sign, so
-      // directions are not averaged.
-      const std::uint32_t nearest = w >= u && w >= v ? i0 : (u >= v ? i1 : i2);
-      const glm::vec3 d = directions[nearest];
-      cand.direction = unitOr(d - cand.normal * glm::dot(d, cand.normal), glm::vec3(0.0f));
-    }
+    cand.anchor = {static_cast<std::uint32_t>(tri), u, v};
+    placeAt(mesh, haveDirections ? directions : std::vector<glm::vec3>{}, cand.anchor, cand.position, cand.normal, cand.direction);
   }
   PointGrid grid(radius * 2.0f);
   const float passRadius[] = {2.0f * radius, std::sqrt(2.0f) * radius, radius, radius / std::sqrt(2.0f), 0.0f};
@@ -108,6 +129,7 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
       grid.add(candidates[i].position);
       const Candidate& c = candidates[i];
       out.particles.push_back({c.position, c.normal, c.direction, 0.0f, unit(rng)});
+      out.anchors.push_back(c.anchor);
     }
   // Ranks in the order taken: coarse passes first, random within a pass (the candidates are),
   // so the strokes below any rank k are a fraction k of all and spread evenly.

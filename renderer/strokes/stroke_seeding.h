@@ -23,8 +23,16 @@ struct StrokeParticle {
   float seed;           // in [0, 1): size and angle jitter
 };
 
+// Where a particle sits on the surface: its triangle and barycentric (u, v) of its second and
+// third corners, so a deforming mesh carries it (placeStrokes).
+struct StrokeAnchor {
+  std::uint32_t face = 0;
+  float u = 0.0f, v = 0.0f;
+};
+
 struct StrokeSeeding {
   std::vector<StrokeParticle> particles;
+  std::vector<StrokeAnchor> anchors;  // one per particle
   float area = 0;  // the mesh's surface area
   double ms = 0;
 };
@@ -33,5 +41,9 @@ struct StrokeSeeding {
 // `budget`. `directions`: one per vertex (orientation/direction_field.h) or empty. Never NaN;
 // zero-area and degenerate triangles get no strokes. Deterministic for a given mesh.
 StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std::vector<glm::vec3>& directions);
+// Each particle put back on `mesh` (the seeded mesh, deformed since) at its anchor: position,
+// normal and direction as seeding makes them; rank and seed kept.
+void placeStrokes(const Mesh& mesh, const std::vector<glm::vec3>& directions, const std::vector<StrokeAnchor>& anchors,
+                  std::vector<StrokeParticle>& particles);
 
 }  // namespace npr

@@ -107,5 +107,26 @@ TEST(StrokeSeeding, DegenerateMeshesGetNoStrokesAndNoNaN) {
   }
 }
 
+TEST(StrokeSeeding, StrokesRideTheirTrianglesWhenTheMeshDeforms) {
+  const Mesh rest = icosphere(3);
+  const StrokeSeeding seeded = seedStrokes(rest, 40.0f, 5000, {});
+  ASSERT_EQ(seeded.anchors.size(), seeded.particles.size());
+  ASSERT_GT(seeded.particles.size(), 100u);
+  // Put back on the same mesh: where seeding put them.
+  std::vector<StrokeParticle> again = seeded.particles;
+  placeStrokes(rest, {}, seeded.anchors, again);
+  for (std::size_t i = 0; i < again.size(); ++i) ASSERT_LT(glm::length(again[i].position - seeded.particles[i].position), 1e-6f);
+  // On the mesh stretched along y and moved: each stroke stretched and moved with its
+  // triangle, its rank and seed kept.
+  Mesh moved = rest;
+  for (glm::vec3& p : moved.positions) p = p * glm::vec3(1.0f, 2.0f, 1.0f) + glm::vec3(3.0f, 0.0f, 0.0f);
+  placeStrokes(moved, {}, seeded.anchors, again);
+  for (std::size_t i = 0; i < again.size(); ++i) {
+    const glm::vec3 want = seeded.particles[i].position * glm::vec3(1.0f, 2.0f, 1.0f) + glm::vec3(3.0f, 0.0f, 0.0f);
+    ASSERT_LT(glm::length(again[i].position - want), 1e-5f) << i;
+    ASSERT_EQ(again[i].rank, seeded.particles[i].rank);
+  }
+}
+
 }  // namespace
 }  // namespace npr

@@ -292,8 +292,10 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
     (void)r->addModel(copy);
     EXPECT_EQ(test::countDiffering(bent, test::renderImage(*r, cam, s, kSize, kSize)), 0) << "the posed model is not drawn as its pose";
     // Strokes along the curvature: the field is computed once, on the rest pose, and carried by
-    // the skin; posing computes no per-mesh cache again.
+    // the skin; the painterly strokes are put back where they were seeded; posing computes no
+    // per-mesh cache again.
     s.orient.source = OrientSource::Curvature;
+    s.strokes.on = true;
     r->clearModels();
     const ModelId curved = r->addModel(rest);
     (void)test::renderImage(*r, cam, s, kSize, kSize);

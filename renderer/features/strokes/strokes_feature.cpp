@@ -17,7 +17,7 @@ class StrokesFeature final : public Feature {
     f.scene.forEach([&](Model& m) {
       if (result)
         result = m.strokes().draw(m.placed(f.camera), f.settings.strokes, f.lighting, *f.palette, f.settings.match,
-                                  m.directionField(f.stats).directions, f.settings.tuning.strokeFade, f.viewport, f.programs, f.stats);
+                                  m.surfaceDirections(f.stats), f.settings.tuning.strokeFade, f.viewport, f.programs, f.stats);
     });
     return result;
   }
