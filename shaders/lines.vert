@@ -11,12 +11,15 @@ layout(location = 2) in float aKind;
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
 uniform float uWidth;      // pixels
-uniform vec3 uColours[3];  // silhouette, crease, boundary
+uniform vec3 uColours[4];  // silhouette, crease, boundary, material
 uniform float uFalloffDepth;
 
 out vec3 vColour;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
+#ifdef DASHED
+out float vDash;           // pixels along the line from its start, for the dashes
+#endif
 #ifdef SKETCHY
 out float vAlong;          // pixels from the stroke's start (its cap included)
 flat out float vLength;    // the stroke's length in pixels
@@ -69,6 +72,9 @@ void main() {
   vec4 p = end ? p1 : p0;
   vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
   vAcross = side * vHalfWidth;
+#ifdef DASHED
+  vDash = end ? len + 0.5 * width : -0.5 * width;
+#endif
 #ifdef SKETCHY
   vLength = len + width;
   vAlong = end ? vLength : 0.0;

@@ -342,18 +342,18 @@ std::vector<Setting> buildTable() {
   // --- lines
   {
     Setting k = base("lines", "lines", "lines", "Feature lines: none, or kinds separated by commas", K::Kinds);
-    k.choices = {"silhouette", "crease", "boundary", "image", "hardware", "rim"};
+    k.choices = {"silhouette", "crease", "boundary", "material", "image", "hardware", "rim"};
     k.format = [](const Look& l) {
       const LineSettings& s = l.render.lines;
       std::string out;
-      const bool on[] = {s.silhouettes, s.creases, s.boundaries, s.imageSpace, s.hardware, s.rim};
-      const char* names[] = {"silhouette", "crease", "boundary", "image", "hardware", "rim"};
-      for (int i = 0; i < 6; ++i)
+      const bool on[] = {s.silhouettes, s.creases, s.boundaries, s.materials, s.imageSpace, s.hardware, s.rim};
+      const char* names[] = {"silhouette", "crease", "boundary", "material", "image", "hardware", "rim"};
+      for (int i = 0; i < 7; ++i)
         if (on[i]) out += (out.empty() ? "" : ",") + std::string(names[i]);
       return out.empty() ? std::string("none") : out;
     };
     k.parse = [](const std::string& v, Look& l) -> Status {
-      if (!parseLineKinds(v, l.render.lines)) return why("none, or silhouette, crease, boundary, image, hardware, rim separated by commas");
+      if (!parseLineKinds(v, l.render.lines)) return why("none, or silhouette, crease, boundary, material, image, hardware, rim separated by commas");
       return okStatus();
     };
     t.push_back(k);
@@ -362,6 +362,8 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("crease-angle", "crease angle", "lines", "Dihedral angle above which an edge is a crease, degrees", 0.0, 180.0,
                        [](Look& l) -> float& { return l.render.lines.creaseAngle; }));
   t.push_back(boolRow("sketchy", "sketchy", "lines", "Draw each line as a few jittered strokes", [](Look& l) -> bool& { return l.render.lines.sketchy; }));
+  t.push_back(boolRow("hidden-lines", "hidden lines", "lines", "Also draw the hidden parts of the silhouettes, creases, boundaries and material lines, dashed",
+                      [](Look& l) -> bool& { return l.render.lines.hidden; }));
   t.push_back(boolRow("line-falloff", "depth falloff", "lines", "Thinner lines with distance", [](Look& l) -> bool& { return l.render.lines.depthFalloff; }));
   t.push_back(floatRow("edge-threshold", "edge threshold", "lines", "Image-space edges: the Sobel threshold on depth and normals", 0.01, 4.0,
                        [](Look& l) -> float& { return l.render.lines.imageThreshold; }, true));
@@ -378,7 +380,8 @@ std::vector<Setting> buildTable() {
   for (auto [key, label, help, ref] : std::vector<std::tuple<const char*, const char*, const char*, Ref<glm::vec3>>>{
            {"silhouette-colour", "silhouette colour", "Silhouettes' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.silhouetteColour; }},
            {"crease-colour", "crease colour", "Creases' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.creaseColour; }},
-           {"boundary-colour", "boundary colour", "Boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.boundaryColour; }}})
+           {"boundary-colour", "boundary colour", "Boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.boundaryColour; }},
+           {"material-colour", "material line colour", "Material boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.materialColour; }}})
     t.push_back(vectorRow(key, label, "lines", help, K::Colour, ref));
   // --- depth cue
   t.push_back(boolRow("depth-cue", "depth cue", "depth-cue", "Tone and lines fade toward the paper with distance through the scene",

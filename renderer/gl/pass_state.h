@@ -88,6 +88,14 @@ inline constexpr PassState kLines = [] {
   s.depthFunc = GL_LEQUAL;
   return s;
 }();
+// Hidden lines: drawn only where the surface is in front of them (the lines are pulled towards
+// the eye, so a visible line fails this test), blended, writing no depth.
+inline constexpr PassState kHiddenLines = [] {
+  PassState s;
+  s.depthTest = s.blend = true;
+  s.depthFunc = GL_GREATER;
+  return s;
+}();
 // Hardware outlines and the charcoal rim: opaque, depth-tested LEQUAL against the front faces
 // (only what sticks out past them shows), writing no depth.
 inline constexpr PassState kOutline = [] {

@@ -109,6 +109,7 @@ struct SourceOf {
     ProgramSource s{"lines.vert", "lines.frag", {}};
     if (l.sketchy) s.defines.push_back("SKETCHY");
     if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
+    if (l.dashed) s.defines.push_back("DASHED");
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

@@ -41,6 +41,7 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
   std::unordered_set<FaceKey, FaceHash> seen;
   seen.reserve(m.triangleCount());
   std::vector<std::array<std::uint32_t, 3>> refused;
+  const bool materials = m.faceMaterials.size() == m.triangleCount();
   auto& errlog = omerr();
   errlog.disable();
   for (size_t t = 0; t < m.triangleCount(); ++t) {
@@ -53,6 +54,7 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
       continue;
     }
     if (!welded.add_face(vh[f[0]], vh[f[1]], vh[f[2]]).is_valid()) refused.push_back(f);
+    else if (materials) faceMaterial_.push_back(m.faceMaterials[t]);
   }
   errlog.enable();
 
@@ -125,6 +127,10 @@ const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegre
   }
   for (size_t e = 0; e < boundary_.size() / 2; ++e)
     static_.push_back({positions_[boundary_[e * 2]], positions_[boundary_[e * 2 + 1]], float(EdgeKind::Boundary)});
+  if (faceMaterial_.size() == faceNormals_.size())
+    for (size_t e = 0; e < manifoldFaces_.size() / 2; ++e)
+      if (faceMaterial_[manifoldFaces_[e * 2]] != faceMaterial_[manifoldFaces_[e * 2 + 1]])
+        static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Material)});
   return static_;
 }
 

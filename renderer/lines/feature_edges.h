@@ -18,7 +18,7 @@
 
 namespace npr {
 
-enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2 };
+enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3 };
 
 struct FeatureLine {
   glm::vec3 a, b;
@@ -32,7 +32,8 @@ class FeatureEdges {
   // face planes follow; the edges, their adjacency and kinds stay.
   void updatePositions(const Mesh& mesh);
 
-  // Creases and boundaries: computed once per mesh (and when the threshold changes).
+  // Creases, then boundaries, then material boundaries (interior edges between faces of
+  // different materials): computed once per mesh (and when the threshold changes).
   const std::vector<FeatureLine>& staticLines(float creaseAngleDegrees);
   // Silhouettes seen from `eye` (object space), recomputed in parallel over faces and edges.
   const std::vector<FeatureLine>& silhouettes(const glm::vec3& eye);
@@ -49,6 +50,7 @@ class FeatureEdges {
   std::vector<glm::vec3> positions_;       // welded
   std::vector<std::uint32_t> remap_;       // mesh vertex -> welded
   std::vector<std::uint32_t> faceVertices_;  // 3 welded vertices per welded face
+  std::vector<std::uint16_t> faceMaterial_;  // per welded face (empty: the mesh has one material)
   std::vector<glm::vec3> faceNormals_;     // per welded face
   std::vector<glm::vec4> facePlanes_;      // normal, -dot(normal, centroid)
   std::vector<std::uint32_t> manifoldEnds_;   // 2 welded vertices per interior edge

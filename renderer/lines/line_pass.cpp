@@ -36,13 +36,17 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     staticLines_ = gl::createBuffer();
     silhouettes_ = gl::createBuffer();
   }
-  if ((ls.creases || ls.boundaries) && uploadedCreaseAngle_ != ls.creaseAngle) {
-    // Static lines are creases first, then boundaries: the parts asked for are drawn as ranges.
+  if ((ls.creases || ls.boundaries || ls.materials) && uploadedCreaseAngle_ != ls.creaseAngle) {
+    // Static lines are creases, then boundaries, then material boundaries: the parts asked for
+    // are drawn as ranges.
     const auto& lines = edges_->staticLines(ls.creaseAngle);
     gl::uploadBuffer(staticLines_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STATIC_DRAW);
     staticCount_ = lines.size();
-    creaseCount_ = static_cast<std::size_t>(
-        std::count_if(lines.begin(), lines.end(), [](const FeatureLine& l) { return l.kind == float(EdgeKind::Crease); }));
+    const auto count = [&](EdgeKind k) {
+      return static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [k](const FeatureLine& l) { return l.kind == float(k); }));
+    };
+    creaseCount_ = count(EdgeKind::Crease);
+    boundaryCount_ = count(EdgeKind::Boundary);
     uploadedCreaseAngle_ = ls.creaseAngle;
     ++stats.bufferUploads;
   }
@@ -56,20 +60,29 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   stats.cpuLinesMs += msSince(t0);
 
-  Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{ls.sketchy, ls.depthFalloff}, stats.shaderBuilds);
-  if (!prog) return Error{prog.error()};
-  gl::ShaderProgram& p = **prog;
-  gl::apply(gl::pass::kLines);
-  p.use();
-  p.set("uModelViewProjection", camera.projection * camera.view);
-  p.set("uViewport", glm::vec2(viewport.z, viewport.w));
-  p.set("uWidth", std::max(ls.width, 0.5f));
-  const glm::vec3 colours[3] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour};
-  p.setArray("uColours", colours, 3);
-  p.set("uFalloffDepth", glm::length(eye));
-  glBindVertexArray(vao_.id());
+  // The visible parts, then (--hidden-lines) the hidden ones, dashed, where the surface is in
+  // front of them.
+  for (const bool hidden : {false, true}) {
+    if (hidden && !ls.hidden) break;
+    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{ls.sketchy && !hidden, ls.depthFalloff, hidden}, stats.shaderBuilds);
+    if (!prog) return Error{prog.error()};
+    gl::ShaderProgram& p = **prog;
+    gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
+    p.use();
+    p.set("uModelViewProjection", camera.projection * camera.view);
+    p.set("uViewport", glm::vec2(viewport.z, viewport.w));
+    p.set("uWidth", std::max(hidden ? 0.6f * ls.width : ls.width, 0.5f));
+    const glm::vec3 colours[4] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour};
+    p.setArray("uColours", colours, 4);
+    p.set("uFalloffDepth", glm::length(eye));
+    glBindVertexArray(vao_.id());
+    drawKinds(ls, ls.sketchy && !hidden ? 3 : 1, stats);
+  }
+  return okStatus();
+}
+
+void LinePass::drawKinds(const LineSettings& ls, int repeat, FrameStats& stats) {
   // Sketchy lines draw each edge three times, jittered differently in the shader.
-  const int repeat = ls.sketchy ? 3 : 1;
   auto drawRange = [&](const gl::Buffer& buffer, std::size_t first, std::size_t count) {
     if (count == 0) return;
     glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
@@ -85,8 +98,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   };
   if (ls.silhouettes) drawRange(silhouettes_, 0, silhouetteCount_);
   if (ls.creases) drawRange(staticLines_, 0, creaseCount_);
-  if (ls.boundaries) drawRange(staticLines_, creaseCount_, staticCount_ - creaseCount_);
-  return okStatus();
+  if (ls.boundaries) drawRange(staticLines_, creaseCount_, boundaryCount_);
+  if (ls.materials) drawRange(staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_);
 }
 
 std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const LineSettings& ls) {
@@ -101,7 +114,8 @@ std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const Lin
   }
   for (const FeatureLine& l : edges_->staticLines(ls.creaseAngle)) {
     const auto kind = static_cast<EdgeKind>(int(l.kind + 0.5f));
-    if ((kind == EdgeKind::Crease && ls.creases) || (kind == EdgeKind::Boundary && ls.boundaries)) out.push_back(l);
+    if ((kind == EdgeKind::Crease && ls.creases) || (kind == EdgeKind::Boundary && ls.boundaries) || (kind == EdgeKind::Material && ls.materials))
+      out.push_back(l);
   }
   return out;
 }

@@ -33,11 +33,13 @@ class LinePass {
   std::vector<FeatureLine> lines(const CameraMatrices& camera, const LineSettings& lines);
 
  private:
+  // Draws the kinds `ls` asks for, `repeat` instances an edge, with the bound program.
+  void drawKinds(const LineSettings& ls, int repeat, FrameStats& stats);
   const Mesh* mesh_ = nullptr;
   std::unique_ptr<FeatureEdges> edges_;
   gl::VertexArray vao_;
   gl::Buffer staticLines_, silhouettes_;
-  std::size_t staticCount_ = 0, creaseCount_ = 0, silhouetteCount_ = 0;
+  std::size_t staticCount_ = 0, creaseCount_ = 0, boundaryCount_ = 0, silhouetteCount_ = 0;
   float uploadedCreaseAngle_ = -1.0f;
   glm::vec3 silhouetteEye_{NAN};
 };

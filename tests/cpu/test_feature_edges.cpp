@@ -1,6 +1,6 @@
 // CPU tier: feature edges from adjacency on small meshes built here: the cube's creases, a
 // sphere's silhouette loop, an open grid's boundary, and a polygon soup that must give the
-// same lines as the welded mesh.
+// same lines as the welded mesh; a two-material cube's material boundaries.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -161,6 +161,28 @@ TEST(SvgExport, EdgesChainAtSharedEndsAndHiddenPartsAreCut) {
   EXPECT_NE(svg.find("<g id=\"silhouettes\""), std::string::npos);
   EXPECT_NE(svg.find("<g id=\"creases\""), std::string::npos);
   EXPECT_EQ(svg.find("<image"), std::string::npos);
+}
+
+TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
+  // The cube with its top (y = 1, faces 6 and 7) in a second material: the four edges around
+  // the top, and nothing else, are material boundaries; the 12 creases are unchanged.
+  Mesh m = weldedCube();
+  ASSERT_EQ(m.triangleCount(), 12u);
+  m.faceMaterials.assign(12, 0);
+  m.faceMaterials[6] = m.faceMaterials[7] = 1;
+  FeatureEdges edges(m);
+  const auto& lines = edges.staticLines(60.0f);
+  EXPECT_EQ(countKind(lines, EdgeKind::Crease), 12u);
+  EXPECT_EQ(countKind(lines, EdgeKind::Material), 4u);
+  for (const FeatureLine& l : lines)
+    if (l.kind == float(EdgeKind::Material)) {
+      EXPECT_FLOAT_EQ(l.a.y, 1.0f);
+      EXPECT_FLOAT_EQ(l.b.y, 1.0f);
+    }
+  // One material: none.
+  m.faceMaterials.assign(12, 0);
+  FeatureEdges one(m);
+  EXPECT_EQ(countKind(one.staticLines(60.0f), EdgeKind::Material), 0u);
 }
 
 }  // namespace

@@ -2,11 +2,13 @@
 // context: each method draws ink only at and outside the silhouette, where the object-space
 // silhouettes are, at the width asked for (the fattened and edge methods), and the rim only
 // near the silhouette. The same measures at full size, with frame costs, are bench_styles.
+// Hidden lines (--hidden-lines) are drawn only where the surface hides them, dashed.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 #include "gl/gl_test_env.h"
+#include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/line_comparison.h"
@@ -165,6 +167,41 @@ TEST_F(OutlineFixture, CharcoalRimDrawsTheDarkToneAroundTheSilhouetteOnly) {
   EXPECT_GT(changedOutside, 500);
   EXPECT_EQ(changedInside, 0);
   EXPECT_GT(darkRim, changedOutside * 9 / 10);
+}
+
+TEST_F(OutlineFixture, HiddenLinesAreDrawnDashedOnlyWhereTheSurfaceHidesThem) {
+  // A closed cube seen from above and aside: three of its twelve edges are behind it.
+  const glm::vec3 corners[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                            {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  Mesh cube;
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& f : faces) tris.push_back({f[0], f[1], f[2]});
+  buildTriMesh(std::vector<glm::vec3>(std::begin(corners), std::end(corners)), tris, cube);
+  for (glm::vec3& p : cube.positions) p *= 0.5f;
+  finalizeMesh(cube);
+  LineSettings l;
+  l.creases = true;
+  l.creaseColour = glm::vec3(0.0f);
+  l.width = 2.0f;
+  const LineMask visible = lineMask(draw(cube, l));
+  l.hidden = true;
+  const LineMask both = lineMask(draw(cube, l));
+  const LineMask inside = interior(cube, 0);
+  int added = 0, outside = 0, lost = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      if (visible.at(x, y) && !both.at(x, y)) ++lost;
+      if (!both.at(x, y) || visible.at(x, y)) continue;
+      ++added;
+      outside += !inside.at(x, y);
+    }
+  std::printf("visible crease ink %d pixels; hidden lines add %d, %d of them off the cube\n", visible.count(), added, outside);
+  EXPECT_EQ(lost, 0) << "the visible lines changed";
+  EXPECT_GT(added, 100) << "no hidden lines";
+  EXPECT_EQ(outside, 0) << "hidden lines drawn where nothing hides them";
+  // Three hidden edges, dashed and thinner, against nine solid visible ones.
+  EXPECT_LT(added, visible.count() / 3);
 }
 
 }  // namespace
