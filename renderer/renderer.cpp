@@ -3,6 +3,7 @@
 #include "renderer/renderer.h"
 
 #include <algorithm>
+#include <utility>
 #include <chrono>
 #include <limits>
 
@@ -82,7 +83,10 @@ bool Renderer::setModelPose(ModelId id, const glm::mat4& transform) { return sce
 bool Renderer::setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
   Model* m = scene_.find(id);
   if (!m) return false;
-  m->deform(joints, weights, stats_);
+  // Poses are given between frames: their uploads count in the next frame's figures.
+  FrameStats pose;
+  m->deform(joints, weights, pose);
+  poseUploads_ += pose.bufferUploads;
   scene_.touch();
   return true;
 }
@@ -356,6 +360,7 @@ Status Renderer::drawPart(FrameView& view, const Model* model, FrameContext& fra
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
+  stats_.bufferUploads = std::exchange(poseUploads_, 0);
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   updateToneRange(camera, s);

@@ -213,6 +213,7 @@ class Renderer {
     if (occlusionPalette_) fn(*occlusionPalette_);
   }
   bool partsDirty_ = false;  // the material palettes changed since the models were split
+  int poseUploads_ = 0;      // buffer uploads of poses given since the last frame (counted in its stats)
 
   LightingState lighting_;
   FrameStats stats_;

@@ -288,6 +288,7 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
     ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(60.0f), {}));
     const ImageRGBA8 bent = test::renderImage(*r, cam, s, kSize, kSize);
     EXPECT_EQ(r->stats().meshCachesBuilt, 0);
+    EXPECT_GT(r->stats().bufferUploads, 0) << "the pose's uploads are not in the frame's figures";
     r->clearModels();
     (void)r->addModel(copy);
     EXPECT_EQ(test::countDiffering(bent, test::renderImage(*r, cam, s, kSize, kSize)), 0) << "the posed model is not drawn as its pose";
