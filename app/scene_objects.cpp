@@ -57,6 +57,10 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
   }
   for (LoadedScene& s : loaded) {
     for (const std::string& w : s.warnings) warnings.push_back(w);
+    std::vector<const SceneAnimation*> every;
+    for (const SceneAnimation& a : s.animations) every.push_back(&a);
+    const std::vector<char> moved = animatedNodes(s.nodes, every);
+    const auto movedNode = [&](int n) { return n >= 0 && n < static_cast<int>(moved.size()) && moved[static_cast<std::size_t>(n)]; };
     const std::size_t file = files_.size();
     files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), std::move(s.nodes), std::move(s.animations), std::move(s.skins), false,
                       glm::mat4(1.0f)});
@@ -69,6 +73,10 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       v.node = o.node;
       v.afterNode = o.afterNode;
       v.skin = o.skin;
+      v.animated = movedNode(o.node);
+      const std::vector<SceneSkin>& skins = files_.back().skins;  // the file's, moved there
+      if (o.skin >= 0 && o.skin < static_cast<int>(skins.size()))
+        for (int joint : skins[static_cast<std::size_t>(o.skin)].joints) v.animated = v.animated || movedNode(joint);
       v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
       if (!v.mesh->deformation.empty()) files_.back().deforms = true;
       objects_.push_back(std::move(v));
@@ -171,25 +179,26 @@ double SceneObjects::animationLength(const AnimationChoice& choice) const {
 
 void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& renderer) {
   if (posed_.valid && posed_.choice == choice && posed_.time == time) return;
+  // The first pose after a load or a layout poses every object (a skinned one's rest pose is
+  // its skin's too); later ones only what the file's animations move.
+  const bool first = !posed_.valid;
   posed_ = {choice, time, true};
   std::size_t number = 0;  // the scene-order number of each file's first animation
   for (std::size_t f = 0; f < files_.size(); ++f) {
     const SceneFile& file = files_[f];
     if (file.animations.empty() && !file.deforms) continue;
-    std::vector<const SceneAnimation*> playing, every;
+    std::vector<const SceneAnimation*> playing;
     for (std::size_t a = 0; a < file.animations.size(); ++a, ++number) {
-      every.push_back(&file.animations[a]);
       if (choice.which == AnimationChoice::Which::All || (choice.which == AnimationChoice::Which::One && choice.one == number))
         playing.push_back(&file.animations[a]);
     }
     // Objects any of the file's animations moves are posed (at rest when none of them plays).
-    const std::vector<char> moves = animatedNodes(file.nodes, every);
     poseNodes(file.nodes, playing, static_cast<float>(time), nodePose_);
     const std::vector<glm::mat4>& world = nodePose_.world;
     for (ViewerObject& o : objects_) {
-      if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world.size())) continue;
+      if (o.file != f || o.node < 0 || o.node >= static_cast<int>(world.size()) || (!first && !o.animated)) continue;
       if (!o.mesh->deformation.empty()) deform(o, file, renderer);
-      if (o.skin >= 0 || !moves[static_cast<std::size_t>(o.node)]) continue;
+      if (o.skin >= 0 || !o.animated) continue;
       const glm::mat4 placed = toViewer(f) * world[static_cast<std::size_t>(o.node)] * o.afterNode;
       // A pose that overflows (keys of 1e30 scaled by 1e30) is not drawn: the last one stays.
       bool finite = true;

@@ -27,6 +27,7 @@ struct ViewerObject {
   int node = -1;           // its file's node (animated ones move it)
   glm::mat4 afterNode{1.0f};  // inFile = the node's world transform * afterNode (skinned: inFile = afterNode)
   int skin = -1;           // into its file's skins: placed by its joints
+  bool animated = false;   // an animation of its file moves its node, a joint of its skin or its weights
   glm::mat4 placed{1.0f};  // the mesh's space to the viewer's, as drawn now (posed)
   ModelId id = 0;
   bool visible = true;
