@@ -8,10 +8,10 @@ interpolation and a parented transform, for trying --play and for the end-to-end
 
 Run from the repository root: python3 models/make_animated_scene.py
 """
-import base64
 import json
 import math
-import struct
+
+from gltf_buffer import GltfBuffer
 
 
 def box(sx, sy, sz):
@@ -51,24 +51,8 @@ def sphere(r, rings=24, segments=48):
     return pos, nrm, idx
 
 
-blob = bytearray()
-views, accessors = [], []
-
-
-def add(data, fmt, count, type_, component, target=None, minmax=None):
-    while len(blob) % 4:
-        blob.append(0)
-    offset = len(blob)
-    blob.extend(struct.pack("<" + fmt * len(data), *data))
-    view = {"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset}
-    if target:
-        view["target"] = target
-    views.append(view)
-    acc = {"bufferView": len(views) - 1, "componentType": component, "count": count, "type": type_}
-    if minmax:
-        acc["min"], acc["max"] = minmax
-    accessors.append(acc)
-    return len(accessors) - 1
+buffer = GltfBuffer()
+add = buffer.add
 
 
 def mesh(shape, material):
@@ -147,9 +131,9 @@ gltf = {
             {"input": t_grow, "output": v_grow, "interpolation": "STEP"},
         ],
     }],
-    "accessors": accessors,
-    "bufferViews": views,
-    "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()}],
+    "accessors": buffer.accessors,
+    "bufferViews": buffer.views,
+    "buffers": buffer.buffers(),
 }
 with open("models/pendulum.gltf", "w") as f:
     json.dump(gltf, f, separators=(",", ":"))

@@ -5,10 +5,10 @@ hatching on a deforming surface and for the end-to-end tests.
 
 Run from the repository root: python3 models/make_bending_tube.py
 """
-import base64
 import json
 import math
-import struct
+
+from gltf_buffer import GltfBuffer
 
 AROUND, ALONG, RADIUS, HALF = 48, 48, 0.35, 1.2
 
@@ -47,25 +47,12 @@ for y, sign in ((-HALF, -1), (HALF, 1)):
     for i in range(AROUND):
         idx += [centre, ring[i], ring[i + 1]] if sign > 0 else [centre, ring[i + 1], ring[i]]
 
-blob = bytearray()
-views, accessors = [], []
-
-
-def add(data, fmt, count, type_, component, minmax=None):
-    while len(blob) % 4:
-        blob.append(0)
-    offset = len(blob)
-    blob.extend(struct.pack("<" + fmt * len(data), *data))
-    views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(blob) - offset})
-    acc = {"bufferView": len(views) - 1, "componentType": component, "count": count, "type": type_}
-    if minmax:
-        acc["min"], acc["max"] = minmax
-    accessors.append(acc)
-    return len(accessors) - 1
+buffer = GltfBuffer()
+add = buffer.add
 
 
 P = add([c for p in pos for c in p], "f", len(pos), "VEC3", 5126,
-        ([min(p[k] for p in pos) for k in range(3)], [max(p[k] for p in pos) for k in range(3)]))
+        minmax=([min(p[k] for p in pos) for k in range(3)], [max(p[k] for p in pos) for k in range(3)]))
 N = add([c for n in nrm for c in n], "f", len(nrm), "VEC3", 5126)
 J = add([c for j in joints for c in j], "B", len(joints), "VEC4", 5121)
 W = add([c for w in weights for c in w], "f", len(weights), "VEC4", 5126)
@@ -78,7 +65,7 @@ rot = []
 for deg in (0, 90, 0):
     h = math.radians(deg) / 2
     rot += [0, 0, math.sin(h), math.cos(h)]
-T = add(times, "f", 3, "SCALAR", 5126, ([0.0], [2.0]))
+T = add(times, "f", 3, "SCALAR", 5126, minmax=([0.0], [2.0]))
 R = add(rot, "f", 3, "VEC4", 5126)
 
 gltf = {
@@ -95,9 +82,9 @@ gltf = {
     "skins": [{"joints": [1, 2], "inverseBindMatrices": IBM}],
     "animations": [{"name": "bend", "channels": [{"sampler": 0, "target": {"node": 2, "path": "rotation"}}],
                     "samplers": [{"input": T, "output": R, "interpolation": "LINEAR"}]}],
-    "accessors": accessors,
-    "bufferViews": views,
-    "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()}],
+    "accessors": buffer.accessors,
+    "bufferViews": buffer.views,
+    "buffers": buffer.buffers(),
 }
 with open("models/bending_tube.gltf", "w") as f:
     json.dump(gltf, f, separators=(",", ":"))

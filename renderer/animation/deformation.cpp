@@ -11,11 +11,9 @@ namespace npr {
 void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed,
                 const std::vector<glm::vec3>* restTangents, std::vector<glm::vec3>* posedTangents) {
   const MeshDeformation& d = rest.deformation;
-  const std::size_t nv = rest.positions.size(), nf = rest.triangleCount();
+  const std::size_t nv = rest.positions.size();
   posed.positions.resize(nv);
   posed.normals.resize(nv);
-  posed.faceCentroids.resize(nf);
-  posed.faceNormals.resize(nf);
   // Only the targets with a weight: a 64-target face moving three of them pays for three.
   std::vector<std::size_t> active;
   for (std::size_t t = 0; t < d.targets() && t < weights.size(); ++t)
@@ -53,16 +51,8 @@ void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const st
     }
     radius2[static_cast<std::size_t>(c)] = r2;
   });
-  parallelChunks(nf, chunks, [&](std::size_t b, std::size_t e, int) {
-    for (std::size_t f = b; f < e; ++f) {
-      const std::uint32_t* id = &rest.indices[3 * f];
-      const glm::vec3 a = posed.positions[id[0]], bb = posed.positions[id[1]], cc = posed.positions[id[2]];
-      const glm::vec3 cr = glm::cross(bb - a, cc - a);
-      const float len = glm::length(cr);
-      posed.faceCentroids[f] = (a + bb + cc) / 3.0f;
-      posed.faceNormals[f] = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
-    }
-  });
+  if (posed.indices.size() != rest.indices.size()) posed.indices = rest.indices;
+  updateFaceGeometry(posed);
   const float r2 = *std::max_element(radius2.begin(), radius2.end());
   posed.radius = r2 > 0.0f && std::isfinite(r2) ? std::sqrt(r2) : rest.radius;
 }

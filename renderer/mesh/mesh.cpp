@@ -5,6 +5,7 @@
 #include <cmath>
 #include <memory>
 
+#include "renderer/core/parallel.h"
 #include "renderer/mesh/texture_average.h"
 
 namespace npr {
@@ -67,6 +68,22 @@ bool closedSurface(const std::vector<glm::vec3>& positions, const std::vector<st
       if (!std::binary_search(to.begin() + first[b], to.begin() + first[b + 1], std::uint32_t(a))) return false;
     }
   return true;
+}
+
+void updateFaceGeometry(Mesh& m) {
+  const std::size_t nf = m.triangleCount();
+  m.faceCentroids.resize(nf);
+  m.faceNormals.resize(nf);
+  parallelChunks(nf, workerCount(), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t f = b; f < e; ++f) {
+      const std::uint32_t* id = &m.indices[3 * f];
+      const glm::vec3 a = m.positions[id[0]], bb = m.positions[id[1]], c = m.positions[id[2]];
+      const glm::vec3 cr = glm::cross(bb - a, c - a);
+      const float len = glm::length(cr);
+      m.faceCentroids[f] = (a + bb + c) / 3.0f;
+      m.faceNormals[f] = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
+    }
+  });
 }
 
 void finalizeMesh(Mesh& m) {

@@ -116,6 +116,9 @@ void finalizeMesh(Mesh& m);
 // consistently wound surface enclosing positive volume (Mesh::closed).
 bool closedSurface(const std::vector<glm::vec3>& positions, const std::vector<std::uint32_t>& indices,
                    const std::vector<std::uint32_t>& sourceVertex);
+// faceCentroids and faceNormals from the positions again (a deformed mesh), in parallel;
+// zero-area faces get a zero normal, as finalizeMesh gives them.
+void updateFaceGeometry(Mesh& m);
 // faceTints from the texture maps (part of finalizeMesh; empty when no material has a map).
 void computeFaceTints(Mesh& m);
 

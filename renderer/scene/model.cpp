@@ -70,14 +70,7 @@ void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float
     if (part.positions.size() != mesh_->positions.size()) continue;
     part.positions = mesh_->positions;
     part.normals = mesh_->normals;
-    for (std::size_t f = 0; f < part.triangleCount(); ++f) {
-      const std::uint32_t* id = &part.indices[3 * f];
-      const glm::vec3 a = part.positions[id[0]], b = part.positions[id[1]], c = part.positions[id[2]];
-      const glm::vec3 cr = glm::cross(b - a, c - a);
-      const float len = glm::length(cr);
-      part.faceCentroids[f] = (a + b + c) / 3.0f;
-      part.faceNormals[f] = len > 0.0f && std::isfinite(len) ? cr / len : glm::vec3(0.0f);
-    }
+    updateFaceGeometry(part);
     part.radius = mesh_->radius;
     p->triangles.geometryChanged();
   }

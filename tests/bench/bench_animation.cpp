@@ -51,22 +51,15 @@ int main(int argc, char** argv) {
   npr::keepFreedHeapMemory();
   std::optional<bench::ImageBenchArgs> args = bench::parseImageBenchArgs(argc, argv, "bench_animation");
   if (!args) return 2;
-  auto gpu = gpuRequestFromEnvironment();
-  if (!gpu) {
-    std::fprintf(stderr, "%s\n", gpu.error().c_str());
-    return 2;
-  }
-  auto ctx = HeadlessContext::create(false, *gpu);
-  if (!ctx) {
-    std::fprintf(stderr, "%s\n", ctx.error().c_str());
-    return 1;
-  }
+  int failure = 0;
+  const std::unique_ptr<HeadlessContext> ctx = bench::openBenchContext(failure);  // NPR_GPU, as for the viewer's --gpu
+  if (!ctx) return failure;
   auto target = OffscreenTarget::create(args->width, args->height);
   if (!target) return 1;
   auto palette = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
   if (!palette) return 1;
   std::printf("# bench_animation: %s, %dx%d, %d frames, median ms (interleaved); deform: the CPU pose before the frame\n",
-              (*ctx)->info().line().c_str(), args->width, args->height, args->frames);
+              ctx->info().line().c_str(), args->width, args->height, args->frames);
   std::printf("%-9s %-9s %9s %9s %9s %9s %9s %9s %8s %8s\n", "vertices", "path", "static", "skinned", "deform", "morphing", "deform",
               "", "skin x", "morph x");
   const std::vector<RenderPath> paths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth};

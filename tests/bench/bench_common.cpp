@@ -85,6 +85,22 @@ const Mesh& largeMaterialMesh() {
   return m;
 }
 
+std::unique_ptr<HeadlessContext> openBenchContext(int& exitStatus) {
+  Result<GpuRequest> gpu = gpuRequestFromEnvironment();
+  if (!gpu) {
+    std::fprintf(stderr, "%s\n", gpu.error().c_str());
+    exitStatus = 2;
+    return nullptr;
+  }
+  Result<std::unique_ptr<HeadlessContext>> ctx = HeadlessContext::create(false, *gpu);
+  if (!ctx) {
+    std::fprintf(stderr, "%s\n", ctx.error().c_str());
+    exitStatus = 1;
+    return nullptr;
+  }
+  return std::move(*ctx);
+}
+
 double peakRssMiB() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);

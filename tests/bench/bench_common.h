@@ -2,8 +2,11 @@
 // written once into the system temp folder.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
+
+#include "renderer/gl/headless_context.h"
 
 #include "renderer/mesh/mesh.h"
 
@@ -25,6 +28,10 @@ struct ImageBenchArgs {
   bool quick = false;
 };
 std::optional<ImageBenchArgs> parseImageBenchArgs(int argc, char** argv, const char* program);
+// The headless context on the device NPR_GPU names (as the viewer's --gpu), without the debug
+// callback; on failure prints why and returns null with the exit status to end with (2: a bad
+// NPR_GPU, 1: no context).
+std::unique_ptr<HeadlessContext> openBenchContext(int& exitStatus);
 // Peak resident memory of this process so far, in MiB.
 double peakRssMiB();
 

@@ -113,16 +113,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_frames: --mesh must be bunny or torus, not '%s'\n", meshFilter.c_str());
     return 2;
   }
-  auto gpu = gpuRequestFromEnvironment();  // NPR_GPU, as for the viewer's --gpu
-  if (!gpu) {
-    std::fprintf(stderr, "%s\n", gpu.error().c_str());
-    return 2;
-  }
-  auto ctx = HeadlessContext::create(false, *gpu);
-  if (!ctx) {
-    std::fprintf(stderr, "%s\n", ctx.error().c_str());
-    return 1;
-  }
+  int failure = 0;
+  const std::unique_ptr<HeadlessContext> ctx = bench::openBenchContext(failure);  // NPR_GPU, as for the viewer's --gpu
+  if (!ctx) return failure;
   auto target = OffscreenTarget::create(w, h);
   auto renderer = Renderer::create();
   if (!target || !renderer) return 1;
@@ -258,7 +251,7 @@ int main(int argc, char** argv) {
         paths.push_back(on);
       }
     }
-  std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", (*ctx)->info().line().c_str(), w, h, frames);
+  std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", ctx->info().line().c_str(), w, h, frames);
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& sc : scenes) {

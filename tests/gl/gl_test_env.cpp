@@ -87,6 +87,24 @@ CameraMatrices testCamera(float aspect, float yaw, float pitch) {
 
 std::string sourcePath(const std::string& relative) { return std::string(NPR_SOURCE_DIR) + "/" + relative; }
 
+Palette texelIndexPalette() {
+  auto spell = [](int size, std::uint8_t level, int step) {
+    ImageRGBA8 img{size, size, std::vector<std::uint8_t>(std::size_t(size) * size * 4)};
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        std::uint8_t* t = &img.pixels[(std::size_t(j) * size + i) * 4];
+        t[0] = std::uint8_t(i * step), t[1] = std::uint8_t(j * step), t[2] = level, t[3] = 255;
+      }
+    return img;
+  };
+  PaletteEntry e;
+  e.image = spell(64, 0, 4);
+  e.mips = {spell(32, 255, 8)};
+  Palette p;
+  p.entries = {e};
+  return p;
+}
+
 Palette greyRamp(int n) {
   Palette p;
   p.name = "ramp" + std::to_string(n);

@@ -44,6 +44,10 @@ Palette shippedPalette(const std::string& name);
 // A palette of `n` solid grey entries from white to black (on a solid background): tone
 // without pattern, for tests that measure tone.
 Palette greyRamp(int n);
+// One entry whose texels spell their own index in their colour: level 0 is 64x64 with
+// (R, G) = 4 (i, j) and B = 0, its level 1 is 32x32 with (R, G) = 8 (i, j) and B = 255. What the
+// object pattern's tests read the texel under each pixel from.
+Palette texelIndexPalette();
 // Compares with tests/golden/NAME.png: at most `failFraction` of the pixels may differ by
 // more than 2/255 in a channel, and the mean channel difference must stay under `meanDiff`.
 // A failure writes NAME-actual.png and NAME-diff.png (4x amplified) in build/test-output.

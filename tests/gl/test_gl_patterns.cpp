@@ -251,20 +251,7 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
 // own. In every path (the stencil path through its coordinate buffer; per-triangle and
 // per-vertex paths by the face's normal).
 TEST_F(Fixture, ObjectPatternTexelsAreTheSurfacePointsAtItsDepthsOctave) {
-  Palette coded;
-  PaletteEntry e;
-  auto spell = [](int size, std::uint8_t level, int step) {
-    ImageRGBA8 img{size, size, std::vector<std::uint8_t>(std::size_t(size) * size * 4)};
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i) {
-        std::uint8_t* t = &img.pixels[(std::size_t(j) * size + i) * 4];
-        t[0] = std::uint8_t(i * step), t[1] = std::uint8_t(j * step), t[2] = level, t[3] = 255;
-      }
-    return img;
-  };
-  e.image = spell(64, 0, 4);
-  e.mips = {spell(32, 255, 8)};
-  coded.entries = {e};
+  const Palette coded = test::texelIndexPalette();
   const Mesh sq = test::square();
   r->setMesh(&sq);
   ASSERT_TRUE(r->setPalette(coded));

@@ -318,20 +318,7 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
 // project while visible (their pixel's eye depth theirs) and facing the camera, compared frame
 // to frame within one octave of the pattern. Screen-space hatching, for scale.
 TEST_F(SceneFixture, TheObjectPatternStaysOnABendingSurface) {
-  Palette coded;
-  PaletteEntry e;
-  auto spell = [](int size, std::uint8_t level, int step) {
-    ImageRGBA8 img{size, size, std::vector<std::uint8_t>(std::size_t(size) * size * 4)};
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i < size; ++i) {
-        std::uint8_t* t = &img.pixels[(std::size_t(j) * size + i) * 4];
-        t[0] = std::uint8_t(i * step), t[1] = std::uint8_t(j * step), t[2] = level, t[3] = 255;
-      }
-    return img;
-  };
-  e.image = spell(64, 0, 4);
-  e.mips = {spell(32, 255, 8)};
-  coded.entries = {e};
+  const Palette coded = test::texelIndexPalette();
   ASSERT_TRUE(r->setPalette(coded));
   const Mesh rest = test::skinnedCylinder(64, 60);
   const ModelId id = r->addModel(rest);
