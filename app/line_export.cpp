@@ -14,7 +14,7 @@ namespace npr {
 Status exportLinesSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
                       const ImageRGBA8* raster, const std::string& path) {
   if (!settings.lines.objectSpace())
-    return Error{"--svg: no object-space lines to export; turn some on (--lines silhouette,crease,boundary,material)"};
+    return Error{"--svg: no object-space lines to export; turn some on (--lines silhouette,crease,boundary,material,intersection)"};
   auto depth = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
   if (!depth) return Error{depth.error()};
   depth->clear(glm::vec4(0.0f));

@@ -68,7 +68,7 @@ std::optional<OutlineMethod> parseOutlineMethod(const std::string& s) {
 
 bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown) {
   LineSettings kinds = lines;
-  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.materials = kinds.imageSpace = kinds.hardware = kinds.rim = false;
+  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.materials = kinds.intersections = kinds.imageSpace = kinds.hardware = kinds.rim = false;
   std::size_t start = 0;
   while (list != "none" && start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
@@ -79,6 +79,7 @@ bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* u
     else if (kind == "crease" || kind == "creases") kinds.creases = true;
     else if (kind == "boundary" || kind == "boundaries") kinds.boundaries = true;
     else if (kind == "material" || kind == "materials") kinds.materials = true;
+    else if (kind == "intersection" || kind == "intersections") kinds.intersections = true;
     else if (kind == "image") kinds.imageSpace = true;
     else if (kind == "hardware") kinds.hardware = true;
     else if (kind == "rim") kinds.rim = true;

@@ -27,11 +27,13 @@ std::optional<OutlineMethod> parseOutlineMethod(const std::string& s);
 struct LineSettings {
   bool silhouettes = false, creases = false, boundaries = false;
   bool materials = false;  // material boundaries: edges between faces of different materials
+  bool intersections = false;  // where surfaces cross, in one object or between two (lines/intersection_lines.h)
   // The chosen object-space kinds' hidden parts too, dashed (`--hidden-lines`).
   bool hidden = false;
   float creaseAngle = 60.0f;  // degrees
   float width = 2.0f;         // pixels
   glm::vec3 silhouetteColour{0.0f}, creaseColour{1.0f}, boundaryColour{0.15f, 0.1f, 0.05f}, materialColour{0.25f, 0.2f, 0.15f};
+  glm::vec3 intersectionColour{0.0f};
   bool depthFalloff = false;
   bool sketchy = false;
   // Image space: Sobel on the depth and normal buffers, thresholded, drawn as a post-process.
@@ -47,7 +49,9 @@ struct LineSettings {
   bool rim = false;
   float rimLimit = 0.1f;
   static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
-  bool objectSpace() const { return silhouettes || creases || boundaries || materials; }
+  // The kinds found on each mesh's edges (lines/feature_edges.h).
+  bool edgeKinds() const { return silhouettes || creases || boundaries || materials; }
+  bool objectSpace() const { return edgeKinds() || intersections; }
 };
 
 // Where the palette's pattern lives: fixed to the screen (the original), anchored to the

@@ -9,6 +9,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/lines/intersection_lines.h"
 #include "renderer/mesh/ground_plane.h"
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/control_palette_pass.h"
@@ -480,6 +481,10 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
       }
     out.insert(out.end(), lines.begin(), lines.end());
   });
+  if (settings.lines.intersections) {
+    const std::vector<FeatureLine> crossings = sceneIntersectionLines(scene_);
+    out.insert(out.end(), crossings.begin(), crossings.end());
+  }
   return out;
 }
 

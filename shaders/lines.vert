@@ -11,8 +11,16 @@ layout(location = 2) in float aKind;
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
 uniform float uWidth;      // pixels
-uniform vec3 uColours[4];  // silhouette, crease, boundary, material
+uniform vec3 uColours[5];  // silhouette, crease, boundary, material, intersection (EdgeKind)
 uniform float uFalloffDepth;
+// Intersection lines lie in a valley: the two surfaces come towards the eye on both sides, so
+// the quad's own pixels fail the depth test against them. Their ends are moved towards the eye
+// (along the view ray: the picture does not move) by uValleyPixels pixels' worth of depth.
+// uEye: the eye in the lines' space (w 1), or its direction for an orthographic camera (w 0);
+// a pixel at distance d is uPixelScale.x * d + uPixelScale.y across.
+uniform float uValleyPixels;
+uniform vec4 uEye;
+uniform vec2 uPixelScale;
 
 out vec3 vColour;
 out float vAcross;  // pixels from the line's centre
@@ -32,9 +40,22 @@ uint hashBits(uint x) {
 }
 float hash01(uint x) { return float(hashBits(x) & 0xFFFFu) / 65535.0; }
 
+vec3 towardsEye(vec3 p) {
+  vec3 toEye = uEye.w > 0.5 ? uEye.xyz - p : uEye.xyz;
+  float d = length(toEye);
+  if (d <= 0.0) return p;
+  float pixel = uPixelScale.x * d + uPixelScale.y;
+  return p + toEye / d * min(uValleyPixels * pixel, 0.5 * d);
+}
+
 void main() {
-  vec4 p0 = uModelViewProjection * vec4(aStart, 1.0);
-  vec4 p1 = uModelViewProjection * vec4(aEnd, 1.0);
+  vec3 start = aStart, end_ = aEnd;
+  if (int(aKind + 0.5) == 4 && uValleyPixels > 0.0) {  // EdgeKind::Intersection
+    start = towardsEye(aStart);
+    end_ = towardsEye(aEnd);
+  }
+  vec4 p0 = uModelViewProjection * vec4(start, 1.0);
+  vec4 p1 = uModelViewProjection * vec4(end_, 1.0);
   vColour = uColours[int(aKind + 0.5)];
   float width = uWidth;
 #ifdef DEPTH_FALLOFF

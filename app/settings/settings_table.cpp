@@ -341,19 +341,25 @@ std::vector<Setting> buildTable() {
   }
   // --- lines
   {
+    // One list: the choices the overlay offers, the order a style file writes them, the message.
+    static const std::vector<std::string> kinds = {"silhouette", "crease", "boundary", "material", "intersection", "image", "hardware", "rim"};
     Setting k = base("lines", "lines", "lines", "Feature lines: none, or kinds separated by commas", K::Kinds);
-    k.choices = {"silhouette", "crease", "boundary", "material", "image", "hardware", "rim"};
+    k.choices = kinds;
     k.format = [](const Look& l) {
       const LineSettings& s = l.render.lines;
       std::string out;
-      const bool on[] = {s.silhouettes, s.creases, s.boundaries, s.materials, s.imageSpace, s.hardware, s.rim};
-      const char* names[] = {"silhouette", "crease", "boundary", "material", "image", "hardware", "rim"};
-      for (int i = 0; i < 7; ++i)
-        if (on[i]) out += (out.empty() ? "" : ",") + std::string(names[i]);
+      const bool on[] = {s.silhouettes, s.creases, s.boundaries, s.materials, s.intersections, s.imageSpace, s.hardware, s.rim};
+      static_assert(std::size(on) == 8);
+      for (std::size_t i = 0; i < kinds.size(); ++i)
+        if (on[i]) out += (out.empty() ? "" : ",") + kinds[i];
       return out.empty() ? std::string("none") : out;
     };
     k.parse = [](const std::string& v, Look& l) -> Status {
-      if (!parseLineKinds(v, l.render.lines)) return why("none, or silhouette, crease, boundary, material, image, hardware, rim separated by commas");
+      if (!parseLineKinds(v, l.render.lines)) {
+        std::string list;
+        for (const std::string& name : kinds) list += (list.empty() ? "" : ", ") + name;
+        return why("none, or " + list + " separated by commas");
+      }
       return okStatus();
     };
     t.push_back(k);
@@ -381,7 +387,8 @@ std::vector<Setting> buildTable() {
            {"silhouette-colour", "silhouette colour", "Silhouettes' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.silhouetteColour; }},
            {"crease-colour", "crease colour", "Creases' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.creaseColour; }},
            {"boundary-colour", "boundary colour", "Boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.boundaryColour; }},
-           {"material-colour", "material line colour", "Material boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.materialColour; }}})
+           {"material-colour", "material line colour", "Material boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.materialColour; }},
+           {"intersection-colour", "intersection colour", "Intersection lines' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.intersectionColour; }}})
     t.push_back(vectorRow(key, label, "lines", help, K::Colour, ref));
   // --- depth cue
   t.push_back(boolRow("depth-cue", "depth cue", "depth-cue", "Tone and lines fade toward the paper with distance through the scene",

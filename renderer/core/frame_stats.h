@@ -16,6 +16,7 @@ struct FrameStats {
   int drawCalls = 0;
   int lines = 0;               // feature lines drawn
   double cpuLinesMs = 0.0;     // silhouette extraction
+  int intersectionSearches = 0;  // the scene's intersection lines found again (its objects or pose changed)
   double cpuPatternMs = 0.0;   // the anchored pattern's similarity fit
   double cpuToneMs = 0.0;      // the automatic tone range's estimate (palette/tone_range.h)
   int patternSamples = 0;      // samples the fit used (visible in both frames)

@@ -11,6 +11,7 @@ std::unique_ptr<Feature> makeStrokesFeature();
 std::unique_ptr<Feature> makeOutlinesFeature();
 std::unique_ptr<Feature> makeImageEdgesFeature();
 std::unique_ptr<Feature> makeFeatureLinesFeature();
+std::unique_ptr<Feature> makeIntersectionLinesFeature();
 std::unique_ptr<Feature> makeDepthCueFeature();
 
 std::vector<std::unique_ptr<Feature>> makeFeatures() {
@@ -22,6 +23,7 @@ std::vector<std::unique_ptr<Feature>> makeFeatures() {
   f.push_back(makeOutlinesFeature());
   f.push_back(makeImageEdgesFeature());
   f.push_back(makeFeatureLinesFeature());
+  f.push_back(makeIntersectionLinesFeature());
   f.push_back(makeDepthCueFeature());        // last: fades what is drawn
   return f;
 }

@@ -18,7 +18,9 @@
 
 namespace npr {
 
-enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3 };
+// Intersections are the scene's, not one mesh's (lines/intersection_lines.h).
+enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3, Intersection = 4 };
+inline constexpr int kEdgeKinds = 5;
 
 struct FeatureLine {
   glm::vec3 a, b;

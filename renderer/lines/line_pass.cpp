@@ -25,7 +25,7 @@ void LinePass::geometryChanged() {
 
 Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, gl::ProgramCache& programs,
                       FrameStats& stats) {
-  if (!ls.objectSpace() || !mesh_) return okStatus();
+  if (!ls.edgeKinds() || !mesh_) return okStatus();
   const auto t0 = std::chrono::steady_clock::now();
   if (!edges_) {
     edges_ = std::make_unique<FeatureEdges>(*mesh_);
@@ -60,51 +60,63 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   stats.cpuLinesMs += msSince(t0);
 
+  std::vector<LineRange> ranges;
+  if (ls.silhouettes) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
+  if (ls.creases) ranges.push_back({&staticLines_, 0, creaseCount_});
+  if (ls.boundaries) ranges.push_back({&staticLines_, creaseCount_, boundaryCount_});
+  if (ls.materials) ranges.push_back({&staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_});
+  return drawLineRanges(ranges, camera, ls, viewport, vao_, programs, stats);
+}
+
+Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineSettings& ls, const glm::ivec4& viewport,
+                      const gl::VertexArray& vao, gl::ProgramCache& programs, FrameStats& stats) {
+  const glm::vec3 eye = glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 0, 1));
   // The visible parts, then (--hidden-lines) the hidden ones, dashed, where the surface is in
   // front of them.
   for (const bool hidden : {false, true}) {
     if (hidden && !ls.hidden) break;
-    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{ls.sketchy && !hidden, ls.depthFalloff, hidden}, stats.shaderBuilds);
+    const bool sketchy = ls.sketchy && !hidden;
+    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, ls.depthFalloff, hidden}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
     p.use();
-    p.set("uModelViewProjection", camera.projection * camera.view);
+    p.set("uModelViewProjection", placed.projection * placed.view);
     p.set("uViewport", glm::vec2(viewport.z, viewport.w));
     p.set("uWidth", std::max(hidden ? 0.6f * ls.width : ls.width, 0.5f));
-    const glm::vec3 colours[4] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour};
-    p.setArray("uColours", colours, 4);
+    const glm::vec3 colours[kEdgeKinds] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour, ls.intersectionColour};
+    p.setArray("uColours", colours, kEdgeKinds);
     p.set("uFalloffDepth", glm::length(eye));
-    glBindVertexArray(vao_.id());
-    drawKinds(ls, ls.sketchy && !hidden ? 3 : 1, stats);
+    // Intersection lines: pulled by about a surface's rise over the quad's half width at 60
+    // degrees of slope, twice over (lines.vert).
+    const bool perspective = placed.projection[3][3] == 0.0f;
+    const float pixel = 2.0f / (placed.projection[1][1] * float(std::max(viewport.w, 1)));
+    p.set("uValleyPixels", 2.0f * (0.5f * ls.width + 1.0f) * 1.8f);
+    p.set("uEye", perspective ? glm::vec4(eye, 1.0f) : glm::vec4(glm::normalize(glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 1, 0))), 0.0f));
+    p.set("uPixelScale", perspective ? glm::vec2(pixel, 0.0f) : glm::vec2(0.0f, pixel));
+    glBindVertexArray(vao.id());
+    // Sketchy lines draw each edge three times, jittered differently in the shader.
+    const int repeat = sketchy ? 3 : 1;
+    for (const LineRange& r : ranges) {
+      if (r.count == 0) continue;
+      glBindBuffer(GL_ARRAY_BUFFER, r.buffer->id());
+      const auto base = static_cast<std::uintptr_t>(r.first * sizeof(FeatureLine));
+      for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
+      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, a)));
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, b)));
+      glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, kind)));
+      for (GLuint a = 0; a < 3; ++a) glVertexAttribDivisor(a, GLuint(repeat));
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
+      stats.lines += static_cast<int>(r.count);
+      ++stats.drawCalls;
+    }
   }
   return okStatus();
 }
 
-void LinePass::drawKinds(const LineSettings& ls, int repeat, FrameStats& stats) {
-  // Sketchy lines draw each edge three times, jittered differently in the shader.
-  auto drawRange = [&](const gl::Buffer& buffer, std::size_t first, std::size_t count) {
-    if (count == 0) return;
-    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
-    const auto base = static_cast<std::uintptr_t>(first * sizeof(FeatureLine));
-    for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, a)));
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, b)));
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, kind)));
-    for (GLuint a = 0; a < 3; ++a) glVertexAttribDivisor(a, GLuint(repeat));
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(count) * repeat);
-    stats.lines += static_cast<int>(count);
-    ++stats.drawCalls;
-  };
-  if (ls.silhouettes) drawRange(silhouettes_, 0, silhouetteCount_);
-  if (ls.creases) drawRange(staticLines_, 0, creaseCount_);
-  if (ls.boundaries) drawRange(staticLines_, creaseCount_, boundaryCount_);
-  if (ls.materials) drawRange(staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_);
-}
-
 std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const LineSettings& ls) {
   std::vector<FeatureLine> out;
-  if (!mesh_ || !ls.objectSpace()) return out;
+  if (!mesh_ || !ls.edgeKinds()) return out;
   if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
   if (ls.silhouettes) {
     const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));

@@ -20,6 +20,18 @@
 
 namespace npr {
 
+// A buffer of FeatureLines and the part of it to draw.
+struct LineRange {
+  const gl::Buffer* buffer;
+  std::size_t first, count;
+};
+
+// Draws `ranges` (lines in the space `placed` maps to the clip space) in the style `ls` gives
+// them: the visible parts, then with --hidden-lines the hidden ones, dashed. Shared by each
+// model's edges and the scene's intersection lines.
+[[nodiscard]] Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineSettings& ls,
+                                    const glm::ivec4& viewport, const gl::VertexArray& vao, gl::ProgramCache& programs, FrameStats& stats);
+
 class LinePass {
  public:
   // Forgets the previous mesh's lines (they are rebuilt on the next draw).
@@ -33,8 +45,6 @@ class LinePass {
   std::vector<FeatureLine> lines(const CameraMatrices& camera, const LineSettings& lines);
 
  private:
-  // Draws the kinds `ls` asks for, `repeat` instances an edge, with the bound program.
-  void drawKinds(const LineSettings& ls, int repeat, FrameStats& stats);
   const Mesh* mesh_ = nullptr;
   std::unique_ptr<FeatureEdges> edges_;
   gl::VertexArray vao_;

@@ -81,7 +81,7 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
                            const ImageRGBA32F& eyePosition) {
   const Projector proj{camera, glm::vec2(size)};
   const float nearZ = -1e-4f;  // clip just in front of the eye; the projection's near plane clips the rest
-  std::vector<std::pair<glm::vec2, glm::vec2>> segments[4];
+  std::vector<std::pair<glm::vec2, glm::vec2>> segments[kEdgeKinds];
   for (const FeatureLine& l : lines) {
     glm::vec3 a = glm::vec3(camera.view * glm::vec4(l.a, 1.0f)), b = glm::vec3(camera.view * glm::vec4(l.b, 1.0f));
     if (a.z > nearZ && b.z > nearZ) continue;  // behind the eye
@@ -91,7 +91,7 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
     if (!std::isfinite(wa.x + wa.y + wb.x + wb.y)) continue;
     // Sampled at about a pixel's step along the screen; runs of visible samples are kept.
     const int steps = std::clamp(int(std::ceil(glm::length(wb - wa))), 1, 100000);
-    const int kind = std::clamp(int(l.kind + 0.5f), 0, 3);
+    const int kind = std::clamp(int(l.kind + 0.5f), 0, kEdgeKinds - 1);
     int runStart = -1;
     glm::vec2 previous{0.0f};
     for (int i = 0; i <= steps + 1; ++i) {
@@ -118,7 +118,7 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
     }
   }
   SvgLines out;
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < kEdgeKinds; ++k) {
     out.chains[k] = chain(segments[k]);
     for (const auto& c : out.chains[k]) {
       ++out.paths;
@@ -163,10 +163,11 @@ std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const Lin
   if (!rasterPng.empty())
     o << "<image id=\"rendering\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y
       << "\" xlink:href=\"data:image/png;base64," << base64(rasterPng) << "\"/>\n";
-  const char* names[4] = {"silhouettes", "creases", "boundaries", "materials"};
-  const glm::vec3 colours[4] = {style.silhouetteColour, style.creaseColour, style.boundaryColour, style.materialColour};
+  const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
+  const glm::vec3 colours[kEdgeKinds] = {style.silhouetteColour, style.creaseColour, style.boundaryColour, style.materialColour,
+                                         style.intersectionColour};
   char number[32];
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < kEdgeKinds; ++k) {
     if (lines.chains[k].empty()) continue;
     o << "<g id=\"" << names[k] << "\" fill=\"none\" stroke=\"" << hexColour(colours[k]) << "\" stroke-width=\"" << style.width
       << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";

@@ -18,7 +18,7 @@ namespace npr {
 
 struct SvgLines {
   // 2D polylines in window pixels (y down), one list per EdgeKind.
-  std::vector<std::vector<glm::vec2>> chains[4];  // per EdgeKind
+  std::vector<std::vector<glm::vec2>> chains[kEdgeKinds];  // per EdgeKind
   int paths = 0;
   double lengthPx = 0;  // total drawn length
 };

@@ -10,13 +10,20 @@
 //   strokes painterly brush strokes over the smooth path against `reference` (the 871K torus
 //           with a budget of 200K strokes), and their temporal stability: pixels popping between
 //           frames of a slow orbit and of a zoom out, faded against cut at their rank.
-// Run: build/tests/bench/bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes] [--mesh bunny|teapot|torus]
+//   intersections  intersection lines: the search (once per pose) on each mesh alone and on two
+//           copies of it crossing, and the frame of the two copies with the technical style's
+//           lines against the same with intersection lines, the camera orbiting (drawn, not
+//           searched) and the second copy moving (searched every frame).
+// Run: build/tests/bench/bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes|intersections] [--mesh bunny|teapot|torus]
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "app/benchmark/interleaved_timing.h"
 #include "app/settings/style_file.h"
@@ -26,6 +33,7 @@
 #include "renderer/gl/headless_context.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/lighting/lighting_state.h"
+#include "renderer/lines/intersection_lines.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/renderer.h"
 #include "support/line_comparison.h"
@@ -303,6 +311,71 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
   return 0;
 }
 
+int intersections(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, int frames) {
+  std::printf("\n## Intersection lines: the search, once per pose (median of %d)\n\n", frames);
+  std::printf("| scene | triangles | pairs tested | segments | search ms |\n|---|---|---|---|---|\n");
+  // The second copy stands beside the first, overlapping a third of it.
+  auto beside = [](const Mesh& m, float shift) { return glm::translate(glm::mat4(1.0f), glm::vec3(0.66f * m.radius + shift, 0.1f * m.radius, 0.0f)); };
+  for (const BenchScene& sc : scenes)
+    for (const bool two : {false, true}) {
+      std::vector<IntersectionObject> objects = {{sc.mesh, glm::mat4(1.0f)}};
+      if (two) objects.push_back({sc.mesh, beside(*sc.mesh, 0.0f)});
+      std::vector<double> ms;
+      IntersectionCounts counts;
+      for (int i = 0; i < frames; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        (void)intersectionLines(objects, &counts);
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      }
+      std::printf("| %s%s | %zu | %zu | %zu | %.1f |\n", sc.name, two ? " x2, crossing" : "", counts.triangles, counts.pairsTested, counts.segments, median(ms));
+      std::fflush(stdout);
+    }
+  std::printf("\n## Intersection lines: frames of two crossing copies, technical style's lines (silhouettes, creases, hidden lines), interleaved\n\n");
+  std::printf("| scene | row | median ms | p95 ms | CPU ms | x without |\n|---|---|---|---|---|---|\n");
+  const float aspect = float(target.width()) / float(target.height());
+  for (const BenchScene& sc : scenes) {
+    // Two renderers: the copies still (rows 0, 1) and the second copy moving (rows 2, 3).
+    std::unique_ptr<Renderer> still, moving;
+    ModelId movingCopy = 0;
+    for (auto* r : {&still, &moving}) {
+      auto created = Renderer::create();
+      if (!created) return 1;
+      *r = std::move(*created);
+      applyDefaultMaterial((*r)->lighting());
+      if (!(*r)->setPalette(whitePalette())) return 1;
+      (*r)->setMesh(sc.mesh);
+      const ModelId id = (*r)->addModel(*sc.mesh, beside(*sc.mesh, 0.0f));
+      if (r == &moving) movingCopy = id;
+    }
+    RenderSettings without;
+    without.lines.silhouettes = without.lines.creases = without.lines.hidden = true;
+    RenderSettings with = without;
+    with.lines.intersections = true;
+    const char* labels[4] = {"orbiting, without", "orbiting, with intersections", "copy moving, without", "copy moving, with intersections"};
+    OrbitCamera cam(30.0f, 20.0f, 3.0f);
+    cam.frame(1.7f * sc.mesh->radius);
+    int failed = 0;
+    const std::vector<FrameTiming> t = timeInterleaved(*still, target, 4, frames, 2, [&](std::size_t c, int round) {
+      OrbitCamera turned = cam;
+      turned.orbit(0.5f * float(round), 0.0f);
+      Renderer* r = c < 2 ? still.get() : moving.get();
+      if (c >= 2) (void)r->setModelTransform(movingCopy, beside(*sc.mesh, 0.002f * sc.mesh->radius * float(round)));
+      TimedFrame f{c < 2 ? turned.matrices(aspect) : cam.matrices(aspect), c % 2 ? with : without, r};
+      setLight(*r, f.camera);
+      return f;
+    }, failed);
+    if (failed) {
+      std::fprintf(stderr, "bench_styles: %d frame(s) failed\n", failed);
+      return 1;
+    }
+    for (std::size_t i = 0; i < 4; ++i)
+      std::printf("| %s | %s | %.1f | %.1f | %.1f | %.2f |\n", sc.name, labels[i], t[i].medianMs, t[i].p95Ms, t[i].cpuMs,
+                  t[i].medianMs / t[i - i % 2].medianMs);
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -315,13 +388,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--part") && i + 1 < argc) part = argv[++i];
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
     else {
-      std::fprintf(stderr, "usage: bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes] [--mesh bunny|teapot|torus]\n");
+      std::fprintf(stderr, "usage: bench_styles [--size WxH] [--frames N] [--part lines|styles|strokes|intersections] [--mesh bunny|teapot|torus]\n");
       return 2;
     }
   }
-  if (frames < 1 || w < 1 || h < 1 || (!part.empty() && part != "lines" && part != "styles" && part != "strokes") ||
+  if (frames < 1 || w < 1 || h < 1 || (!part.empty() && part != "lines" && part != "styles" && part != "strokes" && part != "intersections") ||
       (!meshFilter.empty() && meshFilter != "bunny" && meshFilter != "teapot" && meshFilter != "torus")) {
-    std::fprintf(stderr, "bench_styles: --frames and --size must be positive, --part lines, styles or strokes, --mesh bunny, teapot or torus\n");
+    std::fprintf(stderr, "bench_styles: --frames and --size must be positive, --part lines, styles, strokes or intersections, --mesh bunny, teapot or torus\n");
     return 2;
   }
   auto ctx = HeadlessContext::create(false);
@@ -345,5 +418,6 @@ int main(int argc, char** argv) {
   if ((part.empty() || part == "lines") && lines(scenes, *target, frames, *crosshatch)) return 1;
   if ((part.empty() || part == "styles") && styles(scenes, *target, frames)) return 1;
   if ((part.empty() || part == "strokes") && strokes(scenes, *target, frames)) return 1;
+  if ((part.empty() || part == "intersections") && intersections(scenes, *target, frames)) return 1;
   return 0;
 }

@@ -1,13 +1,18 @@
 // CPU tier: feature edges from adjacency on small meshes built here: the cube's creases, a
 // sphere's silhouette loop, an open grid's boundary, and a polygon soup that must give the
-// same lines as the welded mesh; a two-material cube's material boundaries.
+// same lines as the welded mesh; a two-material cube's material boundaries. Intersection lines
+// of two crossing boxes (the square where they meet, exactly, as two objects, one object or
+// placed by a transform), none on a closed surface or apart, and the hierarchy's answer equal
+// to testing every pair.
 #include <gtest/gtest.h>
 
 #include <map>
+#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/lines/feature_edges.h"
+#include "renderer/lines/intersection_lines.h"
 #include "renderer/lines/svg_export.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
@@ -185,5 +190,129 @@ TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
   EXPECT_EQ(countKind(one.staticLines(60.0f), EdgeKind::Material), 0u);
 }
 
+
+// A box from the cube's faces, its corners at `lo` and `hi`, built directly (no centring).
+Mesh boxMesh(const glm::vec3& lo, const glm::vec3& hi) {
+  Mesh m;
+  for (const glm::vec3& c : kCube) m.positions.push_back(glm::mix(lo, hi, 0.5f * (c + 1.0f)));
+  for (const auto& f : kCubeFaces)
+    for (int k : f) m.indices.push_back(std::uint32_t(k));
+  return m;
+}
+
+double totalLength(const std::vector<FeatureLine>& lines) {
+  double sum = 0.0;
+  for (const FeatureLine& l : lines) sum += double(glm::length(l.b - l.a));
+  return sum;
+}
+
+float distanceToSegment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
+  const glm::vec3 d = b - a;
+  const float t = glm::dot(d, d) > 0.0f ? std::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0f, 1.0f) : 0.0f;
+  return glm::length(p - (a + t * d));
+}
+
+// The box [-1,1]^3 and a bar [0,2]x[-0.5,0.5]^2 through its face x = 1 meet along the square
+// of side 1 on that face: total length 4, every end on it, every point of it covered.
+void expectTheSquare(const std::vector<FeatureLine>& lines) {
+  ASSERT_FALSE(lines.empty());
+  EXPECT_NEAR(totalLength(lines), 4.0, 1e-5);
+  for (const FeatureLine& l : lines) {
+    EXPECT_EQ(l.kind, float(EdgeKind::Intersection));
+    for (const glm::vec3& p : {l.a, l.b}) {
+      EXPECT_NEAR(p.x, 1.0f, 1e-6f);
+      EXPECT_NEAR(std::max(std::abs(p.y), std::abs(p.z)), 0.5f, 1e-6f);
+    }
+  }
+  for (int i = 0; i < 400; ++i) {
+    const float s = float(i) / 100.0f;  // along the square's perimeter, 4 sides of 1
+    const int side = int(s);
+    const float t = s - float(side) - 0.5f;
+    const glm::vec3 p = side == 0 ? glm::vec3(1, t, -0.5f) : side == 1 ? glm::vec3(1, 0.5f, t) : side == 2 ? glm::vec3(1, -t, 0.5f) : glm::vec3(1, -0.5f, -t);
+    float nearest = INFINITY;
+    for (const FeatureLine& l : lines) nearest = std::min(nearest, distanceToSegment(p, l.a, l.b));
+    EXPECT_LT(nearest, 1e-5f) << "the square's point " << p.x << "," << p.y << "," << p.z << " has no line";
+  }
+}
+
+TEST(IntersectionLines, TwoCrossingBoxesMeetAlongTheSquareOfTheirCrossing) {
+  const Mesh box = boxMesh(glm::vec3(-1.0f), glm::vec3(1.0f)), bar = boxMesh({0.0f, -0.5f, -0.5f}, {2.0f, 0.5f, 0.5f});
+  IntersectionCounts counts;
+  expectTheSquare(intersectionLines({{&box, glm::mat4(1.0f)}, {&bar, glm::mat4(1.0f)}}, &counts));
+  EXPECT_EQ(counts.triangles, 24u);
+  EXPECT_GT(counts.pairsTested, 0u);
+}
+
+TEST(IntersectionLines, WithinOneObjectAsBetweenTwo) {
+  Mesh both = boxMesh(glm::vec3(-1.0f), glm::vec3(1.0f));
+  const Mesh bar = boxMesh({0.0f, -0.5f, -0.5f}, {2.0f, 0.5f, 0.5f});
+  for (std::uint32_t i : bar.indices) both.indices.push_back(i + 8u);
+  both.positions.insert(both.positions.end(), bar.positions.begin(), bar.positions.end());
+  expectTheSquare(intersectionLines({{&both, glm::mat4(1.0f)}}));
+}
+
+TEST(IntersectionLines, EachObjectIsPlacedByItsTransform) {
+  const Mesh box = boxMesh(glm::vec3(-1.0f), glm::vec3(1.0f)), bar = boxMesh({-1.0f, -0.5f, -0.5f}, {1.0f, 0.5f, 0.5f});
+  expectTheSquare(intersectionLines({{&box, glm::mat4(1.0f)}, {&bar, glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 0.0f))}}));
+  // Moved clear of the box, it meets nothing.
+  EXPECT_TRUE(intersectionLines({{&box, glm::mat4(1.0f)}, {&bar, glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 0.0f, 0.0f))}}).empty());
+}
+
+TEST(IntersectionLines, AClosedSurfaceCrossesNothing) {
+  // Its neighbours share corners and are tested, and give nothing; so does a finer sphere.
+  const Mesh box = boxMesh(glm::vec3(-1.0f), glm::vec3(1.0f));
+  IntersectionCounts counts;
+  EXPECT_TRUE(intersectionLines({{&box, glm::mat4(1.0f)}}, &counts).empty());
+  EXPECT_GT(counts.pairsTested, 0u);
+  const Mesh sphere = icosphere(3);
+  EXPECT_TRUE(intersectionLines({{&sphere, glm::mat4(1.0f)}}).empty());
+  // The same sphere twice in one place is one surface doubled: coplanar pairs, no lines.
+  EXPECT_TRUE(intersectionLines({{&sphere, glm::mat4(1.0f)}, {&sphere, glm::mat4(1.0f)}}).empty());
+}
+
+TEST(IntersectionLines, CrossingTrianglesShareTheSegmentInsideBoth) {
+  const glm::vec3 flat[3] = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
+  const glm::vec3 upright[3] = {{0.5f, -1, -1}, {0.5f, 3, -1}, {0.5f, 1, 1}};
+  glm::vec3 from, to;
+  ASSERT_TRUE(triangleIntersection(flat, upright, from, to));
+  // The upright one meets z = 0 for y in [0, 2]; the flat one holds x = 0.5 for y in [0, 1.5].
+  const glm::vec3 lo = from.y < to.y ? from : to, hi = from.y < to.y ? to : from;
+  EXPECT_NEAR(glm::length(lo - glm::vec3(0.5f, 0.0f, 0.0f)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(hi - glm::vec3(0.5f, 1.5f, 0.0f)), 0.0f, 1e-6f);
+  // Touching at one point, lying in one plane, or sharing a corner: none.
+  const glm::vec3 touching[3] = {{2, 0, 0}, {3, 0, 1}, {3, 0, -1}};
+  EXPECT_FALSE(triangleIntersection(flat, touching, from, to));
+  const glm::vec3 coplanar[3] = {{0.5f, 0.5f, 0}, {3, 0.5f, 0}, {0.5f, 3, 0}};
+  EXPECT_FALSE(triangleIntersection(flat, coplanar, from, to));
+  const glm::vec3 neighbour[3] = {{0, 0, 0}, {1, 1, 1}, {1, 1, -1}};
+  EXPECT_FALSE(triangleIntersection(flat, neighbour, from, to));
+}
+
+TEST(IntersectionLines, TheHierarchyFindsWhatTestingEveryPairFinds) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> at(-1.0f, 1.0f), offset(-0.3f, 0.3f);
+  Mesh soup;
+  for (std::uint32_t t = 0; t < 400; ++t) {
+    const glm::vec3 c(at(rng), at(rng), at(rng));
+    for (int k = 0; k < 3; ++k) {
+      soup.positions.push_back(c + glm::vec3(offset(rng), offset(rng), offset(rng)));
+      soup.indices.push_back(3 * t + std::uint32_t(k));
+    }
+  }
+  double expected = 0.0;
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < 400; ++i)
+    for (std::size_t j = i + 1; j < 400; ++j) {
+      glm::vec3 from, to;
+      if (triangleIntersection(&soup.positions[3 * i], &soup.positions[3 * j], from, to)) {
+        expected += double(glm::length(to - from));
+        ++pairs;
+      }
+    }
+  const std::vector<FeatureLine> lines = intersectionLines({{&soup, glm::mat4(1.0f)}});
+  ASSERT_GT(pairs, 50u);  // a tangle: the test means something
+  EXPECT_EQ(lines.size(), pairs);
+  EXPECT_NEAR(totalLength(lines), expected, 1e-4 * expected);
+}
 }  // namespace
 }  // namespace npr

@@ -28,6 +28,24 @@ PY
   rsvg-convert -b white "$tmp/$model.svg" -o "$tmp/$model-svg.png" || { echo "FAIL: rsvg-convert cannot draw $model.svg"; fail=1; continue; }
   "$overlap" "$tmp/$model.png" "$tmp/$model-svg.png" 1 0.9 || { echo "FAIL: $model: the SVG's lines and the raster lines do not coincide"; fail=1; }
 done
+# Intersection lines: a box and a bar through it, in one OBJ file; the SVG's group
+# "intersections" coincides with the raster's.
+{
+  printf 'o box\n'
+  for z in -1 1; do for y in -1 1; do for x in -1 1; do echo "v $x $y $z"; done; done; done
+  printf 'f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n'
+  printf 'o bar\n'
+  for z in -0.4 0.4; do for y in -0.4 0.4; do for x in 0 2; do echo "v $x $y $z"; done; done; done
+  printf 'f 9 11 12 10\nf 13 14 16 15\nf 9 10 14 13\nf 11 15 16 12\nf 9 13 15 11\nf 10 12 16 14\n'
+} > "$tmp/crossing.obj"
+if "$viewer" "$tmp/crossing.obj" --headless --size 480x360 --palette "$tmp/white.palette" --lines intersection \
+    --screenshot "$tmp/crossing.png" --svg "$tmp/crossing.svg" 2>"$tmp/err"; then
+  grep -q '<g id="intersections"' "$tmp/crossing.svg" || { echo "FAIL: no intersections group in the SVG"; fail=1; }
+  rsvg-convert -b white "$tmp/crossing.svg" -o "$tmp/crossing-svg.png" &&
+    "$overlap" "$tmp/crossing.png" "$tmp/crossing-svg.png" 1 0.9 || { echo "FAIL: the SVG's intersection lines and the raster's do not coincide"; fail=1; }
+else
+  echo "FAIL: --lines intersection --svg: $(cat "$tmp/err")"; fail=1
+fi
 # With the frame embedded underneath, and a refusal without lines.
 "$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
 grep -q 'data:image/png;base64,' "$tmp/raster.svg" || { echo "FAIL: --svg-raster embeds no image"; fail=1; }

@@ -3,9 +3,13 @@
 // silhouettes are, at the width asked for (the fattened and edge methods), and the rim only
 // near the silhouette. The same measures at full size, with frame costs, are bench_styles.
 // Hidden lines (--hidden-lines) are drawn only where the surface hides them, dashed.
+// Intersection lines are drawn where two objects cross and nowhere else, found again when an
+// object moves and not when the camera does.
 #include <gtest/gtest.h>
 
 #include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_env.h"
 #include "renderer/mesh/mesh_builder.h"
@@ -204,5 +208,76 @@ TEST_F(OutlineFixture, HiddenLinesAreDrawnDashedOnlyWhereTheSurfaceHidesThem) {
   EXPECT_LT(added, visible.count() / 3);
 }
 
+
+TEST_F(OutlineFixture, IntersectionLinesDrawWhereTwoObjectsCrossOnly) {
+  // A box and a bar through its face x = 0.5: they cross along the square x = 0.5, |y|, |z| <= 0.25.
+  const glm::vec3 corners[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                            {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& f : faces) tris.push_back({f[0], f[1], f[2]});
+  auto box = [&](const glm::vec3& lo, const glm::vec3& hi) {
+    std::vector<glm::vec3> at;
+    for (const glm::vec3& c : corners) at.push_back(glm::mix(lo, hi, 0.5f * (c + 1.0f)));
+    Mesh m;
+    buildTriMesh(at, tris, m);
+    finalizeMesh(m);
+    return m;
+  };
+  const Mesh cube = box(glm::vec3(-0.5f), glm::vec3(0.5f)), bar = box({-0.5f, -0.25f, -0.25f}, {0.5f, 0.25f, 0.25f});
+  r->setMesh(&cube);
+  const ModelId barId = r->addModel(bar, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)));
+  RenderSettings s;
+  s.lines.intersections = true;
+  s.lines.intersectionColour = glm::vec3(1.0f, 0.0f, 0.0f);
+  s.lines.width = 2.0f;
+  const CameraMatrices cam = test::testCamera(1.0f, 60.0f, 25.0f);
+  // Red ink, and how far each red pixel is from the square's outline on the screen.
+  auto redAwayFrom = [&](const ImageRGBA8& img, const glm::vec3& squareCentre, int& red) {
+    const glm::vec3 c[4] = {squareCentre + glm::vec3(0, -0.25f, -0.25f), squareCentre + glm::vec3(0, 0.25f, -0.25f),
+                            squareCentre + glm::vec3(0, 0.25f, 0.25f), squareCentre + glm::vec3(0, -0.25f, 0.25f)};
+    glm::vec2 w[4];
+    for (int k = 0; k < 4; ++k) {
+      const glm::vec4 p = cam.projection * cam.view * glm::vec4(c[k], 1.0f);
+      w[k] = (glm::vec2(p) / p.w * 0.5f + 0.5f) * float(kSize);
+      w[k].y = float(kSize) - w[k].y;  // rows top first
+    }
+    red = 0;
+    float farthest = 0.0f;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::uint8_t* px = &img.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+        if (!(px[0] > 150 && px[1] < 110 && px[2] < 110)) continue;
+        ++red;
+        const glm::vec2 q(float(x) + 0.5f, float(y) + 0.5f);
+        float nearest = INFINITY;
+        for (int k = 0; k < 4; ++k) {
+          const glm::vec2 a = w[k], d = w[(k + 1) % 4] - a;
+          const float t = std::clamp(glm::dot(q - a, d) / glm::dot(d, d), 0.0f, 1.0f);
+          nearest = std::min(nearest, glm::length(q - (a + t * d)));
+        }
+        farthest = std::max(farthest, nearest);
+      }
+    return farthest;
+  };
+  int red = 0;
+  const float away = redAwayFrom(test::renderImage(*r, cam, s, kSize, kSize), glm::vec3(0.5f, 0, 0), red);
+  EXPECT_EQ(r->stats().intersectionSearches, 1);
+  std::printf("intersection lines: %d red pixels, the farthest %.2f px from the crossing's square\n", red, double(away));
+  EXPECT_GT(red, 150) << "the square where the bar enters the box is about 4 x 40 px of line";
+  EXPECT_LT(away, 2.5f) << "red ink away from where the objects cross";
+  // The camera moves: nothing is searched again. The bar moves: its new crossing is drawn.
+  (void)test::renderImage(*r, test::testCamera(1.0f, 50.0f, 25.0f), s, kSize, kSize);
+  EXPECT_EQ(r->stats().intersectionSearches, 0);
+  ASSERT_TRUE(r->setModelTransform(barId, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.15f, 0.0f))));
+  const float moved = redAwayFrom(test::renderImage(*r, cam, s, kSize, kSize), glm::vec3(0.5f, 0.15f, 0), red);
+  EXPECT_EQ(r->stats().intersectionSearches, 1);
+  EXPECT_GT(red, 150);
+  EXPECT_LT(moved, 2.5f);
+  // Off: no red at all.
+  s.lines.intersections = false;
+  (void)redAwayFrom(test::renderImage(*r, cam, s, kSize, kSize), glm::vec3(0.5f, 0.15f, 0), red);
+  EXPECT_EQ(red, 0);
+}
 }  // namespace
 }  // namespace npr

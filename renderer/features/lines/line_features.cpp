@@ -1,12 +1,16 @@
 // The line kinds as features, drawn over the surfaces in this order: hardware outlines and the
 // charcoal rim from back faces (lines/hardware_outline_pass.h), image-space edges from the
-// frame's depth and normals (lines/image_edges_pass.h), and each model's object-space feature
-// lines (lines/line_pass.h).
+// frame's depth and normals (lines/image_edges_pass.h), each model's object-space feature
+// lines (lines/line_pass.h), and the scene's intersection lines (lines/intersection_lines.h).
+#include <chrono>
 #include <memory>
 
+#include "renderer/core/elapsed.h"
 #include "renderer/features/feature.h"
 #include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/lines/image_edges_pass.h"
+#include "renderer/lines/intersection_lines.h"
+#include "renderer/lines/line_pass.h"
 
 namespace npr {
 namespace {
@@ -40,7 +44,7 @@ class ImageEdgesFeature final : public Feature {
 class FeatureLinesFeature final : public Feature {
  public:
   const char* name() const override { return "feature lines"; }
-  bool active(const FrameView& f) const override { return f.settings.lines.objectSpace(); }
+  bool active(const FrameView& f) const override { return f.settings.lines.edgeKinds(); }
   Status drawOver(FrameView& f) override {
     Status result = okStatus();
     f.scene.forEach([&](Model& m) {
@@ -50,8 +54,40 @@ class FeatureLinesFeature final : public Feature {
   }
 };
 
+class IntersectionLinesFeature final : public Feature {
+ public:
+  const char* name() const override { return "intersection lines"; }
+  bool active(const FrameView& f) const override { return f.settings.lines.intersections && !f.scene.empty(); }
+  Status drawOver(FrameView& f) override {
+    // Found again only when the scene changed (objects, their places or their pose).
+    if (!vao_ || f.scene.version() != sceneVersion_) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::vector<FeatureLine> lines = sceneIntersectionLines(f.scene);
+      if (!vao_) {
+        vao_ = gl::createVertexArray();
+        buffer_ = gl::createBuffer();
+      }
+      gl::uploadBuffer(buffer_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STATIC_DRAW);
+      count_ = lines.size();
+      sceneVersion_ = f.scene.version();
+      ++f.stats.intersectionSearches;
+      ++f.stats.bufferUploads;
+      f.stats.cpuLinesMs += msSince(t0);
+    }
+    // World space: the scene's camera places them.
+    return drawLineRanges({{&buffer_, 0, count_}}, f.camera, f.settings.lines, f.viewport, vao_, f.programs, f.stats);
+  }
+
+ private:
+  gl::VertexArray vao_;
+  gl::Buffer buffer_;
+  std::size_t count_ = 0;
+  unsigned sceneVersion_ = 0;
+};
+
 }  // namespace
 
+std::unique_ptr<Feature> makeIntersectionLinesFeature() { return std::make_unique<IntersectionLinesFeature>(); }
 std::unique_ptr<Feature> makeOutlinesFeature() { return std::make_unique<OutlinesFeature>(); }
 std::unique_ptr<Feature> makeImageEdgesFeature() { return std::make_unique<ImageEdgesFeature>(); }
 std::unique_ptr<Feature> makeFeatureLinesFeature() { return std::make_unique<FeatureLinesFeature>(); }
