@@ -136,6 +136,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       if (row.type == SettingType::Bool && !row.cliTakesValue) {
         opt = app.add_flag_function("--" + row.key + ",!--no-" + row.key,
                                     [&given, r](std::int64_t count) { given[r] = count > 0 ? "on" : "off"; }, help);
+      } else if (row.repeated) {
+        // Each occurrence adds an item (setting.h: repeated).
+        opt = app.add_option_function<std::vector<std::string>>("--" + row.key, [&given, r](const std::vector<std::string>& items) {
+          for (const std::string& v : items) given[r] += (given[r].empty() ? "" : "\n") + v;
+        }, help);
+        opt->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)->allow_extra_args(false);
       } else {
         opt = app.add_option_function<std::string>("--" + row.key, [&given, r](const std::string& v) { given[r] = v; }, help);
       }

@@ -93,4 +93,140 @@ bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* u
   return true;
 }
 
+namespace {
+
+const char* const kSetKinds[] = {"silhouette", "crease", "boundary", "material", "intersection"};
+const char* const kSetKindPlurals[] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
+
+bool parseNumber(const std::string& text, float& out) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  const float v = std::strtof(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(v)) return false;
+  out = v;
+  return true;
+}
+
+// Floats as short as read back the same.
+std::string shortFloat(float v) {
+  char buf[32];
+  for (int digits = 3; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
+    if (std::strtof(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
+std::vector<std::string> split(const std::string& text, char by) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(by, start), text.size());
+    out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+std::string trimBlanks(std::string s) {
+  s.erase(0, s.find_first_not_of(" \t\r\n"));
+  s.erase(s.find_last_not_of(" \t\r\n") + 1);
+  return s;
+}
+
+// One set's text; the error says what is wrong in it.
+bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
+  std::vector<std::string> words;
+  for (std::string w : split(text, ' '))
+    if (!(w = trimBlanks(w)).empty()) words.push_back(w);
+  if (words.empty()) return why = "empty", false;
+  for (const std::string& kind : split(words[0], ',')) {
+    int k = 0;
+    while (k < 5 && trimBlanks(kind) != kSetKinds[k] && trimBlanks(kind) != kSetKindPlurals[k]) ++k;
+    if (k == 5) return why = "unknown line kind (a set takes silhouette, crease, boundary, material, intersection)", false;
+    set.kinds |= std::uint8_t(1u << k);
+  }
+  for (std::size_t i = 1; i < words.size(); ++i) {
+    const std::size_t eq = words[i].find('=');
+    if (eq == std::string::npos) return why = "expected KEY=VALUE after the kinds", false;
+    const std::string key = words[i].substr(0, eq), value = words[i].substr(eq + 1);
+    if (key == "visibility") {
+      if (value == "visible") set.visibility = LineSet::Visibility::Visible;
+      else if (value == "hidden") set.visibility = LineSet::Visibility::Hidden;
+      else if (value == "both") set.visibility = LineSet::Visibility::Both;
+      else return why = "visibility must be visible, hidden or both", false;
+    } else if (key == "width") {
+      if (!parseNumber(value, set.width) || set.width < LineSet::kMinWidth || set.width > LineSet::kMaxWidth)
+        return why = "width must be a number in 0.1..64 (pixels)", false;
+    } else if (key == "colour" || key == "color") {
+      const std::vector<std::string> c = split(value, ',');
+      glm::vec3 rgb;
+      if (c.size() != 3 || !parseNumber(c[0], rgb.r) || !parseNumber(c[1], rgb.g) || !parseNumber(c[2], rgb.b) ||
+          glm::any(glm::lessThan(rgb, glm::vec3(0.0f))) || glm::any(glm::greaterThan(rgb, glm::vec3(1.0f))))
+        return why = "colour must be R,G,B, each in 0..1", false;
+      set.colour = rgb;
+    } else if (key == "dash") {
+      const std::vector<std::string> d = split(value, ',');
+      glm::vec2 dash;
+      if (d.size() != 2 || !parseNumber(d[0], dash.x) || !parseNumber(d[1], dash.y) || dash.x < 0.0f || dash.y < 0.0f ||
+          dash.x > LineSet::kMaxDash || dash.y > LineSet::kMaxDash || (dash.x == 0.0f) != (dash.y == 0.0f))
+        return why = "dash must be ON,OFF in pixels (0..1000 each; 0,0 for solid)", false;
+      set.dash = dash;
+    } else if (key == "falloff" || key == "sketchy") {
+      if (value != "on" && value != "off") return why = key + " must be on or off", false;
+      (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
+    } else {
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, falloff, sketchy)", false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why) {
+  std::vector<LineSet> parsed;
+  if (trimBlanks(text) != "none") {
+    std::string all = text;
+    std::replace(all.begin(), all.end(), ';', '\n');
+    int n = 0;
+    for (const std::string& line : split(all, '\n')) {
+      if (trimBlanks(line).empty()) continue;
+      ++n;
+      LineSet set;
+      std::string reason;
+      if (!parseLineSet(line, set, reason)) {
+        if (why) *why = "set " + std::to_string(n) + ": " + reason;
+        return false;
+      }
+      parsed.push_back(set);
+    }
+    if (n == 0) {
+      if (why) *why = "no set (give KINDS [KEY=VALUE ...], or none)";
+      return false;
+    }
+  }
+  sets = std::move(parsed);
+  return true;
+}
+
+std::string formatLineSets(const std::vector<LineSet>& sets) {
+  if (sets.empty()) return "none";
+  std::string out;
+  for (const LineSet& s : sets) {
+    if (!out.empty()) out += "\n";
+    std::string kinds;
+    for (int k = 0; k < 5; ++k)
+      if (s.has(k)) kinds += (kinds.empty() ? "" : ",") + std::string(kSetKinds[k]);
+    out += kinds;
+    if (s.visibility != LineSet::Visibility::Visible) out += s.visibility == LineSet::Visibility::Hidden ? " visibility=hidden" : " visibility=both";
+    out += " width=" + shortFloat(s.width);
+    if (s.colour) out += " colour=" + shortFloat(s.colour->r) + "," + shortFloat(s.colour->g) + "," + shortFloat(s.colour->b);
+    if (s.dash.x > 0.0f) out += " dash=" + shortFloat(s.dash.x) + "," + shortFloat(s.dash.y);
+    if (s.falloff) out += " falloff=on";
+    if (s.sketchy) out += " sketchy=on";
+  }
+  return out;
+}
+
 }  // namespace npr

@@ -3,6 +3,7 @@
 // renderer's own tuning, which only tests and benchmarks turn (RenderTuning).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,26 @@ namespace npr {
 enum class OutlineMethod { Edges, Offset, Fatten };
 const char* outlineMethodName(OutlineMethod m);
 std::optional<OutlineMethod> parseOutlineMethod(const std::string& s);
+
+// A line set (`line-set` in style files, --line-set): some object-space kinds drawn in a style
+// of their own, as Freestyle's and Pencil+'s line sets are. Sets draw in the order given, over
+// the kinds `lines` names that no set takes (which keep the line settings' own style).
+struct LineSet {
+  std::uint8_t kinds = 0;  // bit EdgeKind: silhouette 1, crease 2, boundary 4, material 8, intersection 16
+  enum class Visibility : std::uint8_t { Visible, Hidden, Both } visibility = Visibility::Visible;
+  float width = 2.0f;                 // pixels
+  std::optional<glm::vec3> colour;    // none: each kind's colour (silhouette-colour, ...)
+  glm::vec2 dash{0.0f};               // pixels on, off; on 0: solid
+  bool falloff = false;               // thinner with distance
+  bool sketchy = false;
+  static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f;
+  bool has(int kind) const { return (kinds >> kind) & 1u; }
+};
+// Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
+// [colour=R,G,B] [dash=ON,OFF] [falloff=on|off] [sketchy=on|off]`, or `none`. On failure `why`
+// says which set and what is wrong, and `sets` is unchanged.
+bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);
+std::string formatLineSets(const std::vector<LineSet>& sets);  // one set per line; "none" when empty
 
 // Lines drawn over any path (object-space feature edges, lines/feature_edges.h; image-space
 // edges, lines/image_edges_pass.h; hardware outlines and the charcoal rim,
@@ -49,9 +70,22 @@ struct LineSettings {
   bool rim = false;
   float rimLimit = 0.1f;
   static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
+  std::vector<LineSet> sets;
+  // The object-space kinds drawn (bit EdgeKind): those `lines` names and those the sets take.
+  std::uint8_t drawnKinds() const {
+    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+    for (const LineSet& s : sets) k |= s.kinds;
+    return k;
+  }
+  // Those drawn in the line settings' own style: named by `lines` and taken by no set.
+  std::uint8_t baseKinds() const {
+    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+    for (const LineSet& s : sets) k &= std::uint8_t(~s.kinds);
+    return k;
+  }
   // The kinds found on each mesh's edges (lines/feature_edges.h).
-  bool edgeKinds() const { return silhouettes || creases || boundaries || materials; }
-  bool objectSpace() const { return edgeKinds() || intersections; }
+  bool edgeKinds() const { return (drawnKinds() & 15) != 0; }
+  bool objectSpace() const { return drawnKinds() != 0; }
 };
 
 // Where the palette's pattern lives: fixed to the screen (the original), anchored to the

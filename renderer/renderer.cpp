@@ -481,7 +481,7 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
       }
     out.insert(out.end(), lines.begin(), lines.end());
   });
-  if (settings.lines.intersections) {
+  if (settings.lines.drawnKinds() & 16u) {
     const std::vector<FeatureLine> crossings = sceneIntersectionLines(scene_);
     out.insert(out.end(), crossings.begin(), crossings.end());
   }

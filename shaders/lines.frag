@@ -1,6 +1,7 @@
 // Feature line colour with an antialiased rim one pixel wide. SKETCHY strokes taper over
 // their first and last few pixels and press harder or lighter along their length. DASHED
-// (hidden lines) leaves gaps: dashes 6 pixels long every 10, lighter than the visible lines.
+// leaves gaps: dashes uDash.x pixels long every uDash.x + uDash.y (hidden lines: 6 in 10 by
+// default). uInk lightens (the hidden lines of the base style).
 in vec3 vColour;
 in float vAcross;
 flat in float vHalfWidth;
@@ -12,10 +13,14 @@ in float vAlong;
 flat in float vLength;
 flat in vec2 vPressure;
 #endif
+uniform float uInk;
+#ifdef DASHED
+uniform vec2 uDash;
+#endif
 out vec4 fragColor;
 void main() {
   float halfWidth = vHalfWidth;
-  float ink = 1.0;
+  float ink = uInk;
 #ifdef SKETCHY
   float t = clamp(vAlong / max(vLength, 1e-3), 0.0, 1.0);
   float pressure = mix(vPressure.x, vPressure.y, t);
@@ -26,8 +31,7 @@ void main() {
   ink = pressure;
 #endif
 #ifdef DASHED
-  if (mod(vDash, 10.0) > 6.0) discard;
-  ink *= 0.6;
+  if (mod(vDash, uDash.x + uDash.y) > uDash.x) discard;
 #endif
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;

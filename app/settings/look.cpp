@@ -79,7 +79,12 @@ Status applySettings(const std::vector<SettingValue>& values, bool wholeSections
 std::string lookText(const Look& look) {
   std::string out;
   for (const Setting& row : settingsTable())
-    if (row.saved && !(row.key == "palette" && look.palette.empty())) out += row.key + " " + row.format(look) + "\n";
+    if (row.saved && !(row.key == "palette" && look.palette.empty())) {
+      std::string value = row.format(look);
+      if (row.repeated)  // one line per item
+        for (std::size_t at; (at = value.find('\n')) != std::string::npos; value.erase(0, at + 1)) out += row.key + " " + value.substr(0, at) + "\n";
+      out += row.key + " " + value + "\n";
+    }
   return out;
 }
 

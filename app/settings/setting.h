@@ -56,6 +56,10 @@ struct Setting {
   bool cli = true;      // an option of its own on the command line
   bool cliTakesValue = false;  // Bool: `--key on|off` instead of a flag
   bool applyOnRelease = false;  // the overlay applies it when the slider is let go (it recomputes a cache)
+  // A list, one item per line: a style file may name the key on several lines and the command
+  // line take the option several times (each adds an item); the value is the whole list, its
+  // items separated by line ends, and parse replaces the list.
+  bool repeated = false;
   std::vector<std::pair<std::string, std::string>> cliAliases;  // older names: {"--name", value}
 
   // The row's value in `look` as text its parse takes back.

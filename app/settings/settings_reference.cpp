@@ -22,7 +22,9 @@ std::string settingsReferenceMarkdown() {
       std::string values = row.valueForm();
       for (char& c : values)
         if (c == '|') c = '/';
-      out += "| " + key + " | " + values + " | " + row.format(defaults) + " | " + (row.saved ? "yes" : "no") + " | " + row.help + " |\n";
+      std::string help;  // a bar would end the table's cell
+      for (char c : row.help) help += c == '|' ? std::string("\\|") : std::string(1, c);
+      out += "| " + key + " | " + values + " | " + row.format(defaults) + " | " + (row.saved ? "yes" : "no") + " | " + help + " |\n";
     }
   }
   out += "<!-- end of the generated settings reference -->\n";

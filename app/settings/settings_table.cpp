@@ -370,6 +370,22 @@ std::vector<Setting> buildTable() {
   t.push_back(boolRow("sketchy", "sketchy", "lines", "Draw each line as a few jittered strokes", [](Look& l) -> bool& { return l.render.lines.sketchy; }));
   t.push_back(boolRow("hidden-lines", "hidden lines", "lines", "Also draw the hidden parts of the silhouettes, creases, boundaries and material lines, dashed",
                       [](Look& l) -> bool& { return l.render.lines.hidden; }));
+  {
+    Setting sets = base("line-set", "line sets", "lines",
+                        "A line set: object-space kinds drawn in a style of their own, over the kinds `lines` names that no set takes; "
+                        "repeat it for several, drawn in order. KINDS [visibility=visible|hidden|both] [width=W] [colour=R,G,B] [dash=ON,OFF] "
+                        "[falloff=on|off] [sketchy=on|off]",
+                        K::Text);
+    sets.example = "silhouette,crease visibility=hidden width=1 dash=4,3";
+    sets.repeated = true;
+    sets.format = [](const Look& l) { return formatLineSets(l.render.lines.sets); };
+    sets.parse = [](const std::string& v, Look& l) -> Status {
+      std::string reason;
+      if (!parseLineSets(v, l.render.lines.sets, &reason)) return Error{reason};
+      return okStatus();
+    };
+    t.push_back(sets);
+  }
   t.push_back(boolRow("line-falloff", "depth falloff", "lines", "Thinner lines with distance", [](Look& l) -> bool& { return l.render.lines.depthFalloff; }));
   t.push_back(floatRow("edge-threshold", "edge threshold", "lines", "Image-space edges: the Sobel threshold on depth and normals", 0.01, 4.0,
                        [](Look& l) -> float& { return l.render.lines.imageThreshold; }, true));

@@ -62,7 +62,13 @@ Result<Style> loadStyle(const std::string& path) {
     if (!row) return Error{where + ": unknown key '" + printable(key) + "' (the README's settings reference lists the keys a style may set)"};
     const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : arg;
     if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + printable(arg) + "': " + s.error()};
-    if (key == "palette") st.palette = value;
+    if (key == "palette") {
+      st.palette = value;
+      continue;
+    }
+    // A list's lines make one value (setting.h: repeated).
+    auto earlier = std::find_if(st.values.begin(), st.values.end(), [&](const SettingValue& v) { return v.row == row; });
+    if (row->repeated && earlier != st.values.end()) earlier->value += "\n" + value;
     else st.values.push_back({row, value, where});
   }
   return st;

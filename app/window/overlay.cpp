@@ -15,6 +15,7 @@
 
 #include "app/settings/look.h"
 #include "app/settings/style_file.h"
+#include "renderer/core/printable.h"
 #include "renderer/gl/gl_info.h"
 
 namespace npr {
@@ -89,13 +90,17 @@ bool settingWidget(const Setting& row, Look& look, const std::vector<std::string
       break;
     }
     case SettingType::Text: {
-      // Typed, applied on Enter; a value that does not parse is said in the messages.
-      static std::map<const Setting*, std::array<char, 128>> buffers;
+      // Typed, applied on Enter; a value that does not parse is said in the messages. A list
+      // (line sets) is one item per line: Ctrl+Enter starts a line.
+      static std::map<const Setting*, std::array<char, 1024>> buffers;
       static std::map<const Setting*, bool> editing;
-      std::array<char, 128>& buf = buffers[&row];
+      std::array<char, 1024>& buf = buffers[&row];
       if (!editing[&row]) std::snprintf(buf.data(), buf.size(), "%s", row.format(look).c_str());
-      if (ImGui::InputText(row.label.c_str(), buf.data(), buf.size(), ImGuiInputTextFlags_EnterReturnsTrue))
-        if (Status parsed = row.parse(buf.data(), look); !parsed) *error = row.key + " '" + buf.data() + "': " + parsed.error();
+      const bool entered = row.repeated ? ImGui::InputTextMultiline(row.label.c_str(), buf.data(), buf.size(), ImVec2(0, ImGui::GetTextLineHeight() * 5),
+                                                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CtrlEnterForNewLine)
+                                        : ImGui::InputText(row.label.c_str(), buf.data(), buf.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+      if (entered)
+        if (Status parsed = row.parse(buf.data(), look); !parsed) *error = row.key + " '" + printable(buf.data()) + "': " + parsed.error();
       editing[&row] = ImGui::IsItemActive();
       break;
     }

@@ -104,7 +104,7 @@ struct TurnResolveProgram {
 struct LineProgram {
   bool sketchy = false;
   bool depthFalloff = false;
-  bool dashed = false;  // hidden lines: dashes along the line, drawn where the surface is in front
+  bool dashed = false;  // dashes along the line (hidden lines by default, line sets' dash=ON,OFF)
 };
 
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the

@@ -13,7 +13,7 @@
 namespace npr {
 namespace {
 
-using Triangle = std::array<glm::vec3, 3>;
+using WorldTriangle = std::array<glm::vec3, 3>;
 
 struct Box {
   glm::vec3 lo{INFINITY}, hi{-INFINITY};
@@ -39,7 +39,7 @@ constexpr std::uint32_t kLeafSize = 4;
 
 class Hierarchy {
  public:
-  explicit Hierarchy(const std::vector<Triangle>& tris) : tris_(tris) {
+  explicit Hierarchy(const std::vector<WorldTriangle>& tris) : tris_(tris) {
     boxes_.resize(tris.size());
     centres_.resize(tris.size());
     order_.resize(tris.size());
@@ -146,7 +146,7 @@ class Hierarchy {
     return e.x * e.y + e.y * e.z + e.z * e.x;  // half the surface: what decides overlaps
   }
 
-  const std::vector<Triangle>& tris_;
+  const std::vector<WorldTriangle>& tris_;
   std::vector<Box> boxes_;
   std::vector<glm::vec3> centres_;
   std::vector<std::uint32_t> order_;
@@ -220,7 +220,7 @@ bool triangleIntersection(const glm::vec3 a[3], const glm::vec3 b[3], glm::vec3&
 }
 
 std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts) {
-  std::vector<Triangle> tris;
+  std::vector<WorldTriangle> tris;
   std::size_t total = 0;
   for (const IntersectionObject& o : objects) total += o.mesh ? o.mesh->triangleCount() : 0;
   tris.reserve(total);
@@ -228,7 +228,7 @@ std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>
     if (!o.mesh) continue;
     const Mesh& m = *o.mesh;
     for (std::size_t t = 0; t < m.triangleCount(); ++t) {
-      Triangle tri;
+      WorldTriangle tri;
       for (int k = 0; k < 3; ++k) tri[std::size_t(k)] = glm::vec3(o.transform * glm::vec4(m.positions[m.indices[3 * t + std::size_t(k)]], 1.0f));
       // Zero-area and non-finite triangles cross nothing.
       const glm::vec3 n = glm::cross(tri[1] - tri[0], tri[2] - tri[0]);

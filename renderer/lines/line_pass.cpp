@@ -36,7 +36,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     staticLines_ = gl::createBuffer();
     silhouettes_ = gl::createBuffer();
   }
-  if ((ls.creases || ls.boundaries || ls.materials) && uploadedCreaseAngle_ != ls.creaseAngle) {
+  const std::uint8_t kinds = ls.drawnKinds();
+  if ((kinds & 14u) && uploadedCreaseAngle_ != ls.creaseAngle) {
     // Static lines are creases, then boundaries, then material boundaries: the parts asked for
     // are drawn as ranges.
     const auto& lines = edges_->staticLines(ls.creaseAngle);
@@ -51,7 +52,7 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     ++stats.bufferUploads;
   }
   const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
-  if (ls.silhouettes && !(eye == silhouetteEye_)) {
+  if ((kinds & 1u) && !(eye == silhouetteEye_)) {
     const auto& lines = edges_->silhouettes(eye);
     gl::uploadBuffer(silhouettes_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STREAM_DRAW);
     silhouetteCount_ = lines.size();
@@ -60,38 +61,80 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   stats.cpuLinesMs += msSince(t0);
 
-  std::vector<LineRange> ranges;
-  if (ls.silhouettes) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
-  if (ls.creases) ranges.push_back({&staticLines_, 0, creaseCount_});
-  if (ls.boundaries) ranges.push_back({&staticLines_, creaseCount_, boundaryCount_});
-  if (ls.materials) ranges.push_back({&staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_});
-  return drawLineRanges(ranges, camera, ls, viewport, vao_, programs, stats);
+  for (const LineStyle& style : lineStyles(ls)) {
+    std::vector<LineRange> ranges;
+    if (style.kinds & 1u) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
+    if (style.kinds & 2u) ranges.push_back({&staticLines_, 0, creaseCount_});
+    if (style.kinds & 4u) ranges.push_back({&staticLines_, creaseCount_, boundaryCount_});
+    if (style.kinds & 8u) ranges.push_back({&staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_});
+    if (ranges.empty()) continue;
+    if (Status st = drawLineRanges(ranges, camera, style, viewport, vao_, programs, stats); !st) return st;
+  }
+  return okStatus();
 }
 
-Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineSettings& ls, const glm::ivec4& viewport,
+LineStyle LineStyle::base(const LineSettings& ls) {
+  LineStyle s;
+  s.width = ls.width;
+  const glm::vec3 colours[kEdgeKinds] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour, ls.intersectionColour};
+  std::copy(std::begin(colours), std::end(colours), s.colours);
+  s.hidden = ls.hidden;
+  s.hiddenWidthScale = 0.6f;
+  s.hiddenInk = 0.6f;
+  s.sketchy = ls.sketchy;
+  s.falloff = ls.depthFalloff;
+  s.kinds = ls.baseKinds();
+  return s;
+}
+
+LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
+  LineStyle s = base(ls);
+  s.width = set.width;
+  if (set.colour) std::fill(std::begin(s.colours), std::end(s.colours), *set.colour);
+  s.visible = set.visibility != LineSet::Visibility::Hidden;
+  s.hidden = set.visibility != LineSet::Visibility::Visible;
+  s.dash = set.dash;
+  if (set.dash.x > 0.0f) s.hiddenDash = set.dash;
+  s.hiddenWidthScale = s.hiddenInk = 1.0f;  // the set says how its hidden lines look
+  s.sketchy = set.sketchy;
+  s.falloff = set.falloff;
+  s.kinds = set.kinds;
+  return s;
+}
+
+std::vector<LineStyle> lineStyles(const LineSettings& ls) {
+  std::vector<LineStyle> out;
+  if (ls.baseKinds()) out.push_back(LineStyle::base(ls));
+  for (const LineSet& set : ls.sets) out.push_back(LineStyle::of(set, ls));
+  return out;
+}
+
+Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineStyle& style, const glm::ivec4& viewport,
                       const gl::VertexArray& vao, gl::ProgramCache& programs, FrameStats& stats) {
   const glm::vec3 eye = glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 0, 1));
-  // The visible parts, then (--hidden-lines) the hidden ones, dashed, where the surface is in
-  // front of them.
+  // The visible parts, then the hidden ones where the surface is in front of them.
   for (const bool hidden : {false, true}) {
-    if (hidden && !ls.hidden) break;
-    const bool sketchy = ls.sketchy && !hidden;
-    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, ls.depthFalloff, hidden}, stats.shaderBuilds);
+    if (!(hidden ? style.hidden : style.visible)) continue;
+    const bool sketchy = style.sketchy && !hidden;
+    const glm::vec2 dash = hidden ? style.hiddenDash : style.dash;
+    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
     p.use();
     p.set("uModelViewProjection", placed.projection * placed.view);
     p.set("uViewport", glm::vec2(viewport.z, viewport.w));
-    p.set("uWidth", std::max(hidden ? 0.6f * ls.width : ls.width, 0.5f));
-    const glm::vec3 colours[kEdgeKinds] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour, ls.intersectionColour};
-    p.setArray("uColours", colours, kEdgeKinds);
+    const float width = std::max(hidden ? style.hiddenWidthScale * style.width : style.width, 0.5f);
+    p.set("uWidth", width);
+    p.setArray("uColours", style.colours, kEdgeKinds);
     p.set("uFalloffDepth", glm::length(eye));
+    p.set("uInk", hidden ? style.hiddenInk : 1.0f);
+    if (dash.x > 0.0f) p.set("uDash", dash);
     // Intersection lines: pulled by about a surface's rise over the quad's half width at 60
     // degrees of slope, twice over (lines.vert).
     const bool perspective = placed.projection[3][3] == 0.0f;
     const float pixel = 2.0f / (placed.projection[1][1] * float(std::max(viewport.w, 1)));
-    p.set("uValleyPixels", 2.0f * (0.5f * ls.width + 1.0f) * 1.8f);
+    p.set("uValleyPixels", 2.0f * (0.5f * width + 1.0f) * 1.8f);
     p.set("uEye", perspective ? glm::vec4(eye, 1.0f) : glm::vec4(glm::normalize(glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 1, 0))), 0.0f));
     p.set("uPixelScale", perspective ? glm::vec2(pixel, 0.0f) : glm::vec2(0.0f, pixel));
     glBindVertexArray(vao.id());
@@ -118,16 +161,15 @@ std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const Lin
   std::vector<FeatureLine> out;
   if (!mesh_ || !ls.edgeKinds()) return out;
   if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
-  if (ls.silhouettes) {
+  const std::uint8_t kinds = ls.drawnKinds();
+  if (kinds & 1u) {
     const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
     const auto& s = edges_->silhouettes(eye);
     out.insert(out.end(), s.begin(), s.end());
     silhouetteEye_ = glm::vec3(NAN);  // the uploaded silhouettes may be another eye's now
   }
   for (const FeatureLine& l : edges_->staticLines(ls.creaseAngle)) {
-    const auto kind = static_cast<EdgeKind>(int(l.kind + 0.5f));
-    if ((kind == EdgeKind::Crease && ls.creases) || (kind == EdgeKind::Boundary && ls.boundaries) || (kind == EdgeKind::Material && ls.materials))
-      out.push_back(l);
+    if ((kinds >> int(l.kind + 0.5f)) & 1u) out.push_back(l);
   }
   return out;
 }

@@ -26,10 +26,27 @@ struct LineRange {
   std::size_t first, count;
 };
 
-// Draws `ranges` (lines in the space `placed` maps to the clip space) in the style `ls` gives
-// them: the visible parts, then with --hidden-lines the hidden ones, dashed. Shared by each
-// model's edges and the scene's intersection lines.
-[[nodiscard]] Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineSettings& ls,
+// How a group of lines is drawn: the line settings' own style for the kinds no set takes, or a
+// line set's.
+struct LineStyle {
+  float width = 2.0f;                   // pixels
+  glm::vec3 colours[kEdgeKinds]{};      // per EdgeKind
+  bool visible = true, hidden = false;  // which parts
+  glm::vec2 dash{0.0f};                 // the visible parts' dashes, pixels on and off (0: solid)
+  glm::vec2 hiddenDash{6.0f, 4.0f};
+  float hiddenWidthScale = 1.0f, hiddenInk = 1.0f;  // the hidden parts thinner and lighter
+  bool sketchy = false, falloff = false;
+  std::uint8_t kinds = 0;               // bit EdgeKind: what it draws
+  static LineStyle base(const LineSettings& ls);
+  static LineStyle of(const LineSet& set, const LineSettings& ls);
+};
+// Every style the settings draw with, in drawing order: the base style first (when `lines` names
+// a kind no set takes), then the sets.
+std::vector<LineStyle> lineStyles(const LineSettings& ls);
+
+// Draws `ranges` (lines in the space `placed` maps to the clip space) in `style`: the visible
+// parts, then the hidden ones. Shared by each model's edges and the scene's intersection lines.
+[[nodiscard]] Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices& placed, const LineStyle& style,
                                     const glm::ivec4& viewport, const gl::VertexArray& vao, gl::ProgramCache& programs, FrameStats& stats);
 
 class LinePass {

@@ -78,7 +78,7 @@ std::vector<std::vector<glm::vec2>> chain(const std::vector<std::pair<glm::vec2,
 }  // namespace
 
 SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
-                           const ImageRGBA32F& eyePosition) {
+                           const ImageRGBA32F& eyePosition, bool hiddenParts) {
   const Projector proj{camera, glm::vec2(size)};
   const float nearZ = -1e-4f;  // clip just in front of the eye; the projection's near plane clips the rest
   std::vector<std::pair<glm::vec2, glm::vec2>> segments[kEdgeKinds];
@@ -104,7 +104,7 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
         const glm::vec3 p = glm::mix(a, b, s);
         w = glm::mix(wa, wb, t);
         const int x = int(std::floor(w.x)), y = int(std::floor(w.y));
-        visible = x >= 0 && y >= 0 && x < size.x && y < size.y && !hidden(eyePosition, x, y, p);
+        visible = x >= 0 && y >= 0 && x < size.x && y < size.y && hidden(eyePosition, x, y, p) == hiddenParts;
       }
       if (visible && runStart < 0) {
         runStart = i;
@@ -154,7 +154,16 @@ std::string base64(const std::vector<std::uint8_t>& data) {
 
 }  // namespace
 
-std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const LineSettings& style, const std::vector<std::uint8_t>& rasterPng) {
+std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style) {
+  const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
+  const glm::vec3 colours[kEdgeKinds] = {style.silhouetteColour, style.creaseColour, style.boundaryColour, style.materialColour,
+                                         style.intersectionColour};
+  std::vector<SvgGroup> out;
+  for (int k = 0; k < kEdgeKinds; ++k) out.push_back({names[k], colours[k], style.width, 1.0f, glm::vec2(0.0f), lines.chains[k]});
+  return out;
+}
+
+std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng) {
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
     << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"" << size.x
@@ -163,15 +172,18 @@ std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const Lin
   if (!rasterPng.empty())
     o << "<image id=\"rendering\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y
       << "\" xlink:href=\"data:image/png;base64," << base64(rasterPng) << "\"/>\n";
-  const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
-  const glm::vec3 colours[kEdgeKinds] = {style.silhouetteColour, style.creaseColour, style.boundaryColour, style.materialColour,
-                                         style.intersectionColour};
-  char number[32];
-  for (int k = 0; k < kEdgeKinds; ++k) {
-    if (lines.chains[k].empty()) continue;
-    o << "<g id=\"" << names[k] << "\" fill=\"none\" stroke=\"" << hexColour(colours[k]) << "\" stroke-width=\"" << style.width
-      << "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-    for (const auto& c : lines.chains[k]) {
+  char number[64];
+  for (const SvgGroup& g : groups) {
+    if (g.chains.empty()) continue;
+    o << "<g id=\"" << g.id << "\" fill=\"none\" stroke=\"" << hexColour(g.colour) << "\" stroke-width=\"" << g.width
+      << "\" stroke-linecap=\"" << (g.dash.x > 0.0f ? "butt" : "round") << "\" stroke-linejoin=\"round\"";
+    if (g.opacity < 1.0f) o << " stroke-opacity=\"" << g.opacity << "\"";
+    if (g.dash.x > 0.0f) {
+      std::snprintf(number, sizeof number, " stroke-dasharray=\"%.2f %.2f\"", double(g.dash.x), double(g.dash.y));
+      o << number;
+    }
+    o << ">\n";
+    for (const auto& c : g.chains) {
       o << "<polyline points=\"";
       for (std::size_t i = 0; i < c.size(); ++i) {
         std::snprintf(number, sizeof number, "%s%.2f,%.2f", i ? " " : "", double(c[i].x), double(c[i].y));

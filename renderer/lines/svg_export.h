@@ -1,7 +1,8 @@
 // Vector export of the feature lines (`--svg FILE`): the object-space lines the line pass draws
 // for a camera, projected, cut where the model hides them (each edge sampled at a pixel step
-// against the frame's eye-space depth), chained into polylines at shared ends in drawing order,
-// one SVG group per line kind with its colour and width, optionally over the rendered frame as
+// against the frame's eye-space depth; the hidden parts instead for hidden lines), chained into
+// polylines at shared ends in drawing order, one SVG group per kind and part of each line style
+// (the line settings' own, then the line sets) with its colour, width and dashes, optionally over the rendered frame as
 // an embedded raster layer. Plain SVG 1.1 that vector editors read. No GL here: the caller
 // hands over the lines and the depth it read back.
 #pragma once
@@ -24,12 +25,25 @@ struct SvgLines {
 };
 
 // Projects `lines` (object space) with `camera` into a `size` window and keeps what the model
-// does not hide: `eyePosition` is the frame's eye-space position per pixel (rows top first,
-// alpha 0 where no surface), as Renderer::renderGeometry(EyePosition) reads it back.
+// does not hide (or, `hiddenParts`, only what it hides): `eyePosition` is the frame's eye-space
+// position per pixel (rows top first, alpha 0 where no surface), as
+// Renderer::renderGeometry(EyePosition) reads it back.
 SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
-                           const ImageRGBA32F& eyePosition);
+                           const ImageRGBA32F& eyePosition, bool hiddenParts = false);
 
-// The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath.
-std::string svgDocument(const SvgLines& lines, const glm::ivec2& size, const LineSettings& style, const std::vector<std::uint8_t>& rasterPng);
+// One group of the document: polylines in one stroke style.
+struct SvgGroup {
+  std::string id;
+  glm::vec3 colour{0.0f};
+  float width = 1.0f, opacity = 1.0f;
+  glm::vec2 dash{0.0f};  // pixels on, off; 0: solid
+  std::vector<std::vector<glm::vec2>> chains;
+};
+// The groups of the line settings' kinds, each in its kind's colour and `style.width`.
+std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style);
+
+// The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath;
+// the groups in order, empty ones left out.
+std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng);
 
 }  // namespace npr

@@ -162,7 +162,12 @@ TEST(SvgExport, EdgesChainAtSharedEndsAndHiddenPartsAreCut) {
     for (const glm::vec2& q : chain) EXPECT_GE(q.x, 98.0f) << "a point of a hidden part was kept";
   EXPECT_LT(cut.lengthPx, 0.7 * out.lengthPx);
   EXPECT_GT(cut.lengthPx, 0.3 * out.lengthPx);
-  const std::string svg = svgDocument(out, size, LineSettings{}, {});
+  // The hidden parts (--hidden-lines, a set's visibility=hidden): the other half.
+  const SvgLines behind = visibleLineChains(lines, cam, size, front, true);
+  for (const auto& chain : behind.chains[0])
+    for (const glm::vec2& q : chain) EXPECT_LE(q.x, 102.0f) << "a point of a visible part was kept";
+  EXPECT_NEAR(behind.lengthPx + cut.lengthPx, out.lengthPx - 0.0, 0.05 * out.lengthPx);
+  const std::string svg = svgDocument(kindGroups(out, LineSettings{}), size, {});
   EXPECT_NE(svg.find("<g id=\"silhouettes\""), std::string::npos);
   EXPECT_NE(svg.find("<g id=\"creases\""), std::string::npos);
   EXPECT_EQ(svg.find("<image"), std::string::npos);

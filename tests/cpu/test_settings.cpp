@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <random>
 #include <set>
 #include <sstream>
@@ -58,6 +59,23 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
         return out.empty() ? "none" : out;
       }
       if (row.key == "stroke-size") return formatFloat(float(uniform(1, 256))) + "x" + formatFloat(float(uniform(1, 256)));
+      if (row.key == "line-set") {  // 0 to 3 sets, each with some of the keys, one per line
+        const char* kinds[] = {"silhouette", "crease", "boundary", "material", "intersection"};
+        const char* visibility[] = {"visible", "hidden", "both"};
+        std::string out;
+        for (std::size_t i = 0, n = pick(4); i < n; ++i) {
+          std::string set = kinds[pick(5)];
+          if (pick(2)) set += std::string(",") + kinds[pick(5)];
+          if (pick(2)) set += std::string(" visibility=") + visibility[pick(3)];
+          if (pick(2)) set += " width=" + formatFloat(float(uniform(0.1, 64)));
+          if (pick(2)) set += " colour=" + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + ",0";
+          if (pick(2)) set += " dash=" + formatFloat(float(uniform(0.5, 20))) + "," + formatFloat(float(uniform(0.5, 20)));
+          if (pick(2)) set += std::string(" falloff=") + (pick(2) ? "on" : "off");
+          if (pick(2)) set += std::string(" sketchy=") + (pick(2) ? "on" : "off");
+          out += (out.empty() ? "" : "\n") + set;
+        }
+        return out.empty() ? "none" : out;
+      }
       return row.example;
   }
   return row.example;
@@ -114,13 +132,16 @@ TEST(SettingsTable, RandomLooksRoundTripThroughStyleText) {
     std::istringstream in(text);
     std::string line;
     std::set<std::string> seen;
+    std::map<const Setting*, std::string> lists;  // a repeated row's lines make one value
     while (std::getline(in, line)) {
       const std::string key = line.substr(0, line.find(' ')), value = line.substr(line.find(' ') + 1);
       const Setting* row = findSetting(key);
       ASSERT_NE(row, nullptr) << line;
-      ASSERT_TRUE(row->parse(value, back)) << line;
+      if (row->repeated) lists[row] += (lists[row].empty() ? "" : "\n") + value;
+      else ASSERT_TRUE(row->parse(value, back)) << line;
       seen.insert(key);
     }
+    for (const auto& [row, value] : lists) ASSERT_TRUE(row->parse(value, back)) << row->key << " " << value;
     for (const Setting& row : settingsTable()) {
       if (!row.saved) continue;
       EXPECT_TRUE(seen.count(row.key)) << "not saved: " << row.key;
@@ -134,6 +155,46 @@ TEST(SettingsTable, RandomLooksRoundTripThroughStyleText) {
     EXPECT_EQ(back.light, look.light);
     EXPECT_EQ(back.render.bands, look.render.bands);
   }
+}
+
+// Line sets: one per line of a style file or per --line-set; each item says what is wrong with
+// which set, and a bad list changes nothing.
+TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
+  std::vector<LineSet> sets;
+  std::string why;
+  ASSERT_TRUE(parseLineSets("silhouette width=3; crease,intersection visibility=both colour=0,0,1 dash=4,2", sets, &why)) << why;
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_TRUE(sets[0].has(0) && !sets[0].has(1));
+  EXPECT_EQ(sets[0].width, 3.0f);
+  EXPECT_TRUE(sets[1].has(1) && sets[1].has(4) && !sets[1].has(0));
+  EXPECT_EQ(sets[1].visibility, LineSet::Visibility::Both);
+  EXPECT_EQ(sets[1].dash, glm::vec2(4.0f, 2.0f));
+  EXPECT_EQ(formatLineSets(sets), "silhouette width=3\ncrease,intersection visibility=both width=2 colour=0,0,1 dash=4,2");
+  for (const auto& [bad, reason] : std::vector<std::pair<std::string, std::string>>{
+           {"silhouette width=3\nhatching", "set 2: unknown line kind"},
+           {"crease width=0", "set 1: width must be"},
+           {"crease colour=2,0,0", "set 1: colour must be"},
+           {"crease dash=4", "set 1: dash must be"},
+           {"crease visibility=sometimes", "set 1: visibility must be"},
+           {"crease taper", "set 1: expected KEY=VALUE"},
+           {"crease shade=on", "set 1: unknown key 'shade'"},
+           {";", "no set"}}) {
+    EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;
+    EXPECT_NE(why.find(reason), std::string::npos) << bad << ": " << why;
+    EXPECT_EQ(sets.size(), 2u) << "a bad list changed the sets";
+  }
+  ASSERT_TRUE(parseLineSets("none", sets, &why));
+  EXPECT_TRUE(sets.empty());
+  // A style file's line-set lines make the list, in order; the kinds `lines` names that no set
+  // takes keep the base style.
+  test::TempDir d;
+  Result<Style> st = loadStyle(d.write("sets.style", "lines silhouette,crease,boundary\nline-set crease width=1\nline-set silhouette visibility=hidden\n"));
+  ASSERT_TRUE(st) << st.error();
+  Look look;
+  for (const auto& v : st->values) ASSERT_TRUE(v.row->parse(v.value, look)) << v.row->key;
+  ASSERT_EQ(look.render.lines.sets.size(), 2u);
+  EXPECT_EQ(look.render.lines.baseKinds(), 1u << 2);  // boundaries: no set takes them
+  EXPECT_EQ(look.render.lines.drawnKinds(), 7u);
 }
 
 // The drift the table ended: the orientation does not reset its bins; the bins may go to 64.
@@ -180,7 +241,10 @@ TEST(SettingsTable, EveryRowIsACommandLineOptionThatSetsIt) {
     const std::string value = randomValue(row, rng);
     std::vector<std::string> args{"npr-viewer", "--headless"};
     if (row.type == SettingType::Bool && !row.cliTakesValue) args.push_back(value == "on" ? "--" + row.key : "--no-" + row.key);
-    else args.insert(args.end(), {"--" + row.key, value});
+    else if (row.repeated && value != "none") {  // the option once per item
+      std::istringstream items(value);
+      for (std::string item; std::getline(items, item);) args.insert(args.end(), {"--" + row.key, item});
+    } else args.insert(args.end(), {"--" + row.key, value});
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     const ParseOutcome parsed = parseCommandLine(int(argv.size()), argv.data());

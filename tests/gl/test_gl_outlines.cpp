@@ -4,7 +4,8 @@
 // near the silhouette. The same measures at full size, with frame costs, are bench_styles.
 // Hidden lines (--hidden-lines) are drawn only where the surface hides them, dashed.
 // Intersection lines are drawn where two objects cross and nowhere else, found again when an
-// object moves and not when the camera does.
+// object moves and not when the camera does. Line sets draw the kinds and parts they select in
+// their own colour and width.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -30,6 +31,21 @@ Palette whitePalette() {
   Palette p = test::greyRamp(2);
   p.entries.resize(1);
   return p;
+}
+
+// A box with its corners at `lo` and `hi`, closed, twelve triangles.
+Mesh boxMesh(const glm::vec3& lo, const glm::vec3& hi) {
+  const glm::vec3 corners[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                            {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  std::vector<std::array<int, 3>> tris;
+  for (const auto& f : faces) tris.push_back({f[0], f[1], f[2]});
+  std::vector<glm::vec3> at;
+  for (const glm::vec3& c : corners) at.push_back(glm::mix(lo, hi, 0.5f * (c + 1.0f)));
+  Mesh m;
+  buildTriMesh(at, tris, m);
+  finalizeMesh(m);
+  return m;
 }
 
 struct OutlineFixture : test::RendererFixture {
@@ -175,15 +191,7 @@ TEST_F(OutlineFixture, CharcoalRimDrawsTheDarkToneAroundTheSilhouetteOnly) {
 
 TEST_F(OutlineFixture, HiddenLinesAreDrawnDashedOnlyWhereTheSurfaceHidesThem) {
   // A closed cube seen from above and aside: three of its twelve edges are behind it.
-  const glm::vec3 corners[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
-  const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                            {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
-  Mesh cube;
-  std::vector<std::array<int, 3>> tris;
-  for (const auto& f : faces) tris.push_back({f[0], f[1], f[2]});
-  buildTriMesh(std::vector<glm::vec3>(std::begin(corners), std::end(corners)), tris, cube);
-  for (glm::vec3& p : cube.positions) p *= 0.5f;
-  finalizeMesh(cube);
+  const Mesh cube = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f));
   LineSettings l;
   l.creases = true;
   l.creaseColour = glm::vec3(0.0f);
@@ -211,20 +219,7 @@ TEST_F(OutlineFixture, HiddenLinesAreDrawnDashedOnlyWhereTheSurfaceHidesThem) {
 
 TEST_F(OutlineFixture, IntersectionLinesDrawWhereTwoObjectsCrossOnly) {
   // A box and a bar through its face x = 0.5: they cross along the square x = 0.5, |y|, |z| <= 0.25.
-  const glm::vec3 corners[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
-  const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
-                            {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
-  std::vector<std::array<int, 3>> tris;
-  for (const auto& f : faces) tris.push_back({f[0], f[1], f[2]});
-  auto box = [&](const glm::vec3& lo, const glm::vec3& hi) {
-    std::vector<glm::vec3> at;
-    for (const glm::vec3& c : corners) at.push_back(glm::mix(lo, hi, 0.5f * (c + 1.0f)));
-    Mesh m;
-    buildTriMesh(at, tris, m);
-    finalizeMesh(m);
-    return m;
-  };
-  const Mesh cube = box(glm::vec3(-0.5f), glm::vec3(0.5f)), bar = box({-0.5f, -0.25f, -0.25f}, {0.5f, 0.25f, 0.25f});
+  const Mesh cube = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f)), bar = boxMesh({-0.5f, -0.25f, -0.25f}, {0.5f, 0.25f, 0.25f});
   r->setMesh(&cube);
   const ModelId barId = r->addModel(bar, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)));
   RenderSettings s;
@@ -278,6 +273,47 @@ TEST_F(OutlineFixture, IntersectionLinesDrawWhereTwoObjectsCrossOnly) {
   s.lines.intersections = false;
   (void)redAwayFrom(test::renderImage(*r, cam, s, kSize, kSize), glm::vec3(0.5f, 0.15f, 0), red);
   EXPECT_EQ(red, 0);
+}
+
+TEST_F(OutlineFixture, LineSetsDrawTheirKindsAndPartsInTheirOwnStyle) {
+  // A cube: its silhouettes in one set (red), its creases in another (blue, thin), its hidden
+  // edges in a third (green, dashed). `lines none`: only the sets draw.
+  const Mesh cube = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f));
+  auto count = [&](const ImageRGBA8& img, int channel) {
+    int n = 0;
+    for (std::size_t i = 0; i < img.pixels.size(); i += 4) {
+      const int c = img.pixels[i + std::size_t(channel)], o1 = img.pixels[i + std::size_t((channel + 1) % 3)], o2 = img.pixels[i + std::size_t((channel + 2) % 3)];
+      n += c > 150 && o1 < 110 && o2 < 110;
+    }
+    return n;
+  };
+  LineSettings l;
+  std::string why;
+  ASSERT_TRUE(parseLineSets("silhouette width=2 colour=1,0,0", l.sets, &why)) << why;
+  const ImageRGBA8 thin = draw(cube, l);
+  ASSERT_TRUE(parseLineSets("silhouette width=6 colour=1,0,0", l.sets, &why)) << why;
+  const ImageRGBA8 wide = draw(cube, l);
+  ASSERT_TRUE(parseLineSets("silhouette width=6 colour=1,0,0; crease width=1 colour=0,0,1; silhouette,crease visibility=hidden width=2 colour=0,1,0 dash=4,4",
+                            l.sets, &why)) << why;
+  const ImageRGBA8 three = draw(cube, l);
+  const LineMask inside = interior(cube, 0);
+  int greenOutside = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::uint8_t* px = &three.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+      greenOutside += px[1] > 150 && px[0] < 110 && px[2] < 110 && !inside.at(x, y);
+    }
+  std::printf("line sets: silhouettes %d px at width 2, %d at width 6; creases %d px; hidden %d px (%d off the cube)\n", count(thin, 0), count(wide, 0),
+              count(three, 2), count(three, 1), greenOutside);
+  EXPECT_EQ(count(thin, 2) + count(thin, 1), 0) << "a silhouette set drew other kinds";
+  EXPECT_GT(count(thin, 0), 200);
+  EXPECT_NEAR(double(count(wide, 0)) / count(thin, 0), 3.0, 0.8) << "width is the set's";
+  EXPECT_GT(count(three, 2), 50) << "the crease set drew nothing";
+  EXPECT_GT(count(three, 1), 30) << "the hidden set drew nothing";
+  EXPECT_EQ(greenOutside, 0) << "hidden lines drawn where nothing hides them";
+  // A set that draws only the hidden parts adds nothing visible: without it, no green at all.
+  l.sets.pop_back();
+  EXPECT_EQ(count(draw(cube, l), 1), 0);
 }
 }  // namespace
 }  // namespace npr

@@ -78,6 +78,8 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   Result<Style> technical = loadStyle(resolveStyle("technical"));
   ASSERT_TRUE(technical) << technical.error();
   ASSERT_TRUE(applyStyle(*technical, state, *r));
+  ASSERT_EQ(state.settings.lines.sets.size(), 3u);  // its line sets, one per line of the file
+  EXPECT_EQ(state.settings.lines.sets[2].visibility, LineSet::Visibility::Hidden);
   // Ground, shadows and a control palette travel with the look too.
   state.settings.ground = state.settings.shadows = true;
   state.light = glm::vec3(1.0f, 4.0f, -2.5f);
@@ -96,6 +98,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   EXPECT_EQ(other.settings.lines.silhouettes, state.settings.lines.silhouettes);
   EXPECT_EQ(other.settings.lines.creases, state.settings.lines.creases);
   EXPECT_EQ(other.settings.lines.creaseAngle, state.settings.lines.creaseAngle);
+  EXPECT_EQ(formatLineSets(other.settings.lines.sets), formatLineSets(state.settings.lines.sets));
   EXPECT_EQ(r->lighting().toneModel(), ToneModel::Gooch);
   EXPECT_TRUE(other.settings.ground && other.settings.shadows);
   EXPECT_EQ(other.light, state.light);

@@ -57,7 +57,7 @@ class FeatureLinesFeature final : public Feature {
 class IntersectionLinesFeature final : public Feature {
  public:
   const char* name() const override { return "intersection lines"; }
-  bool active(const FrameView& f) const override { return f.settings.lines.intersections && !f.scene.empty(); }
+  bool active(const FrameView& f) const override { return (f.settings.lines.drawnKinds() & 16u) && !f.scene.empty(); }
   Status drawOver(FrameView& f) override {
     // Found again only when the scene changed (objects, their places or their pose).
     if (!vao_ || f.scene.version() != sceneVersion_) {
@@ -75,7 +75,10 @@ class IntersectionLinesFeature final : public Feature {
       f.stats.cpuLinesMs += msSince(t0);
     }
     // World space: the scene's camera places them.
-    return drawLineRanges({{&buffer_, 0, count_}}, f.camera, f.settings.lines, f.viewport, vao_, f.programs, f.stats);
+    for (const LineStyle& style : lineStyles(f.settings.lines))
+      if (style.kinds & 16u)
+        if (Status st = drawLineRanges({{&buffer_, 0, count_}}, f.camera, style, f.viewport, vao_, f.programs, f.stats); !st) return st;
+    return okStatus();
   }
 
  private:
