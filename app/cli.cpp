@@ -115,6 +115,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
   app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (needs --lines; the overlay has a button too)");
   app.add_flag("--svg-raster", o.svgRaster, "--svg: embed the rendered frame under the lines");
+  app.add_flag("--svg-fill", o.svgFill,
+               "--svg: the shaded picture as vector regions too, each palette entry's filled with its texture as an SVG pattern, over the background");
   app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)");
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");

@@ -64,6 +64,7 @@ struct Options {
   std::string saveFrames;     // --save-frames DIR
   std::string svg;            // --svg FILE: the last frame's feature lines as SVG
   bool svgRaster = false;     // --svg-raster: with the frame embedded underneath
+  bool svgFill = false;       // --svg-fill: the shaded picture as regions filled with the palette's textures
   int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
   int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit
 

@@ -1,21 +1,89 @@
 // --svg (see line_export.h).
 #include "app/line_export.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/lines/line_pass.h"
+#include "renderer/lines/region_trace.h"
 #include "renderer/lines/svg_export.h"
 #include "app/cli.h"
 
 namespace npr {
 
-Status exportLinesSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
-                      const ImageRGBA8* raster, const std::string& path) {
-  if (!settings.lines.objectSpace())
-    return Error{"--svg: no object-space lines to export; turn some on (--lines silhouette,crease,boundary,material,intersection)"};
+namespace {
+
+// The shaded picture's regions, one per palette entry the selection shows, each filled with the
+// entry's texture (renderer/lines/svg_export.h: SvgFills).
+Result<SvgFills> traceFills(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
+                            const Palette& palette) {
+  // The smooth path blends two entries: its region is the one weighing more.
+  const bool blend = settings.path == RenderPath::Smooth;
+  auto target = OffscreenTarget::create(size.x, size.y, blend ? OffscreenTarget::Format::RGBA32F : OffscreenTarget::Format::RGBA8);
+  if (!target) return Error{target.error()};
+  target->clear(glm::vec4(0.0f));
+  if (Status s = renderer.renderSelection(camera, settings, blend ? SelectionOutput::Blend : SelectionOutput::Entry, {0, 0, size.x, size.y}); !s)
+    return Error{s.error()};
+  std::vector<int> labels(std::size_t(size.x) * std::size_t(size.y));
+  if (blend) {
+    const ImageRGBA32F selection = target->readRGBA32F();
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      const float* p = &selection.pixels[4 * i];
+      labels[i] = p[3] > 0.0f ? int(std::lround(p[2] < 0.5f ? p[0] : p[1])) : -1;
+    }
+  } else {
+    const ImageRGBA8 selection = target->readRGBA8();
+    for (std::size_t i = 0; i < labels.size(); ++i) labels[i] = selection.pixels[4 * i + 3] ? int(selection.pixels[4 * i]) : -1;
+  }
+  SvgFills fills;
+  fills.regions = traceRegions(labels, size.x, size.y, int(palette.entries.size()));
+  // The screen's pattern tiles texel by texel at the pattern scale; anchored and object patterns
+  // are written as the screen's (a flat picture has no surface to follow).
+  // An integer scale is written into the tiles texel by texel (viewers smooth a scaled
+  // pattern image, which the raster's nearest texels are not); any other is left to the viewer.
+  const float scale = settings.patternScale;
+  const int whole = scale >= 2.0f && scale <= 8.0f && scale == std::floor(scale) ? int(scale) : 1;
+  fills.scale = scale / float(whole);
+  fills.backgroundColour = palette.backgroundColour;
+  auto tile = [whole](const ImageRGBA8& img) -> Result<SvgPattern> {
+    ImageRGBA8 big{img.width * whole, img.height * whole, std::vector<std::uint8_t>(img.pixels.size() * std::size_t(whole * whole))};
+    for (int y = 0; y < big.height; ++y)
+      for (int x = 0; x < big.width; ++x)
+        for (int c = 0; c < 4; ++c)
+          big.pixels[(std::size_t(y) * std::size_t(big.width) + std::size_t(x)) * 4 + std::size_t(c)] =
+              img.pixels[(std::size_t(y / whole) * std::size_t(img.width) + std::size_t(x / whole)) * 4 + std::size_t(c)];
+    Result<std::vector<std::uint8_t>> png = encodePng(big);
+    if (!png) return Error{png.error()};
+    return SvgPattern{std::move(*png), glm::ivec2(big.width, big.height)};
+  };
+  if (palette.backgroundImage) {
+    Result<SvgPattern> bg = tile(*palette.backgroundImage);
+    if (!bg) return Error{bg.error()};
+    fills.background = std::move(*bg);
+  }
+  for (std::size_t e = 0; e < palette.entries.size(); ++e) {
+    if (fills.regions[e].empty()) {
+      fills.entries.emplace_back();
+      continue;
+    }
+    Result<SvgPattern> p = tile(palette.entries[e].image);
+    if (!p) return Error{p.error()};
+    fills.entries.push_back(std::move(*p));
+  }
+  return fills;
+}
+
+}  // namespace
+
+Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
+                 const SvgContents& what, const std::string& path) {
+  if (!settings.lines.objectSpace() && !what.fill)
+    return Error{"--svg: nothing to export; turn on some object-space lines (--lines silhouette,crease,boundary,material,intersection) or --svg-fill"};
+  if (what.fill && !what.palette) return Error{"--svg-fill: no palette is loaded"};
   auto depth = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
   if (!depth) return Error{depth.error()};
   depth->clear(glm::vec4(0.0f));
@@ -47,16 +115,28 @@ Status exportLinesSvg(Renderer& renderer, const CameraMatrices& camera, const Re
                           hidden ? style.hiddenInk : 1.0f, hidden ? style.hiddenDash : style.dash, chains.chains[k]});
     }
   }
+  std::optional<SvgFills> fills;
+  if (what.fill) {
+    Result<SvgFills> traced = traceFills(renderer, camera, settings, size, *what.palette);
+    if (!traced) return Error{traced.error()};
+    fills = std::move(*traced);
+  }
   std::vector<std::uint8_t> png;
-  if (raster) {
-    Result<std::vector<std::uint8_t>> encoded = encodePng(*raster);
+  if (what.raster) {
+    Result<std::vector<std::uint8_t>> encoded = encodePng(*what.raster);
     if (!encoded) return Error{encoded.error()};
     png = std::move(*encoded);
   }
   std::ofstream out(path, std::ios::binary);
-  out << svgDocument(groups, size, png);
+  out << svgDocument(groups, size, png, fills ? &*fills : nullptr);
   if (!out.flush()) return Error{path + ": cannot write the SVG"};
-  tellUser("wrote " + path + ": " + std::to_string(paths) + " paths, " + std::to_string(static_cast<long>(lengthPx + 0.5)) + " px of lines");
+  std::string regions;
+  if (fills) {
+    std::size_t loops = 0, filled = 0;
+    for (const auto& r : fills->regions) loops += r.size(), filled += !r.empty();
+    regions = ", " + std::to_string(filled) + " palette regions in " + std::to_string(loops) + " outlines";
+  }
+  tellUser("wrote " + path + ": " + std::to_string(paths) + " paths, " + std::to_string(static_cast<long>(lengthPx + 0.5)) + " px of lines" + regions);
   return okStatus();
 }
 

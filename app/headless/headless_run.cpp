@@ -91,7 +91,8 @@ int runHeadless(const Options& o) {
                matchModeName(state.settings.match), ms[ms.size() / 2]);
   if (!o.svg.empty()) {
     const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};
-    if (Status s = exportLinesSvg(*renderer, lastCamera, state.settings, o.size, o.svgRaster ? &frame : nullptr, o.svg); !s) return reportFailure(s.error());
+    const SvgContents what{o.svgRaster ? &frame : nullptr, o.svgFill, state.palette.get()};
+    if (Status s = exportSvg(*renderer, lastCamera, state.settings, o.size, what, o.svg); !s) return reportFailure(s.error());
     target->bind();
   }
   if (!o.screenshot.empty()) {

@@ -105,7 +105,8 @@ int runWindowViewer(const Options& o) {
       const std::filesystem::path file =
           v.svgRequested ? v.screenshotDir / ("npr-lines-" + std::to_string(++v.svgCount) + ".svg") : std::filesystem::path(o.svg);
       v.svgRequested = false;
-      const Status st = exportLinesSvg(*v.renderer, cam, v.state.settings, {sceneView.z, sceneView.w}, nullptr, file.string());
+      const Status st = exportSvg(*v.renderer, cam, v.state.settings, {sceneView.z, sceneView.w}, SvgContents{nullptr, o.svgFill, v.state.palette.get()},
+                                  file.string());
       v.state.note(st ? "lines written to " + file.string() : st.error());
       bindWindowFramebuffer();
     }

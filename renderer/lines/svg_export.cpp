@@ -163,7 +163,8 @@ std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& styl
   return out;
 }
 
-std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng) {
+std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng,
+                        const SvgFills* fills) {
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
     << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"" << size.x
@@ -173,6 +174,33 @@ std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& s
     o << "<image id=\"rendering\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y
       << "\" xlink:href=\"data:image/png;base64," << base64(rasterPng) << "\"/>\n";
   char number[64];
+  if (fills) {
+    // A GL window's pattern row 0 is its bottom row and the palette's image rows are flipped on
+    // upload, so a tile drawn upright starts at y = height mod its height (see pattern.glsl).
+    auto pattern = [&](const std::string& id, const SvgPattern& p) {
+      const float w = float(p.size.x) * fills->scale, h = float(p.size.y) * fills->scale;
+      std::snprintf(number, sizeof number, "%.3f", double(std::fmod(float(size.y), h)));
+      o << "<pattern id=\"" << id << "\" patternUnits=\"userSpaceOnUse\" x=\"0\" y=\"" << number << "\" width=\"" << w << "\" height=\"" << h
+        << "\"><image width=\"" << w << "\" height=\"" << h << "\" image-rendering=\"optimizeSpeed\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,"
+        << base64(p.png) << "\"/></pattern>\n";
+    };
+    o << "<defs>\n";
+    if (fills->background) pattern("background", *fills->background);
+    for (std::size_t e = 0; e < fills->entries.size(); ++e)
+      if (e < fills->regions.size() && !fills->regions[e].empty()) pattern("entry" + std::to_string(e), fills->entries[e]);
+    o << "</defs>\n<g id=\"fills\">\n<rect id=\"background\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y << "\" fill=\""
+      << (fills->background ? std::string("url(#background)") : hexColour(fills->backgroundColour)) << "\"/>\n";
+    for (std::size_t e = 0; e < fills->entries.size() && e < fills->regions.size(); ++e) {
+      if (fills->regions[e].empty()) continue;
+      o << "<path id=\"region" << e << "\" fill=\"url(#entry" << e << ")\" d=\"";
+      for (const auto& loop : fills->regions[e]) {
+        for (std::size_t i = 0; i < loop.size(); ++i) o << (i ? "L" : "M") << loop[i].x << ' ' << loop[i].y;
+        o << 'Z';
+      }
+      o << "\"/>\n";
+    }
+    o << "</g>\n";
+  }
   for (const SvgGroup& g : groups) {
     if (g.chains.empty()) continue;
     o << "<g id=\"" << g.id << "\" fill=\"none\" stroke=\"" << hexColour(g.colour) << "\" stroke-width=\"" << g.width

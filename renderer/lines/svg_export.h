@@ -7,6 +7,7 @@
 // hands over the lines and the depth it read back.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,8 +43,24 @@ struct SvgGroup {
 // The groups of the line settings' kinds, each in its kind's colour and `style.width`.
 std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style);
 
-// The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath;
-// the groups in order, empty ones left out.
-std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng);
+// The shaded picture as vector regions (`--svg-fill`): each palette entry's region (traced from
+// the selection output, lines/region_trace.h) filled with that entry's texture as an SVG
+// pattern tiled over the frame as the screen-space pattern tiles it, over the background.
+struct SvgPattern {
+  std::vector<std::uint8_t> png;  // one tile, as the palette file's image
+  glm::ivec2 size{1};             // its texels
+};
+struct SvgFills {
+  glm::vec3 backgroundColour{1.0f};
+  std::optional<SvgPattern> background;  // tiled like the entries
+  std::vector<SvgPattern> entries;
+  std::vector<std::vector<std::vector<glm::ivec2>>> regions;  // per entry: closed loops, pixel corners
+  float scale = 1.0f;  // window pixels per texel
+};
+
+// The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath,
+// then the fills (may be null), then the groups in order, empty ones left out.
+std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng,
+                        const SvgFills* fills = nullptr);
 
 }  // namespace npr

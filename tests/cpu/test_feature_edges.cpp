@@ -3,7 +3,7 @@
 // same lines as the welded mesh; a two-material cube's material boundaries. Intersection lines
 // of two crossing boxes (the square where they meet, exactly, as two objects, one object or
 // placed by a transform), none on a closed surface or apart, and the hierarchy's answer equal
-// to testing every pair.
+// to testing every pair. Traced palette regions (--svg-fill) cover exactly their pixels.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -13,6 +13,7 @@
 
 #include "renderer/lines/feature_edges.h"
 #include "renderer/lines/intersection_lines.h"
+#include "renderer/lines/region_trace.h"
 #include "renderer/lines/svg_export.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
@@ -318,6 +319,51 @@ TEST(IntersectionLines, TheHierarchyFindsWhatTestingEveryPairFinds) {
   ASSERT_GT(pairs, 50u);  // a tangle: the test means something
   EXPECT_EQ(lines.size(), pairs);
   EXPECT_NEAR(totalLength(lines), expected, 1e-4 * expected);
+}
+
+// Winding number of the loops around point p (nonzero: inside), as an SVG viewer fills them.
+int winding(const std::vector<RegionLoop>& loops, const glm::vec2& p) {
+  int w = 0;
+  for (const RegionLoop& loop : loops)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const glm::vec2 a(loop[i]), b(loop[(i + 1) % loop.size()]);
+      if (a.y <= p.y && b.y > p.y && (b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y) > 0.0f) ++w;
+      else if (a.y > p.y && b.y <= p.y && (b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y) < 0.0f) --w;
+    }
+  return w;
+}
+
+TEST(RegionTrace, LoopsFilledByTheNonzeroRuleCoverExactlyEachLabelsPixels) {
+  // Random blobs of 4 labels and background (-1): holes, islands, pixels touching at corners.
+  std::mt19937 rng(3);
+  const int w = 40, h = 30;
+  std::vector<int> labels(std::size_t(w * h), -1);
+  for (int k = 0; k < 60; ++k) {
+    const int cx = int(rng() % w), cy = int(rng() % h), r = int(rng() % 6), l = int(rng() % 5) - 1;
+    for (int y = std::max(0, cy - r); y < std::min(h, cy + r + 1); ++y)
+      for (int x = std::max(0, cx - r); x < std::min(w, cx + r + 1); ++x)
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) labels[std::size_t(y * w + x)] = l;
+  }
+  for (int k = 0; k < 80; ++k) labels[rng() % labels.size()] = int(rng() % 5) - 1;  // single pixels, corner contacts
+  const auto regions = traceRegions(labels, w, h, 4);
+  ASSERT_EQ(regions.size(), 4u);
+  int wrong = 0;
+  for (int l = 0; l < 4; ++l)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const bool inside = winding(regions[std::size_t(l)], glm::vec2(x + 0.5f, y + 0.5f)) != 0;
+        wrong += inside != (labels[std::size_t(y * w + x)] == l);
+      }
+  EXPECT_EQ(wrong, 0);
+  // Corners only: a lone 3x2 block is one loop of 4 corners, clockwise on screen (y down).
+  std::vector<int> block(std::size_t(w * h), -1);
+  for (int y = 5; y < 7; ++y)
+    for (int x = 10; x < 13; ++x) block[std::size_t(y * w + x)] = 0;
+  const auto one = traceRegions(block, w, h, 1);
+  ASSERT_EQ(one[0].size(), 1u);
+  const RegionLoop& loop = one[0][0];
+  ASSERT_EQ(loop.size(), 4u);
+  EXPECT_EQ(winding(one[0], glm::vec2(11.5f, 5.5f)), 1);
 }
 }  // namespace
 }  // namespace npr

@@ -46,6 +46,20 @@ if "$viewer" "$tmp/crossing.obj" --headless --size 480x360 --palette "$tmp/white
 else
   echo "FAIL: --lines intersection --svg: $(cat "$tmp/err")"; fail=1
 fi
+# --svg-fill: the palette's regions filled with its textures; rasterised, the SVG is the frame
+# (at most 5% of the pixels differ by more than 0.1; lines off, so only the fills compare), on
+# the per-pixel path and on the triangle path at pattern scale 2.
+for args in "--path pixel" "--path triangle --pattern-scale 2"; do
+  # shellcheck disable=SC2086
+  if "$viewer" "$src/models/bunny.obj" --headless --size 320x240 $args --svg "$tmp/fill.svg" --svg-fill --screenshot "$tmp/fill.png" 2>"$tmp/err"; then
+    grep -Eq "[1-9][0-9]* palette regions in [1-9][0-9]* outlines" "$tmp/err" || { echo "FAIL: --svg-fill ($args) reports no regions: $(cat "$tmp/err")"; fail=1; }
+    rsvg-convert "$tmp/fill.svg" -o "$tmp/fill-svg.png" &&
+      oiiotool --fail 0.1 --failpercent 5 "$tmp/fill.png" --ch R,G,B "$tmp/fill-svg.png" --ch R,G,B --diff >"$tmp/diff" 2>&1 ||
+      { echo "FAIL: --svg-fill ($args): the rasterised SVG is not the frame: $(grep -E 'over' "$tmp/diff" | tail -1)"; fail=1; }
+  else
+    echo "FAIL: --svg-fill ($args): $(cat "$tmp/err")"; fail=1
+  fi
+done
 # With the frame embedded underneath, and a refusal without lines.
 "$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
 grep -q 'data:image/png;base64,' "$tmp/raster.svg" || { echo "FAIL: --svg-raster embeds no image"; fail=1; }
