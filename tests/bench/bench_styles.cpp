@@ -6,7 +6,8 @@
 //           (object-space silhouettes are recomputed every frame, as while a user orbits).
 //   styles  every shipped style (palettes/styles) on the bunny, the teapot and the torus:
 //           frame time against the `reference` path in one run, each style with its own
-//           renderer and palette.
+//           renderer and palette; the technical style also without its line sets (its lines in
+//           one style) and without lines, to price the sets.
 //   strokes painterly brush strokes over the smooth path against `reference` (the 871K torus
 //           with a budget of 200K strokes), and their temporal stability: pixels popping between
 //           frames of a slow orbit and of a zoom out, faded against cut at their rank.
@@ -154,7 +155,13 @@ int styles(const std::vector<BenchScene>& scenes, const OffscreenTarget& target,
   // The floor: the reference path (per-pixel Phong, no palette) with the default look.
   std::vector<std::string> files{""};
   for (const std::string& f : discoverStyles()) files.push_back(f);
-  for (const std::string& file : files) {
+  // The technical style's line sets priced: the same style with its lines in one style
+  // (silhouettes and creases, hidden lines dashed) and with no lines.
+  const std::string technical = resolveStyle("technical");
+  files.push_back(technical);
+  files.push_back(technical);
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string& file = files[i];
     Entry e;
     auto created = Renderer::create();
     if (!created) return 1;
@@ -174,6 +181,13 @@ int styles(const std::vector<BenchScene>& scenes, const OffscreenTarget& target,
         return 1;
       }
       e.name = st->name;
+      if (i + 2 >= files.size()) {  // the two variants of the technical style
+        LineSettings& l = e.state.settings.lines;
+        l.sets.clear();
+        l.hidden = i + 2 == files.size();
+        if (!l.hidden) l.silhouettes = l.creases = false;
+        e.name += l.hidden ? ", lines in one style (no sets)" : ", no lines";
+      }
     }
     entries.push_back(std::move(e));
   }
