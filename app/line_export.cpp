@@ -90,21 +90,21 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
   if (Status s = renderer.renderGeometry(camera, GeometryOutput::EyePosition, {0, 0, size.x, size.y}); !s) return s;
   const ImageRGBA32F eye = depth->readRGBA32F();
   // One group per kind and part of each line style (the line settings' own, then the sets),
-  // as the frame draws them.
-  const std::vector<FeatureLine> all = renderer.featureLines(camera, settings);
+  // as the frame draws them: each style keeps, on each object, the kinds it draws there.
   const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
   std::vector<SvgGroup> groups;
   int paths = 0;
   double lengthPx = 0.0;
-  const std::vector<LineStyle> styles = lineStyles(settings.lines);
-  const bool base = settings.lines.baseKinds() != 0;  // lineStyles puts the base style first
-  for (std::size_t i = 0; i < styles.size(); ++i) {
-    const LineStyle& style = styles[i];
-    // The base style's groups are named by kind ("silhouettes"); set N's "setN-silhouettes".
-    const std::string prefix = base && i == 0 ? "" : "set" + std::to_string(base ? i : i + 1) + "-";
-    std::vector<FeatureLine> mine;
-    for (const FeatureLine& l : all)
-      if ((style.kinds >> int(l.kind + 0.5f)) & 1u) mine.push_back(l);
+  const LineSettings& ls = settings.lines;
+  for (std::size_t i = 0; i <= ls.sets.size(); ++i) {
+    // Style 0 is the base one, its groups named by kind ("silhouettes"); set N's "setN-silhouettes".
+    const LineSet* set = i ? &ls.sets[i - 1] : nullptr;
+    const LineStyle style = set ? LineStyle::of(*set, ls) : LineStyle::base(ls, nullptr);
+    const std::string prefix = set ? "set" + std::to_string(i) + "-" : "";
+    const std::vector<FeatureLine> mine = renderer.featureLines(camera, settings, [&](const std::string* object) -> std::uint8_t {
+      return set ? (set->appliesTo(object) ? set->kinds : 0) : ls.baseKinds(object);
+    });
+    if (mine.empty()) continue;
     for (const bool hidden : {false, true}) {
       if (!(hidden ? style.hidden : style.visible)) continue;
       const SvgLines chains = visibleLineChains(mine, camera, size, eye, hidden);

@@ -78,6 +78,7 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       if (o.skin >= 0 && o.skin < static_cast<int>(skins.size()))
         for (int joint : skins[static_cast<std::size_t>(o.skin)].joints) v.animated = v.animated || movedNode(joint);
       v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
+      renderer.setModelName(v.id, v.name);  // line sets select objects by it
       if (!v.mesh->deformation.empty()) files_.back().deforms = true;
       objects_.push_back(std::move(v));
     }

@@ -172,17 +172,55 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
           dash.x > LineSet::kMaxDash || dash.y > LineSet::kMaxDash || (dash.x == 0.0f) != (dash.y == 0.0f))
         return why = "dash must be ON,OFF in pixels (0..1000 each; 0,0 for solid)", false;
       set.dash = dash;
+    } else if (key == "objects") {
+      set.objects.clear();
+      for (const std::string& name : split(value, ','))
+        if (!name.empty()) set.objects.push_back(name);
+      if (set.objects.empty()) return why = "objects must name at least one object (NAME,NAME; * and ? match any text and any character)", false;
     } else if (key == "falloff" || key == "sketchy") {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, falloff, sketchy)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, falloff, sketchy, objects)", false;
     }
   }
   return true;
 }
 
 }  // namespace
+
+namespace {
+
+// '*' any run of characters, '?' any one. Backtracks only to the last star: time at most the
+// product of the lengths, whatever the pattern (a recursive match is exponential in the stars).
+bool globMatch(const std::string& pattern, const std::string& text) {
+  std::size_t p = 0, t = 0, star = std::string::npos, resume = 0;
+  while (t < text.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+      ++p, ++t;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      resume = t;
+    } else if (star != std::string::npos) {
+      p = star + 1;
+      t = ++resume;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+}  // namespace
+
+bool LineSet::appliesTo(const std::string* object) const {
+  if (objects.empty()) return true;
+  if (!object) return false;
+  for (const std::string& pattern : objects)
+    if (globMatch(pattern, *object)) return true;
+  return false;
+}
 
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why) {
   std::vector<LineSet> parsed;
@@ -225,6 +263,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     if (s.dash.x > 0.0f) out += " dash=" + shortFloat(s.dash.x) + "," + shortFloat(s.dash.y);
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
+    for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];
   }
   return out;
 }

@@ -33,11 +33,16 @@ struct LineSet {
   glm::vec2 dash{0.0f};               // pixels on, off; on 0: solid
   bool falloff = false;               // thinner with distance
   bool sketchy = false;
+  // The objects it draws on, by name, '*' and '?' as wildcards (empty: every object and the
+  // scene's intersections; a set naming objects leaves intersections to the others).
+  std::vector<std::string> objects;
   static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
+  // Whether it draws on the object named `object` (null: the scene's intersection lines).
+  bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [falloff=on|off] [sketchy=on|off]`, or `none`. On failure `why`
+// [colour=R,G,B] [dash=ON,OFF] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);
 std::string formatLineSets(const std::vector<LineSet>& sets);  // one set per line; "none" when empty
@@ -77,10 +82,18 @@ struct LineSettings {
     for (const LineSet& s : sets) k |= s.kinds;
     return k;
   }
-  // Those drawn in the line settings' own style: named by `lines` and taken by no set.
+  // Those drawn in the line settings' own style on the object named `object` (null: the
+  // scene's intersections; the default: anywhere): named by `lines` and taken there by no set.
+  std::uint8_t baseKinds(const std::string* object) const {
+    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+    for (const LineSet& s : sets)
+      if (s.appliesTo(object)) k &= std::uint8_t(~s.kinds);
+    return k;
+  }
   std::uint8_t baseKinds() const {
     std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
-    for (const LineSet& s : sets) k &= std::uint8_t(~s.kinds);
+    for (const LineSet& s : sets)
+      if (s.objects.empty()) k &= std::uint8_t(~s.kinds);
     return k;
   }
   // The kinds found on each mesh's edges (lines/feature_edges.h).

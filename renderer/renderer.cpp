@@ -80,6 +80,11 @@ void Renderer::clearModelPalette(ModelId id) {
 
 bool Renderer::setModelTransform(ModelId id, const glm::mat4& transform) { return scene_.setTransform(id, transform); }
 bool Renderer::setModelPose(ModelId id, const glm::mat4& transform) { return scene_.pose(id, transform); }
+bool Renderer::setModelName(ModelId id, const std::string& name) {
+  Model* m = scene_.find(id);
+  if (m) m->setName(name);
+  return m != nullptr;
+}
 
 bool Renderer::setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
   Model* m = scene_.find(id);
@@ -470,10 +475,16 @@ Status Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& world
   return npr::drawMarker(camera, worldPosition, colour, pixels, viewport, programs_, emptyVao_, stats_);
 }
 
-std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, const RenderSettings& settings) {
+std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, const RenderSettings& settings,
+                                                const std::function<std::uint8_t(const std::string* object)>& kindsFor) {
   std::vector<FeatureLine> out;
+  auto keep = [&](std::vector<FeatureLine>& lines, const std::string* object) {
+    const std::uint8_t kinds = kindsFor ? kindsFor(object) : settings.lines.drawnKinds();
+    lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !((kinds >> int(l.kind + 0.5f)) & 1u); }), lines.end());
+  };
   scene_.forEach([&](Model& m) {
     std::vector<FeatureLine> lines = m.lines().lines(m.placed(camera), settings.lines);
+    keep(lines, &m.name());
     if (!isIdentity(m.transform()))
       for (FeatureLine& l : lines) {
         l.a = glm::vec3(m.transform() * glm::vec4(l.a, 1.0f));
@@ -482,7 +493,8 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
     out.insert(out.end(), lines.begin(), lines.end());
   });
   if (settings.lines.drawnKinds() & 16u) {
-    const std::vector<FeatureLine> crossings = sceneIntersectionLines(scene_);
+    std::vector<FeatureLine> crossings = sceneIntersectionLines(scene_);
+    keep(crossings, nullptr);
     out.insert(out.end(), crossings.begin(), crossings.end());
   }
   return out;

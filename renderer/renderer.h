@@ -56,6 +56,8 @@ class Renderer {
   void removeModel(ModelId id);
   // False when there is no such model.
   bool setModelTransform(ModelId id, const glm::mat4& transform);
+  // The object's name, for line sets that select objects. False when there is no such model.
+  bool setModelName(ModelId id, const std::string& name);
   // An animation's move: as setModelTransform, but the ground stays where the layout put it.
   bool setModelPose(ModelId id, const glm::mat4& transform);
   // Poses a model whose mesh deforms (Mesh::deformation): morph `weights` and skin `joints`
@@ -124,7 +126,10 @@ class Renderer {
   void setFrameOffset(const glm::ivec2& offset) { frameOffset_ = offset; }
   // The feature lines the frame shows for this camera, every model's in scene space, for
   // vector export.
-  std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings);
+  // `kindsFor(object)` (null: the scene's intersection lines; empty function: every kind drawn)
+  // chooses the kinds kept for each object by name (bit EdgeKind).
+  std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings,
+                                        const std::function<std::uint8_t(const std::string* object)>& kindsFor = {});
   // The first shown model's (tests and the overlay).
   const PatternTracker& patternTracker() const;
   // The main palette as the last frame drew it (null before one is set).

@@ -68,7 +68,9 @@ class Hierarchy {
   }
 
   // Every crossing segment under the node pair (a, b).
-  void search(std::uint32_t a, std::uint32_t b, std::vector<FeatureLine>& out, std::size_t& tested) const {
+  // `tested` counts triangle pairs; the search stops once it reaches `limit`.
+  void search(std::uint32_t a, std::uint32_t b, std::vector<FeatureLine>& out, std::size_t& tested, std::size_t limit) const {
+    if (tested >= limit) return;
     const Node& na = nodes_[a];
     const Node& nb = nodes_[b];
     if (a != b && !na.box.overlaps(nb.box)) return;
@@ -77,7 +79,7 @@ class Hierarchy {
         for (std::uint32_t j = a == b ? i + 1 : 0; j < nb.count; ++j) {
           const std::uint32_t ti = order_[na.first + i], tj = order_[nb.first + j];
           if (!boxes_[ti].overlaps(boxes_[tj])) continue;
-          ++tested;
+          if (++tested > limit) return;
           glm::vec3 from, to;
           if (triangleIntersection(tris_[ti].data(), tris_[tj].data(), from, to)) out.push_back({from, to, float(EdgeKind::Intersection)});
         }
@@ -85,7 +87,7 @@ class Hierarchy {
     }
     std::vector<std::pair<std::uint32_t, std::uint32_t>> children;
     split(a, b, children);
-    for (auto [c, d] : children) search(c, d, out, tested);
+    for (auto [c, d] : children) search(c, d, out, tested, limit);
   }
 
  private:
@@ -219,7 +221,7 @@ bool triangleIntersection(const glm::vec3 a[3], const glm::vec3 b[3], glm::vec3&
   return true;
 }
 
-std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts) {
+std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts, std::size_t maxPairs) {
   std::vector<WorldTriangle> tris;
   std::size_t total = 0;
   for (const IntersectionObject& o : objects) total += o.mesh ? o.mesh->triangleCount() : 0;
@@ -240,19 +242,24 @@ std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>
   const auto tasks = bvh.tasks(std::size_t(64 * workers));
   std::vector<std::vector<FeatureLine>> parts(static_cast<std::size_t>(workers));
   std::vector<std::size_t> tested(static_cast<std::size_t>(workers), 0);
+  // Each thread's share of the pair budget: piles of coincident triangles (a doubled or
+  // degenerate file) overlap all with all, and must not hang the frame.
+  const std::size_t share = std::max<std::size_t>(1, maxPairs / std::size_t(workers));
   parallelChunks(
       tasks.size(), workers,
       [&](std::size_t b, std::size_t e, int c) {
-        for (std::size_t i = b; i < e; ++i) bvh.search(tasks[i].first, tasks[i].second, parts[std::size_t(c)], tested[std::size_t(c)]);
+        for (std::size_t i = b; i < e; ++i) bvh.search(tasks[i].first, tasks[i].second, parts[std::size_t(c)], tested[std::size_t(c)], share);
       },
       1);
   std::vector<FeatureLine> out;
   std::size_t pairs = 0;
+  bool stopped = false;
   for (std::size_t c = 0; c < parts.size(); ++c) {
     out.insert(out.end(), parts[c].begin(), parts[c].end());
-    pairs += tested[c];
+    pairs += std::min(tested[c], share);
+    stopped = stopped || tested[c] > share;
   }
-  if (counts) *counts = {tris.size(), tasks.size(), pairs, out.size()};
+  if (counts) *counts = {tris.size(), tasks.size(), pairs, out.size(), stopped};
   return out;
 }
 

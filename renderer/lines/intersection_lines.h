@@ -29,10 +29,18 @@ struct IntersectionCounts {
   std::size_t tasks = 0;        // node pairs searched on their own (shared between threads)
   std::size_t pairsTested = 0;  // triangle pairs whose boxes overlap
   std::size_t segments = 0;
+  bool stopped = false;  // the pair budget ran out: the lines are those found until then
 };
 
+
+// At most this many triangle pairs are tested per search (11M for two crossing copies of an
+// 871K-triangle torus, about a second here; a pile of coincident triangles would test all with
+// all, and stops here after a few seconds instead of minutes).
+inline constexpr std::size_t kMaxIntersectionPairs = 64'000'000;
+
 // The segments where the objects' surfaces cross, in world space, kind EdgeKind::Intersection.
-std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts = nullptr);
+std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts = nullptr,
+                                           std::size_t maxPairs = kMaxIntersectionPairs);
 
 class Scene;
 // Those of a scene's shown models, as posed and placed.

@@ -23,7 +23,7 @@ void LinePass::geometryChanged() {
   silhouetteEye_ = glm::vec3(NAN);
 }
 
-Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, gl::ProgramCache& programs,
+Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const std::string& object, const glm::ivec4& viewport, gl::ProgramCache& programs,
                       FrameStats& stats) {
   if (!ls.edgeKinds() || !mesh_) return okStatus();
   const auto t0 = std::chrono::steady_clock::now();
@@ -61,7 +61,7 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   stats.cpuLinesMs += msSince(t0);
 
-  for (const LineStyle& style : lineStyles(ls)) {
+  for (const LineStyle& style : lineStyles(ls, &object)) {
     std::vector<LineRange> ranges;
     if (style.kinds & 1u) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
     if (style.kinds & 2u) ranges.push_back({&staticLines_, 0, creaseCount_});
@@ -73,7 +73,7 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   return okStatus();
 }
 
-LineStyle LineStyle::base(const LineSettings& ls) {
+LineStyle LineStyle::base(const LineSettings& ls, const std::string* object) {
   LineStyle s;
   s.width = ls.width;
   const glm::vec3 colours[kEdgeKinds] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour, ls.intersectionColour};
@@ -83,12 +83,12 @@ LineStyle LineStyle::base(const LineSettings& ls) {
   s.hiddenInk = 0.6f;
   s.sketchy = ls.sketchy;
   s.falloff = ls.depthFalloff;
-  s.kinds = ls.baseKinds();
+  s.kinds = ls.baseKinds(object);
   return s;
 }
 
 LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
-  LineStyle s = base(ls);
+  LineStyle s = base(ls, nullptr);
   s.width = set.width;
   if (set.colour) std::fill(std::begin(s.colours), std::end(s.colours), *set.colour);
   s.visible = set.visibility != LineSet::Visibility::Hidden;
@@ -102,10 +102,11 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   return s;
 }
 
-std::vector<LineStyle> lineStyles(const LineSettings& ls) {
+std::vector<LineStyle> lineStyles(const LineSettings& ls, const std::string* object) {
   std::vector<LineStyle> out;
-  if (ls.baseKinds()) out.push_back(LineStyle::base(ls));
-  for (const LineSet& set : ls.sets) out.push_back(LineStyle::of(set, ls));
+  if (ls.baseKinds(object)) out.push_back(LineStyle::base(ls, object));
+  for (const LineSet& set : ls.sets)
+    if (set.appliesTo(object)) out.push_back(LineStyle::of(set, ls));
   return out;
 }
 

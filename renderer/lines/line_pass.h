@@ -37,12 +37,14 @@ struct LineStyle {
   float hiddenWidthScale = 1.0f, hiddenInk = 1.0f;  // the hidden parts thinner and lighter
   bool sketchy = false, falloff = false;
   std::uint8_t kinds = 0;               // bit EdgeKind: what it draws
-  static LineStyle base(const LineSettings& ls);
+  // The base style on the object named `object` (null: the scene's intersections).
+  static LineStyle base(const LineSettings& ls, const std::string* object);
   static LineStyle of(const LineSet& set, const LineSettings& ls);
 };
-// Every style the settings draw with, in drawing order: the base style first (when `lines` names
-// a kind no set takes), then the sets.
-std::vector<LineStyle> lineStyles(const LineSettings& ls);
+// Every style the settings draw with on the object named `object` (null: the scene's
+// intersections), in drawing order: the base style first (when `lines` names a kind no set
+// takes there), then the sets that apply there.
+std::vector<LineStyle> lineStyles(const LineSettings& ls, const std::string* object);
 
 // Draws `ranges` (lines in the space `placed` maps to the clip space) in `style`: the visible
 // parts, then the hidden ones. Shared by each model's edges and the scene's intersection lines.
@@ -55,7 +57,8 @@ class LinePass {
   void setMesh(const Mesh* mesh);
   // The mesh was deformed in place: the lines follow (their edges are not searched again).
   void geometryChanged();
-  [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport,
+  // `object`: the model's name, which line sets may select.
+  [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const std::string& object, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
   // The object-space lines `draw` shows for this camera and these settings (silhouettes,
   // creases, boundaries, as enabled): what vector export writes.

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -52,6 +53,9 @@ class Model {
   // Model space to the scene's (world) space.
   const glm::mat4& transform() const { return transform_; }
   void setTransform(const glm::mat4& transform) { transform_ = transform; }
+  // The object's name in its file: what line sets select by (LineSet::objects).
+  const std::string& name() const { return name_; }
+  void setName(std::string name) { name_ = std::move(name); }
   // The camera as this model sees it: the scene's view times the model's transform.
   CameraMatrices placed(const CameraMatrices& camera) const { return {camera.view * transform_, camera.projection}; }
   // The bounding sphere's radius in scene units (the largest axis scale of the transform).
@@ -109,6 +113,7 @@ class Model {
   std::vector<float> poseWeights_;
   std::vector<glm::vec3> posedDirections_;
   glm::mat4 transform_;
+  std::string name_;
   GpuMesh gpu_;
   GpuMaterials materials_;
   TriangleShadingCache triangles_;

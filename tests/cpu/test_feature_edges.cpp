@@ -321,6 +321,26 @@ TEST(IntersectionLines, TheHierarchyFindsWhatTestingEveryPairFinds) {
   EXPECT_NEAR(totalLength(lines), expected, 1e-4 * expected);
 }
 
+TEST(IntersectionLines, APileOfCoincidentTrianglesStopsAtThePairBudget) {
+  // 30,000 copies of one triangle, slightly tilted each (not coplanar, no shared corner):
+  // every pair overlaps, 450M pairs; the search stops at its budget (a small one here, so the
+  // test is quick) and says so.
+  Mesh pile;
+  for (std::uint32_t t = 0; t < 30000; ++t) {
+    const float tilt = 1e-3f * float(t % 97);
+    pile.positions.insert(pile.positions.end(), {{0, 0, tilt}, {1, 0, -tilt}, {0, 1, 0.5f * tilt + 1e-4f * float(t)}});
+    pile.indices.insert(pile.indices.end(), {3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  IntersectionCounts counts;
+  (void)intersectionLines({{&pile, glm::mat4(1.0f)}}, &counts, 2'000'000);
+  EXPECT_TRUE(counts.stopped);
+  EXPECT_LE(counts.pairsTested, 2'000'000u);
+  // The torus-sized searches of the benchmark are far inside it; so is a normal scene.
+  const Mesh sphere = icosphere(3);
+  (void)intersectionLines({{&sphere, glm::mat4(1.0f)}}, &counts);
+  EXPECT_FALSE(counts.stopped);
+}
+
 // Winding number of the loops around point p (nonzero: inside), as an SVG viewer fills them.
 int winding(const std::vector<RegionLoop>& loops, const glm::vec2& p) {
   int w = 0;

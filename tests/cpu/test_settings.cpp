@@ -185,6 +185,26 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
   }
   ASSERT_TRUE(parseLineSets("none", sets, &why));
   EXPECT_TRUE(sets.empty());
+  // Objects by name, with wildcards; a set naming objects leaves the scene's intersections alone.
+  ASSERT_TRUE(parseLineSets("crease objects=Cylinder*,arm_?", sets, &why)) << why;
+  EXPECT_EQ(formatLineSets(sets), "crease width=2 objects=Cylinder*,arm_?");
+  for (const auto& [name, applies] : std::vector<std::pair<std::string, bool>>{
+           {"Cylinder", true}, {"Cylinder.001", true}, {"arm_L", true}, {"arm_", false}, {"arm_LL", false}, {"cylinder", false}})
+    EXPECT_EQ(sets[0].appliesTo(&name), applies) << name;
+  EXPECT_FALSE(sets[0].appliesTo(nullptr));
+  LineSettings ls;
+  ls.creases = ls.silhouettes = true;
+  ls.sets = sets;
+  const std::string cylinder = "Cylinder", body = "body";
+  EXPECT_EQ(ls.baseKinds(&cylinder), 1u);   // its creases are the set's
+  EXPECT_EQ(ls.baseKinds(&body), 3u);       // elsewhere the base style keeps them
+  EXPECT_FALSE(parseLineSets("crease objects=", sets, &why));
+  EXPECT_NE(why.find("objects must name"), std::string::npos) << why;
+  // Matching backtracks to the last star only: a pattern of many stars against a long name that
+  // fails at its end answers at once (a recursive match would take years).
+  const std::string longName(4000, 'a');
+  ASSERT_TRUE(parseLineSets("crease objects=*a*a*a*a*a*a*a*a*a*a*a*a*b", sets, &why)) << why;
+  EXPECT_FALSE(sets[0].appliesTo(&longName));
   // A style file's line-set lines make the list, in order; the kinds `lines` names that no set
   // takes keep the base style.
   test::TempDir d;

@@ -315,5 +315,37 @@ TEST_F(OutlineFixture, LineSetsDrawTheirKindsAndPartsInTheirOwnStyle) {
   l.sets.pop_back();
   EXPECT_EQ(count(draw(cube, l), 1), 0);
 }
+
+TEST_F(OutlineFixture, ALineSetNamingAnObjectDrawsOnThatObjectOnly) {
+  // Two cubes side by side, "left" and "right": silhouettes in the base style (black), and a
+  // set taking the left cube's silhouettes in red.
+  const Mesh cube = boxMesh(glm::vec3(-0.3f), glm::vec3(0.3f));
+  r->setMesh(nullptr);
+  const ModelId left = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, 0.0f, 0.0f)));
+  const ModelId right = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(0.45f, 0.0f, 0.0f)));
+  ASSERT_TRUE(r->setModelName(left, "left"));
+  ASSERT_TRUE(r->setModelName(right, "right"));
+  RenderSettings s;
+  s.lines.silhouettes = true;
+  s.lines.width = 3.0f;
+  std::string why;
+  ASSERT_TRUE(parseLineSets("silhouette width=3 colour=1,0,0 objects=le*", s.lines.sets, &why)) << why;
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  const ImageRGBA8 img = test::renderImage(*r, cam, s, kSize, kSize);
+  // The screen's left half holds the left cube, the right half the right one.
+  int red[2] = {0, 0}, black[2] = {0, 0};
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::uint8_t* px = &img.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+      const int half = x < kSize / 2 ? 0 : 1;
+      red[half] += px[0] > 150 && px[1] < 110 && px[2] < 110;
+      black[half] += px[0] < 80 && px[1] < 80 && px[2] < 80;
+    }
+  std::printf("object line set: red %d left, %d right; black %d left, %d right\n", red[0], red[1], black[0], black[1]);
+  EXPECT_GT(red[0], 200);
+  EXPECT_EQ(red[1], 0) << "the set drew on an object it does not name";
+  EXPECT_GT(black[1], 200);
+  EXPECT_LT(black[0], black[1] / 10) << "the base style still drew the left cube's silhouettes";
+}
 }  // namespace
 }  // namespace npr

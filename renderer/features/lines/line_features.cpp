@@ -48,7 +48,7 @@ class FeatureLinesFeature final : public Feature {
   Status drawOver(FrameView& f) override {
     Status result = okStatus();
     f.scene.forEach([&](Model& m) {
-      if (result) result = m.lines().draw(m.placed(f.camera), f.settings.lines, f.viewport, f.programs, f.stats);
+      if (result) result = m.lines().draw(m.placed(f.camera), f.settings.lines, m.name(), f.viewport, f.programs, f.stats);
     });
     return result;
   }
@@ -75,7 +75,7 @@ class IntersectionLinesFeature final : public Feature {
       f.stats.cpuLinesMs += msSince(t0);
     }
     // World space: the scene's camera places them.
-    for (const LineStyle& style : lineStyles(f.settings.lines))
+    for (const LineStyle& style : lineStyles(f.settings.lines, nullptr))
       if (style.kinds & 16u)
         if (Status st = drawLineRanges({{&buffer_, 0, count_}}, f.camera, style, f.viewport, vao_, f.programs, f.stats); !st) return st;
     return okStatus();
