@@ -349,13 +349,13 @@ TEST(StyleFiles, RandomFilesAreReadOrRefusedWithTheLineNamed) {
 }
 
 // Random command lines built from the table's options: parsed or refused with exit status 2,
-// the message free of raw bytes. 120 lines: each builds the whole command line (CLI11, every
+// the message free of raw bytes. 60 lines: each builds the whole command line (CLI11, every
 // row), 70 ms under the sanitizers.
 TEST(SettingsTable, RandomCommandLinesAreParsedOrRefused) {
   std::mt19937 rng(9);
   const auto& table = settingsTable();
   std::uniform_int_distribution<int> byte(1, 255);
-  for (int trial = 0; trial < 120; ++trial) {
+  for (int trial = 0; trial < 60; ++trial) {
     std::vector<std::string> args{"npr-viewer", "--headless"};
     for (int i = 0, n = int(rng() % 4) + 1; i < n; ++i) {
       const Setting& row = table[rng() % table.size()];
