@@ -8,20 +8,21 @@
 
 namespace npr {
 
+std::string formatFloat(float v) {
+  char buf[32];
+  for (int digits = 6; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
+    if (std::strtof(buf, nullptr) == v) break;
+  }
+  return buf;
+}
+
 std::string orientName(const OrientSettings& o) {
   switch (o.source) {
     case OrientSource::None: return "none";
     case OrientSource::Curvature: return "curvature";
     case OrientSource::Light: return "light";
-    case OrientSource::Fixed: {
-      // As short as reads back to the same angle (a saved style keeps it exactly).
-      char buf[32];
-      for (int digits = 6; digits <= 9; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*g", digits, double(o.degrees));
-        if (std::strtof(buf, nullptr) == o.degrees) break;
-      }
-      return buf;
-    }
+    case OrientSource::Fixed: return formatFloat(o.degrees);  // a saved style keeps the angle exactly
   }
   return "none";
 }
@@ -105,16 +106,6 @@ bool parseNumber(const std::string& text, float& out) {
   if (end != text.c_str() + text.size() || !std::isfinite(v)) return false;
   out = v;
   return true;
-}
-
-// Floats as short as read back the same.
-std::string shortFloat(float v) {
-  char buf[32];
-  for (int digits = 3; digits <= 9; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
-    if (std::strtof(buf, nullptr) == v) break;
-  }
-  return buf;
 }
 
 std::vector<std::string> split(const std::string& text, char by) {
@@ -258,9 +249,9 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
       if (s.has(k)) kinds += (kinds.empty() ? "" : ",") + std::string(kSetKinds[k]);
     out += kinds;
     if (s.visibility != LineSet::Visibility::Visible) out += s.visibility == LineSet::Visibility::Hidden ? " visibility=hidden" : " visibility=both";
-    out += " width=" + shortFloat(s.width);
-    if (s.colour) out += " colour=" + shortFloat(s.colour->r) + "," + shortFloat(s.colour->g) + "," + shortFloat(s.colour->b);
-    if (s.dash.x > 0.0f) out += " dash=" + shortFloat(s.dash.x) + "," + shortFloat(s.dash.y);
+    out += " width=" + formatFloat(s.width);
+    if (s.colour) out += " colour=" + formatFloat(s.colour->r) + "," + formatFloat(s.colour->g) + "," + formatFloat(s.colour->b);
+    if (s.dash.x > 0.0f) out += " dash=" + formatFloat(s.dash.x) + "," + formatFloat(s.dash.y);
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];

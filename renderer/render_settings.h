@@ -22,6 +22,10 @@ enum class OutlineMethod { Edges, Offset, Fatten };
 const char* outlineMethodName(OutlineMethod m);
 std::optional<OutlineMethod> parseOutlineMethod(const std::string& s);
 
+// Float text that parses back to the same float, as short as it can be (style files, the
+// settings reference, line sets).
+std::string formatFloat(float v);
+
 // A line set (`line-set` in style files, --line-set): some object-space kinds drawn in a style
 // of their own, as Freestyle's and Pencil+'s line sets are. Sets draw in the order given, over
 // the kinds `lines` names that no set takes (which keep the line settings' own style).
@@ -76,24 +80,23 @@ struct LineSettings {
   float rimLimit = 0.1f;
   static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
   std::vector<LineSet> sets;
+  // The object-space kinds `lines` names (bit EdgeKind).
+  std::uint8_t namedKinds() const {
+    return std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+  }
   // The object-space kinds drawn (bit EdgeKind): those `lines` names and those the sets take.
   std::uint8_t drawnKinds() const {
-    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+    std::uint8_t k = namedKinds();
     for (const LineSet& s : sets) k |= s.kinds;
     return k;
   }
   // Those drawn in the line settings' own style on the object named `object` (null: the
-  // scene's intersections; the default: anywhere): named by `lines` and taken there by no set.
-  std::uint8_t baseKinds(const std::string* object) const {
-    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
+  // scene's intersections, which only sets naming no object take): named by `lines` and taken
+  // there by no set.
+  std::uint8_t baseKinds(const std::string* object = nullptr) const {
+    std::uint8_t k = namedKinds();
     for (const LineSet& s : sets)
       if (s.appliesTo(object)) k &= std::uint8_t(~s.kinds);
-    return k;
-  }
-  std::uint8_t baseKinds() const {
-    std::uint8_t k = std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
-    for (const LineSet& s : sets)
-      if (s.objects.empty()) k &= std::uint8_t(~s.kinds);
     return k;
   }
   // The kinds found on each mesh's edges (lines/feature_edges.h).

@@ -92,8 +92,6 @@ const std::vector<SettingSection>& settingSections();
 // The row named `key` (a style file's key or an option without its dashes); null if none.
 const Setting* findSetting(const std::string& key);
 
-// Float text that parses back to the same float, as short as it can be.
-std::string formatFloat(float v);
 
 // `s` without leading and trailing blanks (spaces, tabs, line ends): what values and style
 // lines are compared as.

@@ -485,14 +485,6 @@ const Setting* findSetting(const std::string& key) {
   return nullptr;
 }
 
-std::string formatFloat(float v) {
-  char buf[32];
-  for (int digits = 6; digits <= 9; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, double(v));
-    if (std::strtof(buf, nullptr) == v) break;
-  }
-  return buf;
-}
 
 std::string trimmed(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r\n");
