@@ -84,6 +84,21 @@ Result<std::vector<int>> devicesToTry(const std::vector<GpuDevice>& devices, con
   return Error{"--gpu " + asked + " matches none of the EGL devices:\n" + list};
 }
 
+bool hasEglExtension(const char* list, std::string_view name) {
+  if (!list || name.empty()) return false;
+  const std::string_view all(list);
+  for (std::size_t p = all.find(name); p != std::string_view::npos; p = all.find(name, p + 1)) {
+    const std::size_t end = p + name.size();
+    if ((p == 0 || all[p - 1] == ' ') && (end == all.size() || all[end] == ' ')) return true;
+  }
+  return false;
+}
+
+bool canEnumerateDevices(const char* clientExtensions) {
+  return (hasEglExtension(clientExtensions, "EGL_EXT_device_enumeration") || hasEglExtension(clientExtensions, "EGL_EXT_device_base")) &&
+         hasEglExtension(clientExtensions, "EGL_EXT_platform_device");
+}
+
 bool isSoftwareRenderer(std::string_view glRenderer) {
   const std::string r = lowered(glRenderer);
   for (const char* name : {"llvmpipe", "softpipe", "swrast", "software rasterizer", "swiftshader", "lavapipe"})

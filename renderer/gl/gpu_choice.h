@@ -37,6 +37,14 @@ struct GpuRequest {
 // devices when the request matches none. Surfaceless gives an empty list.
 [[nodiscard]] Result<std::vector<int>> devicesToTry(const std::vector<GpuDevice>& devices, const GpuRequest& request);
 
+// Whether `name` is one of the space-separated EGL extensions in `list` (null: none).
+bool hasEglExtension(const char* list, std::string_view name);
+
+// Whether EGL's client extensions let the devices be listed and opened: device enumeration,
+// which NVIDIA's driver advertises only inside EGL_EXT_device_base (Mesa names both), and
+// the device platform.
+bool canEnumerateDevices(const char* clientExtensions);
+
 // Whether a GL_RENDERER string names a software rasterizer (llvmpipe, softpipe, swrast, ...).
 bool isSoftwareRenderer(std::string_view glRenderer);
 

@@ -3,7 +3,6 @@
 
 #include <cstdlib>
 #include <algorithm>
-#include <cstring>
 #include <optional>
 
 #include <epoxy/egl.h>
@@ -23,14 +22,6 @@
 namespace npr {
 namespace {
 
-bool hasExtension(const char* list, const char* name) {
-  if (!list) return false;
-  const std::size_t n = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += n)
-    if ((p == list || p[-1] == ' ') && (p[n] == ' ' || p[n] == '\0')) return true;
-  return false;
-}
-
 struct EglDevices {
   std::vector<EGLDeviceEXT> handles;
   std::vector<GpuDevice> described;
@@ -39,8 +30,7 @@ struct EglDevices {
 EglDevices listDevices() {
   EglDevices out;
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-  if (!hasExtension(client, "EGL_EXT_device_enumeration") || !hasExtension(client, "EGL_EXT_platform_device"))
-    return out;
+  if (!canEnumerateDevices(client)) return out;
   EGLint count = 0;
   if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return out;
   out.handles.resize(static_cast<std::size_t>(std::min(count, 64)));
@@ -53,12 +43,12 @@ EglDevices listDevices() {
     GpuDevice d;
     d.index = i;
     const char* ext = eglQueryDeviceStringEXT(out.handles[i], EGL_EXTENSIONS);
-    d.software = hasExtension(ext, "EGL_MESA_device_software");
-    if (hasExtension(ext, "EGL_EXT_device_query_name"))
+    d.software = hasEglExtension(ext, "EGL_MESA_device_software");
+    if (hasEglExtension(ext, "EGL_EXT_device_query_name"))
       if (const char* r = eglQueryDeviceStringEXT(out.handles[i], EGL_RENDERER_EXT)) d.name = r;
-    if (hasExtension(ext, "EGL_EXT_device_drm_render_node"))
+    if (hasEglExtension(ext, "EGL_EXT_device_drm_render_node"))
       if (const char* node = eglQueryDeviceStringEXT(out.handles[i], EGL_DRM_RENDER_NODE_FILE_EXT)) d.drmNode = node;
-    if (d.drmNode.empty() && hasExtension(ext, "EGL_EXT_device_drm"))
+    if (d.drmNode.empty() && hasEglExtension(ext, "EGL_EXT_device_drm"))
       if (const char* node = eglQueryDeviceStringEXT(out.handles[i], EGL_DRM_DEVICE_FILE_EXT)) d.drmNode = node;
     out.described.push_back(std::move(d));
   }
@@ -106,7 +96,7 @@ Result<Opened> openOn(EGLDisplay dpy, bool debug) {
 }
 
 Result<Opened> openSurfaceless(bool debug) {
-  if (!hasExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
+  if (!hasEglExtension(eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS), "EGL_MESA_platform_surfaceless"))
     return Error{"Mesa's surfaceless EGL platform is missing (install libegl-mesa0 and libgl1-mesa-dri)"};
   return openOn(eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr), debug);
 }

@@ -99,7 +99,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
     ++stats.bufferUploads;
   }
   if (moved_ && count_ > 0) {
-    placeStrokes(*mesh_, withField ? directions : std::vector<glm::vec3>{}, anchors_, particles_);
+    placeStrokes(*mesh_, directions, anchors_, particles_);  // directions read only when one per vertex
     gl::updateBuffer(instances_, particles_.data(), particles_.size() * sizeof(StrokeParticle));
     ++stats.bufferUploads;
   }

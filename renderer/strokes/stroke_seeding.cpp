@@ -109,7 +109,6 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
   std::mt19937 rng(0x5eed);
   std::uniform_real_distribution<double> pick(0.0, area);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const bool haveDirections = directions.size() == mesh.positions.size();
   std::vector<Candidate> candidates(count * 6);
   for (Candidate& cand : candidates) {
     const std::size_t t = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick(rng)) - cumulative.begin());
@@ -117,7 +116,9 @@ StrokeSeeding seedStrokes(const Mesh& mesh, float density, int budget, const std
     float u = unit(rng), v = unit(rng);
     if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
     cand.anchor = {static_cast<std::uint32_t>(tri), u, v};
-    placeAt(mesh, haveDirections ? directions : std::vector<glm::vec3>{}, cand.anchor, cand.position, cand.normal, cand.direction);
+    // placeAt reads `directions` only when it has one per vertex (a conditional here would copy
+    // the whole field per candidate).
+    placeAt(mesh, directions, cand.anchor, cand.position, cand.normal, cand.direction);
   }
   PointGrid grid(radius * 2.0f);
   const float passRadius[] = {2.0f * radius, std::sqrt(2.0f) * radius, radius, radius / std::sqrt(2.0f), 0.0f};

@@ -6,7 +6,7 @@
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
-//      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]
+//      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--turn-placements]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -55,6 +55,7 @@ struct PathRow {
   float patternScale = 1.0f;              // texel size in pixels (--pattern-scale S)
   bool linear = false;                    // mapped lookups filtered (--pattern-linear)
   bool oriented = false;                  // strokes along the curvature (--orient)
+  TurnPlacement placement = TurnPlacement::Auto;  // where the turn is applied (--turn-placements)
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--pattern-scale") && i + 1 < argc) scales.push_back(float(std::atof(argv[++i])));
     else if (!std::strcmp(argv[i], "--pattern-linear")) patternLinear = true;
     else if (!std::strcmp(argv[i], "--orient")) orient = true;
+    else if (!std::strcmp(argv[i], "--turn-placements")) orient = placements = true;
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
@@ -94,10 +96,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
-                           "path with strokes along the curvature; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
+                           "path with strokes along the curvature; --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
                            "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto))\n");
@@ -249,6 +251,14 @@ int main(int argc, char** argv) {
         on.label += "+orient";
         on.oriented = true;
         paths.push_back(on);
+        if (placements) {
+          for (auto [where, label] : {std::pair{TurnPlacement::InMeshPass, "+in-mesh"}, std::pair{TurnPlacement::Resolved, "+resolved"}}) {
+            PathRow forced = on;
+            forced.label += label;
+            forced.placement = where;
+            paths.push_back(forced);
+          }
+        }
       }
     }
   std::printf("GL: %s; %dx%d, %d frames per row, light moving every frame\n\n", ctx->info().line().c_str(), w, h, frames);
@@ -276,6 +286,7 @@ int main(int argc, char** argv) {
         s.patternScale = paths[p].patternScale;
         s.patternLinearFilter = paths[p].linear;
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
+        s.tuning.turnPlacement = paths[p].placement;
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;

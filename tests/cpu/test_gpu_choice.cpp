@@ -87,5 +87,29 @@ TEST(GpuChoice, SoftwareRenderersAreRecognised) {
   EXPECT_FALSE(isSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.6, DRM 3.49)"));
 }
 
+// The client extension strings as libglvnd answered them: with Mesa alone (this machine) and
+// with NVIDIA's driver alone (an H100 server, driver 580), which names device enumeration only
+// inside EGL_EXT_device_base. Missing that once left the GPU unlisted.
+TEST(GpuChoice, DevicesAreListedUnderMesaAndUnderNvidiasClientExtensions) {
+  const char* mesa = "EGL_EXT_device_base EGL_EXT_device_enumeration EGL_EXT_device_query EGL_EXT_platform_base "
+                     "EGL_KHR_client_get_all_proc_addresses EGL_EXT_client_extensions EGL_KHR_debug EGL_EXT_platform_device "
+                     "EGL_EXT_platform_wayland EGL_KHR_platform_wayland EGL_EXT_platform_x11 EGL_KHR_platform_x11 "
+                     "EGL_EXT_platform_xcb EGL_MESA_platform_gbm EGL_KHR_platform_gbm EGL_MESA_platform_surfaceless";
+  const char* nvidia = "EGL_EXT_platform_base EGL_EXT_device_base EGL_KHR_client_get_all_proc_addresses EGL_EXT_client_extensions "
+                       "EGL_KHR_debug EGL_KHR_platform_x11 EGL_EXT_platform_x11 EGL_EXT_platform_device "
+                       "EGL_MESA_platform_surfaceless EGL_EXT_explicit_device";
+  EXPECT_TRUE(canEnumerateDevices(mesa));
+  EXPECT_TRUE(canEnumerateDevices(nvidia));
+  // Without the device platform a listed device cannot be opened; without either name there is
+  // no list; a longer extension that merely starts with the name does not count.
+  EXPECT_FALSE(canEnumerateDevices("EGL_EXT_device_base EGL_MESA_platform_surfaceless"));
+  EXPECT_FALSE(canEnumerateDevices("EGL_EXT_platform_device EGL_EXT_device_query"));
+  EXPECT_FALSE(canEnumerateDevices("EGL_EXT_device_base_v2 EGL_EXT_platform_device"));
+  EXPECT_FALSE(canEnumerateDevices(nullptr));
+  EXPECT_TRUE(hasEglExtension("A B C", "C"));
+  EXPECT_FALSE(hasEglExtension("A B CD", "C"));
+  EXPECT_FALSE(hasEglExtension("A B C", ""));
+}
+
 }  // namespace
 }  // namespace npr
