@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "renderer/core/elapsed.h"
+#include "renderer/gl/gpu_choice.h"
 #include "renderer/gl/pass_state.h"
 #include "renderer/lines/intersection_lines.h"
 #include "renderer/mesh/ground_plane.h"
@@ -24,13 +25,6 @@ namespace {
 // orbiting, per vertex against per pixel: icosphere-7 (2.0 pixels) 4-9% faster, torus-500k (1.3)
 // 0-5% slower; in bench_frames the 871K torus (0.75) 5-10% slower, the bunny (178) 7-9% faster.
 constexpr float kPatternPerVertexPixels = 1.5f;
-// Below this many pixels per front-facing triangle the triangle, vertex, pixel and smooth paths turn
-// their lookups once per pixel after the mesh pass (passes/turn_resolve_pass.h). Measured with
-// the viewer, headless, 1280x720, triangle path, --orient curvature, orbiting, resolved against
-// in the mesh pass, three alternated runs: icosphere-7 (2 pixels a triangle) 8-14% faster,
-// icosphere-6 (8) 8-11% faster, icosphere-5 (32) even (-9% to +9%), icosphere-4 (128) 11-24%
-// slower, the bunny (178) 13-22% slower.
-constexpr float kResolveTurnPixels = 16.0f;
 
 bool isIdentity(const glm::mat4& m) { return m == glm::mat4(1.0f); }
 }  // namespace
@@ -39,6 +33,8 @@ Result<std::unique_ptr<Renderer>> Renderer::create() {
   if (epoxy_gl_version() < 33) return Error{"the renderer needs OpenGL 3.3 or later; this context is " + std::to_string(epoxy_gl_version())};
   std::unique_ptr<Renderer> r(new Renderer());
   r->emptyVao_ = gl::createVertexArray();
+  const auto* glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  r->softwareRasterizer_ = !glRenderer || isSoftwareRenderer(glRenderer);
   for (const PathInfo& info : renderPaths()) r->paths_.push_back(info.create());
   return r;
 }
@@ -344,7 +340,7 @@ TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPale
   if (!meshPath || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
     return nullptr;
   const TurnPlacement where = s.tuning.turnPlacement;
-  if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !(pixelsPerFrontTriangle_ < kResolveTurnPixels))) return nullptr;
+  if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !resolveTurnAutomatically(softwareRasterizer_, pixelsPerFrontTriangle_))) return nullptr;
   ++stats_.surfaceBuffers;
   return &turnResolve_;
 }
@@ -458,7 +454,7 @@ bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const Render
   if (s.tuning.turnPlacement == TurnPlacement::Resolved) return true;
   bool dense = false;
   scene_.forEach([&](const Model& m) {
-    dense = dense || m.pixelsPerFrontTriangle(m.placed(camera), viewport) < kResolveTurnPixels;
+    dense = dense || resolveTurnAutomatically(softwareRasterizer_, m.pixelsPerFrontTriangle(m.placed(camera), viewport));
   });
   return dense;
 }

@@ -232,6 +232,7 @@ class Renderer {
   std::vector<Feature*> active_;                    // this frame's
   TurnResolvePass turnResolve_;
   float pixelsPerFrontTriangle_ = 0.0f;  // the model being drawn, from its bounding disc (preparePattern)
+  bool softwareRasterizer_ = true;       // GL_RENDERER names llvmpipe or the like: choices tuned for it apply
   // Gives every palette this model's pattern frame (anchored) or none (screen) and where it is
   // drawn (the viewport, a poster tile's offset, per-vertex or per-pixel placement); the
   // orientation's screen directions use the same viewport, so it runs before prepareOrientation.

@@ -6,6 +6,23 @@
 
 namespace npr {
 
+namespace {
+// Below this many pixels per front-facing triangle, on a software rasterizer, the triangle,
+// vertex, pixel and smooth paths turn their lookups once per pixel after the mesh pass. Measured with
+// the viewer, headless, 1280x720, triangle path, --orient curvature, orbiting, resolved against
+// in the mesh pass, three alternated runs: icosphere-7 (2 pixels a triangle) 8-14% faster,
+// icosphere-6 (8) 8-11% faster, icosphere-5 (32) even (-9% to +9%), icosphere-4 (128) 11-24%
+// slower, the bunny (178) 13-22% slower. On a GPU the mesh pass wins at every density: an H100
+// (tests/bench/gpu_check.sh, bench_frames --turn-placements, 1920x1080) drew the 871K torus
+// (1.4 pixels a triangle) 0.1-0.2 ms faster (about 10%) with the turn in the mesh pass than
+// resolved, and the bunny 0.1-0.2 ms faster too; so only a software rasterizer resolves.
+constexpr float kResolveTurnPixels = 16.0f;
+}  // namespace
+
+bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTriangle) {
+  return softwareRasterizer && pixelsPerFrontTriangle < kResolveTurnPixels;
+}
+
 bool TurnResolvePass::begin(FrameContext& f, bool blend) {
   const glm::ivec4& vp = f.viewport;
   gl::TextureTarget& buffer = blend ? blend_ : one_;

@@ -15,6 +15,11 @@
 
 namespace npr {
 
+// Where TurnPlacement::Auto turns the lookups: resolved after the mesh pass on a software
+// rasterizer whose model has fewer than kResolveTurnPixels pixels per front-facing triangle, in
+// the mesh pass everywhere else (the figures are in turn_resolve_pass.cpp).
+bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTriangle);
+
 class TurnResolvePass {
  public:
   // Binds a buffer and the bound framebuffer's depth and stencil for a mesh pass compiled with

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/gl/gpu_choice.h"
+#include "renderer/passes/turn_resolve_pass.h"
 
 namespace npr {
 namespace {
@@ -109,6 +110,15 @@ TEST(GpuChoice, DevicesAreListedUnderMesaAndUnderNvidiasClientExtensions) {
   EXPECT_TRUE(hasEglExtension("A B C", "C"));
   EXPECT_FALSE(hasEglExtension("A B CD", "C"));
   EXPECT_FALSE(hasEglExtension("A B C", ""));
+}
+
+// A choice tuned on llvmpipe that a GPU reverses (bench_frames --turn-placements on an H100):
+// dense meshes resolve their turned lookups after the mesh pass on a software rasterizer only.
+TEST(DeviceTuning, TheTurnIsResolvedOnlyOnASoftwareRasterizerForDenseMeshes) {
+  EXPECT_TRUE(resolveTurnAutomatically(true, 1.4f));    // the 871K torus at 1920x1080
+  EXPECT_FALSE(resolveTurnAutomatically(true, 178.0f)); // the bunny
+  EXPECT_FALSE(resolveTurnAutomatically(false, 1.4f));
+  EXPECT_FALSE(resolveTurnAutomatically(false, 178.0f));
 }
 
 }  // namespace
