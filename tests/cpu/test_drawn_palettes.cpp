@@ -2,7 +2,8 @@
 // texel) and across resolutions; the shipped drawn palettes are evenly spaced in tone, keep
 // their tone at every mip level and tile without seams; mip reduction keeps an image's light;
 // `mip` lines in palette files are checked; the palette maker's ladders do what they say and
-// bad requests leave nothing behind.
+// bad requests leave nothing behind; crisp tone's thresholds keep a level's contrast and the
+// tone asked for.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "renderer/palette/palette_maker.h"
 #include "renderer/palette/palette_mipmaps.h"
 #include "renderer/palette/tonal_art_map.h"
+#include "renderer/palette/tone_thresholds.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -439,6 +441,97 @@ TEST(PaletteMaker, BadRequestsSayWhatAndLeaveNothingBehind) {
   ASSERT_TRUE(writeImage((d.path() / "blank.png").string(), whitePaper(16)));
   r.image = (d.path() / "blank.png").string();
   attempt(r, "no ink");
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// The entries' level-0 layers as the texture stores them, lightest first.
+std::vector<ImageRGBA8> storedLightToDark(const Palette& p) {
+  std::vector<std::pair<float, ImageRGBA8>> byTone;
+  const bool pre = layersPrecomposited(p);
+  const std::vector<ImageRGBA8> bg = pre && p.backgroundImage ? mipChain(*p.backgroundImage, 1) : std::vector<ImageRGBA8>{};
+  for (const PaletteEntry& e : p.entries) byTone.emplace_back(e.intensity, entryMipChain(e, 1, pre, p.backgroundColour, bg)[0]);
+  std::stable_sort(byTone.begin(), byTone.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<ImageRGBA8> out;
+  for (auto& [tone, img] : byTone) out.push_back(std::move(img));
+  return out;
+}
+
+// Webb et al.'s fine tone control, as the issue states it: between two levels the threshold
+// keeps the contrast of a single level (standard deviation within 10%) and lands within 0.25
+// of a level of the tone asked for; the blend it replaces loses the contrast.
+TEST(ToneThresholds, KeepALevelsContrastAndTheToneOnTheShippedDrawnPalettes) {
+  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil"}) {
+    const Palette p = shipped(name);
+    const std::vector<ImageRGBA8> levels = storedLightToDark(p);
+    std::vector<const ImageRGBA8*> ptrs;
+    for (const ImageRGBA8& l : levels) ptrs.push_back(&l);
+    Result<std::vector<std::uint8_t>> t = toneThresholds(ptrs);
+    ASSERT_TRUE(t) << name << ": " << t.error();
+    double worstTone = 0, worstSpread = 0, mixSpread = 1e9, grey = 0, mixGrey = 0, singleGrey = 0;
+    int samples = 0;
+    for (std::size_t pair = 1; pair + 2 < levels.size(); ++pair)  // the inner pairs: paper and solid ink have no strokes to keep
+      for (double w : {0.25, 0.5, 0.75}) {
+        const ToneBlendMeasure m = measureToneBlend(ptrs, *t, pair, w);
+        worstTone = std::max(worstTone, std::abs(m.thresholdTone - (double(pair) + w)));
+        worstSpread = std::max(worstSpread, std::abs(m.thresholdSpread / m.single - 1.0));
+        mixSpread = std::min(mixSpread, m.mixSpread / m.single);
+        grey += m.thresholdGrey;  // summed here, a mean over the pairs and weights below
+        mixGrey += m.mixGrey;
+        singleGrey += m.singleGrey;
+        ++samples;
+        // Crisp: no more mid grey than a level's own antialiased edges.
+        EXPECT_LE(m.thresholdGrey, m.singleGrey * 1.1 + 0.005) << name << " pair " << pair << " w " << w;
+        EXPECT_LE(std::abs(m.thresholdTone - (double(pair) + w)), 0.25) << name << " pair " << pair << " w " << w;
+        EXPECT_LE(std::abs(m.thresholdSpread / m.single - 1.0), 0.10) << name << " pair " << pair << " w " << w;
+      }
+    std::printf("%s: threshold tone within %.3f levels, spread within %.1f%% of a level's (the mix keeps %.0f%% of it at worst); "
+                "mid-grey texels %.1f%% (threshold), %.1f%% (mix), %.1f%% (a level)\n",
+                name, worstTone, 100.0 * worstSpread, 100.0 * mixSpread, 100.0 * grey / samples, 100.0 * mixGrey / samples, 100.0 * singleGrey / samples);
+  }
+}
+
+TEST(ToneThresholds, RefuseLevelsThatAreNotNestedOrDifferInSize) {
+  ImageRGBA8 paper = whitePaper(16), ink = whitePaper(16), small = whitePaper(8);
+  for (std::size_t i = 0; i < ink.pixels.size(); i += 4) ink.pixels[i] = ink.pixels[i + 1] = ink.pixels[i + 2] = 0;
+  EXPECT_TRUE(toneThresholds({&paper, &ink}));
+  Result<std::vector<std::uint8_t>> reversed = toneThresholds({&ink, &paper});
+  ASSERT_FALSE(reversed);
+  EXPECT_NE(reversed.error().find("not nested"), std::string::npos) << reversed.error();
+  EXPECT_FALSE(toneThresholds({&paper, &small}));
+  EXPECT_FALSE(toneThresholds({&paper}));
+}
+
+// Twenty dots added by the darker level, each a twentieth of what it adds: each turns whole at
+// the middle of its own share, the shares in some order, all twenty spread evenly over [0, 1].
+TEST(ToneThresholds, EachMarkTurnsWholeAtItsShareOfTheAddedDarkness) {
+  ImageRGBA8 paper = whitePaper(32), dots = whitePaper(32);
+  const auto at = [](std::size_t x, std::size_t y) { return y * 32 + x; };
+  std::vector<std::size_t> corners;
+  for (std::size_t j = 0; j < 4; ++j)
+    for (std::size_t i = 0; i < 5; ++i) {
+      corners.push_back(at(1 + 6 * i, 1 + 8 * j));
+      for (std::size_t y = 0; y < 2; ++y)
+        for (std::size_t x = 0; x < 2; ++x)
+          for (int c = 0; c < 3; ++c) dots.pixels[4 * at(1 + 6 * i + x, 1 + 8 * j + y) + std::size_t(c)] = 0;
+    }
+  Result<std::vector<std::uint8_t>> t = toneThresholds({&paper, &dots});
+  ASSERT_TRUE(t) << t.error();
+  std::vector<int> fractions;
+  for (std::size_t c : corners) {
+    EXPECT_EQ((*t)[c], (*t)[c + 1]);
+    EXPECT_EQ((*t)[c], (*t)[c + 32]);
+    EXPECT_EQ((*t)[c], (*t)[c + 33]);
+    fractions.push_back((*t)[c]);
+  }
+  std::sort(fractions.begin(), fractions.end());
+  for (std::size_t k = 0; k < fractions.size(); ++k) EXPECT_EQ(fractions[k], int(toByte((float(k) + 0.5f) / 20.0f))) << k;
+  const ToneBlendMeasure m = measureToneBlend({&paper, &dots}, *t, 0, 0.5);
+  EXPECT_NEAR(m.thresholdTone, 0.5, 1e-9);  // ten dots of twenty shown
 }
 
 }  // namespace

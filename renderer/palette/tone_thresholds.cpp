@@ -1,0 +1,156 @@
+// Per-texel tone thresholds for crisp tone (see tone_thresholds.h).
+#include "renderer/palette/tone_thresholds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <string>
+
+#include "renderer/core/colour.h"
+
+namespace npr {
+namespace {
+
+// A texel's light: the mean of its channels in linear light (alpha is ignored: the layers are
+// stored composited over the paper).
+std::vector<float> lightOf(const ImageRGBA8& img) {
+  const auto& lin = srgbTable();
+  std::vector<float> out(std::size_t(img.width) * std::size_t(img.height));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = (lin[img.pixels[4 * i]] + lin[img.pixels[4 * i + 1]] + lin[img.pixels[4 * i + 2]]) / 3.0f;
+  return out;
+}
+
+constexpr float kChange = 0.05f;       // less added darkness than this is not a mark
+constexpr int kPiecesPerLevel = 16;    // no mark carries more than this share of a level's darkness
+
+}  // namespace
+
+Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& levels) {
+  if (levels.size() < 2) return Error{"a threshold map needs at least two levels"};
+  const int w = levels[0]->width, h = levels[0]->height;
+  for (const ImageRGBA8* img : levels)
+    if (img->width != w || img->height != h) return Error{"the levels differ in size"};
+  const std::size_t n = std::size_t(w) * std::size_t(h);
+  if (n == 0) return Error{"the levels are empty"};
+  std::vector<std::vector<float>> light;
+  for (const ImageRGBA8* img : levels) light.push_back(lightOf(*img));
+  // Nested: each level keeps the marks of the lighter one.
+  for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+    std::size_t lighter = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (light[k + 1][i] > light[k][i] + 0.1f) ++lighter;
+    if (lighter * 50 > n)
+      return Error{"levels " + std::to_string(k + 1) + " and " + std::to_string(k + 2) + " (lightest first) are not nested: " +
+                   std::to_string(lighter * 100 / n) + "% of the texels get lighter"};
+  }
+  // Each texel belongs to the pair of levels where it darkens most.
+  std::vector<int> pairOf(n, -1);
+  std::vector<float> added(n, 0.0f);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+      const float d = light[k][i] - light[k + 1][i];
+      if (d > kChange && d > added[i]) {
+        added[i] = d;
+        pairOf[i] = int(k);
+      }
+    }
+  std::vector<std::uint8_t> out(n, 128);
+  std::vector<char> seen(n, 0);
+  std::mt19937 rng(0x70e5);
+  std::vector<std::uint32_t> queue;
+  for (int pair = 0; pair + 1 < int(levels.size()); ++pair) {
+    // The pair's marks: 8-connected texels it adds, wrapping like the tile, each as its flood
+    // fill's order, cut into pieces of at most 1/kPiecesPerLevel of the pair's darkness.
+    double total = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (pairOf[i] == pair) total += added[i];
+    if (!(total > 0)) continue;
+    const double piece = total / kPiecesPerLevel;
+    std::vector<std::vector<std::uint32_t>> marks;
+    for (std::size_t start = 0; start < n; ++start) {
+      if (pairOf[start] != pair || seen[start]) continue;
+      queue.assign(1, std::uint32_t(start));
+      seen[start] = 1;
+      marks.emplace_back();
+      double weight = 0;
+      for (std::size_t q = 0; q < queue.size(); ++q) {
+        const std::uint32_t t = queue[q];
+        if (weight + added[t] > piece && !marks.back().empty()) {
+          marks.emplace_back();
+          weight = 0;
+        }
+        marks.back().push_back(t);
+        weight += added[t];
+        const int x = int(t % std::uint32_t(w)), y = int(t / std::uint32_t(w));
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = (x + dx + w) % w, ny = (y + dy + h) % h;
+            const std::uint32_t u = std::uint32_t(ny) * std::uint32_t(w) + std::uint32_t(nx);
+            if (pairOf[u] == pair && !seen[u]) {
+              seen[u] = 1;
+              queue.push_back(u);
+            }
+          }
+      }
+    }
+    std::shuffle(marks.begin(), marks.end(), rng);
+    double before = 0;
+    for (const auto& mark : marks) {
+      double weight = 0;
+      for (std::uint32_t t : mark) weight += added[t];
+      // The middle of the mark's share: it shows once the weight passes it.
+      const float f = float((before + 0.5 * weight) / total);
+      for (std::uint32_t t : mark) out[t] = toByte(f);
+      before += weight;
+    }
+  }
+  return out;
+}
+
+ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, const std::vector<std::uint8_t>& thresholds,
+                                  std::size_t pair, double w) {
+  ToneBlendMeasure m;
+  if (pair + 1 >= levels.size()) return m;
+  const std::vector<float> a = lightOf(*levels[pair]), b = lightOf(*levels[pair + 1]);
+  if (a.size() != thresholds.size() || b.size() != a.size() || a.empty()) return m;
+  const auto meanAndSpread = [](const std::vector<double>& v) {
+    const double mean = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+    double var = 0;
+    for (double x : v) var += (x - mean) * (x - mean);
+    return std::pair{mean, std::sqrt(var / double(v.size()))};
+  };
+  std::vector<double> crisp(a.size()), mixed(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    // As the shader compares: the weight against the stored byte's fraction.
+    crisp[i] = w > thresholds[i] / 255.0 ? b[i] : a[i];
+    mixed[i] = (1.0 - w) * a[i] + w * b[i];
+  }
+  const double ma = meanAndSpread(std::vector<double>(a.begin(), a.end())).first, mb = meanAndSpread(std::vector<double>(b.begin(), b.end())).first;
+  const auto position = [&](double mean) { return double(pair) + (ma != mb ? (ma - mean) / (ma - mb) : w); };
+  const auto [mc, sc] = meanAndSpread(crisp);
+  const auto [mm, sm] = meanAndSpread(mixed);
+  // Grey: between a quarter and three quarters of the way from the darkest texel to the lightest.
+  const auto [lo, hi] = std::minmax({*std::min_element(a.begin(), a.end()), *std::min_element(b.begin(), b.end()),
+                                     *std::max_element(a.begin(), a.end()), *std::max_element(b.begin(), b.end())});
+  const auto grey = [&](const auto& v) {
+    std::size_t count = 0;
+    for (const auto x : v) {
+      const double u = hi > lo ? (double(x) - lo) / (hi - lo) : 0.0;
+      count += u > 0.25 && u < 0.75;
+    }
+    return double(count) / double(v.size());
+  };
+  m.thresholdGrey = grey(crisp);
+  m.mixGrey = grey(mixed);
+  m.singleGrey = (1.0 - w) * grey(a) + w * grey(b);
+  m.thresholdTone = position(mc);
+  m.mixTone = position(mm);
+  m.thresholdSpread = sc;
+  m.mixSpread = sm;
+  m.single = (1.0 - w) * meanAndSpread(std::vector<double>(a.begin(), a.end())).second + w * meanAndSpread(std::vector<double>(b.begin(), b.end())).second;
+  return m;
+}
+
+}  // namespace npr
