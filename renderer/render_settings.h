@@ -171,6 +171,9 @@ enum class TriangleLighting { Auto, Cpu, Gpu };
 // the per-pixel shadings only: pixel, smooth, reference's Phong, and the control palettes).
 enum class OcclusionMethod { Baked, Screen };
 
+// The smooth path between two levels (RenderSettings::toneBlend).
+enum class ToneBlend { Mix, Threshold };
+
 // The depth cue (features/depth_cue/): the paper blended over tone and lines by distance
 // through the scene, from `start` to `end` (fractions of the scene's depth: 0 its front, 1
 // its back), at most `strength`.
@@ -204,6 +207,9 @@ struct RenderSettings {
   // Fit the palette's levels onto the tones the visible surfaces show (palette/tone_range.h;
   // the range scale then spreads about them). Off: the palette's own range, as the original.
   bool autoToneRange = false;
+  // Between the two levels the smooth path brackets a tone with: blended, or whole texels of one
+  // or the other by each texel's threshold (palette/tone_thresholds.h), where the palette has them.
+  ToneBlend toneBlend = ToneBlend::Mix;
   std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
   // Light each face with the model's own materials, vertex colours and texture maps (when it
   // has any); off: the lighting state's one material, as the original.

@@ -9,8 +9,9 @@
 // With ORIENTED each entry's lookup is turned so its strokes follow the pixel's stroke angle
 // (orientation.glsl; the pass sets the angle before matching).
 // Defines: PALETTE_SIZE, LAYER_SIZES_DIFFER, BACKGROUND_IMAGE, MATCH_COLORS | MATCH_INTENSITY |
-// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED, ORIENT_BINS and
-// ENTRY_ANGLE_SHARED.
+// MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED, ORIENT_BINS,
+// ENTRY_ANGLE_SHARED and TONE_THRESHOLD (precomposited layers whose alpha holds each texel's
+// threshold: the smooth path shows one level or the other instead of their blend).
 
 uniform sampler2DArray uPalette;
 #ifdef LAYER_SIZES_DIFFER
@@ -63,7 +64,7 @@ uniform float uFrameTurn;  // the anchored pattern's rotation on screen
 uniform float uSharedEntryAngle;
 uniform int uTurnedEntries[(PALETTE_SIZE + 31) / 32];  // bit k % 32 of word k / 32: entry k is turned
 bool entryTurned(int entry) { return ((uTurnedEntries[entry >> 5] >> (entry & 31)) & 1) != 0; }
-vec3 paletteColour(int entry) {
+vec4 paletteTexel(int entry) {
   vec3 c = paletteCoordinate();
   int b0, b1;
   float w;
@@ -73,26 +74,41 @@ vec3 paletteColour(int entry) {
     c0 = c1 = c.xy;
     w = 0.0;
   }
-  return composite(mix(layerTexel(vec3(c0, c.z), entry), layerTexel(vec3(c1, c.z), entry), w));
+  return mix(layerTexel(vec3(c0, c.z), entry), layerTexel(vec3(c1, c.z), entry), w);
 }
 #else
 uniform float uEntryAngle[PALETTE_SIZE];  // each entry's stroke direction (radians; < -10: none)
-vec3 paletteColour(int entry) {
+vec4 paletteTexel(int entry) {
   vec3 c = paletteCoordinate();
   int b0, b1;
   float w;
   orientSteps(uEntryAngle[entry], uFrameTurn, b0, b1, w);
-  return composite(mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z), entry), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z), entry), w));
+  return mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z), entry), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z), entry), w);
 }
 #endif
 #elif defined(PATTERN_MAPPED)
-vec3 paletteColour(int entry) { return composite(layerTexel(paletteCoordinate(), entry)); }
+vec4 paletteTexel(int entry) { return layerTexel(paletteCoordinate(), entry); }
 #else
-vec3 paletteColour(int entry) {
+vec4 paletteTexel(int entry) {
   ivec2 p = wrapTexel(framePixel(), LAYER_SIZE(entry));
-  return composite(texelFetch(uPalette, ivec3(p, entry), 0));
+  return texelFetch(uPalette, ivec3(p, entry), 0);
 }
 #endif
+vec3 paletteColour(int entry) { return composite(paletteTexel(entry)); }
+
+// Between entries a and b at weight w of b. TONE_THRESHOLD (Webb et al. 2002; intensity
+// matching, where a is the darker level): whole texels of one level or the other, the darker
+// where its weight 1 - w passes the texel's threshold (the share of the way from the lighter
+// level at which the texel turns; both layers store it), so strokes stay crisp at every tone.
+// The same two fetches as the blend, branch-free.
+vec3 toneBetween(int a, int b, float w) {
+#ifdef TONE_THRESHOLD
+  vec4 ta = paletteTexel(a), tb = paletteTexel(b);
+  return 1.0 - w > ta.a ? ta.rgb : tb.rgb;
+#else
+  return mix(paletteColour(a), paletteColour(b), w);
+#endif
+}
 
 #ifdef MATCH_COLORS
 uniform usampler3D uLut3D;  // nearest and second-nearest entry at each grid point
@@ -132,5 +148,5 @@ vec3 blendSelection(vec3 lit) {
 
 vec3 paletteBlend(vec3 lit) {
   vec3 b = blendSelection(lit);
-  return mix(paletteColour(int(b.x)), paletteColour(int(b.y)), b.z);
+  return toneBetween(int(b.x), int(b.y), b.z);
 }

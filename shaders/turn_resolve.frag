@@ -16,9 +16,10 @@ void main() {
   vec4 t = texelFetch(uTurnBuffer, ivec2(gl_FragCoord.xy) - uBufferOrigin, 0);
   strokeAngle = t.x;
   strokeValid = t.y > 0.0;
-  vec3 c = paletteColour(int(abs(t.y)) - 1);
 #ifdef RESOLVE_BLEND
-  c = mix(c, paletteColour(int(t.z)), t.w);
+  vec3 c = toneBetween(int(abs(t.y)) - 1, int(t.z), t.w);
+#else
+  vec3 c = paletteColour(int(abs(t.y)) - 1);
 #endif
   fragColor = vec4(c, 1.0);
 }

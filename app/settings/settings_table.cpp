@@ -171,6 +171,12 @@ std::vector<Setting> buildTable() {
                               "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
                               "frames (the range scale spreads about them; not with band thresholds); fixed: the palette's own range",
                               {{"fixed", false}, {"auto", true}}, [](Look& l) -> bool& { return l.render.autoToneRange; }));
+  t.push_back(choiceRow<ToneBlend>("tone-blend", "between levels", "palette",
+                                   "The smooth path between two levels: mix (blend them, greying their strokes) or threshold (whole "
+                                   "strokes of one level or the other, per texel: crisp tone for nested palettes such as the drawn ones, with intensity matching)",
+                                   {{"mix", ToneBlend::Mix}, {"threshold", ToneBlend::Threshold}},
+                                   [](Look& l) -> ToneBlend& { return l.render.toneBlend; }));
+  t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Smooth; };
   {
     Setting b = base("bands", "band thresholds", "palette",
                      "Cel band thresholds T1,T2,... on the match query axis [0,3], strictly ascending (one fewer than the palette's tones); none: the nearest level",

@@ -12,6 +12,7 @@
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_mipmaps.h"
 #include "renderer/palette/palette_orientation.h"
+#include "renderer/palette/tone_thresholds.h"
 
 namespace npr {
 namespace {
@@ -80,14 +81,15 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   // Immutable storage, so a second view can read the same texels as sRGB (below).
   glTexStorage3D(GL_TEXTURE_2D_ARRAY, levels, GL_RGBA8, w, h, n);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  for (int i = 0; i < n; ++i) {
-    const std::vector<ImageRGBA8> chain =
-        entryMipChain(p.entries[static_cast<size_t>(i)], levels, gp->precomposited_, p.backgroundColour, bgChain);
+  std::vector<std::vector<ImageRGBA8>> chains;
+  for (int i = 0; i < n; ++i)
+    chains.push_back(entryMipChain(p.entries[static_cast<size_t>(i)], levels, gp->precomposited_, p.backgroundColour, bgChain));
+  gp->addToneThresholds(p, chains);
+  for (int i = 0; i < n; ++i)
     for (int k = 0; k < levels; ++k) {
-      const ImageRGBA8& img = chain[static_cast<size_t>(k)];
+      const ImageRGBA8& img = chains[size_t(i)][size_t(k)];
       glTexSubImage3D(GL_TEXTURE_2D_ARRAY, k, 0, 0, i, img.width, img.height, 1, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(img, flipped));
     }
-  }
   // Read with texelFetch (encoded values, no filtering) at one texel per pixel, and where
   // layers differ in size.
   glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
@@ -115,6 +117,28 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   glActiveTexture(GL_TEXTURE0);
   if (glGetError() == GL_OUT_OF_MEMORY) return Error{"palette upload failed: out of GPU memory"};
   return gp;
+}
+
+void GpuPalette::addToneThresholds(const Palette& p, std::vector<std::vector<ImageRGBA8>>& chains) {
+  toneThresholds_ = false;
+  if (!precomposited_) {
+    toneThresholdNote_ = "its background image differs in size from its entries";
+    return;
+  }
+  std::vector<std::vector<std::uint8_t>> levels;
+  for (std::size_t k = 0; k < chains.front().size(); ++k) {
+    Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, k);
+    if (!t) {
+      toneThresholdNote_ = t.error();  // alpha left as it was: no level keeps a partial map
+      return;
+    }
+    levels.push_back(std::move(*t));
+  }
+  for (auto& chain : chains)
+    for (std::size_t k = 0; k < levels.size(); ++k)
+      for (std::size_t j = 0; j < levels[k].size(); ++j) chain[k].pixels[4 * j + 3] = levels[k][j];
+  toneThresholds_ = true;
+  toneThresholdNote_.clear();
 }
 
 Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<float>& bands, FrameStats& stats,

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -92,6 +93,13 @@ class GpuPalette {
   // Entry k's stroke direction in radians (below -10: none, left unturned).
   float entryAngle(int entry) const { return entryAngles_[static_cast<size_t>(entry)]; }
 
+  // Crisp tone (palette/tone_thresholds.h): whether each layer's alpha holds the texel's
+  // threshold, which the smooth path compares instead of blending (--tone-blend threshold); the
+  // layers must be stored composited over their background (alpha unused), share a size and
+  // nest. `toneThresholdNote()`: why not, when not.
+  bool hasToneThresholds() const { return toneThresholds_; }
+  const std::string& toneThresholdNote() const { return toneThresholdNote_; }
+
   gl::PaletteVariant variant(MatchMode mode) const;
   // For programs that only match (read no texels of the layers): no mapping, filter or turns.
   gl::PaletteVariant matchingVariant(MatchMode mode) const {
@@ -119,12 +127,16 @@ class GpuPalette {
 
  private:
   GpuPalette() = default;
+  // Writes the thresholds into the alpha of `chains` (entries' mip chains) where it can.
+  void addToneThresholds(const Palette& p, std::vector<std::vector<ImageRGBA8>>& chains);
   gl::Texture layers_;      // GL_TEXTURE_2D_ARRAY, RGBA8, one layer per entry, with mip levels
   gl::Texture layersSrgb_;  // the same texels viewed as sRGB: filtered in linear light
   gl::Texture background_;  // GL_TEXTURE_2D, only for an image background
   std::vector<glm::ivec2> layerSizes_;
   bool sizesDiffer_ = false;
   bool precomposited_ = false;
+  bool toneThresholds_ = false;
+  std::string toneThresholdNote_;
   bool backgroundImage_ = false;
   glm::vec3 backgroundColour_{1.0f};
   glm::ivec2 backgroundSize_{1, 1};

@@ -2,6 +2,7 @@
 #include "renderer/palette/palette_analysis.h"
 
 #include "renderer/palette/palette_mipmaps.h"
+#include "renderer/palette/tone_thresholds.h"
 
 #include <algorithm>
 #include <sstream>
@@ -107,6 +108,10 @@ std::string paletteReportJson(const Palette& p) {
     << ",\"monotonic\":" << (a.monotonic ? "true" : "false") << ",\"spacing_error\":" << num(a.spacingError)
     << ",\"evenly_spaced\":" << (a.spacingError <= PaletteAnalysis::kEvenSpacing ? "true" : "false");
   if (p.defaultMatch) o << ",\"match\":\"" << matchModeName(*p.defaultMatch) << "\"";
+  // Whether the smooth path can show crisp tone (--tone-blend threshold), and if not, why.
+  const Result<std::vector<std::uint8_t>> thresholds = paletteToneThresholds(p);
+  o << ",\"tone_thresholds\":" << (thresholds ? "true" : "false");
+  if (!thresholds) o << ",\"tone_thresholds_note\":" << str("no threshold map: " + thresholds.error());
   o << ",\"warnings\":[";
   std::vector<std::string> w = p.warnings;
   if (p.defaultMatch) for (auto& s : a.suitabilityWarnings(*p.defaultMatch)) w.push_back(s);

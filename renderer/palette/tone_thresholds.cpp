@@ -8,6 +8,8 @@
 #include <string>
 
 #include "renderer/core/colour.h"
+#include "renderer/palette/palette.h"
+#include "renderer/palette/palette_mipmaps.h"
 
 namespace npr {
 namespace {
@@ -24,6 +26,8 @@ std::vector<float> lightOf(const ImageRGBA8& img) {
 
 constexpr float kChange = 0.05f;       // less added darkness than this is not a mark
 constexpr int kPiecesPerLevel = 16;    // no mark carries more than this share of a level's darkness
+constexpr double kMarkCover = 0.6;      // the share of texels a step may darken, on average
+constexpr double kConcentrated = 0.3;   // how much of a texel's darkening one step must do (0 even .. 1 one step)
 
 }  // namespace
 
@@ -44,6 +48,37 @@ Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRG
     if (lighter * 50 > n)
       return Error{"levels " + std::to_string(k + 1) + " and " + std::to_string(k + 2) + " (lightest first) are not nested: " +
                    std::to_string(lighter * 100 / n) + "% of the texels get lighter"};
+  }
+  // Marks, not a ramp: each step of a tonal art map adds strokes or dots over part of the tile
+  // and leaves the rest; a flat or tinted ladder (cel, Gooch, wood) changes every texel at
+  // every step, and the mix suits it. The share of texels a step darkens by more than kChange,
+  // averaged over the steps, must stay below kMarkCover.
+  {
+    double cover = 0;
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+      std::size_t changed = 0;
+      for (std::size_t i = 0; i < n; ++i) changed += light[k][i] - light[k + 1][i] > kChange;
+      cover += double(changed) / double(n) / double(levels.size() - 1);
+    }
+    // And a texel's darkening comes mostly at one step (where a stroke lands), not spread
+    // evenly over the steps as a ramp's: the share at its largest step, weighted by the
+    // darkening, scaled so that an even spread is 0 and a single step 1.
+    double largest = 0, all = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      float step = 0;
+      for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+        const float d = std::max(0.0f, light[k][i] - light[k + 1][i]);
+        step = std::max(step, d);
+        all += d;
+      }
+      largest += step;
+    }
+    const double even = 1.0 / double(levels.size() - 1);
+    const double concentration = all > 0 && even < 1.0 ? (largest / all - even) / (1.0 - even) : 1.0;
+    if (!(cover < kMarkCover) || !(concentration >= kConcentrated))
+      return Error{"levels are a ramp rather than marks added step by step (each step darkens " + std::to_string(int(100 * cover)) +
+                   "% of the texels; " + std::to_string(int(100 * concentration)) +
+                   "% concentration of a texel's darkening in one step): the mix suits them"};
   }
   // Each texel belongs to the pair of levels where it darkens most.
   std::vector<int> pairOf(n, -1);
@@ -107,6 +142,31 @@ Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRG
     }
   }
   return out;
+}
+
+Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const std::vector<std::vector<ImageRGBA8>>& chains,
+                                                        std::size_t level) {
+  if (chains.size() < 2 || chains.size() != p.entries.size()) return Error{"it has fewer than two entries"};
+  if (!layersPrecomposited(p)) return Error{"its background image differs in size from its entries"};
+  std::vector<std::size_t> order(chains.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.entries[a].intensity > p.entries[b].intensity; });
+  std::vector<const ImageRGBA8*> lightToDark;
+  for (std::size_t i : order) {
+    if (level >= chains[i].size()) return Error{"an entry lacks mip level " + std::to_string(level)};
+    lightToDark.push_back(&chains[i][level]);
+  }
+  Result<std::vector<std::uint8_t>> t = toneThresholds(lightToDark);
+  if (!t) return Error{"its " + t.error()};
+  return t;
+}
+
+Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p) {
+  const bool pre = layersPrecomposited(p);
+  const std::vector<ImageRGBA8> bg = pre && p.backgroundImage ? mipChain(*p.backgroundImage, 1) : std::vector<ImageRGBA8>{};
+  std::vector<std::vector<ImageRGBA8>> chains;
+  for (const PaletteEntry& e : p.entries) chains.push_back(entryMipChain(e, 1, pre, p.backgroundColour, bg));
+  return paletteToneThresholds(p, chains, 0);
 }
 
 ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, const std::vector<std::uint8_t>& thresholds,

@@ -24,6 +24,16 @@ namespace npr {
 // lighter by more than 0.1 of the paper's light) or the sizes that differ.
 [[nodiscard]] Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& lightToDark);
 
+struct Palette;
+// The thresholds of a palette's stored layers at mip level `level`: `chains` holds every
+// entry's mip chain as the texture stores it (palette_mipmaps.h's entryMipChain), the levels
+// are taken lightest first. An error saying why a palette has none: its layers are not stored
+// composited over the background (then alpha is theirs), differ in size, or do not nest.
+[[nodiscard]] Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const std::vector<std::vector<ImageRGBA8>>& chains,
+                                                                    std::size_t level);
+// The same at level 0, the chains made here: what --palette-info reports.
+[[nodiscard]] Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p);
+
 // What a pixel shows between levels `pair` and `pair + 1` at weight `w` (0: the lighter
 // level, 1: the darker), measured over the tile in linear light: the tone as a position in
 // levels (pair + the share of the way between the two levels' mean light) and the standard

@@ -36,6 +36,7 @@ bool TurnResolvePass::begin(FrameContext& f, bool blend) {
 Status TurnResolvePass::resolve(FrameContext& f) {
   target_.restore();
   gl::TurnResolveProgram variant{f.palette->variant(f.settings.match), blending_};
+  variant.palette.toneThreshold = blending_ && f.settings.toneBlend == ToneBlend::Threshold && f.palette->hasToneThresholds();
   variant.palette.patternPerVertex = true;  // three vertices for the whole screen: interpolating always pays
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};

@@ -74,6 +74,7 @@ struct FrameContext {
     gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
+    v.toneThreshold = output == gl::MeshOutput::Colour && settings.toneBlend == ToneBlend::Threshold && (p ? p : palette)->hasToneThresholds();
     return v;
   }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.

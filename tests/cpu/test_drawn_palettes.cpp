@@ -495,15 +495,28 @@ TEST(ToneThresholds, KeepALevelsContrastAndTheToneOnTheShippedDrawnPalettes) {
   }
 }
 
-TEST(ToneThresholds, RefuseLevelsThatAreNotNestedOrDifferInSize) {
-  ImageRGBA8 paper = whitePaper(16), ink = whitePaper(16), small = whitePaper(8);
-  for (std::size_t i = 0; i < ink.pixels.size(); i += 4) ink.pixels[i] = ink.pixels[i + 1] = ink.pixels[i + 2] = 0;
-  EXPECT_TRUE(toneThresholds({&paper, &ink}));
-  Result<std::vector<std::uint8_t>> reversed = toneThresholds({&ink, &paper});
+// Levels that are not nested, differ in size, or are a ramp (every texel a little darker at
+// each step: cel, Gooch, wood) get no thresholds: the mix suits them.
+TEST(ToneThresholds, RefuseLevelsThatAreNotNestedDifferInSizeOrAreARamp) {
+  ImageRGBA8 paper = whitePaper(16), dots = whitePaper(16), small = whitePaper(8);
+  for (std::size_t i = 0; i < dots.pixels.size(); i += 4 * 5) dots.pixels[i] = dots.pixels[i + 1] = dots.pixels[i + 2] = 0;
+  EXPECT_TRUE(toneThresholds({&paper, &dots}));
+  Result<std::vector<std::uint8_t>> reversed = toneThresholds({&dots, &paper});
   ASSERT_FALSE(reversed);
   EXPECT_NE(reversed.error().find("not nested"), std::string::npos) << reversed.error();
   EXPECT_FALSE(toneThresholds({&paper, &small}));
   EXPECT_FALSE(toneThresholds({&paper}));
+  std::vector<ImageRGBA8> ramp;
+  for (int k = 0; k < 4; ++k) {
+    ramp.push_back(whitePaper(16));
+    for (std::size_t i = 0; i < ramp.back().pixels.size(); ++i)
+      if (i % 4 != 3) ramp.back().pixels[i] = std::uint8_t(255 - 60 * k);
+  }
+  Result<std::vector<std::uint8_t>> flat = toneThresholds({&ramp[0], &ramp[1], &ramp[2], &ramp[3]});
+  ASSERT_FALSE(flat);
+  EXPECT_NE(flat.error().find("ramp"), std::string::npos) << flat.error();
+  for (const char* name : {"cel", "gooch", "wood"}) EXPECT_FALSE(paletteToneThresholds(shipped(name))) << name;
+  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "charcoal"}) EXPECT_TRUE(paletteToneThresholds(shipped(name))) << name;
 }
 
 // Twenty dots added by the darker level, each a twentieth of what it adds: each turns whole at
