@@ -128,9 +128,21 @@ void GpuPalette::addToneThresholds(const Palette& p, std::vector<std::vector<Ima
   std::vector<std::vector<std::uint8_t>> levels;
   for (std::size_t k = 0; k < chains.front().size(); ++k) {
     Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, k);
-    if (!t) {
-      toneThresholdNote_ = t.error();  // alpha left as it was: no level keeps a partial map
+    if (!t && k == 0) {
+      toneThresholdNote_ = t.error();  // alpha left as it was
       return;
+    }
+    if (!t) {
+      // A coarse level whose reduced strokes no longer nest: every other texel of the finer
+      // level's thresholds, the marks kept in the same order.
+      const ImageRGBA8& fine = chains.front()[k - 1];
+      const ImageRGBA8& coarse = chains.front()[k];
+      std::vector<std::uint8_t> sub(std::size_t(coarse.width) * std::size_t(coarse.height));
+      for (int y = 0; y < coarse.height; ++y)
+        for (int x = 0; x < coarse.width; ++x)
+          sub[std::size_t(y) * std::size_t(coarse.width) + std::size_t(x)] =
+              levels.back()[std::size_t(std::min(2 * y, fine.height - 1)) * std::size_t(fine.width) + std::size_t(std::min(2 * x, fine.width - 1))];
+      t = std::move(sub);
     }
     levels.push_back(std::move(*t));
   }

@@ -31,7 +31,7 @@ constexpr double kConcentrated = 0.3;   // how much of a texel's darkening one s
 
 }  // namespace
 
-Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& levels) {
+Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& levels, bool requireMarks) {
   if (levels.size() < 2) return Error{"a threshold map needs at least two levels"};
   const int w = levels[0]->width, h = levels[0]->height;
   for (const ImageRGBA8* img : levels)
@@ -53,7 +53,7 @@ Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRG
   // and leaves the rest; a flat or tinted ladder (cel, Gooch, wood) changes every texel at
   // every step, and the mix suits it. The share of texels a step darkens by more than kChange,
   // averaged over the steps, must stay below kMarkCover.
-  {
+  if (requireMarks) {
     double cover = 0;
     for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
       std::size_t changed = 0;
@@ -156,7 +156,7 @@ Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const 
     if (level >= chains[i].size()) return Error{"an entry lacks mip level " + std::to_string(level)};
     lightToDark.push_back(&chains[i][level]);
   }
-  Result<std::vector<std::uint8_t>> t = toneThresholds(lightToDark);
+  Result<std::vector<std::uint8_t>> t = toneThresholds(lightToDark, level == 0);
   if (!t) return Error{"its " + t.error()};
   return t;
 }

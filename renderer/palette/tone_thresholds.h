@@ -22,13 +22,16 @@ namespace npr {
 // stores them (composited over the paper). Per texel, the fraction in [0, 1] as a byte; an
 // error naming the first pair of levels that is not nested (more than 2% of the texels get
 // lighter by more than 0.1 of the paper's light) or the sizes that differ.
-[[nodiscard]] Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& lightToDark);
+// `requireMarks`: refuse a ramp (see kMarkCover); a palette's coarse mip levels, blurred
+// into ramps, are taken as they come once level 0 has passed.
+[[nodiscard]] Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRGBA8*>& lightToDark, bool requireMarks = true);
 
 struct Palette;
 // The thresholds of a palette's stored layers at mip level `level`: `chains` holds every
 // entry's mip chain as the texture stores it (palette_mipmaps.h's entryMipChain), the levels
 // are taken lightest first. An error saying why a palette has none: its layers are not stored
-// composited over the background (then alpha is theirs), differ in size, or do not nest.
+// composited over the background (then alpha is theirs), differ in size, do not nest or (at
+// level 0) are a ramp.
 [[nodiscard]] Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const std::vector<std::vector<ImageRGBA8>>& chains,
                                                                     std::size_t level);
 // The same at level 0, the chains made here: what --palette-info reports.

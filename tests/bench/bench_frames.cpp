@@ -6,7 +6,7 @@
 // work each frame, as they do while a user drags the light.
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
-//      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--turn-placements]
+//      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--turn-placements] [--tone-threshold]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -56,6 +56,7 @@ struct PathRow {
   bool linear = false;                    // mapped lookups filtered (--pattern-linear)
   bool oriented = false;                  // strokes along the curvature (--orient)
   TurnPlacement placement = TurnPlacement::Auto;  // where the turn is applied (--turn-placements)
+  bool toneThreshold = false;              // smooth: whole texels by threshold (--tone-threshold)
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
@@ -72,7 +73,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false, toneThreshold = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -85,6 +86,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--pattern-linear")) patternLinear = true;
     else if (!std::strcmp(argv[i], "--orient")) orient = true;
     else if (!std::strcmp(argv[i], "--turn-placements")) orient = placements = true;
+    else if (!std::strcmp(argv[i], "--tone-threshold")) toneThreshold = true;
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
@@ -96,10 +98,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--tone-threshold] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
-                           "path with strokes along the curvature; --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
+                           "path with strokes along the curvature; --tone-threshold adds the smooth path with crisp tone (+threshold, --tone-blend threshold); --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
                            "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto))\n");
@@ -246,6 +248,12 @@ int main(int argc, char** argv) {
         on.gpuTriangles = true;
         paths.push_back(on);
       }
+      if (toneThreshold && p.path == RenderPath::Smooth) {
+        PathRow on = p;
+        on.label += "+threshold";
+        on.toneThreshold = true;
+        paths.push_back(on);
+      }
       if (orient && pathInfo(p.path).usesPalette) {
         PathRow on = p;
         on.label += "+orient";
@@ -287,6 +295,7 @@ int main(int argc, char** argv) {
         s.patternLinearFilter = paths[p].linear;
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
         s.tuning.turnPlacement = paths[p].placement;
+        s.toneBlend = paths[p].toneThreshold ? ToneBlend::Threshold : ToneBlend::Mix;
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;

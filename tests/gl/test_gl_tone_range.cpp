@@ -1,12 +1,16 @@
 // GL tier: the automatic tone range on a real, dark model (assimp's spider, textures of albedo
 // about 0.2): with the palette's own range it is drawn with the darkest few levels of the
-// crosshatch; fitted, with at least five; and orbiting it, the fit moves smoothly.
+// crosshatch; fitted, with at least five; and orbiting it, the fit moves smoothly. Crisp tone
+// (--tone-blend threshold): the smooth path's strokes stay whole at the same mean tone, and
+// palettes without a threshold map are blended as before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "gl/gl_test_env.h"
+#include "renderer/core/colour.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
@@ -62,6 +66,58 @@ TEST_F(ToneFixture, TheSpiderUsesFiveLevelsOrMoreAndTheFitNeverPumps) {
   s.autoToneRange = false;
   (void)test::renderImage(*r, cam, s, 64, 64);
   EXPECT_FALSE(r->toneRange());
+}
+
+// The bunny through the smooth path, mix against threshold: the threshold frame has fewer
+// mid-grey pixels on the model (strokes whole, not faded) at about the same mean light; a
+// palette that is a ramp (Gooch) has no thresholds and draws the same frame either way.
+TEST_F(ToneFixture, ThresholdKeepsStrokesWholeAtTheSameToneAndRampsAreBlended) {
+  auto bunny = loadMesh(test::sourcePath("models/bunny.obj"));
+  ASSERT_TRUE(bunny) << bunny.error();
+  r->setMesh(&*bunny);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palette()->hasToneThresholds()) << r->palette()->toneThresholdNote();
+  RenderSettings s;
+  s.path = RenderPath::Smooth;
+  const CameraMatrices cam = test::testCamera(1.0f);
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA8 mixed = test::renderImage(*r, cam, s, kSize, kSize);
+  s.toneBlend = ToneBlend::Threshold;
+  const ImageRGBA8 crisp = test::renderImage(*r, cam, s, kSize, kSize);
+  // Mid grey: a pixel's mean channel between a quarter and three quarters of the way from ink
+  // (the darkest on the model) to paper (the lightest).
+  const auto measure = [&](const ImageRGBA8& img) {
+    std::vector<float> v;
+    for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i)
+      if (cover.pixels[4 * i + 2] != 0.0f) v.push_back((img.pixels[4 * i] + img.pixels[4 * i + 1] + img.pixels[4 * i + 2]) / 765.0f);
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    double grey = 0, light = 0;
+    for (float x : v) {
+      const float u = (x - *lo) / std::max(1e-6f, *hi - *lo);
+      grey += u > 0.25f && u < 0.75f;
+      light += srgbToLinear(x);
+    }
+    return std::pair{grey / double(v.size()), light / double(v.size())};
+  };
+  // The yardstick: the pixel path, one whole level per pixel (its own strokes' antialiased edges
+  // are all the grey it has).
+  RenderSettings single = s;
+  single.path = RenderPath::Pixel;
+  const auto [levelGrey, levelLight] = measure(test::renderImage(*r, cam, single, kSize, kSize));
+  const auto [mixGrey, mixLight] = measure(mixed);
+  const auto [crispGrey, crispLight] = measure(crisp);
+  std::printf("smooth path on the bunny, crosshatch: mid-grey pixels %.1f%% (mix), %.1f%% (threshold), %.1f%% (pixel path: whole "
+              "levels); mean light %.3f, %.3f, %.3f\n",
+              100.0 * mixGrey, 100.0 * crispGrey, 100.0 * levelGrey, mixLight, crispLight, levelLight);
+  EXPECT_LT(crispGrey, levelGrey * 1.05);
+  EXPECT_GT(mixGrey, levelGrey * 1.05);
+  EXPECT_NEAR(crispLight, mixLight, 0.02);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  EXPECT_FALSE(r->palette()->hasToneThresholds());
+  s.match = MatchMode::Intensity;
+  const ImageRGBA8 rampCrisp = test::renderImage(*r, cam, s, kSize, kSize);
+  s.toneBlend = ToneBlend::Mix;
+  EXPECT_EQ(test::countDiffering(rampCrisp, test::renderImage(*r, cam, s, kSize, kSize)), 0);
 }
 
 }  // namespace
