@@ -1,5 +1,6 @@
 // Full-screen passes: the background (QUAD_BACKGROUND) and one palette layer (QUAD_LAYER,
-// alpha-blended by the fixed-function blender as in the original stencil algorithm).
+// alpha-blended by the fixed-function blender as in the original stencil algorithm; LAYER_OPAQUE:
+// layers stored composited over the background, drawn opaque).
 out vec4 fragColor;
 #include "pattern.glsl"
 
@@ -62,8 +63,16 @@ void main() {
   // Branch-free, as palette.glsl's: where no stroke angle is set the steps are 0 (no turn).
   orientSteps(uLayerAngle, uFrameTurn, b0, b1, w);
   fragColor = mix(layerTexel(vec3(turnedCoordinate(c.xy, b0), c.z)), layerTexel(vec3(turnedCoordinate(c.xy, b1), c.z)), w);
+#ifdef LAYER_OPAQUE
+  fragColor.a = 1.0;
+#endif
 }
 #else
-void main() { fragColor = layerTexel(layerCoordinate()); }
+void main() {
+  fragColor = layerTexel(layerCoordinate());
+#ifdef LAYER_OPAQUE
+  fragColor.a = 1.0;  // composited layers: their alpha is the tone threshold map (palette/tone_thresholds.h)
+#endif
+}
 #endif
 #endif

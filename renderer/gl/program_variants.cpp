@@ -99,6 +99,7 @@ struct SourceOf {
     if (q.pattern == PatternMapping::Object) s.defines.push_back("PATTERN_OBJECT_BUFFER");
     if (q.layerSizesDiffer) s.defines.push_back("LAYER_SIZES_DIFFER");
     if (q.filtered) s.defines.push_back("PATTERN_FILTERED");
+    if (q.opaque) s.defines.push_back("LAYER_OPAQUE");
     if (q.orientBins > 0) {
       s.defines.push_back("ORIENTED");
       s.defines.push_back("ORIENT_BINS " + std::to_string(q.orientBins));

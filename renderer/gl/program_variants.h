@@ -94,6 +94,8 @@ struct QuadProgram {
   bool filtered = false;          // layer quads: mapped and filtered (pattern.glsl)
   int orientBins = 0;     // layer quads: turned along the stroke angle (orientation.glsl)
   bool orientBuffer = false;  // ... read per pixel from the stroke-angle buffer (else fixed)
+  bool opaque = false;        // layer quads: layers stored composited over the background, drawn
+                              // opaque (their alpha may hold the tone thresholds, not coverage)
 };
 
 // fullscreen.vert + turn_resolve.frag: the turned lookups a DEFER_TURN mesh pass left, per pixel.

@@ -71,6 +71,8 @@ class GpuPalette {
   }
   gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
+  // Layers stored composited over the background (opaque; alpha then holds tone thresholds).
+  bool precomposited() const { return precomposited_; }
   // Mapped lookups filter bilinearly in linear light (asked for, and the layers share a size).
   bool filtered() const { return linearFilter_ && patternMapping() != gl::PatternMapping::Screen && !sizesDiffer_; }
   // Mip levels of the layer array (level 0 included).

@@ -27,7 +27,7 @@ Status StencilPath::draw(FrameContext& f) {
   Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
   if (!bgQuad) return Error{bgQuad.error()};
   const gl::QuadProgram layerVariant{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(),
-                                     f.palette->filtered(), f.palette->orientBins(), angleBuffer};
+                                     f.palette->filtered(), f.palette->orientBins(), angleBuffer, f.palette->precomposited()};
   Result<gl::ShaderProgram*> layerQuad = f.program(layerVariant);
   if (!layerQuad) return Error{layerQuad.error()};
   // Layers with no stroke direction are drawn unturned, by the same quad without orientation:
