@@ -102,7 +102,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--tam", o.tam, "--make-palette: draw a tonal art map with IMAGE as the stroke");
   app.add_option("--levels", o.levels, "--make-palette: palette entries, 2..256 (default 10)");
   app.add_option("--style", o.style,
-                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated) "
+                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated, screentone) "
                  "or FILE; options given beside it win");
   app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file");
   app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit");

@@ -1,13 +1,15 @@
 // Generates the shipped palettes into a folder (palettes/ by default; `cmake --build build
 // --target palettes` regenerates them). Deterministic: the same program writes the same
 // files. Each palette is a folder with its .palette file and PNG images, echoing the
-// original renderer's set: crosshatch, stipple, cel, Gooch, an order set and wood.
+// original renderer's set: crosshatch, stipple, cel, Gooch, an order set and wood; and two
+// halftone screens (screentone: dots and lines).
 //
 // The ink palettes (crosshatch, hatch, stipple, pencil) are drawn: tonal art maps built stroke
 // by stroke until each level reaches its evenly spaced tone, nested across tones and mip levels
 // (renderer/palette/tonal_art_map.h); each entry lists its own mip levels.
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -171,6 +173,60 @@ ImageRGBA8 wood(float t) {
   return img;
 }
 
+// Halftone screens (Freudenberg, Masuch and Strothotte 2002; the comics' screentone): a spot
+// function over a 45-degree lattice of pitch `pitch` texels (8 on a 256 tile: 5.7 texels from
+// dot to dot), thresholded at each level's coverage, so the levels are one threshold map cut at
+// evenly spaced tones and nest exactly. Dots: the Euclidean dot, round dots that meet at half
+// cover and become round holes; lines: lines whose width grows. 4x4 samples a texel antialias
+// the edges; each level's cut is the sample rank that gives its tone in linear light.
+std::vector<ImageRGBA8> halftone(bool dots, int levels, glm::vec3 ink, glm::vec3 paper, int pitch) {
+  constexpr int kSub = 4;
+  const int n = kSize * kSub;
+  std::vector<float> spot(size_t(n) * size_t(n));
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const float fx = (float(x) + 0.5f) / kSub, fy = (float(y) + 0.5f) / kSub;
+      // Lattice coordinates: one cell per `pitch` texels along each diagonal, periodic over the tile.
+      float u = (fx + fy) / float(pitch), v = (fx - fy) / float(pitch);
+      const float du = u - std::floor(u) - 0.5f, dv = v - std::floor(v) - 0.5f;
+      float value;
+      if (!dots) value = std::fabs(dv);
+      else if (std::fabs(du) + std::fabs(dv) <= 0.5f) value = du * du + dv * dv;  // a dot from the cell's centre
+      else value = 1.0f - ((0.5f - std::fabs(du)) * (0.5f - std::fabs(du)) + (0.5f - std::fabs(dv)) * (0.5f - std::fabs(dv)));  // a hole at its corner
+      // Symmetric spots give many samples one value; a tiny jitter breaks the ties so that the
+      // cut at a rank covers exactly that many samples.
+      spot[size_t(y) * size_t(n) + size_t(x)] = value + 1e-4f * rand01(std::uint32_t(x), std::uint32_t(y), 77);
+    }
+  std::vector<float> sorted = spot;
+  std::sort(sorted.begin(), sorted.end());
+  const float inkLight = (npr::srgbToLinear(ink.r) + npr::srgbToLinear(ink.g) + npr::srgbToLinear(ink.b)) / 3.0f;
+  const float paperLight = (npr::srgbToLinear(paper.r) + npr::srgbToLinear(paper.g) + npr::srgbToLinear(paper.b)) / 3.0f;
+  const float paperCode = (paper.r + paper.g + paper.b) / 3.0f, inkCode = (ink.r + ink.g + ink.b) / 3.0f;
+  std::vector<ImageRGBA8> out;
+  for (int k = 0; k < levels; ++k) {
+    // Evenly spaced in encoded tone, as the palette analysis measures it; the cover that emits it.
+    const float code = paperCode + (inkCode - paperCode) * float(k) / float(levels - 1);
+    const float cover = std::clamp((paperLight - npr::srgbToLinear(code)) / (paperLight - inkLight), 0.0f, 1.0f);
+    const size_t cut = size_t(std::lround(double(cover) * double(sorted.size())));
+    const float below = cut == 0 ? -1.0f : cut >= sorted.size() ? 2.0f : sorted[cut];
+    ImageRGBA8 img = blank();
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        int inked = 0;
+        for (int sy = 0; sy < kSub; ++sy)
+          for (int sx = 0; sx < kSub; ++sx) inked += spot[size_t(y * kSub + sy) * size_t(n) + size_t(x * kSub + sx)] < below;
+        // Mixed in linear light: an edge texel emits its share of each.
+        const float c = float(inked) / float(kSub * kSub);
+        glm::vec3 colour;
+        for (int ch = 0; ch < 3; ++ch)
+          colour[ch] = npr::linearToSrgb((1.0f - c) * npr::srgbToLinear(paper[ch]) + c * npr::srgbToLinear(ink[ch]));
+        setPixel(img, x, y, colour, 1.0f);
+      }
+    out.push_back(std::move(img));
+  }
+  return out;
+}
+
 struct Writer {
   fs::path root;
   bool ok = true;
@@ -311,6 +367,13 @@ int main(int argc, char** argv) {
     order.push_back(solarize(boxBlur(base, int(k * 6)), 1.0f - 0.5f * k));
   }
   w.palette("solarize", "name Solarize (order)\nmatch order\nbackground #202020\n", order, nullptr, "step");
+
+  // Screentone: halftone dots and lines in black on white, as comics print them.
+  const glm::vec3 toneInk(0.07f, 0.07f, 0.08f), white(1.0f);
+  w.palette("screentone", "name Screentone (dots)\nmatch intensity\nbackground #FFFFFF\n# 13 levels of one 45-degree halftone dot screen (a threshold map cut at evenly spaced tones).\n",
+            halftone(true, 13, toneInk, white, 8), nullptr, "level");
+  w.palette("screentone-lines", "name Screentone (lines)\nmatch intensity\nbackground #FFFFFF\n# 13 levels of one 45-degree line screen.\n",
+            halftone(false, 13, toneInk, white, 8), nullptr, "level");
 
   std::vector<ImageRGBA8> woods;
   for (int i = 0; i < 30; ++i) woods.push_back(wood(1.0f - float(i) / 29.0f));

@@ -233,6 +233,33 @@ TEST(DrawnPalettes, ShippedAreEvenNestedMipConsistentAndSeamless) {
   EXPECT_FALSE(tilesWithoutSeam(ramp));
 }
 
+// The halftone screens (screentone, screentone-lines): one spot function cut at evenly spaced
+// tones, so evenly spaced, nested texel by texel (no texel lighter than in the lighter level),
+// seamless, and their reduced mip levels keep the tone.
+TEST(DrawnPalettes, HalftoneScreensAreEvenNestedAndSeamless) {
+  for (const char* name : {"screentone", "screentone-lines"}) {
+    SCOPED_TRACE(name);
+    const Palette p = shipped(name);
+    ASSERT_EQ(p.entries.size(), 13u);
+    const PaletteAnalysis a = analysePalette(p);
+    EXPECT_LE(a.spacingError, PaletteAnalysis::kEvenSpacing);
+    EXPECT_TRUE(a.monotonic);
+    for (size_t i = 0; i < p.entries.size(); ++i) {
+      SCOPED_TRACE("entry " + std::to_string(i));
+      if (i > 0) {
+        int lighter = 0;
+        const ImageRGBA8 &before = p.entries[i - 1].image, &after = p.entries[i].image;
+        for (size_t j = 0; j < before.pixels.size(); j += 4) lighter += after.pixels[j] > before.pixels[j];
+        EXPECT_EQ(lighter, 0);
+      }
+      const std::vector<float> tones = entryMipTones(p, i);
+      for (size_t k = 1; k < tones.size(); ++k) EXPECT_NEAR(tones[k] / 3.0f, tones[0] / 3.0f, 0.01f) << "mip " << k;
+      EXPECT_TRUE(tilesWithoutSeam(p.entries[i].image));
+      EXPECT_TRUE(tilesWithoutSeam(transposed(p.entries[i].image)));
+    }
+  }
+}
+
 // Levels reduced from palettes without their own keep their tone too.
 TEST(DrawnPalettes, ReducedMipLevelsKeepTheTone) {
   for (const char* name : {"wood", "solarize", "gooch", "cel"}) {
@@ -465,7 +492,11 @@ std::vector<ImageRGBA8> storedLightToDark(const Palette& p) {
 // keeps the contrast of a single level (standard deviation within 10%) and lands within 0.25
 // of a level of the tone asked for; the blend it replaces loses the contrast.
 TEST(ToneThresholds, KeepALevelsContrastAndTheToneOnTheShippedDrawnPalettes) {
-  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil"}) {
+  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "screentone", "screentone-lines"}) {
+    // The halftone screens are not tonal art maps: their dots grow ring by ring, and at the dark
+    // end (5% paper) the threshold's mixture of two dot sizes spreads up to 12% more than a
+    // level; tone and crispness are held to the same bounds.
+    const bool screen = std::string(name).rfind("screentone", 0) == 0;
     const Palette p = shipped(name);
     const std::vector<ImageRGBA8> levels = storedLightToDark(p);
     std::vector<const ImageRGBA8*> ptrs;
@@ -487,7 +518,7 @@ TEST(ToneThresholds, KeepALevelsContrastAndTheToneOnTheShippedDrawnPalettes) {
         // Crisp: no more mid grey than a level's own antialiased edges.
         EXPECT_LE(m.thresholdGrey, m.singleGrey * 1.1 + 0.005) << name << " pair " << pair << " w " << w;
         EXPECT_LE(std::abs(m.thresholdTone - (double(pair) + w)), 0.25) << name << " pair " << pair << " w " << w;
-        EXPECT_LE(std::abs(m.thresholdSpread / m.single - 1.0), 0.10) << name << " pair " << pair << " w " << w;
+        EXPECT_LE(std::abs(m.thresholdSpread / m.single - 1.0), screen ? 0.15 : 0.10) << name << " pair " << pair << " w " << w;
       }
     std::printf("%s: threshold tone within %.3f levels, spread within %.1f%% of a level's (the mix keeps %.0f%% of it at worst); "
                 "mid-grey texels %.1f%% (threshold), %.1f%% (mix), %.1f%% (a level)\n",
@@ -516,7 +547,8 @@ TEST(ToneThresholds, RefuseLevelsThatAreNotNestedDifferInSizeOrAreARamp) {
   ASSERT_FALSE(flat);
   EXPECT_NE(flat.error().find("ramp"), std::string::npos) << flat.error();
   for (const char* name : {"cel", "gooch", "wood"}) EXPECT_FALSE(paletteToneThresholds(shipped(name))) << name;
-  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "charcoal"}) EXPECT_TRUE(paletteToneThresholds(shipped(name))) << name;
+  for (const char* name : {"crosshatch", "hatch", "stipple", "pencil", "charcoal", "screentone", "screentone-lines"})
+    EXPECT_TRUE(paletteToneThresholds(shipped(name))) << name;
 }
 
 // Twenty dots added by the darker level, each a twentieth of what it adds: each turns whole at
