@@ -91,7 +91,6 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
   const ImageRGBA32F eye = depth->readRGBA32F();
   // One group per kind and part of each line style (the line settings' own, then the sets),
   // as the frame draws them: each style keeps, on each object, the kinds it draws there.
-  const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
   std::vector<SvgGroup> groups;
   int paths = 0;
   double lengthPx = 0.0;
@@ -111,7 +110,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
       paths += chains.paths;
       lengthPx += chains.lengthPx;
       for (int k = 0; k < kEdgeKinds; ++k)
-        groups.push_back({prefix + names[k] + (hidden ? "-hidden" : ""), style.colours[k], hidden ? style.hiddenWidthScale * style.width : style.width,
+        groups.push_back({prefix + kLineKinds[k].plural + (hidden ? "-hidden" : ""), style.colours[k], hidden ? style.hiddenWidthScale * style.width : style.width,
                           hidden ? style.hiddenInk : 1.0f, hidden ? style.hiddenDash : style.dash, chains.chains[k]});
     }
   }

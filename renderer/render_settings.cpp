@@ -67,20 +67,23 @@ std::optional<OutlineMethod> parseOutlineMethod(const std::string& s) {
   return std::nullopt;
 }
 
+int lineKindIndex(const std::string& name) {
+  for (int i = 0; i < kLineKindCount; ++i)
+    if (name == kLineKinds[i].name || name == kLineKinds[i].plural) return i;
+  return -1;
+}
+
 bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* unknown) {
   LineSettings kinds = lines;
-  kinds.silhouettes = kinds.creases = kinds.boundaries = kinds.materials = kinds.intersections = kinds.imageSpace = kinds.hardware = kinds.rim = false;
+  for (const LineKindRow& row : kLineKinds) kinds.*row.on = false;
+  kinds.imageSpace = kinds.hardware = kinds.rim = false;
   std::size_t start = 0;
   while (list != "none" && start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
     std::string kind = list.substr(start, end - start);
     kind.erase(0, kind.find_first_not_of(" \t"));
     kind.erase(kind.find_last_not_of(" \t") + 1);
-    if (kind == "silhouette" || kind == "silhouettes") kinds.silhouettes = true;
-    else if (kind == "crease" || kind == "creases") kinds.creases = true;
-    else if (kind == "boundary" || kind == "boundaries") kinds.boundaries = true;
-    else if (kind == "material" || kind == "materials") kinds.materials = true;
-    else if (kind == "intersection" || kind == "intersections") kinds.intersections = true;
+    if (const int row = lineKindIndex(kind); row >= 0) kinds.*kLineKinds[row].on = true;
     else if (kind == "image") kinds.imageSpace = true;
     else if (kind == "hardware") kinds.hardware = true;
     else if (kind == "rim") kinds.rim = true;
@@ -95,9 +98,6 @@ bool parseLineKinds(const std::string& list, LineSettings& lines, std::string* u
 }
 
 namespace {
-
-const char* const kSetKinds[] = {"silhouette", "crease", "boundary", "material", "intersection"};
-const char* const kSetKindPlurals[] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
 
 bool parseNumber(const std::string& text, float& out) {
   if (text.empty()) return false;
@@ -132,9 +132,12 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     if (!(w = trimBlanks(w)).empty()) words.push_back(w);
   if (words.empty()) return why = "empty", false;
   for (const std::string& kind : split(words[0], ',')) {
-    int k = 0;
-    while (k < 5 && trimBlanks(kind) != kSetKinds[k] && trimBlanks(kind) != kSetKindPlurals[k]) ++k;
-    if (k == 5) return why = "unknown line kind (a set takes silhouette, crease, boundary, material, intersection)", false;
+    const int k = lineKindIndex(trimBlanks(kind));
+    if (k < 0) {
+      why = "unknown line kind (a set takes";
+      for (int i = 0; i < kLineKindCount; ++i) why += std::string(i ? ", " : " ") + kLineKinds[i].name;
+      return why += ")", false;
+    }
     set.kinds |= std::uint8_t(1u << k);
   }
   for (std::size_t i = 1; i < words.size(); ++i) {
@@ -245,8 +248,8 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
   for (const LineSet& s : sets) {
     if (!out.empty()) out += "\n";
     std::string kinds;
-    for (int k = 0; k < 5; ++k)
-      if (s.has(k)) kinds += (kinds.empty() ? "" : ",") + std::string(kSetKinds[k]);
+    for (int k = 0; k < kLineKindCount; ++k)
+      if (s.has(k)) kinds += (kinds.empty() ? "" : ",") + std::string(kLineKinds[k].name);
     out += kinds;
     if (s.visibility != LineSet::Visibility::Visible) out += s.visibility == LineSet::Visibility::Hidden ? " visibility=hidden" : " visibility=both";
     out += " width=" + formatFloat(s.width);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,9 +82,7 @@ struct LineSettings {
   static constexpr float kMinOutlineOffset = 0.0f, kMaxOutlineOffset = 0.2f;
   std::vector<LineSet> sets;
   // The object-space kinds `lines` names (bit EdgeKind).
-  std::uint8_t namedKinds() const {
-    return std::uint8_t(silhouettes | creases << 1 | boundaries << 2 | materials << 3 | intersections << 4);
-  }
+  std::uint8_t namedKinds() const;
   // The object-space kinds drawn (bit EdgeKind): those `lines` names and those the sets take.
   std::uint8_t drawnKinds() const {
     std::uint8_t k = namedKinds();
@@ -103,6 +102,41 @@ struct LineSettings {
   bool edgeKinds() const { return (drawnKinds() & 15) != 0; }
   bool objectSpace() const { return drawnKinds() != 0; }
 };
+
+// The object-space line kinds, one row each, in EdgeKind order (lines/feature_edges.h; bit k of
+// a kinds mask is row k): what --lines, line sets, the style file, the overlay, the colour
+// settings, the line shader's colours and the SVG groups read. A new kind is a row here and the
+// code that finds its lines.
+struct LineKindRow {
+  const char* name;         // "silhouette": in --lines and line sets (the plural is accepted too)
+  const char* plural;       // "silhouettes": also the SVG group's id
+  const char* colourKey;    // its colour setting
+  const char* colourLabel;  // the overlay's
+  const char* colourHelp;
+  bool LineSettings::*on;
+  glm::vec3 LineSettings::*colour;
+};
+inline constexpr LineKindRow kLineKinds[] = {
+    {"silhouette", "silhouettes", "silhouette-colour", "silhouette colour", "Silhouettes' colour R,G,B", &LineSettings::silhouettes,
+     &LineSettings::silhouetteColour},
+    {"crease", "creases", "crease-colour", "crease colour", "Creases' colour R,G,B", &LineSettings::creases, &LineSettings::creaseColour},
+    {"boundary", "boundaries", "boundary-colour", "boundary colour", "Boundaries' colour R,G,B", &LineSettings::boundaries,
+     &LineSettings::boundaryColour},
+    {"material", "materials", "material-colour", "material line colour", "Material boundaries' colour R,G,B", &LineSettings::materials,
+     &LineSettings::materialColour},
+    {"intersection", "intersections", "intersection-colour", "intersection colour", "Intersection lines' colour R,G,B",
+     &LineSettings::intersections, &LineSettings::intersectionColour},
+};
+inline constexpr int kLineKindCount = int(std::size(kLineKinds));
+// The row named `name` (singular or plural), or -1.
+int lineKindIndex(const std::string& name);
+
+inline std::uint8_t LineSettings::namedKinds() const {
+  std::uint8_t k = 0;
+  for (int i = 0; i < kLineKindCount; ++i)
+    if (this->*kLineKinds[i].on) k |= std::uint8_t(1u << i);
+  return k;
+}
 
 // Where the palette's pattern lives: fixed to the screen (the original), anchored to the
 // object's motion while staying flat (patterns/pattern_tracker.h), or glued to the surface in

@@ -348,16 +348,25 @@ std::vector<Setting> buildTable() {
   // --- lines
   {
     // One list: the choices the overlay offers, the order a style file writes them, the message.
-    static const std::vector<std::string> kinds = {"silhouette", "crease", "boundary", "material", "intersection", "image", "hardware", "rim"};
+    // The object-space kinds (kLineKinds), then the image-space and outline ones.
+    static const std::vector<std::string> kinds = [] {
+      std::vector<std::string> out;
+      for (const LineKindRow& row : kLineKinds) out.push_back(row.name);
+      for (const char* other : {"image", "hardware", "rim"}) out.push_back(other);
+      return out;
+    }();
     Setting k = base("lines", "lines", "lines", "Feature lines: none, or kinds separated by commas", K::Kinds);
     k.choices = kinds;
     k.format = [](const Look& l) {
       const LineSettings& s = l.render.lines;
       std::string out;
-      const bool on[] = {s.silhouettes, s.creases, s.boundaries, s.materials, s.intersections, s.imageSpace, s.hardware, s.rim};
-      static_assert(std::size(on) == 8);
-      for (std::size_t i = 0; i < kinds.size(); ++i)
-        if (on[i]) out += (out.empty() ? "" : ",") + kinds[i];
+      for (std::size_t i = 0; i < kinds.size(); ++i) {
+        const bool on = i < std::size_t(kLineKindCount) ? s.*kLineKinds[i].on
+                        : kinds[i] == "image"         ? s.imageSpace
+                        : kinds[i] == "hardware"      ? s.hardware
+                                                      : s.rim;
+        if (on) out += (out.empty() ? "" : ",") + kinds[i];
+      }
       return out.empty() ? std::string("none") : out;
     };
     k.parse = [](const std::string& v, Look& l) -> Status {
@@ -405,13 +414,11 @@ std::vector<Setting> buildTable() {
                        LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset,
                        [](Look& l) -> float& { return l.render.lines.outlineOffset; }));
   t.back().shown = [](const Look& l) { return l.render.lines.hardware && l.render.lines.outline == OutlineMethod::Offset; };
-  for (auto [key, label, help, ref] : std::vector<std::tuple<const char*, const char*, const char*, Ref<glm::vec3>>>{
-           {"silhouette-colour", "silhouette colour", "Silhouettes' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.silhouetteColour; }},
-           {"crease-colour", "crease colour", "Creases' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.creaseColour; }},
-           {"boundary-colour", "boundary colour", "Boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.boundaryColour; }},
-           {"material-colour", "material line colour", "Material boundaries' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.materialColour; }},
-           {"intersection-colour", "intersection colour", "Intersection lines' colour R,G,B", [](Look& l) -> glm::vec3& { return l.render.lines.intersectionColour; }}})
-    t.push_back(vectorRow(key, label, "lines", help, K::Colour, ref));
+  for (const LineKindRow& row : kLineKinds) {
+    const auto colour = row.colour;
+    t.push_back(vectorRow(row.colourKey, row.colourLabel, "lines", row.colourHelp, K::Colour,
+                          [colour](Look& l) -> glm::vec3& { return l.render.lines.*colour; }));
+  }
   // --- depth cue
   t.push_back(boolRow("depth-cue", "depth cue", "depth-cue", "Tone and lines fade toward the paper with distance through the scene",
                       [](Look& l) -> bool& { return l.render.depthCue.on; }));

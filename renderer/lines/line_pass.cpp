@@ -76,8 +76,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
 LineStyle LineStyle::base(const LineSettings& ls, const std::string* object) {
   LineStyle s;
   s.width = ls.width;
-  const glm::vec3 colours[kEdgeKinds] = {ls.silhouetteColour, ls.creaseColour, ls.boundaryColour, ls.materialColour, ls.intersectionColour};
-  std::copy(std::begin(colours), std::end(colours), s.colours);
+  static_assert(kLineKindCount == kEdgeKinds, "a row of kLineKinds per EdgeKind");
+  for (int k = 0; k < kEdgeKinds; ++k) s.colours[k] = ls.*kLineKinds[k].colour;
   s.hidden = ls.hidden;
   s.hiddenWidthScale = 0.6f;
   s.hiddenInk = 0.6f;

@@ -155,11 +155,9 @@ std::string base64(const std::vector<std::uint8_t>& data) {
 }  // namespace
 
 std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style) {
-  const char* names[kEdgeKinds] = {"silhouettes", "creases", "boundaries", "materials", "intersections"};
-  const glm::vec3 colours[kEdgeKinds] = {style.silhouetteColour, style.creaseColour, style.boundaryColour, style.materialColour,
-                                         style.intersectionColour};
   std::vector<SvgGroup> out;
-  for (int k = 0; k < kEdgeKinds; ++k) out.push_back({names[k], colours[k], style.width, 1.0f, glm::vec2(0.0f), lines.chains[k]});
+  for (int k = 0; k < kEdgeKinds; ++k)
+    out.push_back({kLineKinds[k].plural, style.*kLineKinds[k].colour, style.width, 1.0f, glm::vec2(0.0f), lines.chains[k]});
   return out;
 }
 
