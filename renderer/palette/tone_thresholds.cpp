@@ -192,8 +192,9 @@ ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, 
   const auto [mc, sc] = meanAndSpread(crisp);
   const auto [mm, sm] = meanAndSpread(mixed);
   // Grey: between a quarter and three quarters of the way from the darkest texel to the lightest.
-  const auto [lo, hi] = std::minmax({*std::min_element(a.begin(), a.end()), *std::min_element(b.begin(), b.end()),
-                                     *std::max_element(a.begin(), a.end()), *std::max_element(b.begin(), b.end())});
+  // Plain variables, not a structured binding: the lambda below captures them (clang 14 cannot).
+  const double lo = std::min(*std::min_element(a.begin(), a.end()), *std::min_element(b.begin(), b.end()));
+  const double hi = std::max(*std::max_element(a.begin(), a.end()), *std::max_element(b.begin(), b.end()));
   const auto grey = [&](const auto& v) {
     std::size_t count = 0;
     for (const auto x : v) {
