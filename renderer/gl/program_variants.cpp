@@ -16,7 +16,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   d.push_back("PALETTE_SIZE " + std::to_string(p.size));
   if (p.layerSizesDiffer) d.push_back("LAYER_SIZES_DIFFER");
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
-  if (p.toneThreshold && p.precomposited && p.match == MatchMode::Intensity) d.push_back("TONE_THRESHOLD");
+  if (p.toneThreshold) d.push_back("TONE_THRESHOLD");
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");
   if (p.pattern != PatternMapping::Screen) d.push_back(patternDefine(p.pattern));

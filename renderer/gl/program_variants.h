@@ -37,7 +37,8 @@ struct PaletteVariant {
   bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
   bool patternPerVertex = false;  // an anchored or scaled pattern's coordinate interpolated from the vertices
   bool patternRest = false;       // the object pattern read on a deforming mesh's rest pose (attributes 8-9)
-  bool toneThreshold = false;     // the smooth path picks one of two levels per texel by its threshold (palette.glsl)
+  bool toneThreshold = false;     // the smooth path picks one of two levels per texel by its threshold (palette.glsl;
+                                  // precomposited layers, intensity matching: FrameContext::paletteVariant)
 };
 
 // mesh.vert + mesh.frag. One shading per pass (the PATH_* blocks of mesh.frag).

@@ -121,10 +121,6 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
 
 void GpuPalette::addToneThresholds(const Palette& p, std::vector<std::vector<ImageRGBA8>>& chains) {
   toneThresholds_ = false;
-  if (!precomposited_) {
-    toneThresholdNote_ = "its background image differs in size from its entries";
-    return;
-  }
   std::vector<std::vector<std::uint8_t>> levels;
   for (std::size_t k = 0; k < chains.front().size(); ++k) {
     Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, k);

@@ -187,10 +187,13 @@ ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, 
     crisp[i] = w > thresholds[i] / 255.0 ? b[i] : a[i];
     mixed[i] = (1.0 - w) * a[i] + w * b[i];
   }
-  const double ma = meanAndSpread(std::vector<double>(a.begin(), a.end())).first, mb = meanAndSpread(std::vector<double>(b.begin(), b.end())).first;
-  const auto position = [&](double mean) { return double(pair) + (ma != mb ? (ma - mean) / (ma - mb) : w); };
+  const auto [ma, sa] = meanAndSpread(std::vector<double>(a.begin(), a.end()));
+  const auto [mb, sb] = meanAndSpread(std::vector<double>(b.begin(), b.end()));
   const auto [mc, sc] = meanAndSpread(crisp);
   const auto [mm, sm] = meanAndSpread(mixed);
+  // The tone as a position in levels (plain variables for clang 14's lambdas, as below).
+  const double meanA = ma, meanB = mb;
+  const auto position = [&](double mean) { return double(pair) + (meanA != meanB ? (meanA - mean) / (meanA - meanB) : w); };
   // Grey: between a quarter and three quarters of the way from the darkest texel to the lightest.
   // Plain variables, not a structured binding: the lambda below captures them (clang 14 cannot).
   const double lo = std::min(*std::min_element(a.begin(), a.end()), *std::min_element(b.begin(), b.end()));
@@ -210,7 +213,7 @@ ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, 
   m.mixTone = position(mm);
   m.thresholdSpread = sc;
   m.mixSpread = sm;
-  m.single = (1.0 - w) * meanAndSpread(std::vector<double>(a.begin(), a.end())).second + w * meanAndSpread(std::vector<double>(b.begin(), b.end())).second;
+  m.single = (1.0 - w) * sa + w * sb;
   return m;
 }
 

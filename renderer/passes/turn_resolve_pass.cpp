@@ -35,8 +35,8 @@ bool TurnResolvePass::begin(FrameContext& f, bool blend) {
 
 Status TurnResolvePass::resolve(FrameContext& f) {
   target_.restore();
-  gl::TurnResolveProgram variant{f.palette->variant(f.settings.match), blending_};
-  variant.palette.toneThreshold = blending_ && f.settings.toneBlend == ToneBlend::Threshold && f.palette->hasToneThresholds();
+  gl::TurnResolveProgram variant{f.paletteVariant(), blending_};
+  variant.palette.toneThreshold = variant.palette.toneThreshold && blending_;  // only a blend has two levels to choose from
   variant.palette.patternPerVertex = true;  // three vertices for the whole screen: interpolating always pays
   Result<gl::ShaderProgram*> prog = f.program(variant);
   if (!prog) return Error{prog.error()};

@@ -74,7 +74,10 @@ struct FrameContext {
     gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
-    v.toneThreshold = output == gl::MeshOutput::Colour && settings.toneBlend == ToneBlend::Threshold && (p ? p : palette)->hasToneThresholds();
+    // Crisp tone: where the palette has thresholds, with intensity matching (its blend's first
+    // entry is the darker level, which palette.glsl's toneBetween relies on).
+    v.toneThreshold = output == gl::MeshOutput::Colour && settings.toneBlend == ToneBlend::Threshold && settings.match == MatchMode::Intensity &&
+                      (p ? p : palette)->hasToneThresholds();
     return v;
   }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.
