@@ -232,7 +232,7 @@ struct Writer {
   bool ok = true;
   void palette(const std::string& name, const std::string& header, const std::vector<ImageRGBA8>& images,
                const ImageRGBA8* background = nullptr, const std::string& prefix = "level",
-               const std::vector<std::vector<ImageRGBA8>>& mips = {}) {
+               const std::vector<std::vector<ImageRGBA8>>& mips = {}, int rows = 1) {
     if (images.empty()) {
       ok = false;
       return;
@@ -255,6 +255,8 @@ struct Writer {
         return true;
       }();
       ok = ok && write(dir / file, images[i], opaque ? 3 : 4);
+      // A palette with rows: each row's tone ladder after its 'row' line.
+      if (rows > 1 && i % (images.size() / size_t(rows)) == 0) pf << "row\n";
       pf << file << "\n";
       for (size_t m = 0; i < mips.size() && m < mips[i].size(); ++m) {
         char mipFile[80];
@@ -374,6 +376,40 @@ int main(int argc, char** argv) {
             halftone(true, 13, toneInk, white, 8), nullptr, "level");
   w.palette("screentone-lines", "name Screentone (lines)\nmatch intensity\nbackground #FFFFFF\n# 13 levels of one 45-degree line screen.\n",
             halftone(false, 13, toneInk, white, 8), nullptr, "level");
+
+  // Two-dimensional palettes (X-Toon): a crosshatch whose strokes thin out and lighten with
+  // distance (aerial perspective), three rows of the same 8 tones from near to far, each a
+  // nested tonal art map of its own; and the cel tones with a rim row, lighter and warmer,
+  // where the surface turns away from the eye (backlighting).
+  std::vector<ImageRGBA8> depthImages;
+  std::vector<std::vector<ImageRGBA8>> depthMips;
+  const struct {
+    float width, darkest;
+    glm::vec3 ink;
+  } depthRows[] = {{1.6f, 0.85f, ink}, {1.15f, 0.62f, glm::vec3(0.24f, 0.25f, 0.30f)}, {0.8f, 0.4f, glm::vec3(0.42f, 0.44f, 0.50f)}};
+  for (const auto& row : depthRows) {
+    npr::TamSpec d = cross;
+    d.tones = 8;
+    d.darkest = row.darkest;
+    d.ink = row.ink;
+    d.seed = 16;
+    for (auto& f : d.families) f.width = row.width;
+    const Drawn maps = drawn(d, bg, "depth-hatch");
+    depthImages.insert(depthImages.end(), maps.images.begin(), maps.images.end());
+    depthMips.insert(depthMips.end(), maps.mips.begin(), maps.mips.end());
+  }
+  w.palette("depth-hatch",
+            "name Depth hatch (near to far)\nmatch intensity\n# 3 rows of 8 crosshatch levels: far away the strokes are thinner, greyer and fewer.\n"
+            "# Rows by distance from the eye, in scene radii: the first at 2 and nearer, the last at 4.5 and beyond.\naxis depth 2 4.5\n",
+            depthImages, &bg, "level", depthMips, 3);
+
+  std::vector<ImageRGBA8> celRim = cel;
+  const glm::vec3 rimLight(1.0f, 0.86f, 0.55f);
+  for (glm::vec3 c : {glm::vec3(0.16f, 0.18f, 0.30f), glm::vec3(0.38f, 0.42f, 0.62f), glm::vec3(0.66f, 0.71f, 0.88f), glm::vec3(0.95f, 0.96f, 1.0f)})
+    celRim.push_back(solid(c + (rimLight - c) * 0.7f));
+  w.palette("cel-rim", "name Cel with a rim (4 tones, 2 rows)\nmatch intensity\nbackground #FFFFFF\n"
+            "# The cel tones, and where the surface turns edge-on to the eye a warm rim light.\naxis facing 0.45 0.6\n",
+            celRim, nullptr, "tone", {}, 2);
 
   std::vector<ImageRGBA8> woods;
   for (int i = 0; i < 30; ++i) woods.push_back(wood(1.0f - float(i) / 29.0f));

@@ -244,6 +244,9 @@ struct RenderSettings {
   // Between the two levels the smooth path brackets a tone with: blended, or whole texels of one
   // or the other by each texel's threshold (palette/tone_thresholds.h), where the palette has them.
   ToneBlend toneBlend = ToneBlend::Mix;
+  // A palette with rows (palette.h): the row follows the surface (its distance or facing); off,
+  // the first row only.
+  bool paletteAxis = true;
   std::vector<float> bands;  // cel band thresholds (see PaletteMatcher::create); empty: nearest level
   // Light each face with the model's own materials, vertex colours and texture maps (when it
   // has any); off: the lighting state's one material, as the original.

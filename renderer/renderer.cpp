@@ -147,6 +147,10 @@ Status Renderer::prepare(const RenderSettings& s) {
     };
     scene_.forEachIncludingHidden([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
   }
+  // A depth axis counts in scene radii, so a palette with rows suits any model's units.
+  const float sceneRadius = scene_.empty() ? 1.0f : scene_.bounds().w;
+  if (palette_) palette_->setAxisScale(sceneRadius);
+  forEachExtraPalette([&](GpuPalette& p) { p.setAxisScale(sceneRadius); });
   const std::optional<glm::vec2> target = toneTarget_;
   for (auto& [model, p] : modelPalettes_)
     if (Status st = p->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"an object's palette: " + st.error()};

@@ -15,7 +15,8 @@
 // SCREEN_OCCLUSION reads this frame's screen-space occlusion where OCCLUSION reads the bake.
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
-// OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red) instead of its texel;
+// OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red; with a two-dimensional
+// palette its layer, the row included) instead of its texel;
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 // DEFER_TURN (turned lookups on dense meshes) writes the pixel's stroke angle and entry for
 // turn_resolve.frag instead.
@@ -163,7 +164,8 @@ void main() {
 #elif defined(PATH_TRIANGLE)
   fragColor = SHOW_ENTRY(uEntry);
 #elif defined(PATH_VERTEX)
-  fragColor = SHOW_ENTRY(matchEntry(gl_FrontFacing ? vColorFront : vColorBack));
+  setPaletteRow(vPosition, vNormal);
+  fragColor = SHOW_ENTRY(paletteLayer(matchEntry(gl_FrontFacing ? vColorFront : vColorBack)));
 #elif defined(PATH_GOURAUD)
   fragColor = vec4(gl_FrontFacing ? vColorFront : vColorBack, 1.0);
 #else
@@ -181,8 +183,11 @@ void main() {
 #else
   vec3 lit = shadeScaled(vPosition, vNormal, !gl_FrontFacing, vec3(OCCLUSION_FACTOR));
 #endif
+#if defined(PATH_PIXEL) || defined(PATH_SMOOTH)
+  setPaletteRow(vPosition, vNormal);
+#endif
 #if defined(PATH_PIXEL)
-  fragColor = SHOW_ENTRY(matchEntry(lit));
+  fragColor = SHOW_ENTRY(paletteLayer(matchEntry(lit)));
 #elif defined(PATH_SMOOTH) && defined(OUTPUT_BLEND)
   fragColor = vec4(blendSelection(lit), 1.0);
 #elif defined(PATH_SMOOTH) && defined(DEFER_TURN)

@@ -12,6 +12,9 @@
 // MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED, ORIENT_BINS,
 // ENTRY_ANGLE_SHARED and TONE_THRESHOLD (precomposited layers whose alpha holds each texel's
 // threshold: the smooth path shows one level or the other instead of their blend).
+// PALETTE_AXIS (with PALETTE_ROWS, PALETTE_COLUMNS and AXIS_DEPTH | AXIS_FACING): a
+// two-dimensional palette, layers stored row after row; matching picks the column and the pass
+// sets the row from the surface (setPaletteRow) before it shows an entry.
 
 uniform sampler2DArray uPalette;
 #ifdef LAYER_SIZES_DIFFER
@@ -96,6 +99,24 @@ vec4 paletteTexel(int entry) {
 #endif
 vec3 paletteColour(int entry) { return composite(paletteTexel(entry)); }
 
+#ifdef PALETTE_AXIS
+uniform vec2 uAxisMap;    // row position = axis value x map.x + map.y (GpuPalette::setAxisScale)
+float paletteRow = 0.0;  // this pixel's row position, in [0, PALETTE_ROWS - 1]
+void setPaletteRow(vec3 eyePosition, vec3 eyeNormal) {
+#ifdef AXIS_DEPTH
+  float value = length(eyePosition);
+#else
+  float value = 1.0 - abs(dot(normalize(eyeNormal), normalize(eyePosition)));
+#endif
+  paletteRow = clamp(value * uAxisMap.x + uAxisMap.y, 0.0, float(PALETTE_ROWS - 1));
+}
+// The layer showing column `entry` in the nearest row (the paths that show whole entries).
+int paletteLayer(int entry) { return entry + PALETTE_COLUMNS * int(paletteRow + 0.5); }
+#else
+void setPaletteRow(vec3 eyePosition, vec3 eyeNormal) {}
+int paletteLayer(int entry) { return entry; }
+#endif
+
 // Between entries a and b at weight w of b. TONE_THRESHOLD (Webb et al. 2002; intensity
 // matching, where a is the darker level): whole texels of one level or the other, the darker
 // where its weight 1 - w passes the texel's threshold (the share of the way from the lighter
@@ -148,5 +169,18 @@ vec3 blendSelection(vec3 lit) {
 
 vec3 paletteBlend(vec3 lit) {
   vec3 b = blendSelection(lit);
+#ifdef PALETTE_AXIS
+  // Between rows too: the two rows around the pixel's position, blended (the second skipped
+  // where the position is on a row: most of the surface, past the axis' ends).
+  int r0 = int(paletteRow);
+  float f = paletteRow - float(r0);
+  vec3 c = toneBetween(int(b.x) + r0 * PALETTE_COLUMNS, int(b.y) + r0 * PALETTE_COLUMNS, b.z);
+  if (f > 0.0) {
+    int r1 = min(r0 + 1, PALETTE_ROWS - 1) * PALETTE_COLUMNS;
+    c = mix(c, toneBetween(int(b.x) + r1, int(b.y) + r1, b.z), f);
+  }
+  return c;
+#else
   return toneBetween(int(b.x), int(b.y), b.z);
+#endif
 }

@@ -177,6 +177,9 @@ std::vector<Setting> buildTable() {
                                    {{"mix", ToneBlend::Mix}, {"threshold", ToneBlend::Threshold}},
                                    [](Look& l) -> ToneBlend& { return l.render.toneBlend; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Smooth; };
+  t.push_back(boolRow("palette-axis", "second axis", "palette",
+                      "A palette with rows (axis depth or facing): on, the row follows the surface's distance or facing; off, the first row only",
+                      [](Look& l) -> bool& { return l.render.paletteAxis; }));
   {
     Setting b = base("bands", "band thresholds", "palette",
                      "Cel band thresholds T1,T2,... on the match query axis [0,3], strictly ascending (one fewer than the palette's tones); none: the nearest level",

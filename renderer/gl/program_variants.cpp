@@ -16,6 +16,12 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   d.push_back("PALETTE_SIZE " + std::to_string(p.size));
   if (p.layerSizesDiffer) d.push_back("LAYER_SIZES_DIFFER");
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
+  if (p.rows > 1 && p.axis != PaletteAxis::None) {
+    d.push_back("PALETTE_AXIS");
+    d.push_back(p.axis == PaletteAxis::Depth ? "AXIS_DEPTH" : "AXIS_FACING");
+    d.push_back("PALETTE_ROWS " + std::to_string(p.rows));
+    d.push_back("PALETTE_COLUMNS " + std::to_string(p.columns));
+  }
   if (p.toneThreshold) d.push_back("TONE_THRESHOLD");
   else if (p.backgroundImage) d.push_back("BACKGROUND_IMAGE");
   d.push_back(p.match == MatchMode::Colors ? "MATCH_COLORS" : p.match == MatchMode::Intensity ? "MATCH_INTENSITY" : "MATCH_ORDER");

@@ -25,6 +25,9 @@ enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored, Object };
 inline bool mapsScreenPosition(PatternMapping m) { return m == PatternMapping::Scaled || m == PatternMapping::Anchored; }
 
 // What palette.glsl is compiled for: the palette's layout and the match mode.
+// What picks a two-dimensional palette's row (palette.h's axis).
+enum class PaletteAxis : std::uint8_t { None, Depth, Facing };
+
 struct PaletteVariant {
   int size = 0;
   bool layerSizesDiffer = false;
@@ -37,6 +40,9 @@ struct PaletteVariant {
   bool entryAngleShared = false;  // turned entries share one stroke angle: the turn is found once per pixel
   bool patternPerVertex = false;  // an anchored or scaled pattern's coordinate interpolated from the vertices
   bool patternRest = false;       // the object pattern read on a deforming mesh's rest pose (attributes 8-9)
+  int rows = 1;                   // a two-dimensional palette: rows of `columns` entries, the row picked by `axis`
+  int columns = 0;
+  PaletteAxis axis = PaletteAxis::None;
   bool toneThreshold = false;     // the smooth path picks one of two levels per texel by its threshold (palette.glsl;
                                   // precomposited layers, intensity matching: FrameContext::paletteVariant)
 };

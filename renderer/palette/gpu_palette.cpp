@@ -71,6 +71,8 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   gp->precomposited_ = layersPrecomposited(p);
   gp->backgroundColour_ = p.backgroundColour;
   gp->averages_ = p.averages();
+  gp->axis_ = p.axis;
+  gp->columns_ = p.columns();
   std::vector<std::uint8_t> flipped;
   gp->mipLevels_ = mipLevelCount(w, h);
   const int levels = gp->mipLevels_;
@@ -121,30 +123,39 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
 
 void GpuPalette::addToneThresholds(const Palette& p, std::vector<std::vector<ImageRGBA8>>& chains) {
   toneThresholds_ = false;
-  std::vector<std::vector<std::uint8_t>> levels;
-  for (std::size_t k = 0; k < chains.front().size(); ++k) {
-    Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, k);
-    if (!t && k == 0) {
-      toneThresholdNote_ = t.error();  // alpha left as it was
-      return;
+  // Row by row (a palette with rows nests along each row's tone ladder); all or nothing.
+  const int rows = std::max(p.axis.rows, 1);
+  const std::size_t columns = std::size_t(p.columns());
+  std::vector<std::vector<std::vector<std::uint8_t>>> rowLevels;
+  for (int r = 0; r < rows; ++r) {
+    std::vector<std::vector<std::uint8_t>> levels;
+    for (std::size_t k = 0; k < chains.front().size(); ++k) {
+      Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, k, r);
+      if (!t && k == 0) {
+        toneThresholdNote_ = rows > 1 ? "row " + std::to_string(r + 1) + ": " + t.error() : t.error();  // alpha left as it was
+        return;
+      }
+      if (!t) {
+        // A coarse level whose reduced strokes no longer nest: every other texel of the finer
+        // level's thresholds, the marks kept in the same order.
+        const ImageRGBA8& fine = chains.front()[k - 1];
+        const ImageRGBA8& coarse = chains.front()[k];
+        std::vector<std::uint8_t> sub(std::size_t(coarse.width) * std::size_t(coarse.height));
+        for (int y = 0; y < coarse.height; ++y)
+          for (int x = 0; x < coarse.width; ++x)
+            sub[std::size_t(y) * std::size_t(coarse.width) + std::size_t(x)] =
+                levels.back()[std::size_t(std::min(2 * y, fine.height - 1)) * std::size_t(fine.width) + std::size_t(std::min(2 * x, fine.width - 1))];
+        t = std::move(sub);
+      }
+      levels.push_back(std::move(*t));
     }
-    if (!t) {
-      // A coarse level whose reduced strokes no longer nest: every other texel of the finer
-      // level's thresholds, the marks kept in the same order.
-      const ImageRGBA8& fine = chains.front()[k - 1];
-      const ImageRGBA8& coarse = chains.front()[k];
-      std::vector<std::uint8_t> sub(std::size_t(coarse.width) * std::size_t(coarse.height));
-      for (int y = 0; y < coarse.height; ++y)
-        for (int x = 0; x < coarse.width; ++x)
-          sub[std::size_t(y) * std::size_t(coarse.width) + std::size_t(x)] =
-              levels.back()[std::size_t(std::min(2 * y, fine.height - 1)) * std::size_t(fine.width) + std::size_t(std::min(2 * x, fine.width - 1))];
-      t = std::move(sub);
-    }
-    levels.push_back(std::move(*t));
+    rowLevels.push_back(std::move(levels));
   }
-  for (auto& chain : chains)
+  for (std::size_t e = 0; e < chains.size(); ++e) {
+    const auto& levels = rowLevels[std::min(e / std::max<std::size_t>(columns, 1), rowLevels.size() - 1)];
     for (std::size_t k = 0; k < levels.size(); ++k)
-      for (std::size_t j = 0; j < levels[k].size(); ++j) chain[k].pixels[4 * j + 3] = levels[k][j];
+      for (std::size_t j = 0; j < levels[k].size(); ++j) chains[e][k].pixels[4 * j + 3] = levels[k][j];
+  }
   toneThresholds_ = true;
   toneThresholdNote_.clear();
 }
@@ -153,7 +164,9 @@ Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<
                                  std::optional<glm::vec2> toneTarget) {
   if (matcher_ && matcherKey_.mode == mode && matcherKey_.scale == scale && matcherKey_.bands == bands && matcherKey_.toneTarget == toneTarget)
     return okStatus();
-  Result<PaletteMatcher> m = PaletteMatcher::create(averages_, mode, scale, bands, toneTarget);
+  // A palette with rows matches against its first row: the tone picks the column (palette.h).
+  const std::vector<glm::vec3> columnAverages(averages_.begin(), averages_.begin() + columns_);
+  Result<PaletteMatcher> m = PaletteMatcher::create(columnAverages, mode, scale, bands, toneTarget);
   if (!m) return Error{m.error()};
   matcher_ = std::move(*m);
   matcherKey_ = {mode, scale, bands, toneTarget};
@@ -188,6 +201,19 @@ Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<
   return okStatus();
 }
 
+void GpuPalette::setAxisScale(float sceneRadius) {
+  // rowPosition(value) = clamp(value x map.x + map.y, 0, rows - 1), the axis value in the
+  // shader's units (depth: eye-space distance, scene radii times the radius).
+  const float unit = axis_.kind == PaletteAxisKind::Depth ? std::max(sceneRadius, 1e-6f) : 1.0f;
+  const float k = float(axis_.rows - 1) / ((axis_.to - axis_.from) * unit);
+  axisMap_ = glm::vec2(k, -axis_.from * unit * k);
+}
+
+float GpuPalette::rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal) const {
+  if (axis_.rows < 2) return 0.0f;
+  return paletteRowAt(paletteAxisValue(axis_.kind, eyePosition, eyeNormal), axisMap_, axis_.rows);
+}
+
 gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   gl::PaletteVariant v;
   v.size = size();
@@ -200,6 +226,11 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   v.orientBins = orientBins();
   v.entryAngleShared = v.orientBins > 0 && sharedAngle_.has_value();
   v.patternPerVertex = patternPerVertex_ && gl::mapsScreenPosition(v.pattern);
+  if (axis_.rows > 1) {
+    v.rows = axis_.rows;
+    v.columns = columns_;
+    v.axis = axis_.kind == PaletteAxisKind::Depth ? gl::PaletteAxis::Depth : gl::PaletteAxis::Facing;
+  }
   return v;
 }
 
@@ -341,6 +372,7 @@ void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
   else prog.set("uLayerSize0", layerSizes_[0]);
   bindBackground(prog);
   bindPattern(prog);
+  if (axis_.rows > 1) prog.set("uAxisMap", axisMap_);
   if (turned && oriented()) {
     if (sharedAngle_) {
       prog.set("uSharedEntryAngle", *sharedAngle_);
@@ -354,7 +386,7 @@ void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
   if (matcher_ && matcher_->mode() == MatchMode::Colors) {
     gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, lut3D_.id());
     prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));
-    prog.setArray("uAverages", matcher_->scaledAverages().data(), size());
+    prog.setArray("uAverages", matcher_->scaledAverages().data(), matcher_->size());
   } else {
     gl::bindTexture(TextureUnit::LutIndex, GL_TEXTURE_2D, lutIndex_.id());
     prog.set("uLutIndex", gl::unitIndex(TextureUnit::LutIndex));

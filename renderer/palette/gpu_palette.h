@@ -29,7 +29,18 @@ class GpuPalette {
   // GPU, out of GPU memory); nothing is half-made.
   [[nodiscard]] static Result<std::unique_ptr<GpuPalette>> upload(const Palette& palette);
 
+  // Layers: every row's entries (palette.h); a palette without an axis has one row.
   int size() const { return static_cast<int>(layerSizes_.size()); }
+  // A two-dimensional palette (palette.h): its rows, and the entries of each (what matching picks).
+  int rows() const { return axis_.rows; }
+  int columns() const { return columns_; }
+  const PaletteAxis& axis() const { return axis_; }
+  // The scene's bounding radius, the unit of a depth axis, for the frames drawn next.
+  void setAxisScale(float sceneRadius);
+  // Where a surface point (eye space) falls among the rows, in [0, rows - 1]: the per-triangle
+  // paths' choice at each centroid; palette.glsl's setPaletteRow is the same per pixel.
+  float rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal) const;
+  glm::vec2 axisMap() const { return axisMap_; }
   // Each entry's average colour (over the background), as the analysis measured it.
   const std::vector<glm::vec3>& averages() const { return averages_; }
   bool backgroundImage() const { return backgroundImage_; }
@@ -143,6 +154,9 @@ class GpuPalette {
   glm::vec3 backgroundColour_{1.0f};
   glm::ivec2 backgroundSize_{1, 1};
   std::vector<glm::vec3> averages_;
+  PaletteAxis axis_;
+  int columns_ = 0;
+  glm::vec2 axisMap_{0.0f};
 
   std::optional<PaletteMatcher> matcher_;
   struct MatcherKey {

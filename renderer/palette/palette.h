@@ -10,8 +10,18 @@
 //   range-scale S
 //   name TEXT
 //   mip PATH                                 (the next mip level of the entry above: half its size)
+//   axis depth NEAR FAR | axis facing [FROM TO]  (a second axis: the palette has rows)
+//   row                                      (starts the next row; every row is a whole tone ladder)
+//
+// Two-dimensional palettes (X-Toon, Barla, Thollot and Markosian 2006): the lit tone picks the
+// column, matched against the first row's levels, and a second value at the surface picks the
+// row, so the same tone can be drawn differently far away or at the rim. `depth`: the distance
+// from the eye in units of the scene's bounding radius, NEAR at the first row, FAR at the last;
+// `facing`: 1 - |N.V|, 0 where the surface faces the eye and 1 edge-on (default 0 1).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -40,6 +50,34 @@ struct PaletteEntry {
   std::vector<ImageRGBA8> mips;    // levels 1, 2, ... the palette file gave (`mip PATH` lines); the rest are reduced
 };
 
+enum class PaletteAxisKind { None, Depth, Facing };
+const char* paletteAxisName(PaletteAxisKind k);
+
+struct PaletteAxis {
+  PaletteAxisKind kind = PaletteAxisKind::None;
+  float from = 0.0f, to = 1.0f;  // the axis value at the first row and at the last
+  int rows = 1;
+  // Where `value` falls among the rows, in [0, rows - 1] (rows blend between neighbours).
+  float rowPosition(float value) const {
+    if (rows < 2) return 0.0f;
+    const float t = (value - from) / (to - from);
+    return (t > 0.0f ? (t < 1.0f ? t : 1.0f) : 0.0f) * float(rows - 1);  // NaN: the first row
+  }
+};
+
+// The axis value at a surface point, from its eye-space position and normal (palette.glsl's
+// setPaletteRow is the same per pixel): depth, the distance from the eye; facing, 1 - |N.V|.
+inline float paletteAxisValue(PaletteAxisKind kind, const glm::vec3& eyePosition, const glm::vec3& eyeNormal) {
+  if (kind == PaletteAxisKind::Depth) return glm::length(eyePosition);
+  const float ln = glm::length(eyeNormal), lp = glm::length(eyePosition);
+  return ln > 0.0f && lp > 0.0f ? 1.0f - std::abs(glm::dot(eyeNormal, eyePosition)) / (ln * lp) : 0.0f;
+}
+// The row position for an axis value through the frame's map (GpuPalette::axisMap), in [0, rows - 1].
+inline float paletteRowAt(float value, const glm::vec2& map, int rows) {
+  const float r = value * map.x + map.y;
+  return r > 0.0f ? std::min(r, float(rows - 1)) : 0.0f;  // NaN: the first row
+}
+
 struct Palette {
   std::string file;
   std::string name;
@@ -49,8 +87,11 @@ struct Palette {
   std::optional<MatchMode> defaultMatch;
   std::optional<float> defaultRangeScale;
   std::vector<std::string> warnings;
+  // Entries are stored row after row; a palette without an axis has one row.
+  PaletteAxis axis;
 
   std::vector<glm::vec3> averages() const;
+  int columns() const { return static_cast<int>(entries.size()) / std::max(axis.rows, 1); }
 };
 
 // Loads the whole palette or nothing: a failure names the file, the line and the reason.

@@ -45,11 +45,12 @@ glm::vec3 compositeAverage(const ImageRGBA8& img, const glm::vec3& bgColour, con
   return linearToSrgb(linearMean(c));
 }
 
-PaletteAnalysis analysePalette(const Palette& p) {
+PaletteAnalysis analysePalette(const Palette& p, int row) {
   PaletteAnalysis a;
-  if (p.entries.empty()) return a;
+  const std::size_t columns = std::size_t(p.columns());
+  if (p.entries.empty() || columns == 0 || row < 0 || std::size_t(row + 1) * columns > p.entries.size()) return a;
   std::vector<float> v;
-  for (const auto& e : p.entries) v.push_back(e.intensity);
+  for (std::size_t i = 0; i < columns; ++i) v.push_back(p.entries[std::size_t(row) * columns + i].intensity);
   a.minIntensity = *std::min_element(v.begin(), v.end());
   a.maxIntensity = *std::max_element(v.begin(), v.end());
   std::vector<float> s = v;
@@ -95,7 +96,8 @@ std::string paletteReportJson(const Palette& p) {
     o << (i ? "," : "") << "{\"path\":" << str(e.path) << ",\"width\":" << e.image.width << ",\"height\":" << e.image.height
       << ",\"average\":[" << num(e.average.r) << "," << num(e.average.g) << "," << num(e.average.b)
       << "],\"intensity\":" << num(e.intensity) << ",\"orientation_degrees\":" << num(e.orientation.degrees)
-      << ",\"orientation_strength\":" << num(e.orientation.strength) << ",\"oriented\":" << (e.orientation.oriented() ? "true" : "false");
+      << ",\"orientation_strength\":" << num(e.orientation.strength) << ",\"oriented\":" << (e.orientation.oriented() ? "true" : "false")
+      << ",\"row\":" << i / std::size_t(std::max(p.columns(), 1)) << ",\"column\":" << i % std::size_t(std::max(p.columns(), 1));
     // The tone at every mip level the renderer samples, and how far it drifts from level 0's
     // (as a fraction of white): what a scaled or zoomed pattern shows.
     const std::vector<float> tones = entryMipTones(p, i);
@@ -108,6 +110,19 @@ std::string paletteReportJson(const Palette& p) {
     << ",\"monotonic\":" << (a.monotonic ? "true" : "false") << ",\"spacing_error\":" << num(a.spacingError)
     << ",\"evenly_spaced\":" << (a.spacingError <= PaletteAnalysis::kEvenSpacing ? "true" : "false");
   if (p.defaultMatch) o << ",\"match\":\"" << matchModeName(*p.defaultMatch) << "\"";
+  // Both axes: the tone (columns, matched against the first row, whose figures are above) and
+  // the second axis with each row's tone range.
+  o << ",\"columns\":" << p.columns() << ",\"rows\":" << std::max(p.axis.rows, 1) << ",\"axis\":{\"kind\":" << str(paletteAxisName(p.axis.kind));
+  if (p.axis.kind != PaletteAxisKind::None) {
+    o << ",\"from\":" << num(p.axis.from) << ",\"to\":" << num(p.axis.to)
+      << ",\"unit\":" << str(p.axis.kind == PaletteAxisKind::Depth ? "distance from the eye in scene radii" : "1 - |N.V|") << ",\"row_intensity_ranges\":[";
+    for (int r = 0; r < p.axis.rows; ++r) {
+      const PaletteAnalysis ra = analysePalette(p, r);
+      o << (r ? "," : "") << "[" << num(ra.minIntensity) << "," << num(ra.maxIntensity) << "]";
+    }
+    o << "]";
+  }
+  o << "}";
   // Whether the smooth path can show crisp tone (--tone-blend threshold), and if not, why.
   const Result<std::vector<std::uint8_t>> thresholds = paletteToneThresholds(p);
   o << ",\"tone_thresholds\":" << (thresholds ? "true" : "false");

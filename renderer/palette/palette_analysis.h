@@ -31,7 +31,8 @@ struct PaletteAnalysis {
   static constexpr float kEvenSpacing = 0.01f;
   std::vector<std::string> suitabilityWarnings(MatchMode mode) const;
 };
-PaletteAnalysis analysePalette(const Palette& p);
+// Of one row's tone ladder (the first: what matching uses).
+PaletteAnalysis analysePalette(const Palette& p, int row = 0);
 // The palette report: one line of JSON (`npr-viewer --palette-info`).
 std::string paletteReportJson(const Palette& p);
 

@@ -32,6 +32,15 @@ std::optional<MatchMode> parseMatchMode(const std::string& s) {
   return std::nullopt;
 }
 
+const char* paletteAxisName(PaletteAxisKind k) {
+  switch (k) {
+    case PaletteAxisKind::None: return "none";
+    case PaletteAxisKind::Depth: return "depth";
+    case PaletteAxisKind::Facing: return "facing";
+  }
+  return "?";
+}
+
 std::vector<glm::vec3> Palette::averages() const {
   std::vector<glm::vec3> a;
   a.reserve(entries.size());
@@ -91,6 +100,8 @@ Result<Palette> loadPalette(const std::string& path) {
     std::vector<Pending> mips;
   };
   std::vector<Pending> images;
+  std::vector<std::pair<std::size_t, int>> rowStarts{{0, 0}};  // first image of each row, and the 'row' line
+  int axisLine = 0;
   std::string raw;
   int lineNo = 0;
   while (std::getline(in, raw)) {
@@ -117,6 +128,42 @@ Result<Palette> loadPalette(const std::string& path) {
       if (arg.empty() || *end != '\0' || !std::isfinite(s) || s <= 0.0f)
         return Error{where + ": range-scale must be a finite number > 0, got '" + printable(arg) + "'"};
       p.defaultRangeScale = s;
+    } else if (key == "axis") {
+      if (axisLine) return Error{where + ": a second 'axis' line (the first is line " + std::to_string(axisLine) + ")"};
+      std::istringstream words(arg);
+      std::string kind, extra;
+      words >> kind;
+      if (kind == "depth") p.axis.kind = PaletteAxisKind::Depth;
+      else if (kind == "facing") p.axis.kind = PaletteAxisKind::Facing;
+      else return Error{where + ": unknown axis '" + printable(kind) + "' (use 'axis depth NEAR FAR' or 'axis facing [FROM TO]')"};
+      std::string a, b;
+      words >> a >> b;
+      if (words >> extra) return Error{where + ": 'axis " + kind + "' takes two numbers, and there is more: '" + printable(extra) + "'"};
+      if (a.empty() && p.axis.kind == PaletteAxisKind::Depth)
+        return Error{where + ": 'axis depth' needs NEAR and FAR (distances from the eye in scene radii, e.g. 'axis depth 2 4')"};
+      if (!a.empty()) {
+        char* endA = nullptr;
+        char* endB = nullptr;
+        const float from = std::strtof(a.c_str(), &endA), to = std::strtof(b.c_str(), &endB);
+        if (b.empty() || *endA != '\0' || *endB != '\0' || !std::isfinite(from) || !std::isfinite(to))
+          return Error{where + ": 'axis " + kind + "' needs two numbers, got '" + printable(arg) + "'"};
+        if (from >= to) return Error{where + ": 'axis " + kind + "': " + a + " must be less than " + b + " (the first row's value, then the last's)"};
+        if (p.axis.kind == PaletteAxisKind::Depth && from < 0.0f) return Error{where + ": 'axis depth': NEAR must be 0 or more, got " + a};
+        if (p.axis.kind == PaletteAxisKind::Facing && (from < 0.0f || to > 1.0f))
+          return Error{where + ": 'axis facing': FROM and TO lie in [0, 1] (0 facing the eye, 1 edge-on), got '" + printable(arg) + "'"};
+        p.axis.from = from;
+        p.axis.to = to;
+      }
+      axisLine = lineNo;
+    } else if (key == "row") {
+      if (!arg.empty()) return Error{where + ": 'row' takes nothing after it"};
+      // A 'row' before any image starts the first row.
+      if (!images.empty()) {
+        if (images.size() == rowStarts.back().first) return Error{where + ": an empty row (no images since the 'row' on line " + std::to_string(rowStarts.back().second) + ")"};
+        rowStarts.push_back({images.size(), lineNo});
+      } else {
+        rowStarts.front().second = lineNo;
+      }
     } else if (key == "name") {
       p.name = arg;
     } else if (key == "mip") {
@@ -128,6 +175,19 @@ Result<Palette> loadPalette(const std::string& path) {
     }
   }
   if (images.empty()) return Error{path + ": the palette lists no images (one image path per line)"};
+  const std::size_t rows = rowStarts.size();
+  if (rows > 1 && !axisLine) return Error{path + " line " + std::to_string(rowStarts[1].second) + ": 'row' lines need an 'axis' line saying what picks the row"};
+  if (axisLine && rows < 2) return Error{path + " line " + std::to_string(axisLine) + ": an axis needs at least two rows ('row' lines between them)"};
+  if (rows > 1) {
+    const std::size_t columns = rowStarts[1].first;
+    for (std::size_t r = 1; r < rows; ++r) {
+      const std::size_t count = (r + 1 < rows ? rowStarts[r + 1].first : images.size()) - rowStarts[r].first;
+      if (count != columns)
+        return Error{path + " line " + std::to_string(rowStarts[r].second) + ": row " + std::to_string(r + 1) + " has " + std::to_string(count) +
+                     " images; every row needs as many as the first (" + std::to_string(columns) + ")"};
+    }
+    p.axis.rows = static_cast<int>(rows);
+  }
   if (images.size() > static_cast<size_t>(kMaxPaletteEntries))
     return Error{path + " line " + std::to_string(images[kMaxPaletteEntries].line) + ": more than " +
                  std::to_string(kMaxPaletteEntries) + " entries (a palette holds at most " + std::to_string(kMaxPaletteEntries) + ")"};

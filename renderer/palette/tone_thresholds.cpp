@@ -145,11 +145,12 @@ Result<std::vector<std::uint8_t>> toneThresholds(const std::vector<const ImageRG
 }
 
 Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const std::vector<std::vector<ImageRGBA8>>& chains,
-                                                        std::size_t level) {
-  if (chains.size() < 2 || chains.size() != p.entries.size()) return Error{"it has fewer than two entries"};
+                                                        std::size_t level, int row) {
+  const std::size_t columns = std::size_t(p.columns());
+  if (chains.size() != p.entries.size() || columns < 2 || row < 0 || row >= std::max(p.axis.rows, 1)) return Error{"it has fewer than two entries"};
   if (!layersPrecomposited(p)) return Error{"its background image differs in size from its entries"};
-  std::vector<std::size_t> order(chains.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<std::size_t> order(columns);
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::size_t(row) * columns + i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.entries[a].intensity > p.entries[b].intensity; });
   std::vector<const ImageRGBA8*> lightToDark;
   for (std::size_t i : order) {
@@ -166,7 +167,11 @@ Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p) {
   const std::vector<ImageRGBA8> bg = pre && p.backgroundImage ? mipChain(*p.backgroundImage, 1) : std::vector<ImageRGBA8>{};
   std::vector<std::vector<ImageRGBA8>> chains;
   for (const PaletteEntry& e : p.entries) chains.push_back(entryMipChain(e, 1, pre, p.backgroundColour, bg));
-  return paletteToneThresholds(p, chains, 0);
+  for (int r = 0; r < std::max(p.axis.rows, 1); ++r) {
+    Result<std::vector<std::uint8_t>> t = paletteToneThresholds(p, chains, 0, r);
+    if (!t || r + 1 == std::max(p.axis.rows, 1)) return p.axis.rows > 1 && !t ? Error{"row " + std::to_string(r + 1) + ": " + t.error()} : t;
+  }
+  return Error{"it has no entries"};
 }
 
 ToneBlendMeasure measureToneBlend(const std::vector<const ImageRGBA8*>& levels, const std::vector<std::uint8_t>& thresholds,

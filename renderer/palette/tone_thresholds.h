@@ -32,9 +32,11 @@ struct Palette;
 // are taken lightest first. An error saying why a palette has none: its layers are not stored
 // composited over the background (then alpha is theirs), differ in size, do not nest or (at
 // level 0) are a ramp.
+// `row`: a palette with rows (palette.h) is thresholded along each row's tone ladder.
 [[nodiscard]] Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p, const std::vector<std::vector<ImageRGBA8>>& chains,
-                                                                    std::size_t level);
-// The same at level 0, the chains made here: what --palette-info reports.
+                                                                    std::size_t level, int row = 0);
+// The same at level 0, the chains made here, every row checked (the last row's returned):
+// what --palette-info reports.
 [[nodiscard]] Result<std::vector<std::uint8_t>> paletteToneThresholds(const Palette& p);
 
 // What a pixel shows between levels `pair` and `pair + 1` at weight `w` (0: the lighter

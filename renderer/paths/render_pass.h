@@ -74,6 +74,7 @@ struct FrameContext {
     gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
+    if (!settings.paletteAxis) v.rows = 1;  // a palette with rows drawn with its first only
     // Crisp tone: where the palette has thresholds, with intensity matching (its blend's first
     // entry is the darker level, which palette.glsl's toneBetween relies on).
     v.toneThreshold = output == gl::MeshOutput::Colour && settings.toneBlend == ToneBlend::Threshold && settings.match == MatchMode::Intensity &&

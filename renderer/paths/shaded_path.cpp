@@ -19,8 +19,10 @@ Status ShadedPath::draw(FrameContext& f) {
   const GpuPalette* palette = kind_ != Kind::Reference ? f.palette : nullptr;
   gl::MeshProgram variant = litMeshProgram(f, shading, palette);
   // The palette paths' turns can wait for the resolve (the smooth path's two entries too).
-  const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || kind_ == Kind::Smooth;
+  // A palette with rows blends the smooth path's rows too, which the resolve's buffer does not
+  // hold: there the turns stay in place.
   const bool blend = kind_ == Kind::Smooth;
+  const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || (blend && !(palette && palette->rows() > 1 && f.settings.paletteAxis));
   TurnResolvePass* resolve = turns && f.turnResolve && f.turnResolve->begin(f, blend) ? f.turnResolve : nullptr;
   if (resolve) {
     variant.deferTurn = true;

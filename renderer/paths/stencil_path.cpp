@@ -143,7 +143,7 @@ Status StencilPath::draw(FrameContext& f) {
   };
 
   std::vector<int> drawn;  // the buckets drawn, in palette order
-  for (int k = 0; k < f.palette->size(); ++k)
+  for (int k = 0; k < f.triangles.buckets(); ++k)
     if (f.triangles.bucketCount(k) > 0 || !s.stencilSkipEmpty) drawn.push_back(k);
   if (!s.stencilMasksFirst) {
     for (int k : drawn) {

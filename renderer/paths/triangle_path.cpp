@@ -14,10 +14,12 @@ Status updateTriangleShading(FrameContext& f) {
     const GpuTriangleLightingInputs in{f.lighting, f.camera, *f.palette, f.settings.match, f.shadows, f.sceneView, f.occlusion, f.settings.occlusionStrength};
     if (Status st = f.triangles.gpu().shade(in, f.programs, f.stats, entries); !st) return st;
     f.triangles.setEntries(std::move(entries), f.palette->size(), f.stats);
-    return okStatus();
+  } else {
+    f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials, f.occlusion,
+                       f.settings.occlusionStrength);
   }
-  f.triangles.update(f.lighting, f.camera.view, *f.palette->matcher(), f.palette->matcherId(), f.stats, f.settings.materials, f.occlusion,
-                     f.settings.occlusionStrength);
+  // A palette with rows: each triangle's row from its centroid (stencil buckets of row and entry).
+  f.triangles.applyRows(f.settings.paletteAxis ? f.palette->axis() : PaletteAxis{}, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats);
   return okStatus();
 }
 
@@ -44,7 +46,7 @@ Status TrianglePath::draw(FrameContext& f) {
   setMeshTransform(p, f.camera);
   f.bindPalette(p);
   f.gpuMesh.bindIndices(f.triangles.bucketIndices());
-  for (int k = 0; k < f.palette->size(); ++k) {
+  for (int k = 0; k < f.triangles.buckets(); ++k) {
     const std::uint32_t count = f.triangles.bucketCount(k);
     if (count == 0) continue;
     p.set("uEntry", k);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "renderer/core/elapsed.h"
+#include "renderer/core/parallel.h"
 #include "renderer/lighting/mesh_materials.h"
 
 namespace npr {
@@ -140,6 +141,7 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     ++stats.lightingRecomputes;
     key_ = {meshId_, matcherId, prepared, probe, materials, occ, occlusionStrength, /*valid=*/rigid};  // eye-space results are not reusable
     bucketsUploaded_ = false;
+    columnsFresh_ = true;
     boundsValid_ = false;
   }
   if (!bucketsUploaded_) {
@@ -158,11 +160,57 @@ void TriangleShadingCache::setEntries(std::vector<std::uint8_t>&& entries, int p
   bucketTriangles(*mesh_, paletteSize, 0, shading_);
   stats.cpuShadingMs += msSince(t0);
   key_.valid = false;
+  columnsFresh_ = true;
   gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t), GL_STREAM_DRAW);
   bucketsUploaded_ = true;
   boundsValid_ = false;
   ++stats.bufferUploads;
   stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
+}
+
+void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView,
+                                     FrameStats& stats) {
+  const bool rows = axis.rows > 1 && columns > 0;
+  if (columnsFresh_ && !rows) {
+    layered_ = false;  // just matched: columns, as drawn
+    return;
+  }
+  if (!columnsFresh_ && (rows ? layered_ && modelView == rowsView_ && axisMap == rowsMap_ && axis.rows == rowsCount_ : !layered_)) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (columnsFresh_) columns_ = shading_.entry;
+  const std::size_t nt = mesh_->triangleCount();
+  columns_.resize(nt, 0);
+  if (rows) {
+    shading_.entry.resize(nt);
+    // Normals by the inverse transpose: a scene's objects may be scaled unevenly.
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
+    const std::uint32_t* idx = mesh_->indices.data();
+    const glm::vec3* pos = mesh_->positions.data();
+    parallelChunks(nt, workerCount(), [&](std::size_t b, std::size_t e, int) {
+      for (std::size_t f = b; f < e; ++f) {
+        const glm::vec3 p0 = pos[idx[3 * f]], p1 = pos[idx[3 * f + 1]], p2 = pos[idx[3 * f + 2]];
+        const glm::vec3 centre = glm::vec3(modelView * glm::vec4((p0 + p1 + p2) * (1.0f / 3.0f), 1.0f));
+        const glm::vec3 normal = normalMatrix * glm::cross(p1 - p0, p2 - p0);
+        const int row = static_cast<int>(paletteRowAt(paletteAxisValue(axis.kind, centre, normal), axisMap, axis.rows) + 0.5f);
+        shading_.entry[f] = static_cast<std::uint8_t>(std::min<int>(columns_[f], columns - 1) + row * columns);
+      }
+    });
+    bucketTriangles(*mesh_, columns * axis.rows, 0, shading_);
+  } else {
+    shading_.entry = columns_;  // the axis turned off: back to the columns
+    bucketTriangles(*mesh_, std::max(columns, 1), 0, shading_);
+  }
+  gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t), GL_STREAM_DRAW);
+  bucketsUploaded_ = true;
+  boundsValid_ = false;
+  ++stats.bufferUploads;
+  stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
+  stats.cpuShadingMs += msSince(t0);
+  columnsFresh_ = false;
+  layered_ = rows;
+  rowsView_ = modelView;
+  rowsMap_ = axisMap;
+  rowsCount_ = axis.rows;
 }
 
 void TriangleShadingCache::updateBounds(const glm::mat4& mvp, const glm::ivec2& size, FrameStats& stats) {

@@ -14,6 +14,7 @@
 #include "renderer/gl/gl_handle.h"
 #include "renderer/lighting/lighting_model.h"
 #include "renderer/lighting/lighting_state.h"
+#include "renderer/palette/palette.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/shading/gpu_triangle_lighting.h"
@@ -37,12 +38,18 @@ class TriangleShadingCache {
   // Entries lit and matched on the GPU instead (gpu()): buckets built from them and uploaded;
   // the next CPU update recomputes whatever its key says.
   void setEntries(std::vector<std::uint8_t>&& entries, int paletteSize, FrameStats& stats);
+  // A palette with rows (palette.h): each triangle's entry becomes its layer, the row the
+  // axis gives at its centroid with its face normal (the nearest row) as seen through
+  // `modelView`. Redone when the entries or the view changed; the lighting is not.
+  void applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView, FrameStats& stats);
   GpuTriangleLighting& gpu() { return gpu_; }
   // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
   // viewport of `size` pixels.
   void updateBounds(const glm::mat4& modelViewProjection, const glm::ivec2& size, FrameStats& stats);
 
   const TriangleShading& shading() const { return shading_; }
+  // Buckets: one per palette entry matched, or per layer once rows are applied (applyRows).
+  int buckets() const { return static_cast<int>(shading_.bucketStart.size()) - 1; }
   // Vertex indices grouped by bucket; bucket k is bucketCount(k) triangles from bucketFirst(k).
   const gl::Buffer& bucketIndices() const { return bucketIndices_; }
   std::uint32_t bucketFirst(int k) const { return shading_.bucketStart[static_cast<size_t>(k)]; }
@@ -72,6 +79,14 @@ class TriangleShadingCache {
   int singleMaterial_ = -1;  // the material of every face, when they all have one
   bool faceScaleValid_ = false;
   bool bucketsUploaded_ = false;
+  // applyRows: the matched columns (shading_.entry holds layers once rows are applied), and
+  // what the layers were worked out for.
+  std::vector<std::uint8_t> columns_;
+  bool columnsFresh_ = false;  // shading_.entry was just matched (columns, not layers)
+  bool layered_ = false;       // shading_.entry holds layers
+  int rowsCount_ = 0;
+  glm::mat4 rowsView_{0.0f};
+  glm::vec2 rowsMap_{0.0f};
   GpuTriangleLighting gpu_;
   // Scissor bounds: vertices projected once per view, bounds once per change of the buckets
   // or the view.
