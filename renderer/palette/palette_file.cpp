@@ -184,7 +184,7 @@ Result<Palette> loadPalette(const std::string& path) {
       const std::size_t count = (r + 1 < rows ? rowStarts[r + 1].first : images.size()) - rowStarts[r].first;
       if (count != columns)
         return Error{path + " line " + std::to_string(rowStarts[r].second) + ": row " + std::to_string(r + 1) + " has " + std::to_string(count) +
-                     " images; every row needs as many as the first (" + std::to_string(columns) + ")"};
+                     (count == 1 ? " image" : " images") + "; every row needs as many as the first (" + std::to_string(columns) + ")"};
     }
     p.axis.rows = static_cast<int>(rows);
   }

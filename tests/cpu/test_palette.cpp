@@ -153,6 +153,58 @@ TEST(PaletteFile, FailuresNameTheFileLineAndReason) {
   ASSERT_FALSE(badColour);
 }
 
+// Two-dimensional palettes: rows after 'row' lines, the axis that picks them, and every way a
+// file with rows can be wrong named by file, line and reason.
+TEST(PaletteFile, RowsAndAnAxis) {
+  TempDir d;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(writeImage((d.path() / ("g" + std::to_string(i) + ".png")).string(), solidImage(2, 2, glm::vec3(0.4f * float(i)))));
+  auto depth = loadPalette(d.write("d.palette", "axis depth 2 4.5\nrow\ng0.png\ng1.png\ng2.png\nrow\ng1.png\ng2.png\ng2.png\n"));
+  ASSERT_TRUE(depth) << depth.error();
+  EXPECT_EQ(depth->axis.kind, PaletteAxisKind::Depth);
+  EXPECT_EQ(depth->axis.rows, 2);
+  EXPECT_EQ(depth->columns(), 3);
+  EXPECT_FLOAT_EQ(depth->axis.from, 2.0f);
+  EXPECT_FLOAT_EQ(depth->axis.to, 4.5f);
+  EXPECT_FLOAT_EQ(depth->axis.rowPosition(1.0f), 0.0f);
+  EXPECT_FLOAT_EQ(depth->axis.rowPosition(3.25f), 0.5f);
+  EXPECT_FLOAT_EQ(depth->axis.rowPosition(9.0f), 1.0f);
+  EXPECT_FLOAT_EQ(depth->axis.rowPosition(std::nanf("")), 0.0f);
+  // The first row needs no 'row' line of its own; facing defaults to the whole range.
+  auto facing = loadPalette(d.write("f.palette", "axis facing\ng0.png\ng1.png\nrow\ng1.png\ng2.png\nrow\ng2.png\ng2.png\n"));
+  ASSERT_TRUE(facing) << facing.error();
+  EXPECT_EQ(facing->axis.kind, PaletteAxisKind::Facing);
+  EXPECT_EQ(facing->axis.rows, 3);
+  EXPECT_EQ(facing->columns(), 2);
+  EXPECT_FLOAT_EQ(facing->axis.rowPosition(0.75f), 1.5f);
+  // The report gives both axes and each row's range.
+  const std::string report = paletteReportJson(*depth);
+  EXPECT_NE(report.find("\"columns\":3,\"rows\":2,\"axis\":{\"kind\":\"depth\",\"from\":2,\"to\":4.5"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"row_intensity_ranges\":[["), std::string::npos) << report;
+  EXPECT_NE(report.find("\"row\":1,\"column\":2"), std::string::npos) << report;
+  // A palette without an axis reports one row.
+  auto plain = loadPalette(greyPalette(d, {0.0f, 1.0f}));
+  ASSERT_TRUE(plain);
+  EXPECT_NE(paletteReportJson(*plain).find("\"columns\":2,\"rows\":1,\"axis\":{\"kind\":\"none\"}"), std::string::npos);
+
+  const auto fails = [&](const std::string& name, const std::string& text, const std::string& where, const std::string& why) {
+    auto p = loadPalette(d.write(name, text));
+    ASSERT_FALSE(p) << name;
+    EXPECT_NE(p.error().find(name + " line " + where), std::string::npos) << p.error();
+    EXPECT_NE(p.error().find(why), std::string::npos) << p.error();
+  };
+  fails("ragged.palette", "axis depth 1 2\ng0.png\ng1.png\nrow\ng1.png\n", "4", "row 2 has 1 image; every row needs as many as the first (2)");
+  fails("order.palette", "axis depth 3 3\ng0.png\nrow\ng1.png\n", "1", "3 must be less than 3");
+  fails("reverse.palette", "axis facing 0.8 0.2\ng0.png\nrow\ng1.png\n", "1", "must be less than");
+  fails("unknown.palette", "axis detail\ng0.png\nrow\ng1.png\n", "1", "unknown axis 'detail'");
+  fails("nonumbers.palette", "axis depth\ng0.png\nrow\ng1.png\n", "1", "needs NEAR and FAR");
+  fails("words.palette", "axis depth near far\ng0.png\nrow\ng1.png\n", "1", "needs two numbers");
+  fails("facingrange.palette", "axis facing 0.5 2\ng0.png\nrow\ng1.png\n", "1", "lie in [0, 1]");
+  fails("noaxis.palette", "g0.png\nrow\ng1.png\n", "2", "'row' lines need an 'axis' line");
+  fails("onerow.palette", "axis depth 1 2\ng0.png\ng1.png\n", "1", "at least two rows");
+  fails("empty.palette", "axis depth 1 2\ng0.png\nrow\nrow\ng1.png\n", "4", "an empty row");
+  fails("twice.palette", "axis depth 1 2\naxis facing\ng0.png\nrow\ng1.png\n", "2", "a second 'axis' line");
+}
+
 TEST(PaletteFile, OneEntryAnd256EntriesAndTinyImages) {
   TempDir d;
   ASSERT_TRUE(writeImage((d.path() / "px.png").string(), solidImage(1, 1, glm::vec3(0.3f))));
@@ -196,7 +248,7 @@ TEST(PaletteReport, NarrowPaletteWarnsUnderIntensity) {
 }
 
 TEST(PaletteReport, ShippedPalettesLoadAndSuitTheirModes) {
-  for (const char* name : {"crosshatch", "stipple", "cel", "gooch", "solarize", "wood"}) {
+  for (const char* name : {"crosshatch", "stipple", "cel", "gooch", "solarize", "wood", "depth-hatch", "cel-rim"}) {
     const std::string path = std::string(NPR_SOURCE_DIR) + "/palettes/" + name + "/" + name + ".palette";
     auto pal = loadPalette(path);
     ASSERT_TRUE(pal) << pal.error();
