@@ -7,6 +7,8 @@
 namespace npr {
 
 Status updateTriangleShading(FrameContext& f) {
+  const PaletteAxis axis = f.settings.paletteAxis ? f.palette->axis() : PaletteAxis{};
+  f.triangles.expectRows(axis.rows > 1);
   const TriangleLighting where = f.settings.triangleLighting;
   const bool gpu = where == TriangleLighting::Gpu || (where == TriangleLighting::Auto && f.shadows);
   if (gpu && !f.drawMaterials()) {
@@ -19,7 +21,7 @@ Status updateTriangleShading(FrameContext& f) {
                        f.settings.occlusionStrength);
   }
   // A palette with rows: each triangle's row from its centroid (stencil buckets of row and entry).
-  f.triangles.applyRows(f.settings.paletteAxis ? f.palette->axis() : PaletteAxis{}, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats);
+  f.triangles.applyRows(axis, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats);
   return okStatus();
 }
 

@@ -94,7 +94,7 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     // Both per-triangle paths draw bucket by bucket: the triangle path sets the entry as a
     // uniform per bucket, because reading a per-triangle value by gl_PrimitiveID made llvmpipe
     // process the 871K-triangle mesh about 30% slower than the reference render.
-    opt.buildBuckets = true;
+    opt.buildBuckets = !rowsNext_;  // rows: applyRows buckets by layer instead
     if (materials || occ) {
       if (materials && !faceScaleValid_) {
         faceScale_ = packFaceScale(faceColourScale(*mesh_));
@@ -144,7 +144,7 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     columnsFresh_ = true;
     boundsValid_ = false;
   }
-  if (!bucketsUploaded_) {
+  if (!bucketsUploaded_ && !rowsNext_) {
     gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t),
                      GL_STREAM_DRAW);
     bucketsUploaded_ = true;
@@ -157,10 +157,11 @@ void TriangleShadingCache::setEntries(std::vector<std::uint8_t>&& entries, int p
   const auto t0 = std::chrono::steady_clock::now();
   shading_.entry = std::move(entries);
   shading_.entry.resize(mesh_->triangleCount(), 0);
-  bucketTriangles(*mesh_, paletteSize, 0, shading_);
-  stats.cpuShadingMs += msSince(t0);
   key_.valid = false;
   columnsFresh_ = true;
+  if (rowsNext_) return;  // applyRows buckets by layer
+  bucketTriangles(*mesh_, paletteSize, 0, shading_);
+  stats.cpuShadingMs += msSince(t0);
   gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t), GL_STREAM_DRAW);
   bucketsUploaded_ = true;
   boundsValid_ = false;
@@ -182,16 +183,30 @@ void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& a
   columns_.resize(nt, 0);
   if (rows) {
     shading_.entry.resize(nt);
-    // Normals by the inverse transpose: a scene's objects may be scaled unevenly.
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
+    const bool haveFaces = mesh_->faceCentroids.size() == nt && mesh_->faceNormals.size() == nt;
+    const glm::vec3* centroids = mesh_->faceCentroids.data();
+    const glm::vec3* faceNormals = mesh_->faceNormals.data();
     const std::uint32_t* idx = mesh_->indices.data();
     const glm::vec3* pos = mesh_->positions.data();
+    // Under a similarity (a scene's usual placement) in object space: the eye brought into the
+    // mesh's space, distances scaled back; angles are kept. Otherwise in eye space, normals by
+    // the inverse transpose.
+    const bool rigid = haveFaces && isSimilarity(modelView);
+    const glm::vec3 eye = glm::vec3(glm::inverse(modelView) * glm::vec4(0, 0, 0, 1));
+    const float scale = glm::length(glm::vec3(modelView[0]));
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
     parallelChunks(nt, workerCount(), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t f = b; f < e; ++f) {
-        const glm::vec3 p0 = pos[idx[3 * f]], p1 = pos[idx[3 * f + 1]], p2 = pos[idx[3 * f + 2]];
-        const glm::vec3 centre = glm::vec3(modelView * glm::vec4((p0 + p1 + p2) * (1.0f / 3.0f), 1.0f));
-        const glm::vec3 normal = normalMatrix * glm::cross(p1 - p0, p2 - p0);
-        const int row = static_cast<int>(paletteRowAt(paletteAxisValue(axis.kind, centre, normal), axisMap, axis.rows) + 0.5f);
+        float value;
+        if (rigid) {
+          const glm::vec3 toFace = centroids[f] - eye;
+          value = axis.kind == PaletteAxisKind::Depth ? scale * glm::length(toFace) : paletteAxisValue(axis.kind, toFace, faceNormals[f]);
+        } else {
+          const glm::vec3 p0 = pos[idx[3 * f]], p1 = pos[idx[3 * f + 1]], p2 = pos[idx[3 * f + 2]];
+          const glm::vec3 centre = glm::vec3(modelView * glm::vec4((p0 + p1 + p2) * (1.0f / 3.0f), 1.0f));
+          value = paletteAxisValue(axis.kind, centre, normalMatrix * glm::cross(p1 - p0, p2 - p0));
+        }
+        const int row = static_cast<int>(paletteRowAt(value, axisMap, axis.rows) + 0.5f);
         shading_.entry[f] = static_cast<std::uint8_t>(std::min<int>(columns_[f], columns - 1) + row * columns);
       }
     });

@@ -42,6 +42,9 @@ class TriangleShadingCache {
   // axis gives at its centroid with its face normal (the nearest row) as seen through
   // `modelView`. Redone when the entries or the view changed; the lighting is not.
   void applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView, FrameStats& stats);
+  // Set before update() or setEntries() when applyRows follows: they then leave the buckets
+  // (and their upload) to it.
+  void expectRows(bool rows) { rowsNext_ = rows; }
   GpuTriangleLighting& gpu() { return gpu_; }
   // The screen rectangle of each bucket (after update), for `modelViewProjection` and a
   // viewport of `size` pixels.
@@ -84,6 +87,7 @@ class TriangleShadingCache {
   std::vector<std::uint8_t> columns_;
   bool columnsFresh_ = false;  // shading_.entry was just matched (columns, not layers)
   bool layered_ = false;       // shading_.entry holds layers
+  bool rowsNext_ = false;
   int rowsCount_ = 0;
   glm::mat4 rowsView_{0.0f};
   glm::vec2 rowsMap_{0.0f};

@@ -7,6 +7,7 @@
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
 //      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--turn-placements] [--tone-threshold]
+//      [--palette-axis]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -57,6 +58,7 @@ struct PathRow {
   bool oriented = false;                  // strokes along the curvature (--orient)
   TurnPlacement placement = TurnPlacement::Auto;  // where the turn is applied (--turn-placements)
   bool toneThreshold = false;              // smooth: whole texels by threshold (--tone-threshold)
+  bool axis = false;                      // a palette with rows, the row by depth (--palette-axis)
   bool shadows = false;                   // ground plane and shadows (--shadows)
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
@@ -73,7 +75,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false, toneThreshold = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false, toneThreshold = false, paletteAxis = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -87,6 +89,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--orient")) orient = true;
     else if (!std::strcmp(argv[i], "--turn-placements")) orient = placements = true;
     else if (!std::strcmp(argv[i], "--tone-threshold")) toneThreshold = true;
+    else if (!std::strcmp(argv[i], "--palette-axis")) paletteAxis = true;
     else if (!std::strcmp(argv[i], "--shadows")) shadows = true;
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
@@ -98,10 +101,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--tone-threshold] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--tone-threshold] [--palette-axis] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
-                           "path with strokes along the curvature; --tone-threshold adds the smooth path with crisp tone (+threshold, --tone-blend threshold); --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
+                           "path with strokes along the curvature; --tone-threshold adds the smooth path with crisp tone (+threshold, --tone-blend threshold); --palette-axis gives the palette a second row (the same images) on a depth axis across the model and adds each path with it (+axis), the rows without drawing the first row only (--no-palette-axis); --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
                            "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto))\n");
@@ -248,6 +251,12 @@ int main(int argc, char** argv) {
         on.gpuTriangles = true;
         paths.push_back(on);
       }
+      if (paletteAxis && pathInfo(p.path).usesPalette && p.path != RenderPath::LitTextured) {
+        PathRow on = p;
+        on.label += "+axis";
+        on.axis = true;
+        paths.push_back(on);
+      }
       if (toneThreshold && p.path == RenderPath::Smooth) {
         PathRow on = p;
         on.label += "+threshold";
@@ -277,7 +286,19 @@ int main(int argc, char** argv) {
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     for (int n : sizes) {
-      if (!r.setPalette(paletteOf(*crosshatch, n))) return 1;
+      Palette palette = paletteOf(*crosshatch, n);
+      if (paletteAxis) {
+        // A second row of the same images, the row by distance over the whole visible model
+        // (the camera sits at 3 radii): every pixel between the rows, the smooth path's worst case.
+        if (n > kMaxPaletteEntries / 2) {
+          std::fprintf(stderr, "bench_frames: --palette-axis needs --entries %d or fewer (two rows)\n", kMaxPaletteEntries / 2);
+          return 2;
+        }
+        const std::vector<PaletteEntry> first = palette.entries;
+        palette.entries.insert(palette.entries.end(), first.begin(), first.end());
+        palette.axis = PaletteAxis{PaletteAxisKind::Depth, 2.0f, 3.0f, 2};
+      }
+      if (!r.setPalette(palette)) return 1;
       // The light moves before every frame, so each per-triangle path redoes its CPU work (as
       // while a user drags the light) rather than reusing what the path before it computed.
       CameraMatrices matrices = cam.matrices(float(w) / float(h));
@@ -296,6 +317,7 @@ int main(int argc, char** argv) {
         if (paths[p].oriented) s.orient.source = OrientSource::Curvature;
         s.tuning.turnPlacement = paths[p].placement;
         s.toneBlend = paths[p].toneThreshold ? ToneBlend::Threshold : ToneBlend::Mix;
+        s.paletteAxis = paths[p].axis;
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
