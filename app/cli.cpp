@@ -69,6 +69,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::vector<std::string> objectPalette;
   app.add_option("--object-palette", objectPalette,
                  "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
+  std::vector<std::string> objectDetail;
+  app.add_option("--object-detail", objectDetail,
+                 "OBJECT=VALUE: the object's detail in [0, 1], which picks the row of a palette with 'axis detail' (repeatable; default 0)");
   app.add_option("--animation", o.playAnimation,
                  "The scene's animation to play: its NAME, its NUMBER from 1 (--info lists them), all (the default) or none (the rest pose)");
   app.add_option("--time", o.time, "Pose the scene at SECONDS of its animations' time (the first frame's, when it plays)");
@@ -237,6 +240,14 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     if (!std::filesystem::exists(file))
       return {std::nullopt, fail("--object-palette " + printable(op.substr(0, eq)) + ": palette file '" + printable(file) + "' does not exist")};
     o.objectPalettes.emplace_back(op.substr(0, eq), file);
+  }
+  for (const std::string& od : objectDetail) {
+    const std::size_t eq = od.rfind('=');
+    char* end = nullptr;
+    const float v = eq == std::string::npos ? 0.0f : std::strtof(od.c_str() + eq + 1, &end);
+    if (eq == std::string::npos || eq == 0 || eq + 1 == od.size() || *end != '\0' || !(v >= 0.0f && v <= 1.0f))
+      return {std::nullopt, fail("--object-detail must be OBJECT=VALUE with VALUE in [0, 1], got '" + printable(od) + "'")};
+    o.objectDetails.emplace_back(od.substr(0, eq), v);
   }
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');

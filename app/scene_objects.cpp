@@ -218,6 +218,12 @@ bool SceneObjects::setVisible(std::size_t object, bool visible, Renderer& render
   return renderer.setModelVisible(objects_[object].id, visible);
 }
 
+bool SceneObjects::setDetail(std::size_t object, float detail, Renderer& renderer) {
+  if (object >= objects_.size() || !renderer.setModelDetail(objects_[object].id, detail)) return false;
+  objects_[object].detail = renderer.model(objects_[object].id)->detail();
+  return true;
+}
+
 Status SceneObjects::setPalette(std::size_t object, const std::string& path, Renderer& renderer) {
   if (object >= objects_.size()) return Error{"no object number " + std::to_string(object + 1) + " (the scene has " + std::to_string(objects_.size()) + ")"};
   ViewerObject& o = objects_[object];

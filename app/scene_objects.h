@@ -32,6 +32,7 @@ struct ViewerObject {
   ModelId id = 0;
   bool visible = true;
   std::string palette;  // its own palette's file; empty: the main palette
+  float detail = 0.0f;  // what a palette with `axis detail` picks its row by
 };
 
 struct SceneFile {
@@ -57,6 +58,8 @@ class SceneObjects {
   bool setVisible(std::size_t object, bool visible, Renderer& renderer);
   // Draws object `object` with the palette at `path` (empty: the main one again).
   [[nodiscard]] Status setPalette(std::size_t object, const std::string& path, Renderer& renderer);
+  // The object's detail in [0, 1] (Renderer::setModelDetail).
+  bool setDetail(std::size_t object, float detail, Renderer& renderer);
 
   const std::vector<ViewerObject>& objects() const { return objects_; }
   const std::vector<SceneFile>& files() const { return files_; }

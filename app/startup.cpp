@@ -4,12 +4,13 @@
 #include <algorithm>
 
 #include "app/settings/style_file.h"
+#include "renderer/core/printable.h"
 
 namespace npr {
 namespace {
 
-// --object-palette OBJECT=FILE: the object by name, or by its number from 1.
-Status setObjectPalette(ViewerState& state, Renderer& renderer, const std::string& object, const std::string& file) {
+// The objects --object-palette or --object-detail name: by name, or by number from 1.
+Result<std::vector<std::size_t>> namedObjects(const ViewerState& state, const std::string& option, const std::string& object) {
   const auto& objects = state.scene.objects();
   std::vector<std::size_t> chosen;
   for (std::size_t i = 0; i < objects.size(); ++i)
@@ -21,10 +22,16 @@ Status setObjectPalette(ViewerState& state, Renderer& renderer, const std::strin
   if (chosen.empty()) {
     std::string names;
     for (std::size_t i = 0; i < objects.size() && i < 12; ++i) names += (i ? ", " : "") + objects[i].name;
-    return Error{"--object-palette: no object named '" + object + "' in " + state.scene.label() + " (its objects: " + names +
+    return Error{option + ": no object named '" + printable(object) + "' in " + state.scene.label() + " (its objects: " + names +
                  (objects.size() > 12 ? ", ..." : "") + "; or give a number from 1 to " + std::to_string(objects.size()) + ")"};
   }
-  for (std::size_t i : chosen)
+  return chosen;
+}
+
+Status setObjectPalette(ViewerState& state, Renderer& renderer, const std::string& object, const std::string& file) {
+  Result<std::vector<std::size_t>> chosen = namedObjects(state, "--object-palette", object);
+  if (!chosen) return Error{chosen.error()};
+  for (std::size_t i : *chosen)
     if (Status s = state.scene.setPalette(i, file, renderer); !s) return Error{"--object-palette " + object + ": " + s.error()};
   return okStatus();
 }
@@ -39,6 +46,11 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (Status s = state.loadModels(models, false, renderer); !s) return s;
   for (const auto& [object, file] : o.objectPalettes)
     if (Status s = setObjectPalette(state, renderer, object, file); !s) return s;
+  for (const auto& [object, detail] : o.objectDetails) {
+    Result<std::vector<std::size_t>> chosen = namedObjects(state, "--object-detail", object);
+    if (!chosen) return Error{chosen.error()};
+    for (std::size_t i : *chosen) state.scene.setDetail(i, detail, renderer);
+  }
   state.palettes = discoverPalettes();
   const std::string first = o.palettes.empty() ? defaultPalettePath() : o.palettes.front();
   for (const auto& p : o.palettes)

@@ -307,6 +307,7 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
     frame.cullBackFaces = cullBackFaces;
+    frame.axisDetail = model.detail();
     return drawPart(view, &model, frame, s.path);
   };
   GpuPalette* main = mainPaletteOf(model);

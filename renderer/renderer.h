@@ -11,6 +11,8 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -53,6 +55,8 @@ class Renderer {
   // owning what is derived from its mesh. The renderer keeps a pointer to each mesh: remove
   // the model (or set another scene) before the mesh is destroyed.
   ModelId addModel(const Mesh& mesh, const glm::mat4& transform = glm::mat4(1.0f));
+  // A temporary would be gone before the first frame.
+  ModelId addModel(Mesh&& mesh, const glm::mat4& transform = glm::mat4(1.0f)) = delete;
   void removeModel(ModelId id);
   // False when there is no such model.
   bool setModelTransform(ModelId id, const glm::mat4& transform);
@@ -66,6 +70,13 @@ class Renderer {
   bool setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights);
   // A hidden model keeps everything derived from its mesh and is left out of every pass.
   bool setModelVisible(ModelId id, bool visible) { return scene_.setVisible(id, visible); }
+  // The model's detail in [0, 1] (clamped; not finite: 0), which a palette with `axis detail`
+  // picks its row by. False when there is no such model.
+  bool setModelDetail(ModelId id, float detail) {
+    Model* m = scene_.find(id);
+    if (m) m->setDetail(std::isfinite(detail) ? std::clamp(detail, 0.0f, 1.0f) : 0.0f);
+    return m != nullptr;
+  }
   // The model's own palette, in place of the main one for its surfaces (every path; its
   // materials' palettes still win). On failure, or for no such model, nothing changes.
   [[nodiscard]] Status setModelPalette(ModelId id, const Palette& palette);

@@ -12,7 +12,7 @@
 // MATCH_ORDER, LUT1D_SIZE, LUT3D_SIZE, PATTERN_ANCHORED, PATTERN_SCALED, ORIENTED, ORIENT_BINS,
 // ENTRY_ANGLE_SHARED and TONE_THRESHOLD (precomposited layers whose alpha holds each texel's
 // threshold: the smooth path shows one level or the other instead of their blend).
-// PALETTE_AXIS (with PALETTE_ROWS, PALETTE_COLUMNS and AXIS_DEPTH | AXIS_FACING): a
+// PALETTE_AXIS (with PALETTE_ROWS, PALETTE_COLUMNS and AXIS_DEPTH | AXIS_FACING | AXIS_DETAIL): a
 // two-dimensional palette, layers stored row after row; matching picks the column and the pass
 // sets the row from the surface (setPaletteRow) before it shows an entry.
 
@@ -102,8 +102,13 @@ vec3 paletteColour(int entry) { return composite(paletteTexel(entry)); }
 #ifdef PALETTE_AXIS
 uniform vec2 uAxisMap;    // row position = axis value x map.x + map.y (GpuPalette::setAxisScale)
 float paletteRow = 0.0;  // this pixel's row position, in [0, PALETTE_ROWS - 1]
+#ifdef AXIS_DETAIL
+uniform float uAxisDetail;  // the model's detail (Renderer::setModelDetail)
+#endif
 void setPaletteRow(vec3 eyePosition, vec3 eyeNormal) {
-#ifdef AXIS_DEPTH
+#if defined(AXIS_DETAIL)
+  float value = uAxisDetail;
+#elif defined(AXIS_DEPTH)
   float value = length(eyePosition);
 #else
   float value = 1.0 - abs(dot(normalize(eyeNormal), normalize(eyePosition)));

@@ -202,7 +202,14 @@ void drawObjectList(Viewer& v) {
           if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.note("palette of '" + o.name + "' not loaded: " + st.error());
       ImGui::EndCombo();
     }
-    if (ImGui::IsItemHovered()) {
+    const bool hovered = ImGui::IsItemHovered();
+    // A palette whose rows go by detail: each object's own value.
+    if (v.renderer->palette() && v.renderer->palette()->axis().kind == PaletteAxisKind::Detail) {
+      float detail = o.detail;
+      ImGui::SetNextItemWidth(120.0f);
+      if (ImGui::SliderFloat("detail", &detail, 0.0f, 1.0f, "%.2f")) s.scene.setDetail(i, detail, *v.renderer);
+    }
+    if (hovered) {
       const glm::mat4& t = o.placed;
       tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
               std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)");

@@ -18,7 +18,7 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
   if (p.rows > 1 && p.axis != PaletteAxis::None) {
     d.push_back("PALETTE_AXIS");
-    d.push_back(p.axis == PaletteAxis::Depth ? "AXIS_DEPTH" : "AXIS_FACING");
+    d.push_back(p.axis == PaletteAxis::Depth ? "AXIS_DEPTH" : p.axis == PaletteAxis::Facing ? "AXIS_FACING" : "AXIS_DETAIL");
     d.push_back("PALETTE_ROWS " + std::to_string(p.rows));
     d.push_back("PALETTE_COLUMNS " + std::to_string(p.columns));
   }

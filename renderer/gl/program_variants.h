@@ -26,7 +26,7 @@ inline bool mapsScreenPosition(PatternMapping m) { return m == PatternMapping::S
 
 // What palette.glsl is compiled for: the palette's layout and the match mode.
 // What picks a two-dimensional palette's row (palette.h's axis).
-enum class PaletteAxis : std::uint8_t { None, Depth, Facing };
+enum class PaletteAxis : std::uint8_t { None, Depth, Facing, Detail };
 
 struct PaletteVariant {
   int size = 0;

@@ -209,9 +209,9 @@ void GpuPalette::setAxisScale(float sceneRadius) {
   axisMap_ = glm::vec2(k, -axis_.from * unit * k);
 }
 
-float GpuPalette::rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal) const {
+float GpuPalette::rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal, float detail) const {
   if (axis_.rows < 2) return 0.0f;
-  return paletteRowAt(paletteAxisValue(axis_.kind, eyePosition, eyeNormal), axisMap_, axis_.rows);
+  return paletteRowAt(paletteAxisValue(axis_.kind, eyePosition, eyeNormal, detail), axisMap_, axis_.rows);
 }
 
 gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
@@ -229,7 +229,9 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   if (axis_.rows > 1) {
     v.rows = axis_.rows;
     v.columns = columns_;
-    v.axis = axis_.kind == PaletteAxisKind::Depth ? gl::PaletteAxis::Depth : gl::PaletteAxis::Facing;
+    v.axis = axis_.kind == PaletteAxisKind::Depth    ? gl::PaletteAxis::Depth
+             : axis_.kind == PaletteAxisKind::Facing ? gl::PaletteAxis::Facing
+                                                     : gl::PaletteAxis::Detail;
   }
   return v;
 }

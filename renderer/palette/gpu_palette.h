@@ -39,7 +39,7 @@ class GpuPalette {
   void setAxisScale(float sceneRadius);
   // Where a surface point (eye space) falls among the rows, in [0, rows - 1]: the per-triangle
   // paths' choice at each centroid; palette.glsl's setPaletteRow is the same per pixel.
-  float rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal) const;
+  float rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal, float detail = 0.0f) const;
   glm::vec2 axisMap() const { return axisMap_; }
   // Each entry's average colour (over the background), as the analysis measured it.
   const std::vector<glm::vec3>& averages() const { return averages_; }

@@ -10,14 +10,15 @@
 //   range-scale S
 //   name TEXT
 //   mip PATH                                 (the next mip level of the entry above: half its size)
-//   axis depth NEAR FAR | axis facing [FROM TO]  (a second axis: the palette has rows)
+//   axis depth NEAR FAR | axis facing [FROM TO] | axis detail [FROM TO]  (a second axis: rows)
 //   row                                      (starts the next row; every row is a whole tone ladder)
 //
 // Two-dimensional palettes (X-Toon, Barla, Thollot and Markosian 2006): the lit tone picks the
 // column, matched against the first row's levels, and a second value at the surface picks the
 // row, so the same tone can be drawn differently far away or at the rim. `depth`: the distance
 // from the eye in units of the scene's bounding radius, NEAR at the first row, FAR at the last;
-// `facing`: 1 - |N.V|, 0 where the surface faces the eye and 1 edge-on (default 0 1).
+// `facing`: 1 - |N.V|, 0 where the surface faces the eye and 1 edge-on (default 0 1); `detail`:
+// each object's own value in [0, 1] (Renderer::setModelDetail, --object-detail; default 0 1).
 #pragma once
 
 #include <algorithm>
@@ -50,7 +51,7 @@ struct PaletteEntry {
   std::vector<ImageRGBA8> mips;    // levels 1, 2, ... the palette file gave (`mip PATH` lines); the rest are reduced
 };
 
-enum class PaletteAxisKind { None, Depth, Facing };
+enum class PaletteAxisKind { None, Depth, Facing, Detail };
 const char* paletteAxisName(PaletteAxisKind k);
 
 struct PaletteAxis {
@@ -66,8 +67,10 @@ struct PaletteAxis {
 };
 
 // The axis value at a surface point, from its eye-space position and normal (palette.glsl's
-// setPaletteRow is the same per pixel): depth, the distance from the eye; facing, 1 - |N.V|.
-inline float paletteAxisValue(PaletteAxisKind kind, const glm::vec3& eyePosition, const glm::vec3& eyeNormal) {
+// setPaletteRow is the same per pixel): depth, the distance from the eye; facing, 1 - |N.V|;
+// detail, the object's own value.
+inline float paletteAxisValue(PaletteAxisKind kind, const glm::vec3& eyePosition, const glm::vec3& eyeNormal, float detail = 0.0f) {
+  if (kind == PaletteAxisKind::Detail) return detail;
   if (kind == PaletteAxisKind::Depth) return glm::length(eyePosition);
   const float ln = glm::length(eyeNormal), lp = glm::length(eyePosition);
   return ln > 0.0f && lp > 0.0f ? 1.0f - std::abs(glm::dot(eyeNormal, eyePosition)) / (ln * lp) : 0.0f;

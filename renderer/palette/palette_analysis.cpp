@@ -115,7 +115,9 @@ std::string paletteReportJson(const Palette& p) {
   o << ",\"columns\":" << p.columns() << ",\"rows\":" << std::max(p.axis.rows, 1) << ",\"axis\":{\"kind\":" << str(paletteAxisName(p.axis.kind));
   if (p.axis.kind != PaletteAxisKind::None) {
     o << ",\"from\":" << num(p.axis.from) << ",\"to\":" << num(p.axis.to)
-      << ",\"unit\":" << str(p.axis.kind == PaletteAxisKind::Depth ? "distance from the eye in scene radii" : "1 - |N.V|") << ",\"row_intensity_ranges\":[";
+      << ",\"unit\":" << str(p.axis.kind == PaletteAxisKind::Depth    ? "distance from the eye in scene radii"
+                                : p.axis.kind == PaletteAxisKind::Facing ? "1 - |N.V|"
+                                                                         : "the object's detail") << ",\"row_intensity_ranges\":[";
     for (int r = 0; r < p.axis.rows; ++r) {
       const PaletteAnalysis ra = analysePalette(p, r);
       o << (r ? "," : "") << "[" << num(ra.minIntensity) << "," << num(ra.maxIntensity) << "]";

@@ -37,6 +37,7 @@ const char* paletteAxisName(PaletteAxisKind k) {
     case PaletteAxisKind::None: return "none";
     case PaletteAxisKind::Depth: return "depth";
     case PaletteAxisKind::Facing: return "facing";
+    case PaletteAxisKind::Detail: return "detail";
   }
   return "?";
 }
@@ -135,7 +136,8 @@ Result<Palette> loadPalette(const std::string& path) {
       words >> kind;
       if (kind == "depth") p.axis.kind = PaletteAxisKind::Depth;
       else if (kind == "facing") p.axis.kind = PaletteAxisKind::Facing;
-      else return Error{where + ": unknown axis '" + printable(kind) + "' (use 'axis depth NEAR FAR' or 'axis facing [FROM TO]')"};
+      else if (kind == "detail") p.axis.kind = PaletteAxisKind::Detail;
+      else return Error{where + ": unknown axis '" + printable(kind) + "' (use 'axis depth NEAR FAR', 'axis facing [FROM TO]' or 'axis detail [FROM TO]')"};
       std::string a, b;
       words >> a >> b;
       if (words >> extra) return Error{where + ": 'axis " + kind + "' takes two numbers, and there is more: '" + printable(extra) + "'"};
@@ -151,6 +153,8 @@ Result<Palette> loadPalette(const std::string& path) {
         if (p.axis.kind == PaletteAxisKind::Depth && from < 0.0f) return Error{where + ": 'axis depth': NEAR must be 0 or more, got " + a};
         if (p.axis.kind == PaletteAxisKind::Facing && (from < 0.0f || to > 1.0f))
           return Error{where + ": 'axis facing': FROM and TO lie in [0, 1] (0 facing the eye, 1 edge-on), got '" + printable(arg) + "'"};
+        if (p.axis.kind == PaletteAxisKind::Detail && (from < 0.0f || to > 1.0f))
+          return Error{where + ": 'axis detail': FROM and TO lie in [0, 1] (an object's detail), got '" + printable(arg) + "'"};
         p.axis.from = from;
         p.axis.to = to;
       }

@@ -56,6 +56,8 @@ struct FrameContext {
   // Set where this frame's triangle, vertex, pixel or smooth pass leaves its turned lookups to one
   // pass per pixel after it (passes/turn_resolve_pass.h).
   TurnResolvePass* turnResolve = nullptr;
+  // The model's detail (a palette with `axis detail` picks its row by it).
+  float axisDetail = 0.0f;
   // Set where no back face can show (a closed mesh wholly beyond the near plane, Mesh::closed):
   // the mesh passes drop them in the rasterizer. Drawn first in an unsorted order, they would
   // pass the depth test and be shaded, then be covered (on the 871K torus, about a third of
@@ -87,6 +89,7 @@ struct FrameContext {
   }
   void bindPalette(gl::ShaderProgram& program, const GpuPalette* p = nullptr) const {
     (p ? p : palette)->bind(program, output == gl::MeshOutput::Colour);
+    if ((p ? p : palette)->axis().kind == PaletteAxisKind::Detail) program.set("uAxisDetail", axisDetail);
   }
 
   // Whether this frame lights with the mesh's own materials.

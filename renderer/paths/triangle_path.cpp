@@ -21,7 +21,7 @@ Status updateTriangleShading(FrameContext& f) {
                        f.settings.occlusionStrength);
   }
   // A palette with rows: each triangle's row from its centroid (stencil buckets of row and entry).
-  f.triangles.applyRows(axis, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats);
+  f.triangles.applyRows(axis, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats, f.axisDetail);
   return okStatus();
 }
 

@@ -56,6 +56,9 @@ class Model {
   // The object's name in its file: what line sets select by (LineSet::objects).
   const std::string& name() const { return name_; }
   void setName(std::string name) { name_ = std::move(name); }
+  // Its detail, in [0, 1]: the value a palette with `axis detail` picks its row by (palette.h).
+  float detail() const { return detail_; }
+  void setDetail(float detail) { detail_ = detail; }
   // The camera as this model sees it: the scene's view times the model's transform.
   CameraMatrices placed(const CameraMatrices& camera) const { return {camera.view * transform_, camera.projection}; }
   // The bounding sphere's radius in scene units (the largest axis scale of the transform).
@@ -114,6 +117,7 @@ class Model {
   std::vector<glm::vec3> posedDirections_;
   glm::mat4 transform_;
   std::string name_;
+  float detail_ = 0.0f;
   GpuMesh gpu_;
   GpuMaterials materials_;
   TriangleShadingCache triangles_;

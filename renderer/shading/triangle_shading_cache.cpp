@@ -170,13 +170,13 @@ void TriangleShadingCache::setEntries(std::vector<std::uint8_t>&& entries, int p
 }
 
 void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView,
-                                     FrameStats& stats) {
+                                     FrameStats& stats, float detail) {
   const bool rows = axis.rows > 1 && columns > 0;
   if (columnsFresh_ && !rows) {
     layered_ = false;  // just matched: columns, as drawn
     return;
   }
-  if (!columnsFresh_ && (rows ? layered_ && modelView == rowsView_ && axisMap == rowsMap_ && axis.rows == rowsCount_ : !layered_)) return;
+  if (!columnsFresh_ && (rows ? layered_ && modelView == rowsView_ && axisMap == rowsMap_ && axis.rows == rowsCount_ && detail == rowsDetail_ : !layered_)) return;
   const auto t0 = std::chrono::steady_clock::now();
   if (columnsFresh_) columns_ = shading_.entry;
   const std::size_t nt = mesh_->triangleCount();
@@ -198,7 +198,9 @@ void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& a
     parallelChunks(nt, workerCount(), [&](std::size_t b, std::size_t e, int) {
       for (std::size_t f = b; f < e; ++f) {
         float value;
-        if (rigid) {
+        if (axis.kind == PaletteAxisKind::Detail) {
+          value = detail;
+        } else if (rigid) {
           const glm::vec3 toFace = centroids[f] - eye;
           value = axis.kind == PaletteAxisKind::Depth ? scale * glm::length(toFace) : paletteAxisValue(axis.kind, toFace, faceNormals[f]);
         } else {
@@ -226,6 +228,7 @@ void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& a
   rowsView_ = modelView;
   rowsMap_ = axisMap;
   rowsCount_ = axis.rows;
+  rowsDetail_ = detail;
 }
 
 void TriangleShadingCache::updateBounds(const glm::mat4& mvp, const glm::ivec2& size, FrameStats& stats) {

@@ -41,7 +41,8 @@ class TriangleShadingCache {
   // A palette with rows (palette.h): each triangle's entry becomes its layer, the row the
   // axis gives at its centroid with its face normal (the nearest row) as seen through
   // `modelView`. Redone when the entries or the view changed; the lighting is not.
-  void applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView, FrameStats& stats);
+  void applyRows(const PaletteAxis& axis, const glm::vec2& axisMap, int columns, const glm::mat4& modelView, FrameStats& stats,
+                 float detail = 0.0f);
   // Set before update() or setEntries() when applyRows follows: they then leave the buckets
   // (and their upload) to it.
   void expectRows(bool rows) { rowsNext_ = rows; }
@@ -89,6 +90,7 @@ class TriangleShadingCache {
   bool layered_ = false;       // shading_.entry holds layers
   bool rowsNext_ = false;
   int rowsCount_ = 0;
+  float rowsDetail_ = -1.0f;
   glm::mat4 rowsView_{0.0f};
   glm::vec2 rowsMap_{0.0f};
   GpuTriangleLighting gpu_;

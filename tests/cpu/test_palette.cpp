@@ -176,6 +176,11 @@ TEST(PaletteFile, RowsAndAnAxis) {
   EXPECT_EQ(facing->axis.rows, 3);
   EXPECT_EQ(facing->columns(), 2);
   EXPECT_FLOAT_EQ(facing->axis.rowPosition(0.75f), 1.5f);
+  auto detail = loadPalette(d.write("x.palette", "axis detail 0.2 0.8\ng0.png\nrow\ng1.png\n"));
+  ASSERT_TRUE(detail) << detail.error();
+  EXPECT_EQ(detail->axis.kind, PaletteAxisKind::Detail);
+  EXPECT_FLOAT_EQ(detail->axis.rowPosition(0.5f), 0.5f);
+  EXPECT_FLOAT_EQ(paletteAxisValue(PaletteAxisKind::Detail, glm::vec3(0, 0, -3), glm::vec3(0, 0, 1), 0.7f), 0.7f);
   // The report gives both axes and each row's range.
   const std::string report = paletteReportJson(*depth);
   EXPECT_NE(report.find("\"columns\":3,\"rows\":2,\"axis\":{\"kind\":\"depth\",\"from\":2,\"to\":4.5"), std::string::npos) << report;
@@ -195,7 +200,8 @@ TEST(PaletteFile, RowsAndAnAxis) {
   fails("ragged.palette", "axis depth 1 2\ng0.png\ng1.png\nrow\ng1.png\n", "4", "row 2 has 1 image; every row needs as many as the first (2)");
   fails("order.palette", "axis depth 3 3\ng0.png\nrow\ng1.png\n", "1", "3 must be less than 3");
   fails("reverse.palette", "axis facing 0.8 0.2\ng0.png\nrow\ng1.png\n", "1", "must be less than");
-  fails("unknown.palette", "axis detail\ng0.png\nrow\ng1.png\n", "1", "unknown axis 'detail'");
+  fails("unknown.palette", "axis time\ng0.png\nrow\ng1.png\n", "1", "unknown axis 'time'");
+  fails("detailrange.palette", "axis detail 0 2\ng0.png\nrow\ng1.png\n", "1", "'axis detail': FROM and TO lie in [0, 1]");
   fails("nonumbers.palette", "axis depth\ng0.png\nrow\ng1.png\n", "1", "needs NEAR and FAR");
   fails("words.palette", "axis depth near far\ng0.png\nrow\ng1.png\n", "1", "needs two numbers");
   fails("facingrange.palette", "axis facing 0.5 2\ng0.png\nrow\ng1.png\n", "1", "lie in [0, 1]");

@@ -214,6 +214,15 @@ expect 0 "--object-palette by number" -- "$viewer" --headless --size 160x96 "$sr
 cmp -s "$tmp/row-wood.png" "$tmp/row-wood2.png" || { echo "FAIL: --object-palette 2 is not the teapot"; fail=1; }
 expect 1 "--object-palette of no such object" -- "$viewer" --headless --size 64x64 "$src/models/bunny.obj" --object-palette kettle=wood
 grep -q "no object named 'kettle'.*its objects: bunny" "$tmp/err" || { echo "FAIL: unknown object message: $(cat "$tmp/err")"; fail=1; }
+# A palette with rows by detail: each object's --object-detail picks its row.
+printf 'axis detail\nrow\n%s\n%s\nrow\n%s\n%s\n' "$src/palettes/cel/tone00.png" "$src/palettes/cel/tone03.png" "$src/palettes/wood/wood00.png" "$src/palettes/wood/wood29.png" > "$tmp/detail.palette"
+expect 0 "a detail palette" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --palette "$tmp/detail.palette" --screenshot "$tmp/detail0.png"
+expect 0 "--object-detail" -- "$viewer" --headless --size 160x96 "$src/models/bunny.obj" "$src/models/teapot.obj" --layout row --palette "$tmp/detail.palette" --object-detail teapot=1 --screenshot "$tmp/detail1.png"
+cmp -s "$tmp/detail0.png" "$tmp/detail1.png" && { echo "FAIL: --object-detail changes nothing"; fail=1; }
+expect 2 "--object-detail out of range" -- "$viewer" --headless "$src/models/bunny.obj" --object-detail bunny=2
+grep -q -- "--object-detail must be OBJECT=VALUE with VALUE in \[0, 1\], got 'bunny=2'" "$tmp/err" || { echo "FAIL: --object-detail message: $(cat "$tmp/err")"; fail=1; }
+expect 1 "--object-detail of no such object" -- "$viewer" --headless --size 64x64 "$src/models/bunny.obj" --object-detail kettle=0.5
+grep -q "no object named 'kettle'" "$tmp/err" || { echo "FAIL: --object-detail unknown object: $(cat "$tmp/err")"; fail=1; }
 expect 2 "bad --layout" -- "$viewer" --headless --layout diagonal
 grep -q -- "--layout must be file, row or grid" "$tmp/err" || { echo "FAIL: --layout message: $(cat "$tmp/err")"; fail=1; }
 expect 0 "--camera-from-file" -- "$viewer" --headless --size 96x96 "$G/cameras/Cameras.gltf" --camera-from-file 2 --screenshot "$tmp/ortho.png"

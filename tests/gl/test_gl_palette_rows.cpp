@@ -103,6 +103,52 @@ TEST_F(RowsFixture, TwoObjectsAtDifferentDistancesTakeTheirOwnRows) {
   EXPECT_EQ(redFar, far);
 }
 
+// A palette with rows by detail: each object's own value picks its row, in every path, and
+// changing it changes only that object's row.
+TEST_F(RowsFixture, EachObjectsDetailPicksItsRow) {
+  const Mesh sphere = icosphere(3);
+  const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.4f));
+  const ModelId left = r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
+  const ModelId right = r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
+  ASSERT_TRUE(r->setPalette(rowsPalette(PaletteAxisKind::Detail, 0.0f, 1.0f, 3)));
+  const CameraMatrices cam = lookFrom(glm::vec3(0.0f, 0.4f, 3.0f));
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const auto rowsOf = [&](RenderPath path, int& leftRow, int& rightRow) {
+    RenderSettings s;
+    s.path = path;
+    const ImageRGBA8 entries = test::renderEntries(*r, cam, s, kSize, kSize);
+    leftRow = rightRow = -1;
+    for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
+      if (!covered(pos, i)) continue;
+      int& row = at(pos, i).x < 0.0f ? leftRow : rightRow;
+      const int got = entries.pixels[4 * i] / kColumns;
+      row = row == -1 || row == got ? got : 99;  // 99: mixed rows on one object
+    }
+  };
+  EXPECT_TRUE(r->setModelDetail(left, 1.0f));
+  EXPECT_TRUE(r->setModelDetail(right, 0.5f));
+  EXPECT_FALSE(r->setModelDetail(right + 100, 0.5f));
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel}) {
+    int a = 0, b = 0;
+    rowsOf(path, a, b);
+    EXPECT_EQ(a, 2) << pathInfo(path).name;
+    EXPECT_EQ(b, 1) << pathInfo(path).name;
+  }
+  // Only the changed object moves (the per-triangle rows are worked out again for it).
+  EXPECT_TRUE(r->setModelDetail(left, 0.0f));
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Pixel}) {
+    int a = 0, b = 0;
+    rowsOf(path, a, b);
+    EXPECT_EQ(a, 0) << pathInfo(path).name;
+    EXPECT_EQ(b, 1) << pathInfo(path).name;
+  }
+  // Out of range and not finite: clamped, and 0.
+  EXPECT_TRUE(r->setModelDetail(left, 7.0f));
+  EXPECT_FLOAT_EQ(r->model(left)->detail(), 1.0f);
+  EXPECT_TRUE(r->setModelDetail(left, std::nanf("")));
+  EXPECT_FLOAT_EQ(r->model(left)->detail(), 0.0f);
+}
+
 // Every pixel of the pixel and vertex paths takes the nearest row to its own axis value, by
 // depth and by facing; the triangle path, choosing per triangle, agrees away from boundaries.
 TEST_F(RowsFixture, EachPixelTakesTheRowItsDistanceOrFacingGives) {
@@ -150,7 +196,8 @@ TEST_F(RowsFixture, EachPixelTakesTheRowItsDistanceOrFacingGives) {
 // The smooth path blends the two rows about each pixel's position: with a grey first row and a
 // red last row, green is the grey's share, 1 - position, wherever the pixel is lit.
 TEST_F(RowsFixture, TheSmoothPathBlendsNeighbouringRows) {
-  r->addModel(icosphere(4));
+  const Mesh sphere = icosphere(4);  // the renderer keeps a pointer to it
+  r->addModel(sphere);
   const CameraMatrices cam = test::testCamera(1.0f);
   const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
   const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
