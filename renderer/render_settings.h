@@ -31,7 +31,7 @@ std::string formatFloat(float v);
 // of their own, as Freestyle's and Pencil+'s line sets are. Sets draw in the order given, over
 // the kinds `lines` names that no set takes (which keep the line settings' own style).
 struct LineSet {
-  std::uint8_t kinds = 0;  // bit EdgeKind: silhouette 1, crease 2, boundary 4, material 8, intersection 16
+  std::uint8_t kinds = 0;  // bit EdgeKind: silhouette 1, crease 2, boundary 4, material 8, intersection 16, suggestive 32
   enum class Visibility : std::uint8_t { Visible, Hidden, Both } visibility = Visibility::Visible;
   float width = 2.0f;                 // pixels
   std::optional<glm::vec3> colour;    // none: each kind's colour (silhouette-colour, ...)
@@ -59,12 +59,19 @@ struct LineSettings {
   bool silhouettes = false, creases = false, boundaries = false;
   bool materials = false;  // material boundaries: edges between faces of different materials
   bool intersections = false;  // where surfaces cross, in one object or between two (lines/intersection_lines.h)
+  // Suggestive contours (lines/suggestive_contours.h): where a contour would appear under a
+  // small change of view; `suggestiveThreshold` is DeCarlo et al.'s t_d (times the mesh's radius
+  // squared): higher keeps only the strongest.
+  bool suggestive = false;
+  float suggestiveThreshold = 5.0f;
+  static constexpr float kMinSuggestiveThreshold = 0.0f, kMaxSuggestiveThreshold = 1000.0f;
   // The chosen object-space kinds' hidden parts too, dashed (`--hidden-lines`).
   bool hidden = false;
   float creaseAngle = 60.0f;  // degrees
   float width = 2.0f;         // pixels
   glm::vec3 silhouetteColour{0.0f}, creaseColour{1.0f}, boundaryColour{0.15f, 0.1f, 0.05f}, materialColour{0.25f, 0.2f, 0.15f};
   glm::vec3 intersectionColour{0.0f};
+  glm::vec3 suggestiveColour{0.12f, 0.1f, 0.1f};
   bool depthFalloff = false;
   bool sketchy = false;
   // Image space: Sobel on the depth and normal buffers, thresholded, drawn as a post-process.
@@ -98,8 +105,8 @@ struct LineSettings {
       if (s.appliesTo(object)) k &= std::uint8_t(~s.kinds);
     return k;
   }
-  // The kinds found on each mesh's edges (lines/feature_edges.h).
-  bool edgeKinds() const { return (drawnKinds() & 15) != 0; }
+  // The kinds found on each mesh (all but the scene's intersections).
+  bool edgeKinds() const { return (drawnKinds() & ~16u) != 0; }
   bool objectSpace() const { return drawnKinds() != 0; }
 };
 
@@ -126,6 +133,8 @@ inline constexpr LineKindRow kLineKinds[] = {
      &LineSettings::materialColour},
     {"intersection", "intersections", "intersection-colour", "intersection colour", "Intersection lines' colour R,G,B",
      &LineSettings::intersections, &LineSettings::intersectionColour},
+    {"suggestive", "suggestive-contours", "suggestive-colour", "suggestive colour", "Suggestive contours' colour R,G,B",
+     &LineSettings::suggestive, &LineSettings::suggestiveColour},
 };
 inline constexpr int kLineKindCount = int(std::size(kLineKinds));
 // The row named `name` (singular or plural), or -1.

@@ -11,7 +11,7 @@ layout(location = 2) in float aKind;
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
 uniform float uWidth;      // pixels
-uniform vec3 uColours[5];  // silhouette, crease, boundary, material, intersection (EdgeKind)
+uniform vec3 uColours[EDGE_KINDS];  // silhouette, crease, boundary, material, intersection, suggestive (EdgeKind)
 uniform float uFalloffDepth;
 // Intersection lines lie in a valley: the two surfaces come towards the eye on both sides, so
 // the quad's own pixels fail the depth test against them. Their ends are moved towards the eye

@@ -385,6 +385,12 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("line-width", "line width", "lines", "Line width in pixels", 0.1, 64.0, [](Look& l) -> float& { return l.render.lines.width; }));
   t.push_back(floatRow("crease-angle", "crease angle", "lines", "Dihedral angle above which an edge is a crease, degrees", 0.0, 180.0,
                        [](Look& l) -> float& { return l.render.lines.creaseAngle; }));
+  t.push_back(floatRow("suggestive-threshold", "suggestive threshold", "lines",
+                       "Suggestive contours: how strongly the radial curvature must rise toward the eye (DeCarlo et al.'s t_d, times the "
+                       "mesh's radius squared); higher keeps fewer, stronger lines",
+                       LineSettings::kMinSuggestiveThreshold, LineSettings::kMaxSuggestiveThreshold,
+                       [](Look& l) -> float& { return l.render.lines.suggestiveThreshold; }));
+  t.back().shown = [](const Look& l) { return (l.render.lines.drawnKinds() & 32u) != 0; };
   t.push_back(boolRow("sketchy", "sketchy", "lines", "Draw each line as a few jittered strokes", [](Look& l) -> bool& { return l.render.lines.sketchy; }));
   t.push_back(boolRow("hidden-lines", "hidden lines", "lines", "Also draw the hidden parts of the silhouettes, creases, boundaries and material lines, dashed",
                       [](Look& l) -> bool& { return l.render.lines.hidden; }));

@@ -2,6 +2,7 @@
 // ones the GLSL files test; the lighting defines come from LightingFeatures::glslDefines.
 #include "renderer/gl/program_variants.h"
 
+#include "renderer/lines/feature_edges.h"
 #include "renderer/palette/palette_matcher.h"
 
 namespace npr::gl {
@@ -114,7 +115,7 @@ struct SourceOf {
     return s;
   }
   ProgramSource operator()(const LineProgram& l) const {
-    ProgramSource s{"lines.vert", "lines.frag", {}};
+    ProgramSource s{"lines.vert", "lines.frag", {"EDGE_KINDS " + std::to_string(kEdgeKinds)}};
     if (l.sketchy) s.defines.push_back("SKETCHY");
     if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
     if (l.dashed) s.defines.push_back("DASHED");

@@ -19,8 +19,9 @@
 namespace npr {
 
 // Intersections are the scene's, not one mesh's (lines/intersection_lines.h).
-enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3, Intersection = 4 };
-inline constexpr int kEdgeKinds = 5;
+// Suggestive contours are view-dependent curves across faces (lines/suggestive_contours.h).
+enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3, Intersection = 4, Suggestive = 5 };
+inline constexpr int kEdgeKinds = 6;
 
 struct FeatureLine {
   glm::vec3 a, b;

@@ -13,21 +13,24 @@ void LinePass::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   edges_.reset();
   uploadedCreaseAngle_ = -1.0f;
-  silhouetteEye_ = glm::vec3(NAN);
-  staticCount_ = creaseCount_ = silhouetteCount_ = 0;
+  silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
+  suggestive_.reset();
+  staticCount_ = creaseCount_ = silhouetteCount_ = suggestiveCount_ = 0;
 }
 
 void LinePass::geometryChanged() {
   if (edges_ && mesh_) edges_->updatePositions(*mesh_);
+  if (suggestive_) suggestive_->geometryChanged();
   uploadedCreaseAngle_ = -1.0f;
-  silhouetteEye_ = glm::vec3(NAN);
+  silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
 }
 
 Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const std::string& object, const glm::ivec4& viewport, gl::ProgramCache& programs,
                       FrameStats& stats) {
   if (!ls.edgeKinds() || !mesh_) return okStatus();
   const auto t0 = std::chrono::steady_clock::now();
-  if (!edges_) {
+  const std::uint8_t kinds = ls.drawnKinds();
+  if (!edges_ && (kinds & 15u)) {
     edges_ = std::make_unique<FeatureEdges>(*mesh_);
     ++stats.meshCachesBuilt;
   }
@@ -35,8 +38,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     vao_ = gl::createVertexArray();
     staticLines_ = gl::createBuffer();
     silhouettes_ = gl::createBuffer();
+    suggestiveLines_ = gl::createBuffer();
   }
-  const std::uint8_t kinds = ls.drawnKinds();
   if ((kinds & 14u) && uploadedCreaseAngle_ != ls.creaseAngle) {
     // Static lines are creases, then boundaries, then material boundaries: the parts asked for
     // are drawn as ranges.
@@ -59,6 +62,18 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     silhouetteEye_ = eye;
     ++stats.bufferUploads;
   }
+  if ((kinds & 32u) && (!(eye == suggestiveEye_) || suggestiveThreshold_ != ls.suggestiveThreshold)) {
+    if (!suggestive_) {
+      suggestive_ = std::make_unique<SuggestiveContours>(*mesh_);
+      ++stats.meshCachesBuilt;
+    }
+    const auto& lines = suggestive_->lines(eye, ls.suggestiveThreshold);
+    gl::uploadBuffer(suggestiveLines_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STREAM_DRAW);
+    suggestiveCount_ = lines.size();
+    suggestiveEye_ = eye;
+    suggestiveThreshold_ = ls.suggestiveThreshold;
+    ++stats.bufferUploads;
+  }
   stats.cpuLinesMs += msSince(t0);
 
   for (const LineStyle& style : lineStyles(ls, &object)) {
@@ -67,6 +82,7 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     if (style.kinds & 2u) ranges.push_back({&staticLines_, 0, creaseCount_});
     if (style.kinds & 4u) ranges.push_back({&staticLines_, creaseCount_, boundaryCount_});
     if (style.kinds & 8u) ranges.push_back({&staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_});
+    if (style.kinds & 32u) ranges.push_back({&suggestiveLines_, 0, suggestiveCount_});
     if (ranges.empty()) continue;
     if (Status st = drawLineRanges(ranges, camera, style, viewport, vao_, programs, stats); !st) return st;
   }
@@ -161,17 +177,25 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
 std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const LineSettings& ls) {
   std::vector<FeatureLine> out;
   if (!mesh_ || !ls.edgeKinds()) return out;
-  if (!edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
   const std::uint8_t kinds = ls.drawnKinds();
+  if (!edges_ && (kinds & 15u)) edges_ = std::make_unique<FeatureEdges>(*mesh_);
   if (kinds & 1u) {
     const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
     const auto& s = edges_->silhouettes(eye);
     out.insert(out.end(), s.begin(), s.end());
     silhouetteEye_ = glm::vec3(NAN);  // the uploaded silhouettes may be another eye's now
   }
-  for (const FeatureLine& l : edges_->staticLines(ls.creaseAngle)) {
-    if ((kinds >> int(l.kind + 0.5f)) & 1u) out.push_back(l);
+  if (kinds & 32u) {
+    if (!suggestive_) suggestive_ = std::make_unique<SuggestiveContours>(*mesh_);
+    const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
+    const auto& s = suggestive_->lines(eye, ls.suggestiveThreshold);
+    out.insert(out.end(), s.begin(), s.end());
+    suggestiveEye_ = glm::vec3(NAN);
   }
+  if (kinds & 14u)
+    for (const FeatureLine& l : edges_->staticLines(ls.creaseAngle)) {
+      if ((kinds >> int(l.kind + 0.5f)) & 1u) out.push_back(l);
+    }
   return out;
 }
 

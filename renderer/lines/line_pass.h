@@ -15,6 +15,7 @@
 #include "renderer/gl/gl_handle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lines/feature_edges.h"
+#include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/render_settings.h"
 
@@ -61,17 +62,20 @@ class LinePass {
   [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const std::string& object, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
   // The object-space lines `draw` shows for this camera and these settings (silhouettes,
-  // creases, boundaries, as enabled): what vector export writes.
+  // creases, boundaries, material lines, suggestive contours, as enabled): what vector export
+  // writes.
   std::vector<FeatureLine> lines(const CameraMatrices& camera, const LineSettings& lines);
 
  private:
   const Mesh* mesh_ = nullptr;
   std::unique_ptr<FeatureEdges> edges_;
+  std::unique_ptr<SuggestiveContours> suggestive_;  // made when first drawn (it estimates the curvature)
   gl::VertexArray vao_;
-  gl::Buffer staticLines_, silhouettes_;
-  std::size_t staticCount_ = 0, creaseCount_ = 0, boundaryCount_ = 0, silhouetteCount_ = 0;
+  gl::Buffer staticLines_, silhouettes_, suggestiveLines_;
+  std::size_t staticCount_ = 0, creaseCount_ = 0, boundaryCount_ = 0, silhouetteCount_ = 0, suggestiveCount_ = 0;
   float uploadedCreaseAngle_ = -1.0f;
-  glm::vec3 silhouetteEye_{NAN};
+  glm::vec3 silhouetteEye_{NAN}, suggestiveEye_{NAN};
+  float suggestiveThreshold_ = -1.0f;
 };
 
 }  // namespace npr

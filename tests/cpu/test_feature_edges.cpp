@@ -14,6 +14,7 @@
 #include "renderer/lines/feature_edges.h"
 #include "renderer/lines/intersection_lines.h"
 #include "renderer/lines/region_trace.h"
+#include "renderer/lines/suggestive_contours.h"
 #include "renderer/lines/svg_export.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
@@ -172,6 +173,65 @@ TEST(SvgExport, EdgesChainAtSharedEndsAndHiddenPartsAreCut) {
   EXPECT_NE(svg.find("<g id=\"silhouettes\""), std::string::npos);
   EXPECT_NE(svg.find("<g id=\"creases\""), std::string::npos);
   EXPECT_EQ(svg.find("<image"), std::string::npos);
+}
+
+// A sheet corrugated as y = A sin x, its normals up. Its radial curvature along x is A sin x
+// (positive on the bumps, bending away from the normal), zero at the inflections x = k pi.
+Mesh corrugatedSheet(float amplitude) {
+  Mesh m;
+  const int nx = 240, nz = 30;
+  const float x0 = -1.5f * float(M_PI), x1 = 1.5f * float(M_PI), z0 = -1.5f, z1 = 1.5f;
+  for (int j = 0; j <= nz; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      const float x = x0 + (x1 - x0) * float(i) / float(nx), z = z0 + (z1 - z0) * float(j) / float(nz);
+      m.positions.push_back({x, amplitude * std::sin(x), z});
+    }
+  const auto at = [&](int i, int j) { return std::uint32_t(j * (nx + 1) + i); };
+  for (int j = 0; j < nz; ++j)
+    for (int i = 0; i < nx; ++i)
+      for (std::uint32_t v : {at(i, j), at(i, j + 1), at(i + 1, j), at(i + 1, j), at(i, j + 1), at(i + 1, j + 1)}) m.indices.push_back(v);
+  finalizeMesh(m);
+  return m;
+}
+
+// Seen from straight above, every inflection line of the sheet is a suggestive contour (kappa_r
+// rises toward the eye on both sides); tilted toward +x past the slope, only the inflection
+// whose slope faces the eye keeps one. Nowhere else: the lines lie on the inflections.
+TEST(SuggestiveContours, ACorrugatedSheetHasThemAlongItsInflections) {
+  const float amplitude = 0.6f;
+  const Mesh sheet = corrugatedSheet(amplitude);
+  ASSERT_GT(sheet.faceNormals[0].y, 0.0f) << "the sheet's normals must face up";
+  SuggestiveContours sc(sheet);
+  const auto inflectionsCovered = [&](const glm::vec3& eye, float covered[3], int& off) {
+    off = 0;
+    std::fill(covered, covered + 3, 0.0f);
+    for (const FeatureLine& l : sc.lines(eye)) {
+      EXPECT_EQ(l.kind, float(EdgeKind::Suggestive));
+      const glm::vec3 mid = 0.5f * (l.a + l.b);
+      if (std::abs(mid.z) > 1.2f) continue;  // the estimate is one-sided at the border
+      const float k = std::round(mid.x / float(M_PI));
+      if (std::abs(mid.x - k * float(M_PI)) > 0.08f || std::abs(k) > 1.0f) {
+        ++off;
+        continue;
+      }
+      covered[int(k) + 1] += glm::length(l.b - l.a);
+    }
+  };
+  float covered[3];
+  int off = 0;
+  inflectionsCovered(glm::vec3(0.0f, 60.0f, 0.0f), covered, off);
+  EXPECT_EQ(off, 0);
+  for (int k = 0; k < 3; ++k) EXPECT_GT(covered[k], 0.9f * 2.4f) << "inflection x = " << k - 1 << " pi, seen from above";
+  // Tilted 50 degrees toward +x (tan 50 > A): the inflections at +-pi, whose slope faces away,
+  // lose theirs; x = 0 keeps it.
+  const float a = glm::radians(50.0f);
+  inflectionsCovered(60.0f * glm::vec3(std::sin(a), std::cos(a), 0.0f), covered, off);
+  EXPECT_EQ(off, 0);
+  EXPECT_GT(covered[1], 0.9f * 2.4f);
+  EXPECT_LT(covered[0], 0.1f);
+  EXPECT_LT(covered[2], 0.1f);
+  // A threshold above the curvature's rate of change there keeps nothing.
+  EXPECT_TRUE(sc.lines(glm::vec3(0.0f, 60.0f, 0.0f), 1000.0f).empty());
 }
 
 TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {

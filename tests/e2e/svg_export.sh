@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# End-to-end: --svg. The file parses as XML, is SVG 1.1 with one group per line kind, and its
+# End-to-end: --svg. The file parses as XML, is SVG 1.1 with one group per line kind (suggestive
+# contours among them), and its
 # lines, rasterised by rsvg-convert, coincide with the raster lines within a pixel (drawn over a
 # plain white palette so only the lines show), on the bunny and the teapot.
 set -u
@@ -10,7 +11,7 @@ oiiotool --pattern constant:color=1,1,1 4x4 3 -o "$tmp/white.png"
 printf 'white.png\nbackground #FFFFFF\n' > "$tmp/white.palette"
 src="$(cd "$(dirname "$0")/../.." && pwd)"
 for model in bunny teapot; do
-  args=("$src/models/$model.obj" --headless --size 480x360 --palette "$tmp/white.palette" --lines silhouette,boundary)
+  args=("$src/models/$model.obj" --headless --size 480x360 --palette "$tmp/white.palette" --lines silhouette,boundary,suggestive)
   if ! "$viewer" "${args[@]}" --screenshot "$tmp/$model.png" --svg "$tmp/$model.svg" 2>"$tmp/err"; then
     echo "FAIL: $model: --svg: $(cat "$tmp/err")"; fail=1; continue
   fi
@@ -23,6 +24,7 @@ assert svg.tagName == "svg" and svg.getAttribute("version") == "1.1", "not SVG 1
 assert svg.getAttribute("width") == "480" and svg.getAttribute("height") == "360", "canvas is not the frame"
 groups = [g.getAttribute("id") for g in svg.getElementsByTagName("g")]
 assert "silhouettes" in groups, groups
+assert "suggestive-contours" in groups, groups
 assert len(svg.getElementsByTagName("polyline")) > 0, "no polylines"
 PY
   rsvg-convert -b white "$tmp/$model.svg" -o "$tmp/$model-svg.png" || { echo "FAIL: rsvg-convert cannot draw $model.svg"; fail=1; continue; }
