@@ -1,7 +1,8 @@
-// Object-space feature lines drawn over any path: silhouettes, creases and boundaries from
-// FeatureEdges, as screen-space quads of a fixed pixel width (core profiles have no wide
-// lines), depth-tested against the model. Adjacency is built on first use per mesh; creases
-// and boundaries are uploaded once per mesh and angle, silhouettes when the eye moves.
+// Object-space feature lines drawn over any path: silhouettes, creases, boundaries and
+// material lines from FeatureEdges, suggestive contours from SuggestiveContours, as
+// screen-space quads of a fixed pixel width (core profiles have no wide lines), depth-tested
+// against the model. Adjacency is built on first use per mesh; creases and boundaries are
+// uploaded once per mesh and angle, silhouettes and suggestive contours when the eye moves.
 #pragma once
 
 #include <cstddef>
