@@ -243,13 +243,17 @@ struct RenderTuning {
   bool strokeFade = true;
 };
 
+// Whether and how the palette is fitted onto the tones on screen (RenderSettings::toneRange).
+enum class ToneRange : std::uint8_t { Fixed, Auto, PerObject };
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
   float rangeScale = 1.0f;
   // Fit the palette's levels onto the tones the visible surfaces show (palette/tone_range.h;
-  // the range scale then spreads about them). Off: the palette's own range, as the original.
-  bool autoToneRange = false;
+  // the range scale then spreads about them): the whole scene's (Auto), or each object's own
+  // (PerObject). Fixed: the palette's own range, as the original.
+  ToneRange toneRange = ToneRange::Fixed;
   // Between the two levels the smooth path brackets a tone with: blended, or whole texels of one
   // or the other by each texel's threshold (palette/tone_thresholds.h), where the palette has them.
   ToneBlend toneBlend = ToneBlend::Mix;

@@ -161,12 +161,35 @@ Status Renderer::prepare(const RenderSettings& s) {
     if (Status st = shadowPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"shadow palette: " + st.error()};
   if (occlusionPalette_)
     if (Status st = occlusionPalette_->updateMatcher(s.match, s.rangeScale, {}, stats_, target); !st) return Error{"occlusion palette: " + st.error()};
-  if (palette_) return palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_, s.bands.empty() ? target : std::nullopt);
-  return okStatus();
+  if (palette_)
+    if (Status st = palette_->updateMatcher(s.match, s.rangeScale, s.bands, stats_, s.bands.empty() ? target : std::nullopt); !st) return st;
+  // Each object fitted to its own tones: its palettes get a matcher for its range, in its slot.
+  Status status = okStatus();
+  scene_.forEach([&](Model& m) {
+    if (!status || m.toneSlot == 0) return;
+    const auto fit = [&](GpuPalette& p) {
+      if (status) status = p.updateMatcher(s.match, s.rangeScale, {}, stats_, m.toneTarget, m.toneSlot);
+    };
+    if (GpuPalette* p = mainPaletteOf(m)) fit(*p);
+    for (auto& [name, p] : materialPalettes_) fit(*p);
+  });
+  return status;
+}
+
+void Renderer::selectToneSlot(int slot) const {
+  if (palette_) palette_->useMatcher(slot);
+  forEachExtraPalette([&](GpuPalette& p) { p.useMatcher(slot); });
 }
 
 void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSettings& s) {
-  if (!s.autoToneRange || !s.bands.empty()) {
+  const bool perObject = s.toneRange == ToneRange::PerObject && s.bands.empty();
+  if (!perObject)
+    scene_.forEachIncludingHidden([](Model& m) {
+      m.toneTracker().reset();
+      m.toneTarget.reset();
+      m.toneSlot = 0;
+    });
+  if (s.toneRange == ToneRange::Fixed || !s.bands.empty()) {
     toneRange_.reset();
     toneTarget_.reset();
     return;
@@ -178,8 +201,15 @@ void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSetting
   scene_.forEach([&](const Model&) { ++models; });
   const std::size_t budget = std::max<std::size_t>(256, 4096 / std::max<std::size_t>(models, 1));
   toneSamples_.clear();
-  scene_.forEach([&](const Model& m) {
+  int slot = 0;
+  scene_.forEach([&](Model& m) {
+    const std::size_t first = toneSamples_.size();
     sampleTones(m.mesh(), lighting_, camera.view * m.transform(), camera.projection, s.materials, s.match, budget, toneSamples_);
+    if (!perObject) return;
+    // Its own tones, fitted and smoothed as the scene's are (slots from 1, in scene order).
+    std::vector<ToneSample> own(toneSamples_.begin() + std::ptrdiff_t(first), toneSamples_.end());
+    m.toneTarget = m.toneTracker().update(percentileRange(own, 2.0f, 98.0f, 0.15f), 0.25f);
+    m.toneSlot = ++slot;
   });
   // A quarter of the way to each new estimate per frame: settles in about ten frames and
   // follows an orbit without pumping.
@@ -311,6 +341,12 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     return drawPart(view, &model, frame, s.path);
   };
   GpuPalette* main = mainPaletteOf(model);
+  // Its own tone range's matchers while it draws (per-object fitting; slot 0 otherwise).
+  struct ToneSlot {
+    const Renderer& r;
+    ToneSlot(const Renderer& renderer, int slot) : r(renderer) { r.selectToneSlot(slot); }
+    ~ToneSlot() { r.selectToneSlot(0); }
+  } toneSlot(*this, model.toneSlot);
   if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), main);
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.

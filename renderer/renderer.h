@@ -180,7 +180,10 @@ class Renderer {
   Renderer() = default;
   // Checks that `settings` can be drawn and brings the matchers and the models' parts up to date.
   Status prepare(const RenderSettings& settings);
-  // The automatic tone range for this view (settings.autoToneRange), into toneTarget_.
+  // Every palette's matchers from `slot` on (GpuPalette::useMatcher): a model fitted to its own tones.
+  void selectToneSlot(int slot) const;
+  // The automatic tone range for this view (settings.toneRange), into toneTarget_ (and each
+  // model's own, per object).
   void updateToneRange(const CameraMatrices& camera, const RenderSettings& settings);
   ToneRangeTracker toneRange_;
   std::optional<glm::vec2> toneTarget_;

@@ -167,10 +167,12 @@ std::vector<Setting> buildTable() {
                                    [](Look& l) -> MatchMode& { return l.render.match; }));
   t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
-  t.push_back(choiceRow<bool>("tone-range", "tone range", "palette",
-                              "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
-                              "frames (the range scale spreads about them; not with band thresholds); fixed: the palette's own range",
-                              {{"fixed", false}, {"auto", true}}, [](Look& l) -> bool& { return l.render.autoToneRange; }));
+  t.push_back(choiceRow<ToneRange>("tone-range", "tone range", "palette",
+                                   "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
+                                   "frames (the range scale spreads about them; not with band thresholds); per-object: each object fitted "
+                                   "to its own tones (a dark object beside a bright one); fixed: the palette's own range",
+                                   {{"fixed", ToneRange::Fixed}, {"auto", ToneRange::Auto}, {"per-object", ToneRange::PerObject}},
+                                   [](Look& l) -> ToneRange& { return l.render.toneRange; }));
   t.push_back(choiceRow<ToneBlend>("tone-blend", "between levels", "palette",
                                    "The smooth path between two levels: mix (blend them, greying their strokes) or threshold (whole "
                                    "strokes of one level or the other, per texel: crisp tone for nested palettes such as the drawn ones, with intensity matching)",

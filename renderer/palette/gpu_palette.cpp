@@ -161,38 +161,40 @@ void GpuPalette::addToneThresholds(const Palette& p, std::vector<std::vector<Ima
 }
 
 Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<float>& bands, FrameStats& stats,
-                                 std::optional<glm::vec2> toneTarget) {
-  if (matcher_ && matcherKey_.mode == mode && matcherKey_.scale == scale && matcherKey_.bands == bands && matcherKey_.toneTarget == toneTarget)
-    return okStatus();
+                                 std::optional<glm::vec2> toneTarget, int slot) {
+  if (slot < 0 || slot > 4096) return Error{"matcher slot " + std::to_string(slot) + " out of range"};
+  if (size_t(slot) >= slots_.size()) slots_.resize(size_t(slot) + 1);
+  MatcherSlot& m = slots_[size_t(slot)];
+  if (m.matcher && m.key.mode == mode && m.key.scale == scale && m.key.bands == bands && m.key.toneTarget == toneTarget) return okStatus();
   // A palette with rows matches against its first row: the tone picks the column (palette.h).
   const std::vector<glm::vec3> columnAverages(averages_.begin(), averages_.begin() + columns_);
-  Result<PaletteMatcher> m = PaletteMatcher::create(columnAverages, mode, scale, bands, toneTarget);
-  if (!m) return Error{m.error()};
-  matcher_ = std::move(*m);
-  matcherKey_ = {mode, scale, bands, toneTarget};
-  matcherId_ = nextMatcherId();
+  Result<PaletteMatcher> made = PaletteMatcher::create(columnAverages, mode, scale, bands, toneTarget);
+  if (!made) return Error{made.error()};
+  m.matcher = std::move(*made);
+  m.key = {mode, scale, bands, toneTarget};
+  m.id = nextMatcherId();
   ++stats.lutBuilds;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   if (mode == MatchMode::Colors) {
     const int G = PaletteMatcher::kLut3DSize;
-    const std::vector<std::uint8_t> lut = matcher_->buildLut3D();
-    lut3D_ = gl::createTexture();
+    const std::vector<std::uint8_t> lut = m.matcher->buildLut3D();
+    m.lut3D = gl::createTexture();
     glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Lut3D));
-    glBindTexture(GL_TEXTURE_3D, lut3D_.id());
+    glBindTexture(GL_TEXTURE_3D, m.lut3D.id());
     glTexImage3D(GL_TEXTURE_3D, 0, GL_RG8UI, G, G, G, 0, GL_RG_INTEGER, GL_UNSIGNED_BYTE, lut.data());
     gl::setNearestSingleLevel(GL_TEXTURE_3D);
   } else {
     const int L = PaletteMatcher::kLut1DSize;
-    const std::vector<std::uint8_t> index = matcher_->buildLutIndex1D();
-    const std::vector<float> blend = matcher_->buildLutBlend1D();
-    lutIndex_ = gl::createTexture();
+    const std::vector<std::uint8_t> index = m.matcher->buildLutIndex1D();
+    const std::vector<float> blend = m.matcher->buildLutBlend1D();
+    m.lutIndex = gl::createTexture();
     glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutIndex));
-    glBindTexture(GL_TEXTURE_2D, lutIndex_.id());
+    glBindTexture(GL_TEXTURE_2D, m.lutIndex.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, L, 1, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, index.data());
     gl::setNearestSingleLevel(GL_TEXTURE_2D);
-    lutBlend_ = gl::createTexture();
+    m.lutBlend = gl::createTexture();
     glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutBlend));
-    glBindTexture(GL_TEXTURE_2D, lutBlend_.id());
+    glBindTexture(GL_TEXTURE_2D, m.lutBlend.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, L, 1, 0, GL_RGBA, GL_FLOAT, blend.data());
     gl::setNearestSingleLevel(GL_TEXTURE_2D);
   }
@@ -385,14 +387,15 @@ void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
     bindOrientation(prog);
     bindStrokeSource(prog);
   }
-  if (matcher_ && matcher_->mode() == MatchMode::Colors) {
-    gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, lut3D_.id());
+  const MatcherSlot& m = current();
+  if (m.matcher && m.matcher->mode() == MatchMode::Colors) {
+    gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, m.lut3D.id());
     prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));
-    prog.setArray("uAverages", matcher_->scaledAverages().data(), matcher_->size());
+    prog.setArray("uAverages", m.matcher->scaledAverages().data(), m.matcher->size());
   } else {
-    gl::bindTexture(TextureUnit::LutIndex, GL_TEXTURE_2D, lutIndex_.id());
+    gl::bindTexture(TextureUnit::LutIndex, GL_TEXTURE_2D, m.lutIndex.id());
     prog.set("uLutIndex", gl::unitIndex(TextureUnit::LutIndex));
-    gl::bindTexture(TextureUnit::LutBlend, GL_TEXTURE_2D, lutBlend_.id());
+    gl::bindTexture(TextureUnit::LutBlend, GL_TEXTURE_2D, m.lutBlend.id());
     prog.set("uLutBlend", gl::unitIndex(TextureUnit::LutBlend));
   }
 }

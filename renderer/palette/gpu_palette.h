@@ -49,12 +49,16 @@ class GpuPalette {
   // Brings the matcher and its lookup tables up to date; rebuilt only when one of the three
   // changed (counted in stats.lutBuilds and stats.bufferUploads).
   // `toneTarget`: the automatic tone range's query span (palette_matcher.h), or none.
+  // `slot`: a palette keeps one matcher per tone target in use; slot 0 is the scene's, and an
+  // object fitted to its own tones (--tone-range per-object) draws with its own slot.
   [[nodiscard]] Status updateMatcher(MatchMode mode, float rangeScale, const std::vector<float>& bands, FrameStats& stats,
-                                     std::optional<glm::vec2> toneTarget = std::nullopt);
+                                     std::optional<glm::vec2> toneTarget = std::nullopt, int slot = 0);
+  // The slot matcher(), matcherId() and bind() use from now on; one never made falls back to 0.
+  void useMatcher(int slot) const { active_ = slot > 0 && slot < int(slots_.size()) && slots_[size_t(slot)].matcher ? slot : 0; }
   // Null until updateMatcher succeeded once.
-  const PaletteMatcher* matcher() const { return matcher_ ? &*matcher_ : nullptr; }
-  // Unique across palettes and rebuilds: what per-triangle results computed with it are keyed by.
-  unsigned matcherId() const { return matcherId_; }
+  const PaletteMatcher* matcher() const { return current().matcher ? &*current().matcher : nullptr; }
+  // Unique across palettes, slots and rebuilds: what per-triangle results computed with it are keyed by.
+  unsigned matcherId() const { return current().id; }
 
   // The pattern for the frames drawn next: the anchored pattern's frame (nullopt: screen
   // space) and the pattern scale (texel size in pixels, > 0).
@@ -158,15 +162,21 @@ class GpuPalette {
   int columns_ = 0;
   glm::vec2 axisMap_{0.0f};
 
-  std::optional<PaletteMatcher> matcher_;
   struct MatcherKey {
     MatchMode mode = MatchMode::Intensity;
     float scale = 0;
     std::vector<float> bands;
     std::optional<glm::vec2> toneTarget;
-  } matcherKey_;
-  unsigned matcherId_ = 0;
-  gl::Texture lutIndex_, lutBlend_, lut3D_;
+  };
+  struct MatcherSlot {
+    std::optional<PaletteMatcher> matcher;
+    MatcherKey key;
+    unsigned id = 0;
+    gl::Texture lutIndex, lutBlend, lut3D;
+  };
+  std::vector<MatcherSlot> slots_ = std::vector<MatcherSlot>(1);
+  mutable int active_ = 0;
+  const MatcherSlot& current() const { return slots_[size_t(active_)]; }
   std::optional<PatternFrame> pattern_;
   float patternScale_ = 1.0f;
   bool linearFilter_ = false;

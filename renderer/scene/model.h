@@ -19,6 +19,7 @@
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/orientation/direction_field.h"
+#include "renderer/palette/tone_range.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/shading/triangle_shading_cache.h"
 #include "renderer/shadows/occlusion_bake.h"
@@ -56,6 +57,11 @@ class Model {
   // The object's name in its file: what line sets select by (LineSet::objects).
   const std::string& name() const { return name_; }
   void setName(std::string name) { name_ = std::move(name); }
+  // Its own tone range (--tone-range per-object): the tracker, the range it gives, and the
+  // matcher slot its palettes fit it with (GpuPalette::updateMatcher; 0: the scene's).
+  ToneRangeTracker& toneTracker() { return toneTracker_; }
+  std::optional<glm::vec2> toneTarget;
+  int toneSlot = 0;
   // Its detail, in [0, 1]: the value a palette with `axis detail` picks its row by (palette.h).
   float detail() const { return detail_; }
   void setDetail(float detail) { detail_ = detail; }
@@ -118,6 +124,7 @@ class Model {
   glm::mat4 transform_;
   std::string name_;
   float detail_ = 0.0f;
+  ToneRangeTracker toneTracker_;
   GpuMesh gpu_;
   GpuMaterials materials_;
   TriangleShadingCache triangles_;

@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
         s.ground = paths[p].ground;
         s.shadows = paths[p].shadows;
         s.occlusion = paths[p].occlusion;
-        s.autoToneRange = paths[p].autoTone;
+        s.toneRange = paths[p].autoTone ? ToneRange::Auto : ToneRange::Fixed;
         s.controlPalettes = paths[p].control;
         if (paths[p].screenOcclusion) s.occlusionMethod = OcclusionMethod::Screen;
         s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <map>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gl/gl_test_env.h"
+#include "renderer/mesh/mesh_generators.h"
 #include "renderer/core/colour.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
@@ -45,7 +48,7 @@ TEST_F(ToneFixture, TheSpiderUsesFiveLevelsOrMoreAndTheFitNeverPumps) {
   s.path = RenderPath::Triangle;
   const CameraMatrices cam = test::testCamera(1.0f);
   const int fixed = levelsUsed(*r, cam, s);
-  s.autoToneRange = true;
+  s.toneRange = ToneRange::Auto;
   const int fitted = levelsUsed(*r, cam, s);
   EXPECT_LT(fixed, 5) << "the spider is not dark with the palette's own range: the test says nothing";
   EXPECT_GE(fitted, 5);
@@ -63,9 +66,61 @@ TEST_F(ToneFixture, TheSpiderUsesFiveLevelsOrMoreAndTheFitNeverPumps) {
               fitted, double(worst));
   EXPECT_LT(worst, 0.05f);
   // Fixed again: no target.
-  s.autoToneRange = false;
+  s.toneRange = ToneRange::Fixed;
   (void)test::renderImage(*r, cam, s, 64, 64);
   EXPECT_FALSE(r->toneRange());
+}
+
+// A dark object beside a bright one: fitted as one scene, the bright one stretches the range
+// and the dark one keeps a few dark levels; per object, each is fitted to its own tones, the
+// dark one gets as many levels as the bright one, and the bright one draws as before.
+TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
+  const Mesh bright = icosphere(4);
+  Mesh dark = icosphere(4);
+  dark.colours.assign(dark.positions.size(), glm::vec3(0.12f));  // albedo 0.12: a dark object
+  const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
+  r->addModel(bright, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
+  r->addModel(dark, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  // Levels covering at least 2% of each object's pixels (left: the bright one, right: the dark).
+  const auto levels = [&](const RenderSettings& s, int& left, int& right) {
+    ImageRGBA8 entries;
+    for (int frame = 0; frame < 12; ++frame) entries = test::renderEntries(*r, cam, s, kSize, kSize);  // let the fit settle
+    std::map<int, int> count[2];
+    int pixels[2] = {0, 0};
+    for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
+      if (cover.pixels[4 * i + 2] == 0.0f) continue;
+      const glm::vec3 eye(cover.pixels[4 * i], cover.pixels[4 * i + 1], cover.pixels[4 * i + 2]);
+      const int side = glm::vec3(glm::inverse(cam.view) * glm::vec4(eye, 1.0f)).x < 0.0f ? 0 : 1;
+      ++pixels[side];
+      ++count[side][entries.pixels[4 * i]];
+    }
+    int used[2] = {0, 0};
+    for (int k = 0; k < 2; ++k)
+      for (const auto& [entry, n] : count[k]) used[k] += n * 50 >= pixels[k];
+    left = used[0];
+    right = used[1];
+  };
+  RenderSettings s;
+  s.path = RenderPath::Triangle;
+  s.toneRange = ToneRange::Auto;
+  int sceneBright = 0, sceneDark = 0, ownBright = 0, ownDark = 0;
+  levels(s, sceneBright, sceneDark);
+  s.toneRange = ToneRange::PerObject;
+  levels(s, ownBright, ownDark);
+  std::printf("levels used (2%% of an object's pixels): fitted as a scene bright %d, dark %d; per object bright %d, dark %d\n", sceneBright,
+              sceneDark, ownBright, ownDark);
+  EXPECT_LT(sceneDark, sceneBright) << "the scene's fit does not leave the dark object short: the test says nothing";
+  EXPECT_GE(ownDark, ownBright - 1);
+  EXPECT_GT(ownDark, sceneDark);
+  EXPECT_GE(ownBright, sceneBright - 1);
+  // Back to one range for the scene: the dark object is as short of levels as before.
+  s.toneRange = ToneRange::Auto;
+  int againBright = 0, againDark = 0;
+  levels(s, againBright, againDark);
+  EXPECT_EQ(againDark, sceneDark);
 }
 
 // The bunny through the smooth path, mix against threshold: the threshold frame has fewer
