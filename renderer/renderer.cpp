@@ -199,7 +199,8 @@ void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSetting
   // millisecond on the CPU.
   std::size_t models = 0;
   scene_.forEach([&](const Model&) { ++models; });
-  const std::size_t budget = std::max<std::size_t>(256, 4096 / std::max<std::size_t>(models, 1));
+  // Per object, at least 64 each (a scene of many parts keeps about the same total).
+  const std::size_t budget = std::max<std::size_t>(perObject ? 64 : 256, 4096 / std::max<std::size_t>(models, 1));
   toneSamples_.clear();
   int slot = 0;
   scene_.forEach([&](Model& m) {

@@ -80,7 +80,7 @@ TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
   dark.colours.assign(dark.positions.size(), glm::vec3(0.12f));  // albedo 0.12: a dark object
   const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
   r->addModel(bright, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
-  r->addModel(dark, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
+  const ModelId darkId = r->addModel(dark, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
   ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
@@ -116,6 +116,18 @@ TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
   EXPECT_GE(ownDark, ownBright - 1);
   EXPECT_GT(ownDark, sceneDark);
   EXPECT_GE(ownBright, sceneBright - 1);
+  // Orbiting 40 frames at 3 degrees, the dark object's own range moves little per frame.
+  ASSERT_TRUE(r->model(darkId)->toneTarget);
+  glm::vec2 last = *r->model(darkId)->toneTarget;
+  float worst = 0.0f;
+  for (int f = 0; f < 40; ++f) {
+    (void)test::renderImage(*r, test::testCamera(1.0f, 3.0f * float(f), 10.0f), s, 64, 64);
+    const glm::vec2 now = *r->model(darkId)->toneTarget;
+    worst = std::max(worst, std::max(std::abs(now.x - last.x), std::abs(now.y - last.y)));
+    last = now;
+  }
+  std::printf("the dark object's own range: largest change per frame while orbiting %.4f (query axis 0..3)\n", double(worst));
+  EXPECT_LT(worst, 0.05f);
   // Back to one range for the scene: the dark object is as short of levels as before.
   s.toneRange = ToneRange::Auto;
   int againBright = 0, againDark = 0;
