@@ -63,7 +63,7 @@ struct LineSettings {
   // small change of view; `suggestiveThreshold` is DeCarlo et al.'s t_d (times the mesh's radius
   // squared): higher keeps only the strongest.
   bool suggestive = false;
-  float suggestiveThreshold = 5.0f;
+  float suggestiveThreshold = 1.0f;
   static constexpr float kMinSuggestiveThreshold = 0.0f, kMaxSuggestiveThreshold = 1000.0f;
   // The chosen object-space kinds' hidden parts too, dashed (`--hidden-lines`).
   bool hidden = false;

@@ -27,7 +27,7 @@ class SuggestiveContours {
  public:
   // The derivative threshold D_w kappa_r x radius^2 (t_d), and the smallest n.v (unit view
   // vector) kept: near the silhouette the estimate is noise.
-  static constexpr float kDefaultThreshold = 5.0f, kMinFacing = 0.08f;
+  static constexpr float kDefaultThreshold = 1.0f, kMinFacing = 0.08f;
 
   explicit SuggestiveContours(const Mesh& mesh);
   // The mesh was deformed (same vertices and faces): the curvature is estimated again on the

@@ -234,6 +234,30 @@ TEST(SuggestiveContours, ACorrugatedSheetHasThemAlongItsInflections) {
   EXPECT_TRUE(sc.lines(glm::vec3(0.0f, 60.0f, 0.0f), 1000.0f).empty());
 }
 
+// A torus (axis y): seen straight down its axis it has none; from a grazing view, suggestive
+// contours on its inner side (nearer the axis than the tube's centre), none on the outer.
+TEST(SuggestiveContours, ATorusHasThemOnItsInnerSideFromAGrazingViewAndNoneStraightOn) {
+  const Mesh t = torus(96, 48);
+  float lo = 1e9f, hi = 0.0f;
+  for (const glm::vec3& p : t.positions) {
+    lo = std::min(lo, std::hypot(p.x, p.z));
+    hi = std::max(hi, std::hypot(p.x, p.z));
+  }
+  const float major = 0.5f * (lo + hi);
+  SuggestiveContours sc(t);
+  EXPECT_TRUE(sc.lines(glm::vec3(0.0f, 6.0f, 0.0f)).empty());
+  for (float elevation : {40.0f, 30.0f, 20.0f}) {
+    const float a = glm::radians(elevation);
+    float inner = 0.0f, outer = 0.0f;
+    for (const FeatureLine& l : sc.lines(6.0f * glm::vec3(std::cos(a), std::sin(a), 0.0f))) {
+      const glm::vec3 m = 0.5f * (l.a + l.b);
+      (std::hypot(m.x, m.z) < major ? inner : outer) += glm::length(l.b - l.a);
+    }
+    EXPECT_GT(inner, 0.3f) << elevation << " degrees";
+    EXPECT_EQ(outer, 0.0f) << elevation << " degrees";
+  }
+}
+
 TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
   // The cube with its top (y = 1, faces 6 and 7) in a second material: the four edges around
   // the top, and nothing else, are material boundaries; the 12 creases are unchanged.
