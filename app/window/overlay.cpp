@@ -211,8 +211,13 @@ void drawObjectList(Viewer& v) {
     }
     if (hovered) {
       const glm::mat4& t = o.placed;
+      // Its own fitted tone range, under --tone-range per-object.
+      std::string tone;
+      if (const Model* m = v.renderer->model(o.id); m && m->toneTarget)
+        tone = "; its tone range " + std::to_string(m->toneTarget->x).substr(0, 4) + " to " + std::to_string(m->toneTarget->y).substr(0, 4) +
+               " of 3";
       tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
-              std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)");
+              std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)" + tone);
     }
     ImGui::PopID();
   }
