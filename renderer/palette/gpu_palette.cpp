@@ -204,11 +204,8 @@ Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<
 }
 
 void GpuPalette::setAxisScale(float sceneRadius) {
-  // rowPosition(value) = clamp(value x map.x + map.y, 0, rows - 1), the axis value in the
-  // shader's units (depth: eye-space distance, scene radii times the radius).
-  const float unit = axis_.kind == PaletteAxisKind::Depth ? std::max(sceneRadius, 1e-6f) : 1.0f;
-  const float k = float(axis_.rows - 1) / ((axis_.to - axis_.from) * unit);
-  axisMap_ = glm::vec2(k, -axis_.from * unit * k);
+  // The axis value in the shader's units: depth is an eye-space distance, scene radii times the radius.
+  axisMap_ = axis_.map(axis_.kind == PaletteAxisKind::Depth ? std::max(sceneRadius, 1e-6f) : 1.0f);
 }
 
 float GpuPalette::rowPosition(const glm::vec3& eyePosition, const glm::vec3& eyeNormal, float detail) const {

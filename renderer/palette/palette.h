@@ -54,16 +54,24 @@ struct PaletteEntry {
 enum class PaletteAxisKind { None, Depth, Facing, Detail };
 const char* paletteAxisName(PaletteAxisKind k);
 
+// The row position for an axis value through the frame's map (GpuPalette::axisMap), in [0, rows - 1].
+inline float paletteRowAt(float value, const glm::vec2& map, int rows) {
+  const float r = value * map.x + map.y;
+  return r > 0.0f ? std::min(r, float(rows - 1)) : 0.0f;  // NaN: the first row
+}
+
 struct PaletteAxis {
   PaletteAxisKind kind = PaletteAxisKind::None;
   float from = 0.0f, to = 1.0f;  // the axis value at the first row and at the last
   int rows = 1;
-  // Where `value` falls among the rows, in [0, rows - 1] (rows blend between neighbours).
-  float rowPosition(float value) const {
-    if (rows < 2) return 0.0f;
-    const float t = (value - from) / (to - from);
-    return (t > 0.0f ? (t < 1.0f ? t : 1.0f) : 0.0f) * float(rows - 1);  // NaN: the first row
+  // The map paletteRowAt reads, for axis values counted in `unit`s (depth: the scene's radius):
+  // FROM at the first row, TO at the last.
+  glm::vec2 map(float unit = 1.0f) const {
+    const float k = float(std::max(rows, 1) - 1) / ((to - from) * unit);
+    return {k, -from * unit * k};
   }
+  // Where `value` falls among the rows, in [0, rows - 1] (rows blend between neighbours).
+  float rowPosition(float value) const { return paletteRowAt(value, map(), rows); }
 };
 
 // The axis value at a surface point, from its eye-space position and normal (palette.glsl's
@@ -74,11 +82,6 @@ inline float paletteAxisValue(PaletteAxisKind kind, const glm::vec3& eyePosition
   if (kind == PaletteAxisKind::Depth) return glm::length(eyePosition);
   const float ln = glm::length(eyeNormal), lp = glm::length(eyePosition);
   return ln > 0.0f && lp > 0.0f ? 1.0f - std::abs(glm::dot(eyeNormal, eyePosition)) / (ln * lp) : 0.0f;
-}
-// The row position for an axis value through the frame's map (GpuPalette::axisMap), in [0, rows - 1].
-inline float paletteRowAt(float value, const glm::vec2& map, int rows) {
-  const float r = value * map.x + map.y;
-  return r > 0.0f ? std::min(r, float(rows - 1)) : 0.0f;  // NaN: the first row
 }
 
 struct Palette {

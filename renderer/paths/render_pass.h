@@ -76,13 +76,15 @@ struct FrameContext {
     gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
-    if (!settings.paletteAxis) v.rows = 1;  // a palette with rows drawn with its first only
+    if (paletteAxis(p).rows < 2) v.rows = 1;  // a palette with rows drawn with its first only
     // Crisp tone: where the palette has thresholds, with intensity matching (its blend's first
     // entry is the darker level, which palette.glsl's toneBetween relies on).
     v.toneThreshold = output == gl::MeshOutput::Colour && settings.toneBlend == ToneBlend::Threshold && settings.match == MatchMode::Intensity &&
                       (p ? p : palette)->hasToneThresholds();
     return v;
   }
+  // The palette's second axis as this frame draws it: none when --no-palette-axis.
+  PaletteAxis paletteAxis(const GpuPalette* p = nullptr) const { return settings.paletteAxis ? (p ? p : palette)->axis() : PaletteAxis{}; }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.
   gl::StrokeSource strokeSource(const GpuPalette* p = nullptr) const {
     return output == gl::MeshOutput::Colour ? (p ? p : palette)->strokeSource() : gl::StrokeSource::None;

@@ -22,7 +22,7 @@ Status ShadedPath::draw(FrameContext& f) {
   // A palette with rows blends the smooth path's rows too, which the resolve's buffer does not
   // hold: there the turns stay in place.
   const bool blend = kind_ == Kind::Smooth;
-  const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || (blend && !(palette && palette->rows() > 1 && f.settings.paletteAxis));
+  const bool turns = kind_ == Kind::Vertex || kind_ == Kind::Pixel || (blend && !(palette && f.paletteAxis(palette).rows > 1));
   TurnResolvePass* resolve = turns && f.turnResolve && f.turnResolve->begin(f, blend) ? f.turnResolve : nullptr;
   if (resolve) {
     variant.deferTurn = true;

@@ -7,7 +7,7 @@
 namespace npr {
 
 Status updateTriangleShading(FrameContext& f) {
-  const PaletteAxis axis = f.settings.paletteAxis ? f.palette->axis() : PaletteAxis{};
+  const PaletteAxis axis = f.paletteAxis();
   f.triangles.expectRows(axis.rows > 1);
   const TriangleLighting where = f.settings.triangleLighting;
   const bool gpu = where == TriangleLighting::Gpu || (where == TriangleLighting::Auto && f.shadows);
