@@ -209,6 +209,13 @@ std::optional<glm::vec2> parseStrokeSize(const std::string& s);
 // `auto`: the GPU when shadows are on (the CPU lighting has no shadow maps), else the CPU.
 enum class TriangleLighting { Auto, Cpu, Gpu };
 
+// Where a deforming mesh (skins, morph targets) is posed (animation/gpu_deformation.h): `auto`
+// on the GPU, into the buffers every pass draws from, unless the frame reads the mesh on the CPU
+// (per-triangle paths, object-space lines, painterly strokes, the anchored pattern), then on the
+// CPU and uploaded; `gpu` on the GPU always, and on the CPU too when the frame reads it there;
+// `cpu` on the CPU and uploaded, as before. Without compute shaders (OpenGL 4.3) on the CPU.
+enum class PosePlacement { Auto, Cpu, Gpu };
+
 // Where ambient occlusion comes from: baked per vertex once per mesh (shadows/occlusion_bake.h)
 // or estimated per pixel every frame from what the frame shows (shadows/screen_occlusion_pass.h;
 // the per-pixel shadings only: pixel, smooth, reference's Phong, and the control palettes).
@@ -292,6 +299,7 @@ struct RenderSettings {
   // compare; passes/control_palette_pass.h).
   bool controlPalettes = true;
   TriangleLighting triangleLighting = TriangleLighting::Auto;
+  PosePlacement deform = PosePlacement::Auto;
   // Stencil path refinements over the original (off = the naive full-screen version):
   bool stencilScissor = true;     // bound each bucket's quads to its triangles' screen rectangle
   bool stencilSkipEmpty = true;   // draw nothing for buckets with no triangle

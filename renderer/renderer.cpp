@@ -85,10 +85,7 @@ bool Renderer::setModelName(ModelId id, const std::string& name) {
 bool Renderer::setModelDeformation(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
   Model* m = scene_.find(id);
   if (!m) return false;
-  // Poses are given between frames: their uploads count in the next frame's figures.
-  FrameStats pose;
-  m->deform(joints, weights, pose);
-  poseUploads_ += pose.bufferUploads;
+  m->deform(joints, weights);  // made by the next frame, where it reads it (applyPoses)
   scene_.touch();
   return true;
 }
@@ -136,6 +133,20 @@ void Renderer::clearControlPalette(ControlParameter parameter) {
 
 // ---------------------------------------------------------------------------------------
 // What the frame needs before it draws
+
+bool framePosesOnCpu(const RenderSettings& s) {
+  return pathInfo(s.path).perTriangle || s.lines.drawnKinds() != 0 || s.strokes.on || s.pattern == PatternSpace::Anchored;
+}
+
+Status Renderer::applyPoses(const RenderSettings& s) {
+  const bool onCpu = s.deform == PosePlacement::Cpu || framePosesOnCpu(s);
+  const bool onGpu = s.deform == PosePlacement::Gpu || (s.deform == PosePlacement::Auto && !onCpu);
+  Status status = okStatus();
+  scene_.forEachIncludingHidden([&](Model& m) {
+    if (status) status = m.applyPose(onGpu, onCpu, programs_, stats_);
+  });
+  return status;
+}
 
 Status Renderer::prepare(const RenderSettings& s) {
   if (!palette_ && pathInfo(s.path).usesPalette) return Error{"no palette loaded"};
@@ -205,6 +216,7 @@ void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSetting
   int slot = 0;
   scene_.forEach([&](Model& m) {
     const std::size_t first = toneSamples_.size();
+    m.poseToneSamples(toneSampleStride(m.mesh().triangleCount(), budget));  // a pose only the GPU made
     sampleTones(m.mesh(), lighting_, camera.view * m.transform(), camera.projection, s.materials, s.match, budget, toneSamples_);
     if (!perObject) return;
     // Its own tones, fitted and smoothed as the scene's are (slots from 1, in scene order).
@@ -404,9 +416,9 @@ Status Renderer::drawPart(FrameView& view, const Model* model, FrameContext& fra
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
-  stats_.bufferUploads = std::exchange(poseUploads_, 0);
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
+  if (Status st = applyPoses(s); !st) return st;
   updateToneRange(camera, s);
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
@@ -436,6 +448,7 @@ Status Renderer::renderSelection(const CameraMatrices& camera, const RenderSetti
   stats_.startFrame();
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
+  if (Status st = applyPoses(s); !st) return st;
   updateToneRange(camera, s);
   if (Status st = prepare(s); !st) return st;
   FrameView frame = frameView(camera, s, viewport, false);
@@ -452,6 +465,7 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
   stats_.startFrame();
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1 || scene_.empty()) return okStatus();
+  if (Status st = applyPoses(s); !st) return st;
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
   clearViewport(viewport);
@@ -516,6 +530,9 @@ Status Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& world
 std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, const RenderSettings& settings,
                                                 const std::function<std::uint8_t(const std::string* object)>& kindsFor) {
   std::vector<FeatureLine> out;
+  // Lines are found on the CPU's pose.
+  FrameStats exportStats;
+  scene_.forEachIncludingHidden([&](Model& m) { (void)m.applyPose(false, true, programs_, exportStats); });
   auto keep = [&](std::vector<FeatureLine>& lines, const std::string* object) {
     const std::uint8_t kinds = kindsFor ? kindsFor(object) : settings.lines.drawnKinds();
     lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !((kinds >> int(l.kind + 0.5f)) & 1u); }), lines.end());

@@ -44,6 +44,11 @@ enum class SelectionOutput { Entry, Blend };
 
 struct FrameContext;
 
+// Whether a frame drawn with `settings` reads a deforming mesh's pose on the CPU: the
+// per-triangle paths light its faces there, object-space lines and painterly strokes are found
+// on it, the anchored pattern fits samples read on it. Else the GPU's pose serves every pass.
+bool framePosesOnCpu(const RenderSettings& settings);
+
 class Renderer {
  public:
   [[nodiscard]] static Result<std::unique_ptr<Renderer>> create();
@@ -178,6 +183,9 @@ class Renderer {
 
  private:
   Renderer() = default;
+  // Makes the poses given since the last frame, on the GPU or the CPU as the frame reads them
+  // (RenderSettings::deform; framePosesOnCpu).
+  Status applyPoses(const RenderSettings& settings);
   // Checks that `settings` can be drawn and brings the matchers and the models' parts up to date.
   Status prepare(const RenderSettings& settings);
   // Every palette's matchers from `slot` on (GpuPalette::useMatcher): a model fitted to its own tones.
@@ -232,7 +240,6 @@ class Renderer {
     if (occlusionPalette_) fn(*occlusionPalette_);
   }
   bool partsDirty_ = false;  // the material palettes changed since the models were split
-  int poseUploads_ = 0;      // buffer uploads of poses given since the last frame (counted in its stats)
 
   LightingState lighting_;
   FrameStats stats_;

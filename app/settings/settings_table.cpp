@@ -240,6 +240,12 @@ std::vector<Setting> buildTable() {
                                           {{"auto", TriangleLighting::Auto}, {"cpu", TriangleLighting::Cpu}, {"gpu", TriangleLighting::Gpu}},
                                           [](Look& l) -> TriangleLighting& { return l.render.triangleLighting; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Triangle || l.render.path == RenderPath::Stencil; };
+  t.push_back(choiceRow<PosePlacement>("deform", "deform on", "path",
+                                       "Where a skinned or morphing mesh is posed: auto (the GPU, unless the frame reads the mesh on the CPU: "
+                                       "per-triangle paths, object-space lines, strokes, the anchored pattern), gpu (always, and the CPU too when "
+                                       "read there), cpu (uploaded each pose)",
+                                       {{"auto", PosePlacement::Auto}, {"cpu", PosePlacement::Cpu}, {"gpu", PosePlacement::Gpu}},
+                                       [](Look& l) -> PosePlacement& { return l.render.deform; }));
   t.push_back(boolRow("gouraud", "Gouraud reference", "path", "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting",
                       [](Look& l) -> bool& { return l.render.referenceGouraud; }));
   t.push_back(boolRow("materials", "model materials", "path", "Light with the model's own materials, vertex colours and texture maps",

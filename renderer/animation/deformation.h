@@ -23,4 +23,10 @@ namespace npr {
 void deformMesh(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed,
                 const std::vector<glm::vec3>* restTangents = nullptr, std::vector<glm::vec3>* posedTangents = nullptr);
 
+// Poses only triangles `first`, `first + stride`, ... of `posed` (a copy of `rest`): their
+// vertices, centroids and normals, as deformMesh would. The tone sampler's triangles, while the
+// GPU holds the whole pose (gpu_deformation.h).
+void deformFaces(const Mesh& rest, const std::vector<glm::mat4>& joints, const std::vector<float>& weights, Mesh& posed, std::size_t first,
+                 std::size_t stride);
+
 }  // namespace npr

@@ -24,6 +24,12 @@ struct FrameStats {
   // Per-mesh caches computed this frame (the direction field, the feature edges' adjacency,
   // the strokes' seeds): a new mesh or setting's, never a new pose's (animation/deformation.h).
   int meshCachesBuilt = 0;
+  // Poses made this frame (animation/gpu_deformation.h): on the GPU into the vertex buffers,
+  // and on the CPU (the mesh as per-triangle lighting, lines and strokes read it, then uploaded
+  // unless the GPU posed it too), with the CPU's time.
+  int gpuPoses = 0;
+  int cpuPoses = 0;
+  double cpuPoseMs = 0.0;
   int shadowMapRenders = 0;    // frames whose shadow maps were redrawn (a light or the scene moved)
   int shadowLayers = 0;        // shadow map layers in use (one per light, six for a point light among the casters)
   // Per-pixel surface buffers that a mesh pass writes beside its colour, sharing the bound

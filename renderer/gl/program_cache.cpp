@@ -5,7 +5,7 @@ namespace npr::gl {
 
 namespace {
 std::string keyOf(const ProgramSource& src) {
-  std::string key = src.vertexFile + "|" + src.geometryFile + "|" + src.fragmentFile;
+  std::string key = src.vertexFile + "|" + src.geometryFile + "|" + src.fragmentFile + "|" + src.computeFile;
   for (const std::string& d : src.defines) key += "|" + d;
   return key;
 }
@@ -21,7 +21,8 @@ Result<ShaderProgram*> ProgramCache::get(const ProgramVariant& variant, int& bui
     it->second.lastUse = frame_;
     return &it->second.program;
   }
-  Result<ShaderProgram> p = ShaderProgram::build(src.vertexFile, src.fragmentFile, src.defines, src.geometryFile);
+  Result<ShaderProgram> p = src.computeFile.empty() ? ShaderProgram::build(src.vertexFile, src.fragmentFile, src.defines, src.geometryFile)
+                                                    : ShaderProgram::buildCompute(src.computeFile, src.defines);
   if (!p) return Error{p.error()};
   ++builds;
   return &programs_.emplace(std::move(key), Entry{std::move(*p), frame_}).first->second.program;

@@ -153,6 +153,17 @@ struct SourceOf {
     if (t.blend) s.defines.push_back("RESOLVE_BLEND");
     return s;
   }
+  ProgramSource operator()(const DeformProgram& d) const {
+    ProgramSource s{"", "", {}};
+    s.computeFile = "deform.comp";
+    if (d.skin) s.defines.push_back("SKIN");
+    if (d.vectors) s.defines.push_back("VECTORS");
+    else if (d.morph) {
+      s.defines.push_back("MORPH");
+      s.defines.push_back("MAX_ACTIVE_TARGETS " + std::to_string(DeformProgram::kMaxActiveTargets));
+    }
+    return s;
+  }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }

@@ -163,6 +163,15 @@ struct TriangleLightProgram {
   bool occlusion = false;
 };
 
+// deform.comp: a deforming mesh's pose written into its vertex buffers
+// (animation/gpu_deformation.h). `vectors`: direction vectors carried by the skin alone.
+struct DeformProgram {
+  bool skin = false;
+  bool morph = false;
+  bool vectors = false;
+  static constexpr int kMaxActiveTargets = 32;  // morph targets with a weight, per pose
+};
+
 // A feature's own program (renderer/features/): its files and defines as it names them. A
 // feature brings its shaders without a variant struct of its own; the cache keys it by them.
 struct FeatureProgram {
@@ -172,7 +181,7 @@ struct FeatureProgram {
 };
 
 using ProgramVariant = std::variant<FeatureProgram, MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram, TurnResolveProgram>;
+                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram>;
 
 struct ProgramSource {
   ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
@@ -180,6 +189,7 @@ struct ProgramSource {
   std::string vertexFile, fragmentFile;
   std::vector<std::string> defines;
   std::string geometryFile;  // empty: none
+  std::string computeFile;   // a compute program: this alone (the others empty)
 };
 ProgramSource programSource(const ProgramVariant& variant);
 

@@ -98,6 +98,24 @@ Result<ShaderProgram> ShaderProgram::build(const std::string& vertexFile, const 
   return p;
 }
 
+Result<ShaderProgram> ShaderProgram::buildCompute(const std::string& computeFile, const std::vector<std::string>& defines) {
+  Result<std::string> text = assembleShader(computeFile, defines);
+  if (!text) return Error{text.error()};
+  Result<Shader> cs = compile(GL_COMPUTE_SHADER, *text, variantLabel(computeFile, defines));
+  if (!cs) return Error{cs.error()};
+  ShaderProgram p;
+  p.label_ = variantLabel(computeFile, defines);
+  p.program_ = Program(glCreateProgram());
+  glAttachShader(p.program_.id(), cs->id());
+  glLinkProgram(p.program_.id());
+  GLint ok = 0;
+  glGetProgramiv(p.program_.id(), GL_LINK_STATUS, &ok);
+  glDetachShader(p.program_.id(), cs->id());
+  if (!ok) return Error{"program " + p.label_ + " failed to link:\n" + infoLog(p.program_.id(), true)};
+  p.source_ = std::move(*text);
+  return p;
+}
+
 GLint ShaderProgram::location(const char* name) {
   auto it = locations_.find(name);
   if (it != locations_.end()) return it->second;
@@ -109,6 +127,7 @@ GLint ShaderProgram::location(const char* name) {
 }
 
 void ShaderProgram::set(const char* n, int v) { glUniform1i(location(n), v); }
+void ShaderProgram::set(const char* n, unsigned v) { glUniform1ui(location(n), v); }
 void ShaderProgram::set(const char* n, float v) { glUniform1f(location(n), v); }
 void ShaderProgram::set(const char* n, const glm::vec2& v) { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
 void ShaderProgram::set(const char* n, const glm::vec3& v) { glUniform3fv(location(n), 1, glm::value_ptr(v)); }

@@ -23,6 +23,9 @@ class ShaderProgram {
   [[nodiscard]] static Result<ShaderProgram> build(const std::string& vertexFile, const std::string& fragmentFile,
                                                    const std::vector<std::string>& defines, const std::string& geometryFile = {});
 
+  // A compute program (GL 4.3; the caller checks the context has compute shaders).
+  [[nodiscard]] static Result<ShaderProgram> buildCompute(const std::string& computeFile, const std::vector<std::string>& defines);
+
   GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }
   // "mesh.vert+mesh.frag -DPATH_PIXEL ...": what error messages name.
@@ -43,6 +46,7 @@ class ShaderProgram {
   void setArray(const char* name, const int* v, int count);
   void setArray(const char* name, const float* v, int count);
   void setArray(const char* name, const glm::ivec2* v, int count);
+  void set(const char* name, unsigned v);
 
  private:
   GLint location(const char* name);

@@ -43,9 +43,11 @@ Result<std::string> expandText(const std::string& name, const char* text, int de
 }  // namespace
 
 namespace {
-Result<std::string> withHeader(Result<std::string> body, const std::vector<std::string>& defines) {
+// Every stage is GLSL 3.30 (the context the viewer asks for); compute needs 4.30, and is only
+// built where the context has it (gpu_deformation.h).
+Result<std::string> withHeader(Result<std::string> body, const std::vector<std::string>& defines, bool compute) {
   if (!body) return body;
-  std::string src = "#version 330 core\n";
+  std::string src = compute ? "#version 430 core\n" : "#version 330 core\n";
   for (const std::string& d : defines) src += "#define " + d + "\n";
   src += "#line 1\n";
   src += *body;
@@ -54,7 +56,8 @@ Result<std::string> withHeader(Result<std::string> body, const std::vector<std::
 }  // namespace
 
 Result<std::string> assembleShader(const std::string& name, const std::vector<std::string>& defines) {
-  return withHeader(expandIncludes(name, 0), defines);
+  const bool compute = name.size() > 5 && name.compare(name.size() - 5, 5, ".comp") == 0;
+  return withHeader(expandIncludes(name, 0), defines, compute);
 }
 
 }  // namespace npr

@@ -39,6 +39,13 @@ class GpuMesh {
   // Whether the mesh deforms: its rest pose is kept beside the drawn one (attributes 8 and 9 of
   // mesh.vert's PATTERN_REST variant), uploaded once.
   bool deforms() const { return restPositions_.id() != 0 || (shared_ && shared_->deforms()); }
+  // The buffers a pose on the GPU reads and writes (animation/gpu_deformation.h); ids 0 where
+  // there are none (a mesh that does not deform has no rest streams; directions before the field).
+  struct PoseStreams {
+    GLuint restPositions = 0, restNormals = 0, positions = 0, normals = 0, directions = 0;
+    std::size_t vertices = 0;
+  };
+  PoseStreams poseStreams() const { return {restPositions_.id(), restNormals_.id(), positions_.id(), normals_.id(), directions_.id(), vertexCount_}; }
   // The hatching direction field, one vector per vertex (attribute 6; orientation/
   // direction_field.h). Without it the attribute reads zero: no direction.
   void uploadDirections(const std::vector<glm::vec3>& directions);

@@ -13,7 +13,7 @@ void sampleTones(const Mesh& mesh, const LightingState& lighting, const glm::mat
                  bool materials, MatchMode mode, std::size_t budget, std::vector<ToneSample>& out) {
   const std::size_t nf = mesh.triangleCount();
   if (nf == 0 || budget == 0) return;
-  const std::size_t stride = std::max<std::size_t>(1, nf / budget);
+  const std::size_t stride = toneSampleStride(nf, budget);
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(modelView)));
   const glm::mat4 mvp = projection * modelView;
   const bool own = materials && mesh.hasAppearance() && mesh.faceMaterials.size() == nf;

@@ -13,6 +13,8 @@
 // tables are rebuilt only when it moves.
 #pragma once
 
+#include <algorithm>
+
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -29,6 +31,9 @@ struct ToneSample {
   float query;   // the match mode's query: 3 max(r,g,b) (intensity), r + g + b (order, colours)
   float weight;  // the triangle's area on screen (normalised device units)
 };
+
+// The triangles sampleTones reads: every `toneSampleStride`-th from half of it.
+inline std::size_t toneSampleStride(std::size_t triangles, std::size_t budget) { return budget == 0 ? 1 : std::max<std::size_t>(1, triangles / budget); }
 
 // Adds the samples of one model seen through `modelView` and `projection`.
 void sampleTones(const Mesh& mesh, const LightingState& lighting, const glm::mat4& modelView, const glm::mat4& projection,

@@ -2,6 +2,7 @@
 #include "renderer/scene/model.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "renderer/animation/deformation.h"
@@ -15,6 +16,8 @@ void Model::adopt(const Mesh& mesh) {
   poseJoints_.clear();
   poseWeights_.clear();
   posedDirections_.clear();
+  gpuPose_.clear();
+  gpuPending_ = cpuStale_ = false;
   if (!mesh.deformation.empty() && !mesh.indices.empty()) {
     // A copy whose positions and normals are rewritten in place: everything derived from the
     // drawn mesh is derived once, from it, and only moves with the pose.
@@ -52,18 +55,47 @@ void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stat
   stats.bufferUploads += 3;
 }
 
-void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights, FrameStats& stats) {
+void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
   if (!posed_) return;
   poseJoints_ = joints;
   poseWeights_ = weights;
+  gpuPending_ = cpuStale_ = true;
+}
+
+Status Model::applyPose(bool onGpu, bool onCpu, gl::ProgramCache& programs, FrameStats& stats) {
+  if (!posed_ || (!gpuPending_ && !cpuStale_)) return okStatus();
+  if (onGpu && (!gpuDeformationSupported() || !GpuDeformation::fits(poseWeights_))) {
+    onGpu = false;
+    onCpu = true;
+  }
+  if (!onGpu) {
+    if (gpuPending_ || cpuStale_) poseOnCpu(true, stats);
+    gpuPending_ = false;
+    return okStatus();
+  }
+  if (onCpu && cpuStale_) poseOnCpu(false, stats);
+  if (!gpuPending_) return okStatus();
+  if (Status st = gpuPose_.pose(*rest_, gpu_, poseJoints_, poseWeights_, programs, stats); !st) return st;
+  if (field_)
+    if (Status st = gpuPose_.poseDirections(*rest_, field_->directions, gpu_, programs, stats); !st) return st;
+  gpuPending_ = false;
+  // The scene's bounds (shadow maps, a depth axis) while the CPU has not made the pose.
+  if (cpuStale_) posed_->radius = gpuPose_.radiusBound(*rest_, poseJoints_, poseWeights_);
+  return okStatus();
+}
+
+void Model::poseOnCpu(bool upload, FrameStats& stats) {
+  const auto t0 = std::chrono::steady_clock::now();
   const bool field = field_ && field_->directions.size() == rest_->positions.size();
-  deformMesh(*rest_, joints, weights, *posed_, field ? &field_->directions : nullptr, &posedDirections_);
-  if (field) gpu_.uploadDirections(posedDirections_);
-  gpu_.updateGeometry(*mesh_);
+  deformMesh(*rest_, poseJoints_, poseWeights_, *posed_, field ? &field_->directions : nullptr, &posedDirections_);
+  if (upload) {
+    if (field) gpu_.uploadDirections(posedDirections_);
+    gpu_.updateGeometry(*mesh_);
+    stats.bufferUploads += 1;
+  }
   triangles_.geometryChanged();
   lines_.geometryChanged();
   strokes_.geometryChanged();
-  stats.bufferUploads += 1;
   // Parts hold copies of the vertices and their own faces' centroids and normals.
   for (auto& p : parts_) {
     Mesh& part = p->mesh;
@@ -74,6 +106,14 @@ void Model::deform(const std::vector<glm::mat4>& joints, const std::vector<float
     part.radius = mesh_->radius;
     p->triangles.geometryChanged();
   }
+  cpuStale_ = false;
+  stats.cpuPoses += 1;
+  stats.cpuPoseMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void Model::poseToneSamples(std::size_t stride) {
+  if (!posed_ || !cpuStale_ || stride == 0) return;
+  deformFaces(*rest_, poseJoints_, poseWeights_, *posed_, stride / 2, stride);
 }
 
 float Model::pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const {
@@ -94,8 +134,8 @@ const DirectionField& Model::directionField(FrameStats& stats) {
     stats.cpuFieldMs = field_->ms;
     if (posed_ && rest_->deformation.skinned() && !poseJoints_.empty()) {
       // Computed on the rest mesh, drawn carried by the current pose.
-      deformMesh(*rest_, poseJoints_, poseWeights_, *posed_, &field_->directions, &posedDirections_);
-      gpu_.uploadDirections(posedDirections_);
+      poseOnCpu(true, stats);
+      gpuPending_ = false;
     } else {
       gpu_.uploadDirections(field_->directions);
     }

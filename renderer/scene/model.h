@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/animation/gpu_deformation.h"
 #include "renderer/core/camera.h"
 #include "renderer/core/frame_stats.h"
 #include "renderer/lines/line_pass.h"
@@ -41,16 +42,27 @@ class Model {
   // (opening one file after another keeps the allocations of the first).
   void reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats);
 
-  // The mesh drawn: for a mesh that deforms (skins, morph targets), the model's own posed copy.
+  // The mesh drawn: for a mesh that deforms (skins, morph targets), the model's own posed copy,
+  // current on the frames that read it on the CPU (applyPose), else the last pose made there.
   const Mesh& mesh() const { return *mesh_; }
   // The mesh as given, in its rest pose: what is attached to the surface is computed on it
   // (the hatching direction field) and carried by the deformation.
   const Mesh& restMesh() const { return *rest_; }
-  // Poses a deforming mesh: morph `weights`, and `joints` (per skin joint, the mesh's rest space
-  // to its posed space). The GPU copy, lighting, lines, parts and the direction field follow;
-  // what is computed once per mesh (edges, the field itself, materials) is kept. Nothing
-  // happens for a mesh that does not deform.
-  void deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights, FrameStats& stats);
+  // Gives a deforming mesh its pose: morph `weights`, and `joints` (per skin joint, the mesh's
+  // rest space to its posed space), made by the next applyPose. Nothing happens for a mesh that
+  // does not deform.
+  void deform(const std::vector<glm::mat4>& joints, const std::vector<float>& weights);
+  // Makes the pose given where the frame reads it: `onGpu` writes the vertex buffers on the GPU
+  // (animation/gpu_deformation.h; with no compute shaders, or too many morph targets at once,
+  // the CPU does it); `onCpu` makes mesh() the pose too, with its lighting, lines, strokes and
+  // parts following, and uploads it unless the GPU wrote the buffers. What is computed once per
+  // mesh (edges, the direction field itself, materials) is kept.
+  [[nodiscard]] Status applyPose(bool onGpu, bool onCpu, gl::ProgramCache& programs, FrameStats& stats);
+  // Whether mesh() lags the pose (only the GPU made it).
+  bool cpuPoseStale() const { return cpuStale_; }
+  // While mesh() lags: poses on the CPU the triangles the tone sampler reads (every `stride`-th
+  // from stride / 2, palette/tone_range.h), their vertices, centroids and normals.
+  void poseToneSamples(std::size_t stride);
   // Model space to the scene's (world) space.
   const glm::mat4& transform() const { return transform_; }
   void setTransform(const glm::mat4& transform) { transform_ = transform; }
@@ -114,6 +126,7 @@ class Model {
   void uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats);
 
   void adopt(const Mesh& mesh);  // mesh_ and rest_ for a new mesh (a posed copy when it deforms)
+  void poseOnCpu(bool upload, FrameStats& stats);
 
   const Mesh* mesh_;
   const Mesh* rest_;
@@ -121,6 +134,9 @@ class Model {
   std::vector<glm::mat4> poseJoints_;     // the pose last given (the field is carried by it)
   std::vector<float> poseWeights_;
   std::vector<glm::vec3> posedDirections_;
+  GpuDeformation gpuPose_;
+  bool gpuPending_ = false;  // the vertex buffers lag the pose given
+  bool cpuStale_ = false;    // mesh() lags it
   glm::mat4 transform_;
   std::string name_;
   float detail_ = 0.0f;

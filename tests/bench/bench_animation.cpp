@@ -1,12 +1,14 @@
 // A deforming mesh against the same mesh still, per path: a torus skinned to two joints and
 // bent a little further every frame, and the same torus with one morph target whose weight
 // changes every frame, against it static (headless, interleaved: one frame of each in turn).
-// The pose is made on the CPU (animation/deformation.h) before each frame; its time is reported
-// beside the frame's and counted in the ratio. The light stays, so a static mesh's per-triangle
+// Each pose is made in the frame (Renderer::applyPoses): on the CPU and uploaded (--deform cpu),
+// or on the GPU (--deform gpu; the per-triangle paths also make it on the CPU, which they read),
+// the CPU's share reported beside the frame. The light stays, so a static mesh's per-triangle
 // paths reuse their lighting while a deforming one's light every triangle every frame: their
 // ratio is the whole per-triangle cost of animation.
 // Run: build/tests/bench/bench_animation [--size WxH] [--frames N] [--quick]
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -58,13 +60,17 @@ int main(int argc, char** argv) {
   if (!target) return 1;
   auto palette = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
   if (!palette) return 1;
-  std::printf("# bench_animation: %s, %dx%d, %d frames, median ms (interleaved); deform: the CPU pose before the frame\n",
+  std::printf("# bench_animation: %s, %dx%d, %d frames, median ms (interleaved); the pose is made in the frame; "
+              "pose: the CPU's share of it\n",
               ctx->info().line().c_str(), args->width, args->height, args->frames);
-  std::printf("%-9s %-9s %9s %9s %9s %9s %9s %9s %8s %8s\n", "vertices", "path", "static", "skinned", "deform", "morphing", "deform",
-              "", "skin x", "morph x");
+  std::printf("%-9s %-9s %8s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "vertices", "path", "static", "skin cpu", "pose", "skin gpu", "pose",
+              "mrph cpu", "pose", "mrph gpu", "pose");
+  std::printf("%-9s %-9s %8s | %8s %8s %8s %8s | %8s %8s %8s %8s\n", "", "", "", "x", "", "x", "", "x", "", "x", "");
   const std::vector<RenderPath> paths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth};
   // Tori of about 100K and 871K vertices.
   const std::vector<int> sides = args->quick ? std::vector<int>{100} : std::vector<int>{317, 933};
+  // Per path: still; skinned posed on the CPU, on the GPU; morphing on the CPU, on the GPU.
+  constexpr std::size_t kConfigs = 5;
   for (int side : sides) {
     const Mesh still = torus(side, side);
     const Mesh skin = skinned(still), morph = morphing(still);
@@ -80,22 +86,28 @@ int main(int argc, char** argv) {
     OrbitCamera cam(20.0f, 25.0f, 3.0f);
     cam.frame(1.0f);
     const CameraMatrices matrices = cam.matrices(float(args->width) / float(args->height));
-    std::vector<std::vector<double>> deformMs(3 * paths.size());
-    int failed = 0, call = 0;
-    const std::vector<FrameTiming> t = timeInterleaved(**rs, *target, 3 * paths.size(), args->frames, 2,
+    std::vector<std::vector<double>> poseMs(kConfigs * paths.size());
+    // The configuration each renderer drew last, whose pose time its stats hold.
+    std::map<Renderer*, long> drawnLast;
+    int failed = 0, call = 0, lastRound = -1;
+    const std::vector<FrameTiming> t = timeInterleaved(**rs, *target, kConfigs * paths.size(), args->frames, 2,
         [&](std::size_t config, int round) {
           RenderSettings s;
-          s.path = paths[config / 3];
-          Renderer* r = config % 3 == 0 ? rs->get() : config % 3 == 1 ? rk->get() : rm->get();
+          s.path = paths[config / kConfigs];
+          const std::size_t kind = config % kConfigs;
+          s.deform = kind == 2 || kind == 4 ? PosePlacement::Gpu : PosePlacement::Cpu;
+          Renderer* r = kind == 0 ? rs->get() : kind <= 2 ? rk->get() : rm->get();
+          if (auto it = drawnLast.find(r); it != drawnLast.end() && it->second >= 0 && lastRound >= 0)
+            poseMs[std::size_t(it->second)].push_back(r->stats().cpuPoseMs);
           const float phase = 0.05f * float(call++);
-          const auto t0 = std::chrono::steady_clock::now();
-          if (config % 3 == 1) {
+          if (kind == 1 || kind == 2) {
             const std::vector<glm::mat4> joints = {glm::mat4(1.0f), glm::rotate(glm::mat4(1.0f), 0.5f * std::sin(phase), glm::vec3(0, 0, 1))};
             if (!r->setModelDeformation(k, joints, {})) ++failed;
-          } else if (config % 3 == 2) {
+          } else if (kind >= 3) {
             if (!r->setModelDeformation(m, {}, {0.5f + 0.5f * std::sin(phase)})) ++failed;
           }
-          if (round >= 0) deformMs[config].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+          drawnLast[r] = long(config);
+          lastRound = round;
           return TimedFrame{matrices, s, r};
         }, failed);
     if (failed) {
@@ -103,10 +115,13 @@ int main(int argc, char** argv) {
       return 1;
     }
     for (std::size_t p = 0; p < paths.size(); ++p) {
-      const double base = t[3 * p].medianMs, sk = t[3 * p + 1].medianMs, mo = t[3 * p + 2].medianMs;
-      const double dk = median(deformMs[3 * p + 1]), dm = median(deformMs[3 * p + 2]);
-      std::printf("%-9zu %-9s %9.2f %9.2f %9.2f %9.2f %9.2f %9s %7.2fx %7.2fx\n", still.positions.size(), renderPathName(paths[p]), base, sk, dk, mo, dm, "",
-                  (sk + dk) / base, (mo + dm) / base);
+      const auto at = [&](std::size_t kind) { return t[kConfigs * p + kind].medianMs; };
+      const auto pose = [&](std::size_t kind) { return poseMs[kConfigs * p + kind].empty() ? 0.0 : median(poseMs[kConfigs * p + kind]); };
+      const double base = at(0);
+      std::printf("%-9zu %-9s %8.2f | %8.2f %8.2f %8.2f %8.2f | %8.2f %8.2f %8.2f %8.2f\n", still.positions.size(), renderPathName(paths[p]), base,
+                  at(1), pose(1), at(2), pose(2), at(3), pose(3), at(4), pose(4));
+      std::printf("%-9s %-9s %8s | %7.2fx %8s %7.2fx %8s | %7.2fx %8s %7.2fx %8s\n", "", "", "", at(1) / base, "", at(2) / base, "", at(3) / base, "",
+                  at(4) / base, "");
     }
     std::fflush(stdout);
   }

@@ -200,5 +200,29 @@ TEST(Deformation, AVertexWithNoWeightStaysAtRest) {
   EXPECT_EQ(posed.positions[0], rest.positions[0]);
 }
 
+// The tone sampler's triangles posed alone (while the GPU holds the whole pose) are posed
+// exactly as the whole mesh's pose has them, and no other triangle is touched.
+TEST(Deformation, PosingEveryStrideThTriangleMatchesTheWholePose) {
+  Mesh rest = test::skinnedCylinder(24, 16);
+  rest.deformation.targetPositions.assign(1, std::vector<glm::vec3>(rest.positions.size(), glm::vec3(0.0f, 0.1f, 0.0f)));
+  rest.deformation.targetNormals.assign(1, std::vector<glm::vec3>(rest.positions.size(), glm::vec3(0.0f)));
+  Mesh whole = rest, some = rest;
+  deformMesh(rest, test::bendJoints(75.0f), {0.5f}, whole);
+  const std::size_t stride = 7, first = stride / 2;
+  deformFaces(rest, test::bendJoints(75.0f), {0.5f}, some, first, stride);
+  for (std::size_t f = 0; f < rest.triangleCount(); ++f) {
+    const bool sampled = f >= first && (f - first) % stride == 0;
+    const Mesh& want = sampled ? whole : rest;
+    EXPECT_EQ(some.faceCentroids[f], want.faceCentroids[f]) << "triangle " << f;
+    EXPECT_EQ(some.faceNormals[f], want.faceNormals[f]) << "triangle " << f;
+    if (!sampled) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = rest.indices[3 * f + std::size_t(k)];
+      EXPECT_EQ(some.positions[v], whole.positions[v]);
+      EXPECT_EQ(some.normals[v], whole.normals[v]);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace npr

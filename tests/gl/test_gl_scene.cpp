@@ -311,6 +311,73 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
   }
 }
 
+// A pose made on the GPU (animation/gpu_deformation.h) draws what the CPU's pose draws: skin and
+// morph target together, in every GPU-lit path, with shadows from the posed mesh and the
+// hatching field carried by the skin. The GPU alone poses while nothing reads the mesh on the
+// CPU; a per-triangle path then makes the CPU's pose, which lagged until then.
+TEST_F(SceneFixture, APoseMadeOnTheGpuDrawsWhatTheCpuPoseDraws) {
+  Mesh rest = test::skinnedCylinder(48, 40);
+  // One morph target: the surface pushed out along its normal, more towards the head.
+  rest.deformation.targetPositions.assign(1, std::vector<glm::vec3>(rest.positions.size()));
+  rest.deformation.targetNormals.assign(1, std::vector<glm::vec3>(rest.positions.size(), glm::vec3(0.0f)));
+  for (std::size_t i = 0; i < rest.positions.size(); ++i)
+    rest.deformation.targetPositions[0][i] = 0.15f * (rest.positions[i].y + 0.75f) * rest.normals[i];
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  Mesh copy = rest;  // the pose as a mesh that does not deform
+  deformMesh(rest, test::bendJoints(70.0f), {0.8f}, copy);
+  copy.deformation = MeshDeformation{};
+  for (RenderPath path : {RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
+    for (bool field : {false, true}) {
+      SCOPED_TRACE(std::string(pathInfo(path).name) + (field ? ", hatching along the curvature, shadows" : ""));
+      RenderSettings s;
+      s.path = path;
+      s.shadows = field;
+      s.ground = field;
+      if (field) s.orient.source = OrientSource::Curvature;
+      r->clearModels();
+      const ModelId id = r->addModel(rest);
+      (void)test::renderImage(*r, cam, s, kSize, kSize);
+      ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {0.8f}));
+      const ImageRGBA8 gpu = test::renderImage(*r, cam, s, kSize, kSize);
+      EXPECT_EQ(r->stats().gpuPoses, 1);
+      EXPECT_EQ(r->stats().cpuPoses, 0) << "the CPU posed a mesh nothing read there";
+      EXPECT_TRUE(r->model(id)->cpuPoseStale());
+      EXPECT_EQ(r->stats().meshCachesBuilt, 0);
+      // --deform cpu: the CPU poses and uploads, as before.
+      r->clearModels();
+      const ModelId cpuId = r->addModel(rest);
+      (void)test::renderImage(*r, cam, s, kSize, kSize);
+      ASSERT_TRUE(r->setModelDeformation(cpuId, test::bendJoints(70.0f), {0.8f}));
+      s.deform = PosePlacement::Cpu;
+      const ImageRGBA8 cpu = test::renderImage(*r, cam, s, kSize, kSize);
+      EXPECT_EQ(r->stats().gpuPoses, 0);
+      EXPECT_EQ(r->stats().cpuPoses, 1);
+      // The GPU's float arithmetic is not the CPU's: an edge pixel may round the other way.
+      EXPECT_LE(test::countDiffering(gpu, cpu), kSize * kSize / 400) << "the GPU's pose is not drawn as the CPU's";
+      if (field) continue;  // a static copy's field is the posed surface's own, not the rest one carried
+      r->clearModels();
+      (void)r->addModel(copy);
+      EXPECT_EQ(test::countDiffering(cpu, test::renderImage(*r, cam, s, kSize, kSize)), 0);
+    }
+  }
+  // A per-triangle path reads the faces on the CPU: the pose the GPU alone made is made there.
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  r->clearModels();
+  const ModelId id = r->addModel(rest);
+  ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {0.8f}));
+  (void)test::renderImage(*r, cam, s, kSize, kSize);
+  ASSERT_TRUE(r->model(id)->cpuPoseStale());
+  s.path = RenderPath::Triangle;
+  const ImageRGBA8 triangles = test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_EQ(r->stats().cpuPoses, 1);
+  EXPECT_FALSE(r->model(id)->cpuPoseStale());
+  r->clearModels();
+  (void)r->addModel(copy);
+  EXPECT_EQ(test::countDiffering(triangles, test::renderImage(*r, cam, s, kSize, kSize)), 0);
+}
+
 // The object pattern on a bending surface: each surface point keeps its texel as the skinned
 // cylinder bends 90 degrees (it is read at the rest pose's point, so by construction; this
 // measures it). A palette whose one layer spells each texel's index in its colour; surface
