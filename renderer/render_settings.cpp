@@ -166,6 +166,9 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
           dash.x > LineSet::kMaxDash || dash.y > LineSet::kMaxDash || (dash.x == 0.0f) != (dash.y == 0.0f))
         return why = "dash must be ON,OFF in pixels (0..1000 each; 0,0 for solid)", false;
       set.dash = dash;
+    } else if (key == "taper") {
+      if (!parseNumber(value, set.taper) || !(set.taper >= 0.0f) || set.taper > LineSet::kMaxTaper)
+        return why = "taper must be a number of pixels in 0..1000 (0: blunt ends)", false;
     } else if (key == "objects") {
       set.objects.clear();
       for (const std::string& name : split(value, ','))
@@ -175,7 +178,7 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, falloff, sketchy, objects)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, falloff, sketchy, objects)", false;
     }
   }
   return true;
@@ -255,6 +258,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     out += " width=" + formatFloat(s.width);
     if (s.colour) out += " colour=" + formatFloat(s.colour->r) + "," + formatFloat(s.colour->g) + "," + formatFloat(s.colour->b);
     if (s.dash.x > 0.0f) out += " dash=" + formatFloat(s.dash.x) + "," + formatFloat(s.dash.y);
+    if (s.taper > 0.0f) out += " taper=" + formatFloat(s.taper);
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];

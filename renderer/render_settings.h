@@ -38,16 +38,19 @@ struct LineSet {
   glm::vec2 dash{0.0f};               // pixels on, off; on 0: solid
   bool falloff = false;               // thinner with distance
   bool sketchy = false;
+  // Each stroke (a chain of edges, lines/line_chains.h) narrows to a point over this many
+  // pixels at both ends (0: blunt).
+  float taper = 0.0f;
   // The objects it draws on, by name, '*' and '?' as wildcards (empty: every object and the
   // scene's intersections; a set naming objects leaves intersections to the others).
   std::vector<std::string> objects;
-  static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f;
+  static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
   // Whether it draws on the object named `object` (null: the scene's intersection lines).
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]`, or `none`. On failure `why`
+// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);
 std::string formatLineSets(const std::vector<LineSet>& sets);  // one set per line; "none" when empty

@@ -1,12 +1,18 @@
 // Feature line colour with an antialiased rim one pixel wide. SKETCHY strokes taper over
 // their first and last few pixels and press harder or lighter along their length. DASHED
-// leaves gaps: dashes uDash.x pixels long every uDash.x + uDash.y (hidden lines: 6 in 10 by
-// default). uInk lightens (the hidden lines of the base style).
+// leaves gaps along the stroke: dashes uDash.x pixels long every uDash.x + uDash.y (hidden
+// lines: 6 in 10 by default). TAPERED narrows the stroke to points over uTaper pixels at its
+// ends. uInk lightens (the hidden lines of the base style).
 in vec3 vColour;
 in float vAcross;
 flat in float vHalfWidth;
 #ifdef DASHED
 in float vDash;
+#endif
+#ifdef TAPERED
+in float vArc;
+flat in float vChain;   // negative: a closed loop, with no ends
+uniform float uTaper;  // pixels at each end
 #endif
 #ifdef SKETCHY
 in float vAlong;
@@ -32,6 +38,13 @@ void main() {
 #endif
 #ifdef DASHED
   if (mod(vDash, uDash.x + uDash.y) > uDash.x) discard;
+#endif
+#ifdef TAPERED
+  // To a point at both ends of the stroke; a stroke shorter than two tapers is a spindle.
+  if (vChain > 0.0) {
+    float taperPixels = max(min(uTaper, 0.5 * vChain), 1e-3);
+    halfWidth *= clamp(min(vArc, vChain - vArc) / taperPixels, 0.0, 1.0);
+  }
 #endif
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;

@@ -4,9 +4,16 @@
 // SKETCHY draws each edge as three jittered sub-strokes whose jitter is a hash of the edge's
 // endpoints: stable from frame to frame. Each sub-stroke tapers to a point at both ends and its
 // pressure (darkness and width) changes along it between two hashed values, as a pencil's does. DEPTH_FALLOFF thins lines with distance.
+// Edges come chained into strokes (renderer/lines/line_chains.h): DASHED runs the dashes along
+// the stroke's parameter, kept from frame to frame, so they neither restart at each edge nor
+// crawl as the view turns; TAPERED narrows the stroke to points at its chain's ends. Both are in
+// pixels at the object's centre (uParamPixels per object unit).
 layout(location = 0) in vec3 aStart;
 layout(location = 1) in vec3 aEnd;
 layout(location = 2) in float aKind;
+layout(location = 3) in vec2 aParam;   // the stroke's parameter at the start and the end
+layout(location = 4) in vec2 aArc;     // the distance from the chain's start to them
+layout(location = 5) in float aLength; // the chain's length; negative: a closed loop
 
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
@@ -21,12 +28,17 @@ uniform float uFalloffDepth;
 uniform float uValleyPixels;
 uniform vec4 uEye;
 uniform vec2 uPixelScale;
+uniform float uParamPixels;
 
 out vec3 vColour;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
 #ifdef DASHED
-out float vDash;           // pixels along the line from its start, for the dashes
+out float vDash;           // the stroke's parameter in pixels, for the dashes
+#endif
+#ifdef TAPERED
+out float vArc;            // pixels from the chain's start
+flat out float vChain;     // the chain's length in pixels
 #endif
 #ifdef SKETCHY
 out float vAlong;          // pixels from the stroke's start (its cap included)
@@ -93,8 +105,14 @@ void main() {
   vec4 p = end ? p1 : p0;
   vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
   vAcross = side * vHalfWidth;
+  // The quad's caps reach half a width past the segment's ends, along the parameter's way.
 #ifdef DASHED
-  vDash = end ? len + 0.5 * width : -0.5 * width;
+  float dashWay = aParam.y >= aParam.x ? 1.0 : -1.0;
+  vDash = (end ? aParam.y : aParam.x) * uParamPixels + (end ? 0.5 : -0.5) * width * dashWay;
+#endif
+#ifdef TAPERED
+  vArc = (end ? aArc.y : aArc.x) * uParamPixels + (end ? 0.5 : -0.5) * width * (aArc.y >= aArc.x ? 1.0 : -1.0);
+  vChain = aLength * uParamPixels;
 #endif
 #ifdef SKETCHY
   vLength = len + width;

@@ -119,6 +119,7 @@ struct SourceOf {
     if (l.sketchy) s.defines.push_back("SKETCHY");
     if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
     if (l.dashed) s.defines.push_back("DASHED");
+    if (l.tapered) s.defines.push_back("TAPERED");
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

@@ -115,6 +115,7 @@ struct LineProgram {
   bool sketchy = false;
   bool depthFalloff = false;
   bool dashed = false;  // dashes along the line (hidden lines by default, line sets' dash=ON,OFF)
+  bool tapered = false; // strokes narrowed to points at their chains' ends (line sets' taper=PIXELS)
 };
 
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the

@@ -9,9 +9,21 @@
 #include "renderer/gl/pass_state.h"
 
 namespace npr {
+namespace {
+// Object units a screen pixel spans at the lines' origin (the object's centre).
+float centrePixel(const CameraMatrices& placed, const glm::ivec4& viewport) {
+  const float pixel = 2.0f / (placed.projection[1][1] * float(std::max(viewport.w, 1)));
+  const bool perspective = placed.projection[3][3] == 0.0f;
+  return perspective ? pixel * glm::length(glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 0, 1))) : pixel;
+}
+}  // namespace
+
 void LinePass::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
   edges_.reset();
+  // Vertices of consecutive views' strokes this near are the same place on the surface.
+  const float tolerance = mesh ? 1e-3f * mesh->radius : 0.0f;
+  for (LineChains* c : {&staticChains_, &silhouetteChains_, &suggestiveChains_}) c->reset(tolerance);
   uploadedCreaseAngle_ = -1.0f;
   silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
   suggestive_.reset();
@@ -44,7 +56,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     // Static lines are creases, then boundaries, then material boundaries: the parts asked for
     // are drawn as ranges.
     const auto& lines = edges_->staticLines(ls.creaseAngle);
-    gl::uploadBuffer(staticLines_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STATIC_DRAW);
+    const auto& chained = staticChains_.update(lines);
+    gl::uploadBuffer(staticLines_, chained.data(), chained.size() * sizeof(ChainedLine), GL_STATIC_DRAW);
     staticCount_ = lines.size();
     const auto count = [&](EdgeKind k) {
       return static_cast<std::size_t>(std::count_if(lines.begin(), lines.end(), [k](const FeatureLine& l) { return l.kind == float(k); }));
@@ -56,8 +69,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   const glm::vec3 eye = glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 0, 0, 1));
   if ((kinds & 1u) && !(eye == silhouetteEye_)) {
-    const auto& lines = edges_->silhouettes(eye);
-    gl::uploadBuffer(silhouettes_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STREAM_DRAW);
+    const auto& lines = silhouetteChains_.update(edges_->silhouettes(eye), 2.0f * centrePixel(camera, viewport));
+    gl::uploadBuffer(silhouettes_, lines.data(), lines.size() * sizeof(ChainedLine), GL_STREAM_DRAW);
     silhouetteCount_ = lines.size();
     silhouetteEye_ = eye;
     ++stats.bufferUploads;
@@ -67,8 +80,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
       suggestive_ = std::make_unique<SuggestiveContours>(*mesh_);
       ++stats.meshCachesBuilt;
     }
-    const auto& lines = suggestive_->lines(eye, ls.suggestiveThreshold);
-    gl::uploadBuffer(suggestiveLines_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STREAM_DRAW);
+    const auto& lines = suggestiveChains_.update(suggestive_->lines(eye, ls.suggestiveThreshold), 2.0f * centrePixel(camera, viewport));
+    gl::uploadBuffer(suggestiveLines_, lines.data(), lines.size() * sizeof(ChainedLine), GL_STREAM_DRAW);
     suggestiveCount_ = lines.size();
     suggestiveEye_ = eye;
     suggestiveThreshold_ = ls.suggestiveThreshold;
@@ -114,6 +127,7 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.hiddenWidthScale = s.hiddenInk = 1.0f;  // the set says how its hidden lines look
   s.sketchy = set.sketchy;
   s.falloff = set.falloff;
+  s.taper = set.taper;
   s.kinds = set.kinds;
   return s;
 }
@@ -134,7 +148,8 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     if (!(hidden ? style.hidden : style.visible)) continue;
     const bool sketchy = style.sketchy && !hidden;
     const glm::vec2 dash = hidden ? style.hiddenDash : style.dash;
-    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f}, stats.shaderBuilds);
+    const bool tapered = style.taper > 0.0f && !hidden;
+    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
@@ -154,18 +169,28 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     p.set("uValleyPixels", 2.0f * (0.5f * width + 1.0f) * 1.8f);
     p.set("uEye", perspective ? glm::vec4(eye, 1.0f) : glm::vec4(glm::normalize(glm::vec3(glm::inverse(placed.view) * glm::vec4(0, 0, 1, 0))), 0.0f));
     p.set("uPixelScale", perspective ? glm::vec2(pixel, 0.0f) : glm::vec2(0.0f, pixel));
+    // Dashes and tapers in pixels at the lines' origin (the object's centre): constant along a
+    // stroke, and unchanged as the view turns about it.
+    p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
+    if (tapered) p.set("uTaper", style.taper);
     glBindVertexArray(vao.id());
     // Sketchy lines draw each edge three times, jittered differently in the shader.
     const int repeat = sketchy ? 3 : 1;
     for (const LineRange& r : ranges) {
       if (r.count == 0) continue;
       glBindBuffer(GL_ARRAY_BUFFER, r.buffer->id());
-      const auto base = static_cast<std::uintptr_t>(r.first * sizeof(FeatureLine));
-      for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
-      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, a)));
-      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, b)));
-      glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(FeatureLine), reinterpret_cast<void*>(base + offsetof(FeatureLine, kind)));
-      for (GLuint a = 0; a < 3; ++a) glVertexAttribDivisor(a, GLuint(repeat));
+      const auto base = static_cast<std::uintptr_t>(r.first * sizeof(ChainedLine));
+      const auto attribute = [&](GLuint a, int components, std::size_t offset) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, components, GL_FLOAT, GL_FALSE, sizeof(ChainedLine), reinterpret_cast<void*>(base + offset));
+        glVertexAttribDivisor(a, GLuint(repeat));
+      };
+      attribute(0, 3, offsetof(ChainedLine, a));
+      attribute(1, 3, offsetof(ChainedLine, b));
+      attribute(2, 1, offsetof(ChainedLine, kind));
+      attribute(3, 2, offsetof(ChainedLine, param));
+      attribute(4, 2, offsetof(ChainedLine, arc));
+      attribute(5, 1, offsetof(ChainedLine, length));
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

@@ -16,13 +16,14 @@
 #include "renderer/gl/gl_handle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lines/feature_edges.h"
+#include "renderer/lines/line_chains.h"
 #include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/render_settings.h"
 
 namespace npr {
 
-// A buffer of FeatureLines and the part of it to draw.
+// A buffer of ChainedLines (line_chains.h) and the part of it to draw.
 struct LineRange {
   const gl::Buffer* buffer;
   std::size_t first, count;
@@ -38,6 +39,7 @@ struct LineStyle {
   glm::vec2 hiddenDash{6.0f, 4.0f};
   float hiddenWidthScale = 1.0f, hiddenInk = 1.0f;  // the hidden parts thinner and lighter
   bool sketchy = false, falloff = false;
+  float taper = 0.0f;                   // pixels at each end of a stroke (0: blunt)
   std::uint8_t kinds = 0;               // bit EdgeKind: what it draws
   // The base style on the object named `object` (null: the scene's intersections).
   static LineStyle base(const LineSettings& ls, const std::string* object);
@@ -59,6 +61,8 @@ class LinePass {
   void setMesh(const Mesh* mesh);
   // The mesh was deformed in place: the lines follow (their edges are not searched again).
   void geometryChanged();
+  // How the silhouettes' stroke parameters moved at the last view change (line_chains.h).
+  const ChainCoherence& silhouetteCoherence() const { return silhouetteChains_.coherence(); }
   // `object`: the model's name, which line sets may select.
   [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const std::string& object, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
@@ -73,6 +77,9 @@ class LinePass {
   std::unique_ptr<SuggestiveContours> suggestive_;  // made when first drawn (it estimates the curvature)
   gl::VertexArray vao_;
   gl::Buffer staticLines_, silhouettes_, suggestiveLines_;
+  // Each kind's edges chained into strokes; the silhouettes' and suggestive contours' parameters
+  // carried from one view to the next.
+  LineChains staticChains_, silhouetteChains_, suggestiveChains_;
   std::size_t staticCount_ = 0, creaseCount_ = 0, boundaryCount_ = 0, silhouetteCount_ = 0, suggestiveCount_ = 0;
   float uploadedCreaseAngle_ = -1.0f;
   glm::vec3 silhouetteEye_{NAN}, suggestiveEye_{NAN};

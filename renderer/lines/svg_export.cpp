@@ -4,8 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <sstream>
+
+#include "renderer/lines/line_chains.h"
 
 namespace npr {
 namespace {
@@ -36,42 +37,24 @@ struct Projector {
   }
 };
 
-// Joins segments that share an end (to a 1/1000 pixel) into chains, in drawing order: chains
-// start at ends where the lines do not simply continue (a free end or a junction), and what is
-// left after that are closed loops.
+// Joins segments that share an end (to a 1/1000 pixel) into chains (line_chains.h), in drawing
+// order: chains start at free ends and junctions; what is left are closed loops.
 std::vector<std::vector<glm::vec2>> chain(const std::vector<std::pair<glm::vec2, glm::vec2>>& segments) {
-  auto key = [](glm::vec2 p) { return std::make_pair(std::llround(p.x * 1000.0), std::llround(p.y * 1000.0)); };
-  std::map<std::pair<long long, long long>, std::vector<std::size_t>> at;
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    at[key(segments[i].first)].push_back(i);
-    at[key(segments[i].second)].push_back(i);
+  auto key = [](glm::vec2 p) { return ChainKey{std::llround(p.x * 1000.0), std::llround(p.y * 1000.0), 0}; };
+  std::vector<ChainKey> ends;
+  ends.reserve(2 * segments.size());
+  for (const auto& [a, b] : segments) {
+    ends.push_back(key(a));
+    ends.push_back(key(b));
   }
-  std::vector<char> used(segments.size(), 0);
   std::vector<std::vector<glm::vec2>> chains;
-  auto walk = [&](std::size_t first, bool fromSecond) {
+  for (const std::vector<ChainStep>& steps : chainSegments(ends)) {
     std::vector<glm::vec2> c;
-    std::size_t s = first;
-    glm::vec2 end = fromSecond ? segments[s].second : segments[s].first;
-    c.push_back(end);
-    while (true) {
-      used[s] = 1;
-      end = key(segments[s].first) == key(end) ? segments[s].second : segments[s].first;
-      c.push_back(end);
-      const auto& next = at[key(end)];
-      if (next.size() != 2) break;  // a free end or a junction: the chain stops
-      const std::size_t n = next[0] == s ? next[1] : next[0];
-      if (used[n]) break;
-      s = n;
-    }
+    const auto& first = segments[steps.front().segment];
+    c.push_back(steps.front().reversed ? first.second : first.first);
+    for (const ChainStep& s : steps) c.push_back(s.reversed ? segments[s.segment].first : segments[s.segment].second);
     chains.push_back(std::move(c));
-  };
-  for (std::size_t i = 0; i < segments.size(); ++i) {
-    if (used[i]) continue;
-    if (at[key(segments[i].first)].size() != 2) walk(i, false);
-    else if (at[key(segments[i].second)].size() != 2) walk(i, true);
   }
-  for (std::size_t i = 0; i < segments.size(); ++i)
-    if (!used[i]) walk(i, false);
   return chains;
 }
 

@@ -70,6 +70,7 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
           if (pick(2)) set += " width=" + formatFloat(float(uniform(0.1, 64)));
           if (pick(2)) set += " colour=" + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + ",0";
           if (pick(2)) set += " dash=" + formatFloat(float(uniform(0.5, 20))) + "," + formatFloat(float(uniform(0.5, 20)));
+          if (pick(2)) set += " taper=" + formatFloat(float(uniform(0, 100)));
           if (pick(2)) set += std::string(" falloff=") + (pick(2) ? "on" : "off");
           if (pick(2)) set += std::string(" sketchy=") + (pick(2) ? "on" : "off");
           out += (out.empty() ? "" : "\n") + set;
@@ -177,6 +178,8 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
            {"crease dash=4", "set 1: dash must be"},
            {"crease visibility=sometimes", "set 1: visibility must be"},
            {"crease taper", "set 1: expected KEY=VALUE"},
+           {"crease taper=-1", "set 1: taper must be"},
+           {"crease taper=nan", "set 1: taper must be"},
            {"crease shade=on", "set 1: unknown key 'shade'"},
            {";", "no set"}}) {
     EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;

@@ -5,7 +5,7 @@
 // Hidden lines (--hidden-lines) are drawn only where the surface hides them, dashed.
 // Intersection lines are drawn where two objects cross and nowhere else, found again when an
 // object moves and not when the camera does. Line sets draw the kinds and parts they select in
-// their own colour and width.
+// their own colour and width; strokes taper and dash along their whole chain of edges.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -314,6 +314,76 @@ TEST_F(OutlineFixture, LineSetsDrawTheirKindsAndPartsInTheirOwnStyle) {
   // A set that draws only the hidden parts adds nothing visible: without it, no green at all.
   l.sets.pop_back();
   EXPECT_EQ(count(draw(cube, l), 1), 0);
+}
+
+// A roof: a ridge along x (64 edges of about 4 pixels here) between two slopes at right angles,
+// its crease one open chain.
+Mesh roofMesh() {
+  const int n = 64, m = 8;
+  std::vector<glm::vec3> at;
+  for (int j = 0; j <= m; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const float x = -0.8f + 1.6f * float(i) / float(n), z = -0.6f + 1.2f * float(j) / float(m);
+      at.push_back({x, 0.2f - std::fabs(z), z});
+    }
+  std::vector<std::array<int, 3>> tris;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      tris.push_back({a, c, b});
+      tris.push_back({b, c, d});
+    }
+  Mesh mesh;
+  buildTriMesh(at, tris, mesh);
+  finalizeMesh(mesh);
+  return mesh;
+}
+
+TEST_F(OutlineFixture, StrokesTaperAndDashAlongTheirWholeChain) {
+  const Mesh roof = roofMesh();
+  // Ink per column over the ridge's span: the ridge runs across the picture.
+  struct Profile {
+    int left = -1, right = -1;
+    std::vector<int> ink;
+  };
+  auto profile = [&](const char* sets) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    const LineMask mask = lineMask(draw(roof, l));
+    Profile p;
+    p.ink.assign(kSize, 0);
+    for (int x = 0; x < kSize; ++x) {
+      for (int y = 0; y < kSize; ++y) p.ink[std::size_t(x)] += mask.at(x, y);
+      if (p.ink[std::size_t(x)] > 0) {
+        if (p.left < 0) p.left = x;
+        p.right = x;
+      }
+    }
+    return p;
+  };
+  const auto mean = [](const Profile& p, int from, int to) {
+    double sum = 0.0;
+    for (int x = from; x <= to; ++x) sum += p.ink[std::size_t(x)];
+    return sum / double(to - from + 1);
+  };
+  const Profile blunt = profile("crease width=8 colour=0,0,0"), tapered = profile("crease width=8 taper=40 colour=0,0,0");
+  ASSERT_GT(blunt.right - blunt.left, 150) << "the ridge is not across the picture";
+  const int mid = (blunt.left + blunt.right) / 2;
+  const double bluntEnds = 0.5 * (mean(blunt, blunt.left, blunt.left + 8) + mean(blunt, blunt.right - 8, blunt.right));
+  const double taperEnds = 0.5 * (mean(tapered, blunt.left, blunt.left + 8) + mean(tapered, blunt.right - 8, blunt.right));
+  const double bluntMid = mean(blunt, mid - 10, mid + 10), taperMid = mean(tapered, mid - 10, mid + 10);
+  std::printf("taper: ink a column at the ends %.1f px tapered, %.1f blunt; in the middle %.1f and %.1f\n", taperEnds, bluntEnds, taperMid, bluntMid);
+  EXPECT_LT(taperEnds, 0.5 * bluntEnds) << "the stroke does not narrow at its ends";
+  EXPECT_NEAR(taperMid, bluntMid, 0.15 * bluntMid) << "the taper reaches into the middle of the stroke";
+  // Dashes 8 on, 8 off along the whole stroke: about half its columns inked. Restarted at every
+  // 4-pixel edge they would all be ink.
+  const Profile dashed = profile("crease width=3 dash=8,8 colour=0,0,0");
+  int inked = 0, span = 0;
+  for (int x = blunt.left + 4; x <= blunt.right - 4; ++x, ++span) inked += dashed.ink[std::size_t(x)] > 0;
+  std::printf("dashes 8,8 along the ridge: %d of %d columns inked\n", inked, span);
+  EXPECT_GT(inked, span * 3 / 10);
+  EXPECT_LT(inked, span * 7 / 10) << "dashes restart at each edge instead of running along the stroke";
 }
 
 TEST_F(OutlineFixture, ALineSetNamingAnObjectDrawsOnThatObjectOnly) {

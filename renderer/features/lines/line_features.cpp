@@ -67,7 +67,8 @@ class IntersectionLinesFeature final : public Feature {
         vao_ = gl::createVertexArray();
         buffer_ = gl::createBuffer();
       }
-      gl::uploadBuffer(buffer_, lines.data(), lines.size() * sizeof(FeatureLine), GL_STATIC_DRAW);
+      const auto& chained = chains_.update(lines);
+      gl::uploadBuffer(buffer_, chained.data(), chained.size() * sizeof(ChainedLine), GL_STATIC_DRAW);
       count_ = lines.size();
       sceneVersion_ = f.scene.version();
       ++f.stats.intersectionSearches;
@@ -84,6 +85,7 @@ class IntersectionLinesFeature final : public Feature {
  private:
   gl::VertexArray vao_;
   gl::Buffer buffer_;
+  LineChains chains_{1e-4f};  // world units: vertices this near continue the last pose's strokes
   std::size_t count_ = 0;
   unsigned sceneVersion_ = 0;
 };
