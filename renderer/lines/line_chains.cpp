@@ -9,14 +9,6 @@
 namespace npr {
 namespace {
 
-struct KeyHash {
-  std::size_t operator()(const ChainKey& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::int64_t v : k) h = (h ^ std::uint64_t(v)) * 1099511628211ull;
-    return std::size_t(h ^ (h >> 29));
-  }
-};
-
 ChainKey exactKey(const glm::vec3& p) {
   ChainKey k{};
   for (int c = 0; c < 3; ++c) {
@@ -37,12 +29,29 @@ double median(std::vector<float>& v) {
 
 std::vector<std::vector<ChainStep>> chainSegments(const std::vector<ChainKey>& ends) {
   const std::size_t n = ends.size() / 2;
-  std::unordered_map<ChainKey, std::vector<std::uint32_t>, KeyHash> at;  // end -> segments meeting there
-  at.reserve(ends.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    at[ends[2 * i]].push_back(std::uint32_t(i));
-    if (ends[2 * i + 1] != ends[2 * i]) at[ends[2 * i + 1]].push_back(std::uint32_t(i));
+  // Ends sorted by key: the ends that join are neighbours. at[e]: the first of end e's group in
+  // `order`; a group of two is a chain running on.
+  std::vector<std::uint32_t> order(2 * n);
+  for (std::uint32_t e = 0; e < 2 * n; ++e) order[e] = e;
+  std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return ends[x] < ends[y] || (ends[x] == ends[y] && x < y); });
+  std::vector<std::uint32_t> groupStart(2 * n), groupSize(2 * n), at(2 * n);
+  for (std::size_t k = 0; k < order.size();) {
+    std::size_t m = k;
+    while (m < order.size() && ends[order[m]] == ends[order[k]]) ++m;
+    for (std::size_t q = k; q < m; ++q) {
+      at[order[q]] = std::uint32_t(k);
+      groupStart[q] = std::uint32_t(k);
+      groupSize[q] = std::uint32_t(m - k);
+    }
+    k = m;
   }
+  // The segments meeting at end e's place (a segment whose two ends coincide counts once).
+  const auto meeting = [&](std::uint32_t e) { return groupSize[at[e]]; };
+  const auto other = [&](std::uint32_t e) {  // the other segment at e's place, when two meet
+    const std::uint32_t g = at[e];
+    const std::uint32_t a = order[g], b = order[g + 1];
+    return (a / 2 == e / 2 ? b : a);
+  };
   std::vector<char> used(n, 0);
   std::vector<std::vector<ChainStep>> chains;
   const auto walk = [&](std::uint32_t first, bool reversed) {
@@ -51,20 +60,20 @@ std::vector<std::vector<ChainStep>> chainSegments(const std::vector<ChainKey>& e
     while (true) {
       used[s] = 1;
       c.push_back({s, reversed});
-      const ChainKey& end = ends[2 * std::size_t(s) + (reversed ? 0 : 1)];
-      const std::vector<std::uint32_t>& next = at[end];
-      if (next.size() != 2) break;  // a free end or a junction: the chain stops
-      const std::uint32_t t = next[0] == s ? next[1] : next[0];
-      if (used[t]) break;
-      reversed = ends[2 * std::size_t(t) + 1] == end;  // walked from the end it shares
+      const std::uint32_t end = 2 * s + (reversed ? 0 : 1);
+      if (meeting(end) != 2) break;  // a free end or a junction: the chain stops
+      const std::uint32_t next = other(end);
+      const std::uint32_t t = next / 2;
+      if (t == s || used[t]) break;
+      reversed = next % 2 == 1;  // walked from the end it shares
       s = t;
     }
     chains.push_back(std::move(c));
   };
   for (std::uint32_t i = 0; i < n; ++i) {
     if (used[i]) continue;
-    if (at[ends[2 * i]].size() != 2) walk(i, false);
-    else if (at[ends[2 * i + 1]].size() != 2) walk(i, true);
+    if (meeting(2 * i) != 2) walk(i, false);
+    else if (meeting(2 * i + 1) != 2) walk(i, true);
   }
   for (std::uint32_t i = 0; i < n; ++i)
     if (!used[i]) walk(i, false);  // loops
@@ -72,7 +81,7 @@ std::vector<std::vector<ChainStep>> chainSegments(const std::vector<ChainKey>& e
 }
 
 std::uint64_t LineChains::cell(const glm::vec3& p) const {
-  const glm::vec3 q = glm::floor(p / std::max(tolerance_, 1e-7f));
+  const glm::vec3 q = glm::floor(p / cellSize());
   const auto c = [](float v) { return std::uint64_t(std::int64_t(std::clamp(v, -1e6f, 1e6f)) & 0x1FFFFF); };
   return c(q.x) | c(q.y) << 21 | c(q.z) << 42;
 }
@@ -81,22 +90,31 @@ const LineChains::Sample* LineChains::nearest(const glm::vec3& p, std::int64_t p
   const Sample* best = nullptr;
   float bestD = tolerance_ * tolerance_;
   bool bestPreferred = false;
-  const float t = std::max(tolerance_, 1e-7f);
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const auto it = grid_.find(cell(p + t * glm::vec3(dx, dy, dz)));
+  // Cells are 16 tolerances wide: only the neighbours across a face within a tolerance of p.
+  const float size = cellSize();
+  const glm::vec3 inCell = p / size - glm::floor(p / size);
+  const float near = tolerance_ / size;
+  glm::ivec3 lo(0), hi(0);
+  for (int c = 0; c < 3; ++c) {
+    if (inCell[c] < near) lo[c] = -1;
+    if (inCell[c] > 1.0f - near) hi[c] = 1;
+  }
+  for (int dz = lo.z; dz <= hi.z; ++dz)
+    for (int dy = lo.y; dy <= hi.y; ++dy)
+      for (int dx = lo.x; dx <= hi.x; ++dx) {
+        const auto it = grid_.find(cell(p + size * glm::vec3(dx, dy, dz)));
         if (it == grid_.end()) continue;
-        for (std::uint32_t i : it->second) {
-          const glm::vec3 d = samples_[i].position - p;
+        for (std::uint32_t k = it->second.first; k < it->second.second; ++k) {
+          const Sample& sample = samples_[k];
+          const glm::vec3 d = sample.position - p;
           const float d2 = glm::dot(d, d);
           if (d2 > tolerance_ * tolerance_) continue;
           // Several chains may have had a vertex here (a junction, a zigzag's corner): the one the
           // chain's previous vertex matched wins, then the nearest.
-          const bool isPreferred = std::int64_t(samples_[i].chain) == preferred;
+          const bool isPreferred = std::int64_t(sample.chain) == preferred;
           if ((isPreferred && !bestPreferred) || (isPreferred == bestPreferred && d2 <= bestD)) {
             bestD = d2;
-            best = &samples_[i];
+            best = &sample;
             bestPreferred = isPreferred;
           }
         }
@@ -262,10 +280,19 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
     std::nth_element(shifts_.begin(), at90, shifts_.end());
     coherence_.shift90 = *at90;
   }
-  samples_ = std::move(next);
-  previousChains_ = chainId;
+  // Samples sorted by cell, each cell a range of them.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> byCell(next.size());
+  for (std::uint32_t i = 0; i < next.size(); ++i) byCell[i] = {cell(next[i].position), i};
+  std::sort(byCell.begin(), byCell.end());
+  samples_.resize(next.size());
   grid_.clear();
-  for (std::uint32_t i = 0; i < samples_.size(); ++i) grid_[cell(samples_[i].position)].push_back(i);
+  grid_.reserve(byCell.size());
+  for (std::uint32_t k = 0; k < byCell.size(); ++k) {
+    samples_[k] = next[byCell[k].second];
+    auto [it, inserted] = grid_.try_emplace(byCell[k].first, k, k + 1);
+    if (!inserted) it->second.second = k + 1;
+  }
+  previousChains_ = chainId;
   return out_;
 }
 

@@ -8,6 +8,7 @@
 // how far the parameters shifted at matched vertices and how many chains appeared and vanished.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -89,7 +90,8 @@ class LineChains {
   std::vector<float> shifts_;
   std::vector<Sample> samples_;
   std::size_t previousChains_ = 0;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid_;
+  float cellSize() const { return 16.0f * std::max(tolerance_, 1e-7f); }
+  std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> grid_;  // cell -> its samples' range
   ChainCoherence coherence_;
 };
 

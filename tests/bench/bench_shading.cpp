@@ -10,6 +10,7 @@
 
 #include "bench_common.h"
 #include "renderer/lines/feature_edges.h"
+#include "renderer/lines/line_chains.h"
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/core/parallel.h"
 #include "renderer/shading/triangle_shading.h"
@@ -156,6 +157,22 @@ void BM_Silhouettes(benchmark::State& state) {
   state.counters["silhouette_edges"] = double(n);
 }
 BENCHMARK(BM_Silhouettes)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+// The same silhouettes chained into strokes with their parameter carried from the previous
+// view (lines/line_chains.h): what a view change costs with chains, against BM_Silhouettes.
+void BM_SilhouetteChains(benchmark::State& state) {
+  FeatureEdges edges(largeMesh());
+  LineChains chains(1e-3f);
+  float angle = 0.0f;
+  std::size_t n = 0;
+  for (auto _ : state) {
+    angle += 0.01f;
+    n = chains.update(edges.silhouettes(glm::vec3(3.0f * std::cos(angle), 1.0f, 3.0f * std::sin(angle))), 0.01f).size();
+  }
+  state.counters["silhouette_edges"] = double(n);
+  state.counters["chains"] = double(chains.coherence().chains);
+}
+BENCHMARK(BM_SilhouetteChains)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 // Creases and boundaries, once per mesh: the adjacency build included.
 void BM_FeatureEdgesBuild(benchmark::State& state) {
