@@ -102,7 +102,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
     const std::string prefix = set ? "set" + std::to_string(i) + "-" : "";
     const std::vector<FeatureLine> mine = renderer.featureLines(camera, settings, [&](const std::string* object) -> std::uint8_t {
       return set ? (set->appliesTo(object) ? set->kinds : 0) : ls.baseKinds(object);
-    });
+    }, set);
     if (mine.empty()) continue;
     for (const bool hidden : {false, true}) {
       if (!(hidden ? style.hidden : style.visible)) continue;

@@ -169,16 +169,18 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     } else if (key == "taper") {
       if (!parseNumber(value, set.taper) || !(set.taper >= 0.0f) || set.taper > LineSet::kMaxTaper)
         return why = "taper must be a number of pixels in 0..1000 (0: blunt ends)", false;
-    } else if (key == "objects") {
-      set.objects.clear();
+    } else if (key == "objects" || key == "materials") {
+      std::vector<std::string>& names = key == "objects" ? set.objects : set.materials;
+      names.clear();
       for (const std::string& name : split(value, ','))
-        if (!name.empty()) set.objects.push_back(name);
-      if (set.objects.empty()) return why = "objects must name at least one object (NAME,NAME; * and ? match any text and any character)", false;
+        if (!name.empty()) names.push_back(name);
+      if (names.empty())
+        return why = key + " must name at least one " + (key == "objects" ? "object" : "material") + " (NAME,NAME; * and ? match any text and any character)", false;
     } else if (key == "falloff" || key == "sketchy") {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, falloff, sketchy, objects)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, falloff, sketchy, objects, materials)", false;
     }
   }
   return true;
@@ -211,7 +213,15 @@ bool globMatch(const std::string& pattern, const std::string& text) {
 
 }  // namespace
 
+bool LineSet::takesMaterial(const std::string& name) const {
+  if (materials.empty()) return true;
+  for (const std::string& pattern : materials)
+    if (globMatch(pattern, name)) return true;
+  return false;
+}
+
 bool LineSet::appliesTo(const std::string* object) const {
+  if (!object && !materials.empty()) return false;  // intersections have no material of their own
   if (objects.empty()) return true;
   if (!object) return false;
   for (const std::string& pattern : objects)
@@ -262,6 +272,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];
+    for (std::size_t i = 0; i < s.materials.size(); ++i) out += (i ? "," : " materials=") + s.materials[i];
   }
   return out;
 }

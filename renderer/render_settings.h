@@ -44,13 +44,19 @@ struct LineSet {
   // The objects it draws on, by name, '*' and '?' as wildcards (empty: every object and the
   // scene's intersections; a set naming objects leaves intersections to the others).
   std::vector<std::string> objects;
+  // The materials it draws on, by name, wildcards as for objects (empty: every one): a line
+  // is taken when a face on either side has one. Such a set draws over the base style (it takes
+  // no kind from it) and leaves the scene's intersections to the others.
+  std::vector<std::string> materials;
+  bool takesMaterial(const std::string& name) const;
   static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
   // Whether it draws on the object named `object` (null: the scene's intersection lines).
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]`, or `none`. On failure `why`
+// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]
+// [materials=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);
 std::string formatLineSets(const std::vector<LineSet>& sets);  // one set per line; "none" when empty
@@ -105,7 +111,7 @@ struct LineSettings {
   std::uint8_t baseKinds(const std::string* object = nullptr) const {
     std::uint8_t k = namedKinds();
     for (const LineSet& s : sets)
-      if (s.appliesTo(object)) k &= std::uint8_t(~s.kinds);
+      if (s.appliesTo(object) && s.materials.empty()) k &= std::uint8_t(~s.kinds);
     return k;
   }
   // The kinds found on each mesh (all but the scene's intersections).

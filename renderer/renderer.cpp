@@ -528,7 +528,7 @@ Status Renderer::drawMarker(const CameraMatrices& camera, const glm::vec3& world
 }
 
 std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, const RenderSettings& settings,
-                                                const std::function<std::uint8_t(const std::string* object)>& kindsFor) {
+                                                const std::function<std::uint8_t(const std::string* object)>& kindsFor, const LineSet* set) {
   std::vector<FeatureLine> out;
   // Lines are found on the CPU's pose.
   FrameStats exportStats;
@@ -540,6 +540,12 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
   scene_.forEach([&](Model& m) {
     std::vector<FeatureLine> lines = m.lines().lines(m.placed(camera), settings.lines);
     keep(lines, &m.name());
+    if (set && !set->materials.empty()) {
+      const std::vector<MeshMaterial>& materials = m.mesh().materials;
+      const auto taken = [&](std::uint16_t i) { return i < materials.size() && set->takesMaterial(materials[i].name); };
+      lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !taken(l.materials.x) && !taken(l.materials.y); }),
+                  lines.end());
+    }
     if (!isIdentity(m.transform()))
       for (FeatureLine& l : lines) {
         l.a = glm::vec3(m.transform() * glm::vec4(l.a, 1.0f));

@@ -143,9 +143,10 @@ class Renderer {
   // The feature lines the frame shows for this camera, every model's in scene space, for
   // vector export.
   // `kindsFor(object)` (null: the scene's intersection lines; empty function: every kind drawn)
-  // chooses the kinds kept for each object by name (bit EdgeKind).
+  // chooses the kinds kept for each object by name (bit EdgeKind); `set`, when it selects
+  // materials, keeps the lines on a face of one of them (LineSet::materials).
   std::vector<FeatureLine> featureLines(const CameraMatrices& camera, const RenderSettings& settings,
-                                        const std::function<std::uint8_t(const std::string* object)>& kindsFor = {});
+                                        const std::function<std::uint8_t(const std::string* object)>& kindsFor = {}, const LineSet* set = nullptr);
   // The first shown model's (tests and the overlay).
   const PatternTracker& patternTracker() const;
   // The main palette as the last frame drew it (null before one is set).

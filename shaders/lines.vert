@@ -14,6 +14,7 @@ layout(location = 2) in float aKind;
 layout(location = 3) in vec2 aParam;   // the stroke's parameter at the start and the end
 layout(location = 4) in vec2 aArc;     // the distance from the chain's start to them
 layout(location = 5) in float aLength; // the chain's length; negative: a closed loop
+layout(location = 6) in uint aMaterials;  // the faces' materials on either side, 16 bits each
 
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
@@ -29,6 +30,11 @@ uniform float uValleyPixels;
 uniform vec4 uEye;
 uniform vec2 uPixelScale;
 uniform float uParamPixels;
+#ifdef BY_MATERIAL
+// BY_MATERIAL: a line set selecting materials draws only lines on a face of one of them.
+uniform uint uMaterialMask[8];  // bit m: material m is taken (0xFFFF: none)
+bool taken(uint m) { return m < 256u && (uMaterialMask[m >> 5] & (1u << (m & 31u))) != 0u; }
+#endif
 
 out vec3 vColour;
 out float vAcross;  // pixels from the line's centre
@@ -73,7 +79,11 @@ void main() {
 #ifdef DEPTH_FALLOFF
   width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);
 #endif
-  if (p0.w <= 0.0 || p1.w <= 0.0) {  // crosses the eye plane: drop the edge
+  bool drop = p0.w <= 0.0 || p1.w <= 0.0;  // crosses the eye plane
+#ifdef BY_MATERIAL
+  drop = drop || !(taken(aMaterials & 0xFFFFu) || taken(aMaterials >> 16));
+#endif
+  if (drop) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     vAcross = 0.0;
     vHalfWidth = 0.0;

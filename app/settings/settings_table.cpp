@@ -406,7 +406,7 @@ std::vector<Setting> buildTable() {
     Setting sets = base("line-set", "line sets", "lines",
                         "A line set: object-space kinds drawn in a style of their own, over the kinds `lines` names that no set takes; "
                         "repeat it for several, drawn in order. KINDS [visibility=visible|hidden|both] [width=W] [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] "
-                        "[falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)]",
+                        "[falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)] [materials=NAME,...]",
                         K::Text);
     sets.example = "silhouette,crease visibility=hidden width=1 dash=4,3";
     sets.repeated = true;

@@ -120,6 +120,7 @@ struct SourceOf {
     if (l.depthFalloff) s.defines.push_back("DEPTH_FALLOFF");
     if (l.dashed) s.defines.push_back("DASHED");
     if (l.tapered) s.defines.push_back("TAPERED");
+    if (l.byMaterial) s.defines.push_back("BY_MATERIAL");
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

@@ -139,6 +139,7 @@ void ShaderProgram::setArray(const char* n, const glm::vec4* v, int c) { glUnifo
 void ShaderProgram::setArray(const char* n, const glm::vec3* v, int c) { glUniform3fv(location(n), c, glm::value_ptr(*v)); }
 void ShaderProgram::setArray(const char* n, const glm::mat4* v, int c) { glUniformMatrix4fv(location(n), c, GL_FALSE, glm::value_ptr(*v)); }
 void ShaderProgram::setArray(const char* n, const int* v, int c) { glUniform1iv(location(n), c, v); }
+void ShaderProgram::setArray(const char* n, const unsigned* v, int c) { glUniform1uiv(location(n), c, v); }
 void ShaderProgram::setArray(const char* n, const glm::vec2* v, int c) { glUniform2fv(location(n), c, glm::value_ptr(*v)); }
 void ShaderProgram::setArray(const char* n, const float* v, int c) { glUniform1fv(location(n), c, v); }
 void ShaderProgram::setArray(const char* n, const glm::ivec2* v, int c) { glUniform2iv(location(n), c, glm::value_ptr(*v)); }

@@ -44,6 +44,7 @@ class ShaderProgram {
   void setArray(const char* name, const glm::vec2* v, int count);
   void setArray(const char* name, const glm::mat4* v, int count);
   void setArray(const char* name, const int* v, int count);
+  void setArray(const char* name, const unsigned* v, int count);
   void setArray(const char* name, const float* v, int count);
   void setArray(const char* name, const glm::ivec2* v, int count);
   void set(const char* name, unsigned v);

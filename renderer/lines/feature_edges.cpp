@@ -71,12 +71,15 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
     const auto h0 = welded.halfedge_handle(e, 0);
     const std::uint32_t v0 = std::uint32_t(welded.from_vertex_handle(h0).idx()), v1 = std::uint32_t(welded.to_vertex_handle(h0).idx());
     const auto f0 = welded.face_handle(h0), f1 = welded.face_handle(welded.halfedge_handle(e, 1));
+    const std::uint32_t face = f0.is_valid() ? std::uint32_t(f0.idx()) : f1.is_valid() ? std::uint32_t(f1.idx()) : kNoFace;
     if (junction.erase(edgeKey(v0, v1))) {
       boundary_.insert(boundary_.end(), {v0, v1});
+      boundaryFace_.push_back(face);
       ++junctionCount_;
       if (!f0.is_valid() || !f1.is_valid()) continue;
     } else if (!f0.is_valid() || !f1.is_valid()) {
       boundary_.insert(boundary_.end(), {v0, v1});
+      boundaryFace_.push_back(face);
       continue;
     }
     manifoldEnds_.insert(manifoldEnds_.end(), {v0, v1});
@@ -85,8 +88,14 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
   // Edges of refused faces that the welded mesh does not have at all.
   for (std::uint64_t k : junction) {
     boundary_.insert(boundary_.end(), {std::uint32_t(k >> 32), std::uint32_t(k & 0xFFFFFFFFu)});
+    boundaryFace_.push_back(kNoFace);
     ++junctionCount_;
   }
+}
+
+glm::u16vec2 FeatureEdges::materialsOf(std::uint32_t f0, std::uint32_t f1) const {
+  const auto of = [&](std::uint32_t f) { return f < faceMaterial_.size() ? faceMaterial_[f] : kNoMaterial; };
+  return {of(f0), of(f1)};
 }
 
 void FeatureEdges::updatePlanes() {
@@ -123,14 +132,16 @@ const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegre
     if (n0 == glm::vec3(0.0f) || n1 == glm::vec3(0.0f)) continue;
     // The dihedral angle between the faces is the angle between their normals.
     if (glm::dot(n0, n1) < cosLimit)
-      static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Crease)});
+      static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Crease),
+                         materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])});
   }
   for (size_t e = 0; e < boundary_.size() / 2; ++e)
-    static_.push_back({positions_[boundary_[e * 2]], positions_[boundary_[e * 2 + 1]], float(EdgeKind::Boundary)});
+    static_.push_back({positions_[boundary_[e * 2]], positions_[boundary_[e * 2 + 1]], float(EdgeKind::Boundary), materialsOf(boundaryFace_[e], boundaryFace_[e])});
   if (faceMaterial_.size() == faceNormals_.size())
     for (size_t e = 0; e < manifoldFaces_.size() / 2; ++e)
       if (faceMaterial_[manifoldFaces_[e * 2]] != faceMaterial_[manifoldFaces_[e * 2 + 1]])
-        static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Material)});
+        static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Material),
+                           materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])});
   return static_;
 }
 
@@ -145,8 +156,11 @@ const std::vector<FeatureLine>& FeatureEdges::silhouettes(const glm::vec3& eye) 
   parallelChunks(ne, chunks, [&](size_t b, size_t e, int c) {
     auto& out = parts[static_cast<size_t>(c)];
     for (size_t i = b; i < e; ++i)
-      if (facing_[manifoldFaces_[i * 2]] != facing_[manifoldFaces_[i * 2 + 1]])
-        out.push_back({positions_[manifoldEnds_[i * 2]], positions_[manifoldEnds_[i * 2 + 1]], float(EdgeKind::Silhouette)});
+      if (facing_[manifoldFaces_[i * 2]] != facing_[manifoldFaces_[i * 2 + 1]]) {
+        const std::uint32_t front = facing_[manifoldFaces_[i * 2]] ? manifoldFaces_[i * 2] : manifoldFaces_[i * 2 + 1];
+        const std::uint32_t back = front == manifoldFaces_[i * 2] ? manifoldFaces_[i * 2 + 1] : manifoldFaces_[i * 2];
+        out.push_back({positions_[manifoldEnds_[i * 2]], positions_[manifoldEnds_[i * 2 + 1]], float(EdgeKind::Silhouette), materialsOf(front, back)});
+      }
   });
   silhouettes_.clear();
   for (auto& p : parts) silhouettes_.insert(silhouettes_.end(), p.begin(), p.end());

@@ -23,9 +23,16 @@ namespace npr {
 enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3, Intersection = 4, Suggestive = 5 };
 inline constexpr int kEdgeKinds = 6;
 
+// A line's faces' materials (Mesh::materials) where it has them: line sets select by them.
+inline constexpr std::uint16_t kNoMaterial = 0xFFFF;
+
 struct FeatureLine {
   glm::vec3 a, b;
-  float kind;  // EdgeKind, as the vertex attribute the line shader reads
+  float kind;  // EdgeKind
+  // The materials of the faces on either side (a silhouette's front face first; a boundary's
+  // one face twice); kNoMaterial where the mesh has none or the line is not on a face's edge
+  // (suggestive contours, intersections).
+  glm::u16vec2 materials{kNoMaterial, kNoMaterial};
 };
 
 class FeatureEdges {
@@ -59,6 +66,9 @@ class FeatureEdges {
   std::vector<std::uint32_t> manifoldEnds_;   // 2 welded vertices per interior edge
   std::vector<std::uint32_t> manifoldFaces_;  // its 2 faces
   std::vector<std::uint32_t> boundary_;       // 2 welded vertices per boundary or junction edge
+  std::vector<std::uint32_t> boundaryFace_;   // its one face (kNoFace: a refused face's edge)
+  static constexpr std::uint32_t kNoFace = 0xFFFFFFFFu;
+  glm::u16vec2 materialsOf(std::uint32_t f0, std::uint32_t f1) const;
   std::size_t duplicateFaces_ = 0, junctionCount_ = 0;
   float creaseAngle_ = -1.0f;
   std::vector<FeatureLine> static_, silhouettes_;

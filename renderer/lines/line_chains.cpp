@@ -134,6 +134,7 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
   std::vector<glm::vec3> verts;
   std::vector<float> arc, params;
   std::vector<char> along;
+  std::vector<std::uint32_t> segs;  // per edge of the chain, its segment in the run
   std::vector<std::int64_t> group;
   struct Fit {
     std::vector<float> votes;
@@ -156,12 +157,14 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
       // The chain's vertices, and per edge whether its segment runs that way in `lines`.
       verts.clear();
       along.clear();
+      segs.clear();
       const FeatureLine& head = lines[b + chain.front().segment];
       verts.push_back(chain.front().reversed ? head.b : head.a);
       for (const ChainStep& st : chain) {
         const FeatureLine& l = lines[b + st.segment];
         verts.push_back(st.reversed ? l.a : l.b);
         along.push_back(!st.reversed);
+        segs.push_back(st.segment);
       }
       const std::size_t nv = verts.size();
       const bool closed = nv > 2 && exactKey(verts.front()) == exactKey(verts.back());
@@ -197,6 +200,7 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
           std::reverse(verts.begin(), verts.end());
           std::reverse(match.begin(), match.end());
           std::reverse(along.begin(), along.end());
+          std::reverse(segs.begin(), segs.end());
           for (std::size_t e = 0; e < along.size(); ++e) along[e] = !along[e];
         }
         std::size_t start = 0;
@@ -207,6 +211,7 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
         std::rotate(verts.begin(), verts.begin() + std::ptrdiff_t(start), verts.end());
         std::rotate(match.begin(), match.begin() + std::ptrdiff_t(start), match.end());
         std::rotate(along.begin(), along.begin() + std::ptrdiff_t(start), along.end());
+        std::rotate(segs.begin(), segs.begin() + std::ptrdiff_t(start), segs.end());
         verts.push_back(verts.front());
         match.push_back(nullptr);  // the seam's vertex votes once, at the start
       }
@@ -264,8 +269,10 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
       // keeps its own way round (the sketchy strokes' jitter hashes its ends in order).
       for (std::size_t i = 0; i + 1 < nv; ++i) {
         const glm::vec2 p(params[i], paramOf(i + 1, group[i]));
-        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length});
-        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length});
+        const glm::u16vec2 m = lines[b + segs[i]].materials;
+        const std::uint32_t materials = std::uint32_t(m.x) | std::uint32_t(m.y) << 16;
+        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, materials});
+        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, materials});
       }
       ++chainId;
     }

@@ -27,6 +27,7 @@ struct ChainedLine {
   glm::vec2 param;    // the stroke's parameter at a and at b (object units)
   glm::vec2 arc;      // the distance along the chain from its start to a and to b
   float length;       // the chain's length; negative for a closed loop (it has no ends)
+  std::uint32_t materials;  // the faces' materials (FeatureLine::materials), low 16 bits first
 };
 
 // A step of a chain: a segment, walked from its second end to its first when `reversed`.

@@ -89,7 +89,8 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
   }
   stats.cpuLinesMs += msSince(t0);
 
-  for (const LineStyle& style : lineStyles(ls, &object)) {
+  for (LineStyle& style : lineStyles(ls, &object)) {
+    if (style.byMaterial()) style.resolveMaterials(mesh_->materials);
     std::vector<LineRange> ranges;
     if (style.kinds & 1u) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
     if (style.kinds & 2u) ranges.push_back({&staticLines_, 0, creaseCount_});
@@ -129,7 +130,17 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.falloff = set.falloff;
   s.taper = set.taper;
   s.kinds = set.kinds;
+  if (!set.materials.empty()) s.materialNames = &set.materials;
   return s;
+}
+
+void LineStyle::resolveMaterials(const std::vector<MeshMaterial>& materials) {
+  materialMask.fill(0u);
+  if (!materialNames) return;
+  LineSet names;
+  names.materials = *materialNames;
+  for (std::size_t i = 0; i < materials.size() && i < std::size_t(kMaxSelectableMaterials); ++i)
+    if (names.takesMaterial(materials[i].name)) materialMask[i / 32] |= 1u << (i % 32);
 }
 
 std::vector<LineStyle> lineStyles(const LineSettings& ls, const std::string* object) {
@@ -149,7 +160,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     const bool sketchy = style.sketchy && !hidden;
     const glm::vec2 dash = hidden ? style.hiddenDash : style.dash;
     const bool tapered = style.taper > 0.0f && !hidden;
-    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered}, stats.shaderBuilds);
+    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial()}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
@@ -173,6 +184,8 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     // stroke, and unchanged as the view turns about it.
     p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
     if (tapered) p.set("uTaper", style.taper);
+    if (style.byMaterial())
+      p.setArray("uMaterialMask", style.materialMask.data(), int(style.materialMask.size()));
     glBindVertexArray(vao.id());
     // Sketchy lines draw each edge three times, jittered differently in the shader.
     const int repeat = sketchy ? 3 : 1;
@@ -191,6 +204,9 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       attribute(3, 2, offsetof(ChainedLine, param));
       attribute(4, 2, offsetof(ChainedLine, arc));
       attribute(5, 1, offsetof(ChainedLine, length));
+      glEnableVertexAttribArray(6);
+      glVertexAttribIPointer(6, 1, GL_UNSIGNED_INT, sizeof(ChainedLine), reinterpret_cast<void*>(base + offsetof(ChainedLine, materials)));
+      glVertexAttribDivisor(6, GLuint(repeat));
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

@@ -5,6 +5,7 @@
 // uploaded once per mesh and angle, silhouettes and suggestive contours when the eye moves.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 
@@ -29,6 +30,9 @@ struct LineRange {
   std::size_t first, count;
 };
 
+// Materials past this index are never selected by a line set (lines.vert's mask).
+inline constexpr int kMaxSelectableMaterials = 256;
+
 // How a group of lines is drawn: the line settings' own style for the kinds no set takes, or a
 // line set's.
 struct LineStyle {
@@ -40,6 +44,12 @@ struct LineStyle {
   float hiddenWidthScale = 1.0f, hiddenInk = 1.0f;  // the hidden parts thinner and lighter
   bool sketchy = false, falloff = false;
   float taper = 0.0f;                   // pixels at each end of a stroke (0: blunt)
+  // A set selecting materials: the materials it takes, by index into the mesh's, as bits
+  // (resolve() fills them from the set's names); lines on no such face are not drawn.
+  const std::vector<std::string>* materialNames = nullptr;
+  std::array<std::uint32_t, kMaxSelectableMaterials / 32> materialMask{};
+  bool byMaterial() const { return materialNames != nullptr; }
+  void resolveMaterials(const std::vector<MeshMaterial>& materials);
   std::uint8_t kinds = 0;               // bit EdgeKind: what it draws
   // The base style on the object named `object` (null: the scene's intersections).
   static LineStyle base(const LineSettings& ls, const std::string* object);

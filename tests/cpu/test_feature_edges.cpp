@@ -274,10 +274,25 @@ TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
       EXPECT_FLOAT_EQ(l.a.y, 1.0f);
       EXPECT_FLOAT_EQ(l.b.y, 1.0f);
     }
+  // Each line knows its faces' materials (what line sets select by): the creases around the top
+  // border both, the others only the sides' and bottom's, and so do the silhouettes.
+  for (const FeatureLine& l : lines) {
+    const bool top = l.a.y == 1.0f && l.b.y == 1.0f;
+    const glm::u16vec2 want = top ? glm::u16vec2(0, 1) : glm::u16vec2(0, 0);
+    EXPECT_TRUE(l.materials == want || l.materials == glm::u16vec2(want.y, want.x)) << "kind " << l.kind << " at y " << l.a.y << ", " << l.b.y;
+  }
+  for (const FeatureLine& l : edges.silhouettes(glm::vec3(3.0f, 2.0f, 2.5f))) {
+    const bool top = l.a.y == 1.0f && l.b.y == 1.0f;
+    EXPECT_EQ(l.materials.x == 1 || l.materials.y == 1, top);
+  }
   // One material: none.
   m.faceMaterials.assign(12, 0);
   FeatureEdges one(m);
   EXPECT_EQ(countKind(one.staticLines(60.0f), EdgeKind::Material), 0u);
+  // No materials at all: none named.
+  m.faceMaterials.clear();
+  FeatureEdges none(m);
+  for (const FeatureLine& l : none.staticLines(60.0f)) EXPECT_EQ(l.materials, glm::u16vec2(kNoMaterial));
 }
 
 

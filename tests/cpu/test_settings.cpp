@@ -71,6 +71,7 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
           if (pick(2)) set += " colour=" + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + ",0";
           if (pick(2)) set += " dash=" + formatFloat(float(uniform(0.5, 20))) + "," + formatFloat(float(uniform(0.5, 20)));
           if (pick(2)) set += " taper=" + formatFloat(float(uniform(0, 100)));
+          if (pick(3) == 0) set += std::string(" materials=") + (pick(2) ? "Paint*" : "Glass,Chrome");
           if (pick(2)) set += std::string(" falloff=") + (pick(2) ? "on" : "off");
           if (pick(2)) set += std::string(" sketchy=") + (pick(2) ? "on" : "off");
           out += (out.empty() ? "" : "\n") + set;
@@ -180,6 +181,7 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
            {"crease taper", "set 1: expected KEY=VALUE"},
            {"crease taper=-1", "set 1: taper must be"},
            {"crease taper=nan", "set 1: taper must be"},
+           {"crease materials=", "set 1: materials must name at least one material"},
            {"crease shade=on", "set 1: unknown key 'shade'"},
            {";", "no set"}}) {
     EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;

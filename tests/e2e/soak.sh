@@ -51,6 +51,14 @@ rss() {
   drop "$tmp/good.obj"; drop "$src/palettes/crosshatch/crosshatch.palette"; sleep 1
   awk '/VmRSS/ {print $2}' "/proc/$pid/status" 2>/dev/null
 }
+# Where it is, in MB: anonymous writable memory (the malloc heap and arenas, the driver's
+# buffers and textures), anonymous executable memory (llvmpipe's JIT-compiled shaders; Mesa
+# bounds its own cache of them), and file-backed pages (libraries). Read after rss().
+rss_parts() {
+  awk '/^[0-9a-f]+-[0-9a-f]+ / {perm=$2; named=(NF >= 6 && $6 !~ /^\[(heap|stack|anon)/)}
+       /^Rss:/ {if (named) file += $2; else if (perm ~ /x/) jit += $2; else anon += $2}
+       END {printf "%d/%d/%d", anon / 1024, jit / 1024, file / 1024}' "/proc/$pid/smaps" 2>/dev/null
+}
 alive() { kill -0 "$pid" 2>/dev/null; }
 
 # A failed drop must keep the picture: hide the overlay (its timings change every frame),
@@ -95,12 +103,12 @@ done
 xdotool key --clearmodifiers 1; sleep 0.4
 
 start=$(date +%s); baseline_at=$((duration / 3)); [ $baseline_at -gt 60 ] && baseline_at=60
-baseline=""; actions=0; checks=0; drops_good=0; curve=""; next_sample=60
+baseline=""; actions=0; checks=0; drops_good=0; curve=""; parts=""; next_sample=60
 while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   elapsed=$(( $(date +%s) - start ))
   [ -z "$baseline" ] && [ $elapsed -ge $baseline_at ] && baseline=$(rss)
   # The curve: resident memory each minute, read the same way (README, the issue's notes).
-  if [ $elapsed -ge $next_sample ]; then curve="$curve $(( $(rss) / 1024 ))"; next_sample=$((next_sample + 60)); fi
+  if [ $elapsed -ge $next_sample ]; then curve="$curve $(( $(rss) / 1024 ))"; parts="$parts $(rss_parts)"; next_sample=$((next_sample + 60)); fi
   w=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $4; exit}'); w=${w:-480}
   h=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $5; exit}'); h=${h:-360}
   case $((RANDOM % 20)) in
@@ -128,6 +136,7 @@ if ! alive; then wait $pid; echo "FAIL: the viewer died (exit $?) after $actions
 growth=$(( (final - baseline) * 1000 / (baseline > 0 ? baseline : 1) ))
 echo "soak: $actions actions in ${duration} s ($drops_good good drops, $checks failed-drop checks), RSS ${baseline} kB at ${baseline_at} s -> ${final} kB at the end (${growth} per mille)"
 [ -n "$curve" ] && echo "soak: RSS each minute (MB):$curve"
+[ -n "$parts" ] && echo "soak: of which anonymous writable / executable (JIT) / file-backed (MB):$parts"
 [ $growth -le 50 ] || { echo "FAIL: resident memory grew by more than 5%"; fail=1; }
 [ $checks -gt 0 ] || { echo "FAIL: no failed drop was checked"; fail=1; }
 grep -c "not taken" "$tmp/drops.log" 2>/dev/null | grep -qx 0 || { echo "FAIL: some drops were not taken:"; grep "not taken" "$tmp/drops.log" | head; fail=1; }

@@ -386,6 +386,61 @@ TEST_F(OutlineFixture, StrokesTaperAndDashAlongTheirWholeChain) {
   EXPECT_LT(inked, span * 7 / 10) << "dashes restart at each edge instead of running along the stroke";
 }
 
+TEST_F(OutlineFixture, ALineSetNamingMaterialsDrawsOnTheirFacesOnly) {
+  // A cube whose top two triangles are "Lid" and the rest "Box". A set of silhouettes and creases
+  // selecting Lid draws red only along the top's edges; one selecting Box* draws the others;
+  // one naming no material of the cube draws nothing.
+  Mesh cube = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f));
+  cube.materials.resize(2);
+  cube.materials[0].name = "Box";
+  cube.materials[1].name = "Lid";
+  cube.faceMaterials.assign(cube.triangleCount(), 0);
+  for (std::size_t f = 0; f < cube.triangleCount(); ++f) {
+    bool top = true;
+    for (int k = 0; k < 3; ++k) top = top && cube.positions[cube.indices[3 * f + std::size_t(k)]].y > 0.49f;
+    if (top) cube.faceMaterials[f] = 1;
+  }
+  const CameraMatrices cam = test::testCamera(1.0f);
+  const glm::mat4 mvp = cam.projection * cam.view;
+  auto red = [&](const char* sets) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    const ImageRGBA8 img = draw(cube, l);
+    // Red pixels, and how many lie within 3 pixels of the top's outline (y = 0.5 on screen).
+    int n = 0, nearTop = 0;
+    std::vector<glm::vec2> top;
+    for (int i = 0; i <= 400; ++i) {  // the top square's four edges, sampled
+      const float t = float(i % 100) / 100.0f;
+      const int side = i / 100 % 4;
+      const glm::vec3 corners[4] = {{-0.5f, 0.5f, -0.5f}, {0.5f, 0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, {-0.5f, 0.5f, 0.5f}};
+      const glm::vec4 c = mvp * glm::vec4(glm::mix(corners[side], corners[(side + 1) % 4], t), 1.0f);
+      top.push_back((glm::vec2(c) / c.w * 0.5f + 0.5f) * float(kSize));
+    }
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::uint8_t* px = &img.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+        if (!(px[0] > 150 && px[1] < 110 && px[2] < 110)) continue;
+        ++n;
+        float d = 1e9f;
+        // Image rows run down from the top; clip space's y runs up.
+        for (const glm::vec2& p : top) d = std::min(d, glm::length(p - glm::vec2(float(x) + 0.5f, float(kSize - y) - 0.5f)));
+        nearTop += d < 3.0f;
+      }
+    return std::pair{n, nearTop};
+  };
+  const auto [lid, lidNearTop] = red("silhouette,crease materials=Lid width=3 colour=1,0,0");
+  const auto [box, boxNearTop] = red("silhouette,crease materials=Box* width=3 colour=1,0,0");
+  const auto [all, allNearTop] = red("silhouette,crease width=3 colour=1,0,0");
+  const auto [none, noneNearTop] = red("silhouette,crease materials=Glass width=3 colour=1,0,0");
+  std::printf("material sets: Lid %d px (%d along the top), Box* %d (%d), every material %d, Glass %d\n", lid, lidNearTop, box, boxNearTop, all, none);
+  EXPECT_GT(lid, 100);
+  EXPECT_GE(lidNearTop, lid * 95 / 100) << "the Lid set drew off the lid's edges";
+  EXPECT_GT(box, 2 * lid) << "the box has more edges than its lid";
+  EXPECT_LE(std::abs(box - all), all / 20) << "every edge borders a Box face";
+  EXPECT_EQ(none, 0) << "a set naming no material of the mesh drew";
+}
+
 TEST_F(OutlineFixture, ALineSetNamingAnObjectDrawsOnThatObjectOnly) {
   // Two cubes side by side, "left" and "right": silhouettes in the base style (black), and a
   // set taking the left cube's silhouettes in red.
