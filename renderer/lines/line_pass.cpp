@@ -39,7 +39,14 @@ void LinePass::geometryChanged() {
 
 Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const std::string& object, const glm::ivec4& viewport, gl::ProgramCache& programs,
                       FrameStats& stats) {
-  if (!ls.edgeKinds() || !mesh_) return okStatus();
+  update(camera, ls, viewport, stats);
+  for (const LineStyle& style : lineStyles(ls, &object))
+    if (Status st = drawStyle(style, camera, viewport, programs, stats); !st) return st;
+  return okStatus();
+}
+
+void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, FrameStats& stats) {
+  if (!ls.edgeKinds() || !mesh_) return;
   const auto t0 = std::chrono::steady_clock::now();
   const std::uint8_t kinds = ls.drawnKinds();
   if (!edges_ && (kinds & 15u)) {
@@ -88,19 +95,21 @@ Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, cons
     ++stats.bufferUploads;
   }
   stats.cpuLinesMs += msSince(t0);
+}
 
-  for (LineStyle& style : lineStyles(ls, &object)) {
-    if (style.byMaterial()) style.resolveMaterials(mesh_->materials);
+Status LinePass::drawStyle(LineStyle style, const CameraMatrices& camera, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
+  if (!mesh_ || !vao_) return okStatus();
+  if (style.byMaterial()) style.resolveMaterials(mesh_->materials);
+  {
     std::vector<LineRange> ranges;
     if (style.kinds & 1u) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
     if (style.kinds & 2u) ranges.push_back({&staticLines_, 0, creaseCount_});
     if (style.kinds & 4u) ranges.push_back({&staticLines_, creaseCount_, boundaryCount_});
     if (style.kinds & 8u) ranges.push_back({&staticLines_, creaseCount_ + boundaryCount_, staticCount_ - creaseCount_ - boundaryCount_});
     if (style.kinds & 32u) ranges.push_back({&suggestiveLines_, 0, suggestiveCount_});
-    if (ranges.empty()) continue;
-    if (Status st = drawLineRanges(ranges, camera, style, viewport, vao_, programs, stats); !st) return st;
+    if (ranges.empty()) return okStatus();
+    return drawLineRanges(ranges, camera, style, viewport, vao_, programs, stats);
   }
-  return okStatus();
 }
 
 LineStyle LineStyle::base(const LineSettings& ls, const std::string* object) {

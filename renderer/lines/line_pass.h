@@ -73,9 +73,16 @@ class LinePass {
   void geometryChanged();
   // How the silhouettes' stroke parameters moved at the last view change (line_chains.h).
   const ChainCoherence& silhouetteCoherence() const { return silhouetteChains_.coherence(); }
-  // `object`: the model's name, which line sets may select.
+  // `object`: the model's name, which line sets may select. update(), then every style of the
+  // settings that applies to `object` (lineStyles).
   [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const std::string& object, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, FrameStats& stats);
+  // Finds and uploads what the settings draw for this view (the static kinds once per mesh).
+  void update(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport, FrameStats& stats);
+  // Draws the lines of `style` found by the last update (a scene draws each style on every
+  // model before the next: a later set lies over an earlier one on every object).
+  [[nodiscard]] Status drawStyle(LineStyle style, const CameraMatrices& camera, const glm::ivec4& viewport, gl::ProgramCache& programs,
+                                 FrameStats& stats);
   // The object-space lines `draw` shows for this camera and these settings (silhouettes,
   // creases, boundaries, material lines, suggestive contours, as enabled): what vector export
   // writes.

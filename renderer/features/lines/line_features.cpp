@@ -46,10 +46,19 @@ class FeatureLinesFeature final : public Feature {
   const char* name() const override { return "feature lines"; }
   bool active(const FrameView& f) const override { return f.settings.lines.edgeKinds(); }
   Status drawOver(FrameView& f) override {
+    const LineSettings& ls = f.settings.lines;
+    f.scene.forEach([&](Model& m) { m.lines().update(m.placed(f.camera), ls, f.viewport, f.stats); });
+    // The base style, then each set in order, each on every model before the next: a later set
+    // lies over an earlier one on every object, as a later layer does.
     Status result = okStatus();
-    f.scene.forEach([&](Model& m) {
-      if (result) result = m.lines().draw(m.placed(f.camera), f.settings.lines, m.name(), f.viewport, f.programs, f.stats);
-    });
+    for (int k = -1; k < int(ls.sets.size()) && result; ++k)
+      f.scene.forEach([&](Model& m) {
+        if (!result) return;
+        if (k < 0 && !ls.baseKinds(&m.name())) return;
+        if (k >= 0 && !ls.sets[std::size_t(k)].appliesTo(&m.name())) return;
+        const LineStyle style = k < 0 ? LineStyle::base(ls, &m.name()) : LineStyle::of(ls.sets[std::size_t(k)], ls);
+        result = m.lines().drawStyle(style, m.placed(f.camera), f.viewport, f.programs, f.stats);
+      });
     return result;
   }
 };
