@@ -9,6 +9,7 @@
 
 #include <algorithm>
 
+#include "renderer/core/heap_policy.h"
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/palette/palette_analysis.h"
@@ -107,6 +108,7 @@ void applyAction(Viewer& v, const KeyAction& a) {
 bool loadDropped(Viewer& v, const std::string& path, bool add) {
   const bool palette = isPaletteFile(path);
   const Status st = palette ? v.state.loadPalette(path, *v.renderer) : v.state.loadModels({path}, add, *v.renderer);
+  releaseFreedHeapMemory();  // the load's transient memory, and the scene it replaced
   if (st) v.state.note((add && !palette ? "added " : "loaded ") + path);
   return st && !palette;
 }

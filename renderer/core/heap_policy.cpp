@@ -17,4 +17,10 @@ void keepFreedHeapMemory() {
 #endif
 }
 
+void releaseFreedHeapMemory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 }  // namespace npr
