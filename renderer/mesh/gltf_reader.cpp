@@ -52,8 +52,6 @@ namespace {
 // nodes multiplies it, so the flattened scene is bounded, not only each accessor.
 constexpr std::uint64_t kMaxSceneTriangles = 50'000'000;
 constexpr int kMaxNodeDepth = 256;
-constexpr std::size_t kMaxTextures = 64;
-constexpr int kMaxTextureSide = 1024;
 // Keyframe values over every channel (each copies its sampler's, and samplers may be shared).
 constexpr std::uint64_t kMaxAnimationKeys = 4'000'000;
 constexpr std::size_t kMaxMorphTargets = 64;
@@ -417,8 +415,8 @@ class GltfReader {
     }
     const tinygltf::Image& img = m_.images[static_cast<std::size_t>(source)];
     const std::string label = img.uri.empty() || img.uri.rfind("data:", 0) == 0 ? "image " + std::to_string(source) : img.uri;
-    if (images_.size() >= kMaxTextures) {
-      warn_.add(name_ + ": more than " + std::to_string(kMaxTextures) + " images; '" + printable(label) + "' is not used");
+    if (images_.size() >= kMaxModelTextures) {
+      warn_.add(name_ + ": more than " + std::to_string(kMaxModelTextures) + " images; '" + printable(label) + "' is not used");
       return -1;
     }
     if (img.image.empty()) {
@@ -434,7 +432,7 @@ class GltfReader {
     if (std::FILE* f = std::fopen(temp.c_str(), "wb")) {
       const bool written = std::fwrite(img.image.data(), 1, img.image.size(), f) == img.image.size();
       std::fclose(f);
-      if (written) decoded = loadImage(temp, {kMaxTextureSide, kMaxTextureSide});
+      if (written) decoded = loadImage(temp, {kMaxModelTextureSide, kMaxModelTextureSide});
       std::remove(temp.c_str());
     }
     if (!decoded) {

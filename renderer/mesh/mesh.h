@@ -59,6 +59,12 @@ struct MeshMaterial {
   bool fromLightingState = false;  // the default material: taken from the lighting state at draw time
 };
 
+// A model's texture budget, whatever its files declare (OBJ/MTL and glTF alike): distinct maps,
+// each reduced while it is read to at most this a side (the GPU array holds them at up to 1024
+// anyway): 64 x 4 MB at most.
+inline constexpr std::size_t kMaxModelTextures = 64;
+inline constexpr int kMaxModelTextureSide = 1024;
+
 struct MeshTexture {
   std::string path;
   ImageRGBA8 image;  // as stored (no colour conversion, as fixed-function GL sampled)

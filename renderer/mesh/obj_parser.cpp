@@ -22,10 +22,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::size_t kMaxMaterials = 65535;
-// Distinct texture maps, each reduced while it is read to at most kMaxTextureSide a side (the
-// GPU array holds them at up to 1024 anyway): 64 x 4 MB at most, whatever the files declare.
-constexpr std::size_t kMaxTextures = 64;
-constexpr int kMaxTextureSide = 1024;
 
 Status checkText(const std::string& path, const std::string& data) {
   if (data.size() >= 2 && ((unsigned char)data[0] == 0xFF && (unsigned char)data[1] == 0xFE))
@@ -264,9 +260,9 @@ class ObjParser {
       if (file.empty()) return -1;
       if (auto it = textureIndex.find(file); it != textureIndex.end()) return it->second;
       int index = -1;
-      if (soup_.textures.size() >= kMaxTextures) {
-        warn_.add(where + ": more than " + std::to_string(kMaxTextures) + " texture maps; '" + file + "' is not used");
-      } else if (Result<ImageRGBA8> img = loadImage(file, {kMaxTextureSide, kMaxTextureSide}); !img) {
+      if (soup_.textures.size() >= kMaxModelTextures) {
+        warn_.add(where + ": more than " + std::to_string(kMaxModelTextures) + " texture maps; '" + file + "' is not used");
+      } else if (Result<ImageRGBA8> img = loadImage(file, {kMaxModelTextureSide, kMaxModelTextureSide}); !img) {
         warn_.add(where + ": texture map cannot be used (" + img.error() + "); the material is drawn without it");
         report_.textures_missing.push_back(file);
       } else {
