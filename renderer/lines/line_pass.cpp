@@ -37,14 +37,6 @@ void LinePass::geometryChanged() {
   silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
 }
 
-Status LinePass::draw(const CameraMatrices& camera, const LineSettings& ls, const std::string& object, const glm::ivec4& viewport, gl::ProgramCache& programs,
-                      FrameStats& stats) {
-  update(camera, ls, viewport, stats);
-  for (const LineStyle& style : lineStyles(ls, &object))
-    if (Status st = drawStyle(style, camera, viewport, programs, stats); !st) return st;
-  return okStatus();
-}
-
 void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, FrameStats& stats) {
   if (!ls.edgeKinds() || !mesh_) return;
   const auto t0 = std::chrono::steady_clock::now();
@@ -152,11 +144,16 @@ void LineStyle::resolveMaterials(const std::vector<MeshMaterial>& materials) {
     if (names.takesMaterial(materials[i].name)) materialMask[i / 32] |= 1u << (i % 32);
 }
 
+std::optional<LineStyle> lineStyleLayer(const LineSettings& ls, int layer, const std::string* object) {
+  if (layer < 0) return ls.baseKinds(object) ? std::optional(LineStyle::base(ls, object)) : std::nullopt;
+  const LineSet& set = ls.sets[std::size_t(layer)];
+  return set.appliesTo(object) ? std::optional(LineStyle::of(set, ls)) : std::nullopt;
+}
+
 std::vector<LineStyle> lineStyles(const LineSettings& ls, const std::string* object) {
   std::vector<LineStyle> out;
-  if (ls.baseKinds(object)) out.push_back(LineStyle::base(ls, object));
-  for (const LineSet& set : ls.sets)
-    if (set.appliesTo(object)) out.push_back(LineStyle::of(set, ls));
+  for (int layer = -1; layer < int(ls.sets.size()); ++layer)
+    if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, object)) out.push_back(*style);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -59,6 +60,9 @@ struct LineStyle {
 // intersections), in drawing order: the base style first (when `lines` names a kind no set
 // takes there), then the sets that apply there.
 std::vector<LineStyle> lineStyles(const LineSettings& ls, const std::string* object);
+// Layer `layer` of that order on `object`: -1 the base style, k the k-th set; none where it
+// draws nothing there. A scene draws each layer on every object before the next.
+std::optional<LineStyle> lineStyleLayer(const LineSettings& ls, int layer, const std::string* object);
 
 // Draws `ranges` (lines in the space `placed` maps to the clip space) in `style`: the visible
 // parts, then the hidden ones. Shared by each model's edges and the scene's intersection lines.
@@ -73,10 +77,6 @@ class LinePass {
   void geometryChanged();
   // How the silhouettes' stroke parameters moved at the last view change (line_chains.h).
   const ChainCoherence& silhouetteCoherence() const { return silhouetteChains_.coherence(); }
-  // `object`: the model's name, which line sets may select. update(), then every style of the
-  // settings that applies to `object` (lineStyles).
-  [[nodiscard]] Status draw(const CameraMatrices& camera, const LineSettings& lines, const std::string& object, const glm::ivec4& viewport,
-                            gl::ProgramCache& programs, FrameStats& stats);
   // Finds and uploads what the settings draw for this view (the static kinds once per mesh).
   void update(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport, FrameStats& stats);
   // Draws the lines of `style` found by the last update (a scene draws each style on every

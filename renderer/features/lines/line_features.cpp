@@ -51,13 +51,11 @@ class FeatureLinesFeature final : public Feature {
     // The base style, then each set in order, each on every model before the next: a later set
     // lies over an earlier one on every object, as a later layer does.
     Status result = okStatus();
-    for (int k = -1; k < int(ls.sets.size()) && result; ++k)
+    for (int layer = -1; layer < int(ls.sets.size()) && result; ++layer)
       f.scene.forEach([&](Model& m) {
         if (!result) return;
-        if (k < 0 && !ls.baseKinds(&m.name())) return;
-        if (k >= 0 && !ls.sets[std::size_t(k)].appliesTo(&m.name())) return;
-        const LineStyle style = k < 0 ? LineStyle::base(ls, &m.name()) : LineStyle::of(ls.sets[std::size_t(k)], ls);
-        result = m.lines().drawStyle(style, m.placed(f.camera), f.viewport, f.programs, f.stats);
+        if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name()))
+          result = m.lines().drawStyle(*style, m.placed(f.camera), f.viewport, f.programs, f.stats);
       });
     return result;
   }
