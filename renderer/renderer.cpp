@@ -233,9 +233,14 @@ void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSetting
 void Renderer::preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& s, const glm::ivec4& viewport) {
   std::optional<PatternFrame> frame;
   if (s.pattern == PatternSpace::Anchored && model) {
-    const PatternFit& fit = model->patterns().update(placed, viewport, s.patternFollowsRotation);
-    stats_.cpuPatternMs = fit.ms;
-    stats_.patternSamples = fit.samplesUsed;
+    // The reference path draws no pattern: following its frame too would fit the split view's
+    // two viewports as motion, back and forth every frame, and the fits' float error would make
+    // the pattern creep over a still model.
+    if (s.path != RenderPath::Reference) {
+      const PatternFit& fit = model->patterns().update(placed, viewport, s.patternFollowsRotation);
+      stats_.cpuPatternMs = fit.ms;
+      stats_.patternSamples = fit.samplesUsed;
+    }
     frame = model->patterns().frame();
   }
   const float scale = std::clamp(s.patternScale, RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
@@ -419,7 +424,9 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   programs_.startFrame();
   if (viewport.z < 1 || viewport.w < 1) return okStatus();  // minimised window: nothing to draw
   if (Status st = applyPoses(s); !st) return st;
-  updateToneRange(camera, s);
+  // The reference path draws no palette; in the split view it must not smooth the tone range
+  // a second time each frame.
+  if (s.path != RenderPath::Reference) updateToneRange(camera, s);
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
   FrameView frame = frameView(camera, s, viewport, true);

@@ -453,5 +453,52 @@ TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
   EXPECT_TRUE(r->patternTracker().lastFit().reset);
 }
 
+// The window's split view draws the plain lit reference left of the chosen path, two renders
+// of one camera into two viewports each frame. The reference draws no pattern, so it must not
+// move the anchored frame: fitted as motion, the two viewports' offset went back and forth every
+// frame, and the float error of each fit made the pattern creep over a still model (the soak's
+// failed-drop checks caught pictures changing with nothing touched).
+TEST_F(Fixture, TheSplitViewsReferenceHalfLeavesTheAnchoredPatternStill) {
+  const Mesh sphere = test::icosphere(3);
+  r->setMesh(&sphere);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  const int half = 160, h = 180;
+  auto target = OffscreenTarget::create(2 * half, h);
+  ASSERT_TRUE(target) << target.error();
+  OrbitCamera cam(30.0f, 20.0f, 3.0f);
+  RenderSettings chosen;
+  chosen.path = RenderPath::Pixel;
+  chosen.pattern = PatternSpace::Anchored;
+  RenderSettings reference = chosen;
+  reference.path = RenderPath::Reference;
+  r->resetPattern();
+  // A frame that has followed an orbit and a zoom (rotation and scale away from the identity).
+  for (int f = 0; f < 6; ++f) {
+    OrbitCamera moving(30.0f + 2.0f * float(f), 20.0f, 3.0f);
+    moving.frame(1.0f);
+    moving.zoom(1.0f - 0.03f * float(f), glm::vec2(0.0f), 1.0f);
+    target->bind();
+    ASSERT_TRUE(r->render(moving.matrices(float(half) / h), chosen, {half, 0, half, h}));
+    if (f == 5) cam = moving;
+  }
+  const CameraMatrices m = cam.matrices(float(half) / h);
+  auto frame = [&] {
+    target->bind();
+    EXPECT_TRUE(r->render(m, reference, {0, 0, half, h}));
+    EXPECT_TRUE(r->render(m, chosen, {half, 0, half, h}));
+    return target->readRGBA8();
+  };
+  const ImageRGBA8 first = frame();
+  const PatternFrame before = r->patternTracker().frame();
+  EXPECT_NE(before.scale, 1.0f);
+  for (int f = 0; f < 60; ++f) (void)frame();
+  const ImageRGBA8 later = frame();
+  EXPECT_EQ(test::countDiffering(first, later), 0) << "the pattern moved over 60 frames of a still view";
+  const PatternFrame& after = r->patternTracker().frame();
+  EXPECT_EQ(after.scale, before.scale);
+  EXPECT_EQ(after.rotation, before.rotation);
+  EXPECT_EQ(after.translation, before.translation);
+}
+
 }  // namespace
 }  // namespace npr
