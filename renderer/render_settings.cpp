@@ -169,6 +169,9 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     } else if (key == "taper") {
       if (!parseNumber(value, set.taper) || !(set.taper >= 0.0f) || set.taper > LineSet::kMaxTaper)
         return why = "taper must be a number of pixels in 0..1000 (0: blunt ends)", false;
+    } else if (key == "texture") {
+      if (value.empty() || value.size() > 4096) return why = "texture must be brush or an image file's path (without blanks)", false;
+      set.texture = value;
     } else if (key == "objects" || key == "materials") {
       std::vector<std::string>& names = key == "objects" ? set.objects : set.materials;
       names.clear();
@@ -180,7 +183,7 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, falloff, sketchy, objects, materials)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, texture, falloff, sketchy, objects, materials)", false;
     }
   }
   return true;
@@ -269,6 +272,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     if (s.colour) out += " colour=" + formatFloat(s.colour->r) + "," + formatFloat(s.colour->g) + "," + formatFloat(s.colour->b);
     if (s.dash.x > 0.0f) out += " dash=" + formatFloat(s.dash.x) + "," + formatFloat(s.dash.y);
     if (s.taper > 0.0f) out += " taper=" + formatFloat(s.taper);
+    if (!s.texture.empty()) out += " texture=" + s.texture;
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];

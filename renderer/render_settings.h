@@ -48,6 +48,9 @@ struct LineSet {
   // is taken when a face on either side has one. Such a set draws over the base style (it takes
   // no kind from it) and leaves the scene's intersections to the others.
   std::vector<std::string> materials;
+  // Coverage stretched along each stroke (lines/stroke_textures.h): `brush` (the painterly
+  // strokes' first brush) or an image file; empty: none.
+  std::string texture;
   bool takesMaterial(const std::string& name) const;
   static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
@@ -55,8 +58,8 @@ struct LineSet {
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [falloff=on|off] [sketchy=on|off] [objects=NAME,...]
-// [materials=NAME,...]`, or `none`. On failure `why`
+// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [falloff=on|off] [sketchy=on|off]
+// [objects=NAME,...] [materials=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);
 std::string formatLineSets(const std::vector<LineSet>& sets);  // one set per line; "none" when empty

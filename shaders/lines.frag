@@ -2,17 +2,24 @@
 // their first and last few pixels and press harder or lighter along their length. DASHED
 // leaves gaps along the stroke: dashes uDash.x pixels long every uDash.x + uDash.y (hidden
 // lines: 6 in 10 by default). TAPERED narrows the stroke to points over uTaper pixels at its
-// ends. uInk lightens (the hidden lines of the base style).
+// ends. TEXTURED multiplies the ink by a texture stretched along the stroke (a brush, or the
+// user's image). uInk lightens (the hidden lines of the base style).
 in vec3 vColour;
 in float vAcross;
 flat in float vHalfWidth;
 #ifdef DASHED
 in float vDash;
 #endif
-#ifdef TAPERED
+#if defined(TAPERED) || defined(TEXTURED)
 in float vArc;
 flat in float vChain;   // negative: a closed loop, with no ends
+#endif
+#ifdef TAPERED
 uniform float uTaper;  // pixels at each end
+#endif
+#ifdef TEXTURED
+flat in float vWay;
+uniform sampler2D uStrokeTexture;  // coverage: columns along the stroke, rows across it
 #endif
 #ifdef SKETCHY
 in float vAlong;
@@ -45,6 +52,13 @@ void main() {
     float taperPixels = max(min(uTaper, 0.5 * vChain), 1e-3);
     halfWidth *= clamp(min(vArc, vChain - vArc) / taperPixels, 0.0, 1.0);
   }
+#endif
+#ifdef TEXTURED
+  // Stretched once along the chain from end to end, as a brush drawn along it (a loop's ends
+  // meet at its seam); the rows span the line's width.
+  float along = clamp(vArc / max(abs(vChain), 1e-3), 0.0, 1.0);
+  // Across: the same side of the chain for every segment, whichever way it was stored.
+  ink *= texture(uStrokeTexture, vec2(along, 0.5 + 0.5 * vWay * vAcross / max(halfWidth, 1e-3))).r;
 #endif
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;

@@ -6,8 +6,9 @@
 // pressure (darkness and width) changes along it between two hashed values, as a pencil's does. DEPTH_FALLOFF thins lines with distance.
 // Edges come chained into strokes (renderer/lines/line_chains.h): DASHED runs the dashes along
 // the stroke's parameter, kept from frame to frame, so they neither restart at each edge nor
-// crawl as the view turns; TAPERED narrows the stroke to points at its chain's ends. Both are in
-// pixels at the object's centre (uParamPixels per object unit).
+// crawl as the view turns; TAPERED narrows the stroke to points at its chain's ends; TEXTURED
+// stretches a texture along it. All are in pixels at the object's centre (uParamPixels per
+// object unit).
 layout(location = 0) in vec3 aStart;
 layout(location = 1) in vec3 aEnd;
 layout(location = 2) in float aKind;
@@ -42,9 +43,12 @@ flat out float vHalfWidth;
 #ifdef DASHED
 out float vDash;           // the stroke's parameter in pixels, for the dashes
 #endif
-#ifdef TAPERED
+#if defined(TAPERED) || defined(TEXTURED)
 out float vArc;            // pixels from the chain's start
 flat out float vChain;     // the chain's length in pixels
+#endif
+#ifdef TEXTURED
+flat out float vWay;       // 1 where the segment runs along its chain, -1 against: the texture's side
 #endif
 #ifdef SKETCHY
 out float vAlong;          // pixels from the stroke's start (its cap included)
@@ -120,9 +124,12 @@ void main() {
   float dashWay = aParam.y >= aParam.x ? 1.0 : -1.0;
   vDash = (end ? aParam.y : aParam.x) * uParamPixels + (end ? 0.5 : -0.5) * width * dashWay;
 #endif
-#ifdef TAPERED
+#if defined(TAPERED) || defined(TEXTURED)
   vArc = (end ? aArc.y : aArc.x) * uParamPixels + (end ? 0.5 : -0.5) * width * (aArc.y >= aArc.x ? 1.0 : -1.0);
   vChain = aLength * uParamPixels;
+#endif
+#ifdef TEXTURED
+  vWay = aArc.y >= aArc.x ? 1.0 : -1.0;
 #endif
 #ifdef SKETCHY
   vLength = len + width;

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "renderer/core/image_io.h"
+
 namespace npr {
 namespace {
 
@@ -406,14 +408,28 @@ std::vector<Setting> buildTable() {
     Setting sets = base("line-set", "line sets", "lines",
                         "A line set: object-space kinds drawn in a style of their own, over the kinds `lines` names that no set takes; "
                         "repeat it for several, drawn in order. KINDS [visibility=visible|hidden|both] [width=W] [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] "
-                        "[falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)] [materials=NAME,...]",
+                        "[texture=brush|FILE (stretched along each stroke)] [falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)] "
+                        "[materials=NAME,...]",
                         K::Text);
     sets.example = "silhouette,crease visibility=hidden width=1 dash=4,3";
     sets.repeated = true;
     sets.format = [](const Look& l) { return formatLineSets(l.render.lines.sets); };
     sets.parse = [](const std::string& v, Look& l) -> Status {
       std::string reason;
-      if (!parseLineSets(v, l.render.lines.sets, &reason)) return Error{reason};
+      std::vector<LineSet> sets;
+      if (!parseLineSets(v, sets, &reason)) return Error{reason};
+      // A texture file is checked now (its header: a readable image within the limits), so a
+      // typo is an error where it was typed, not a plain line later; and kept as an absolute
+      // path, as palettes are, so a saved style works from any folder.
+      for (std::size_t i = 0; i < sets.size(); ++i) {
+        std::string& file = sets[i].texture;
+        if (file.empty() || file == "brush") continue;
+        if (Result<ImageSize> size = readImageSize(file); !size) return Error{"set " + std::to_string(i + 1) + ": texture: " + size.error()};
+        std::error_code ec;
+        const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
+        if (!ec && absolute.string().find_first_of(" \t") == std::string::npos) file = absolute.lexically_normal().string();
+      }
+      l.render.lines.sets = std::move(sets);
       return okStatus();
     };
     t.push_back(sets);

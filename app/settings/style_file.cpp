@@ -36,6 +36,26 @@ std::string resolvePalette(const std::string& name, const std::string& baseDirec
   return fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
 }
 
+namespace {
+// A line set's texture file named relative to the style file is found there, as its palette
+// is: `texture=ink.png` in styles/pen.style reads styles/ink.png when that exists.
+std::string resolveLineSetFiles(const std::string& sets, const std::string& baseDirectory) {
+  std::istringstream words(sets);
+  std::string word, out;
+  while (words >> word) {
+    constexpr std::string_view key = "texture=";
+    if (word.compare(0, key.size(), key) == 0) {
+      const fs::path file = word.substr(key.size());
+      std::error_code ec;
+      if (file != "brush" && file.is_relative() && fs::exists(fs::path(baseDirectory) / file, ec))
+        word = std::string(key) + (fs::path(baseDirectory) / file).lexically_normal().string();
+    }
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
+}
+}  // namespace
+
 Result<Style> loadStyle(const std::string& path) {
   Result<std::string> text = readInputFile(path, InputKind::Palette);
   if (!text) return Error{text.error()};
@@ -60,7 +80,7 @@ Result<Style> loadStyle(const std::string& path) {
     }
     const Setting* row = findSetting(key);
     if (!row) return Error{where + ": unknown key '" + printable(key) + "' (the README's settings reference lists the keys a style may set)"};
-    const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : arg;
+    const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : key == "line-set" ? resolveLineSetFiles(arg, dir) : arg;
     if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + printable(arg) + "': " + s.error()};
     if (key == "palette") {
       st.palette = value;

@@ -2,6 +2,8 @@
 // Adding a feature is its folder and a row here.
 #include "renderer/features/feature.h"
 
+#include "renderer/lines/stroke_textures.h"
+
 namespace npr {
 
 std::unique_ptr<Feature> makeShadowsFeature();
@@ -10,8 +12,8 @@ std::unique_ptr<Feature> makeScreenOcclusionFeature();
 std::unique_ptr<Feature> makeStrokesFeature();
 std::unique_ptr<Feature> makeOutlinesFeature();
 std::unique_ptr<Feature> makeImageEdgesFeature();
-std::unique_ptr<Feature> makeFeatureLinesFeature();
-std::unique_ptr<Feature> makeIntersectionLinesFeature();
+std::unique_ptr<Feature> makeFeatureLinesFeature(std::shared_ptr<StrokeTextures> textures);
+std::unique_ptr<Feature> makeIntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures);
 std::unique_ptr<Feature> makeDepthCueFeature();
 
 std::vector<std::unique_ptr<Feature>> makeFeatures() {
@@ -22,8 +24,10 @@ std::vector<std::unique_ptr<Feature>> makeFeatures() {
   f.push_back(makeStrokesFeature());         // over the surfaces: strokes, then lines
   f.push_back(makeOutlinesFeature());
   f.push_back(makeImageEdgesFeature());
-  f.push_back(makeFeatureLinesFeature());
-  f.push_back(makeIntersectionLinesFeature());
+  // Line sets' stroke textures, loaded once for both kinds of line.
+  auto strokeTextures = std::make_shared<StrokeTextures>();
+  f.push_back(makeFeatureLinesFeature(strokeTextures));
+  f.push_back(makeIntersectionLinesFeature(strokeTextures));
   f.push_back(makeDepthCueFeature());        // last: fades what is drawn
   return f;
 }

@@ -88,6 +88,16 @@ inline constexpr PassState kLines = [] {
   s.depthFunc = GL_LEQUAL;
   return s;
 }();
+// Textured lines: each pixel once per draw (the first fragment marks it in the stencil, cleared
+// before), so the segments' overlapping caps at a chain's joints do not blend twice over a
+// texture's partial coverage.
+inline constexpr PassState kTexturedLines = [] {
+  PassState s = kLines;
+  s.stencilTest = true;
+  s.stencilFunc = GL_NOTEQUAL;
+  s.stencilPass = GL_REPLACE;
+  return s;
+}();
 // Hidden lines: drawn only where the surface is in front of them (the lines are pulled towards
 // the eye, so a visible line fails this test), blended, writing no depth.
 inline constexpr PassState kHiddenLines = [] {

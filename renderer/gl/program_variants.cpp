@@ -121,6 +121,7 @@ struct SourceOf {
     if (l.dashed) s.defines.push_back("DASHED");
     if (l.tapered) s.defines.push_back("TAPERED");
     if (l.byMaterial) s.defines.push_back("BY_MATERIAL");
+    if (l.textured) s.defines.push_back("TEXTURED");
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

@@ -117,6 +117,7 @@ struct LineProgram {
   bool dashed = false;  // dashes along the line (hidden lines by default, line sets' dash=ON,OFF)
   bool tapered = false; // strokes narrowed to points at their chains' ends (line sets' taper=PIXELS)
   bool byMaterial = false;  // only lines on faces of the materials a set takes (materials=NAME,...)
+  bool textured = false;    // a coverage texture stretched along each stroke (texture=brush|FILE)
 };
 
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the

@@ -26,6 +26,7 @@ enum class TextureUnit : GLint {
   ScreenOcclusionNormals,
   GroundShadows,   // the ground plane's visibility per light
   TurnBuffer,      // a mesh pass's stroke angle and entry per pixel, for the turn resolve
+  LineTexture,     // a line set's stroke texture (lines/stroke_textures.h)
 };
 
 inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }

@@ -7,6 +7,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/gl/texture_units.h"
 
 namespace npr {
 namespace {
@@ -130,6 +131,7 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.sketchy = set.sketchy;
   s.falloff = set.falloff;
   s.taper = set.taper;
+  s.texture = set.texture;
   s.kinds = set.kinds;
   if (!set.materials.empty()) s.materialNames = &set.materials;
   return s;
@@ -166,10 +168,18 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     const bool sketchy = style.sketchy && !hidden;
     const glm::vec2 dash = hidden ? style.hiddenDash : style.dash;
     const bool tapered = style.taper > 0.0f && !hidden;
-    Result<gl::ShaderProgram*> prog = programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial()}, stats.shaderBuilds);
+    const bool textured = style.textureBound.id != 0 && !hidden;
+    Result<gl::ShaderProgram*> prog =
+        programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
-    gl::apply(hidden ? gl::pass::kHiddenLines : gl::pass::kLines);
+    if (textured) {
+      glScissor(viewport.x, viewport.y, viewport.z, viewport.w);
+      gl::apply(gl::pass::kClearViewport);
+      glClearStencil(0);
+      glClear(GL_STENCIL_BUFFER_BIT);
+    }
+    gl::apply(hidden ? gl::pass::kHiddenLines : textured ? gl::pass::kTexturedLines : gl::pass::kLines);
     p.use();
     p.set("uModelViewProjection", placed.projection * placed.view);
     p.set("uViewport", glm::vec2(viewport.z, viewport.w));
@@ -190,6 +200,10 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     // stroke, and unchanged as the view turns about it.
     p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
     if (tapered) p.set("uTaper", style.taper);
+    if (textured) {
+      gl::bindTexture(gl::TextureUnit::LineTexture, GL_TEXTURE_2D, style.textureBound.id);
+      p.set("uStrokeTexture", gl::unitIndex(gl::TextureUnit::LineTexture));
+    }
     if (style.byMaterial())
       p.setArray("uMaterialMask", style.materialMask.data(), int(style.materialMask.size()));
     glBindVertexArray(vao.id());

@@ -19,6 +19,7 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/lines/feature_edges.h"
 #include "renderer/lines/line_chains.h"
+#include "renderer/lines/stroke_textures.h"
 #include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/render_settings.h"
@@ -45,6 +46,8 @@ struct LineStyle {
   float hiddenWidthScale = 1.0f, hiddenInk = 1.0f;  // the hidden parts thinner and lighter
   bool sketchy = false, falloff = false;
   float taper = 0.0f;                   // pixels at each end of a stroke (0: blunt)
+  std::string texture;                  // stretched along each stroke (stroke_textures.h); empty: none
+  StrokeTexture textureBound;           // what `texture` names, once the feature has loaded it (id 0: none)
   // A set selecting materials: the materials it takes, by index into the mesh's, as bits
   // (resolve() fills them from the set's names); lines on no such face are not drawn.
   const std::vector<std::string>* materialNames = nullptr;

@@ -12,6 +12,7 @@
 #include "app/cli.h"
 #include "app/settings/setting.h"
 #include "app/settings/style_file.h"
+#include "renderer/core/image_io.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -72,6 +73,7 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
           if (pick(2)) set += " dash=" + formatFloat(float(uniform(0.5, 20))) + "," + formatFloat(float(uniform(0.5, 20)));
           if (pick(2)) set += " taper=" + formatFloat(float(uniform(0, 100)));
           if (pick(3) == 0) set += std::string(" materials=") + (pick(2) ? "Paint*" : "Glass,Chrome");
+          if (pick(3) == 0) set += " texture=brush";
           if (pick(2)) set += std::string(" falloff=") + (pick(2) ? "on" : "off");
           if (pick(2)) set += std::string(" sketchy=") + (pick(2) ? "on" : "off");
           out += (out.empty() ? "" : "\n") + set;
@@ -182,6 +184,7 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
            {"crease taper=-1", "set 1: taper must be"},
            {"crease taper=nan", "set 1: taper must be"},
            {"crease materials=", "set 1: materials must name at least one material"},
+           {"crease texture=", "set 1: texture must be brush or an image file"},
            {"crease shade=on", "set 1: unknown key 'shade'"},
            {";", "no set"}}) {
     EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;
@@ -220,6 +223,23 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
   ASSERT_EQ(look.render.lines.sets.size(), 2u);
   EXPECT_EQ(look.render.lines.baseKinds(), 1u << 2);  // boundaries: no set takes them
   EXPECT_EQ(look.render.lines.drawnKinds(), 7u);
+  // A texture file: checked when given (a missing one is an error naming the set), found next
+  // to the style that names it, and kept as an absolute path so a saved style works anywhere.
+  const Setting* row = findSetting("line-set");
+  const Status missing = row->parse("silhouette texture=no-such-brush.png", look);
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("set 1: texture: "), std::string::npos) << missing.error();
+  EXPECT_NE(missing.error().find("no-such-brush.png"), std::string::npos) << missing.error();
+  ASSERT_TRUE(row->parse("silhouette texture=brush", look));
+  EXPECT_EQ(look.render.lines.sets.at(0).texture, "brush");
+  const std::string ink = d.write("ink.png", "");
+  ImageRGBA8 img{4, 2, std::vector<std::uint8_t>(32, 200)};
+  ASSERT_TRUE(writeImage(ink, img));
+  st = loadStyle(d.write("inked.style", "line-set silhouette width=4 texture=ink.png\n"));
+  ASSERT_TRUE(st) << st.error();
+  ASSERT_EQ(st->values.size(), 1u);
+  ASSERT_TRUE(st->values[0].row->parse(st->values[0].value, look)) << st->values[0].value;
+  EXPECT_EQ(std::filesystem::path(look.render.lines.sets.at(0).texture), std::filesystem::absolute(ink).lexically_normal());
 }
 
 // The drift the table ended: the orientation does not reset its bins; the bins may go to 64.

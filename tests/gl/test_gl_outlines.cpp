@@ -8,11 +8,13 @@
 // their own colour and width; strokes taper and dash along their whole chain of edges.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/gl_test_env.h"
+#include "renderer/core/image_io.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -384,6 +386,73 @@ TEST_F(OutlineFixture, StrokesTaperAndDashAlongTheirWholeChain) {
   std::printf("dashes 8,8 along the ridge: %d of %d columns inked\n", inked, span);
   EXPECT_GT(inked, span * 3 / 10);
   EXPECT_LT(inked, span * 7 / 10) << "dashes restart at each edge instead of running along the stroke";
+}
+
+// A set's texture runs once along the whole chain, from one end to the other, and each pixel
+// gets the texture's coverage once: the segments' overlapping caps at the ridge's 63 joints
+// (each pixel lies under three quads) must not blend it again.
+TEST_F(OutlineFixture, AStrokeTextureIsStretchedOnceAlongTheChainAndInkedOnce) {
+  const Mesh roof = roofMesh();
+  const std::string dir = ::testing::TempDir();
+  auto texture = [&](const char* name, auto coverage) {
+    ImageRGBA8 img{128, 16, std::vector<std::uint8_t>(128 * 16 * 4, 255)};
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x)
+        img.pixels[(std::size_t(y) * 128 + std::size_t(x)) * 4 + 3] = std::uint8_t(std::lround(255.0 * coverage(x)));
+    const std::string path = dir + "/" + name + ".png";
+    EXPECT_TRUE(writeImage(path, img));
+    return path;
+  };
+  const std::string ramp = texture("stroke-ramp", [](int x) { return 1.0 - double(x) / 127.0; });
+  const std::string half = texture("stroke-half", [](int) { return 0.5; });
+  // Darkness the lines add, per column and at the stroke's darkest row of each column.
+  LineSettings none;
+  const ImageRGBA8 plain = draw(roof, none);
+  struct Ink {
+    std::vector<double> column, peak;
+  };
+  auto ink = [&](const std::string& sets) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    const ImageRGBA8 img = draw(roof, l);
+    Ink out{std::vector<double>(kSize, 0.0), std::vector<double>(kSize, 0.0)};
+    for (int x = 0; x < kSize; ++x)
+      for (int y = 0; y < kSize; ++y) {
+        const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4 + 1;
+        const double d = std::max(0.0, (double(plain.pixels[i]) - double(img.pixels[i])) / 255.0);
+        out.column[std::size_t(x)] += d;
+        // As a share of what full ink adds there (the plain picture's own brightness).
+        if (plain.pixels[i] > 40) out.peak[std::size_t(x)] = std::max(out.peak[std::size_t(x)], d * 255.0 / double(plain.pixels[i]));
+      }
+    return out;
+  };
+  const Ink solid = ink("crease width=8 colour=0,0,0");
+  int left = -1, right = -1;
+  for (int x = 0; x < kSize; ++x)
+    if (solid.column[std::size_t(x)] > 1.0) {
+      if (left < 0) left = x;
+      right = x;
+    }
+  ASSERT_GT(right - left, 150) << "the ridge is not across the picture";
+  const int eighth = (right - left) / 8;
+  auto mean = [](const std::vector<double>& v, int from, int to) {
+    double sum = 0.0;
+    for (int x = from; x <= to; ++x) sum += v[std::size_t(x)];
+    return sum / double(to - from + 1);
+  };
+  const Ink ramped = ink("crease width=8 colour=0,0,0 texture=" + ramp);
+  const double a = mean(ramped.column, left + 4, left + eighth), b = mean(ramped.column, right - eighth, right - 4);
+  const double middle = mean(ramped.column, (left + right) / 2 - eighth / 2, (left + right) / 2 + eighth / 2);
+  std::printf("a ramp along the ridge: ink a column %.2f at one end, %.2f in the middle, %.2f at the other (solid %.2f)\n", a, middle, b,
+              mean(solid.column, left + 4, right - 4));
+  EXPECT_GT(std::max(a, b), 5.0 * std::min(a, b)) << "the texture does not run from one end of the chain to the other";
+  EXPECT_GT(middle, 1.5 * std::min(a, b));
+  EXPECT_LT(middle, 0.75 * std::max(a, b)) << "the texture restarts along the chain";
+  const Ink halfInk = ink("crease width=8 colour=0,0,0 texture=" + half);
+  const double peak = mean(halfInk.peak, left + eighth, right - eighth), solidPeak = mean(solid.peak, left + eighth, right - eighth);
+  std::printf("half coverage: %.2f of full ink at the stroke's centre (solid %.2f)\n", peak, solidPeak);
+  EXPECT_NEAR(peak, 0.5 * solidPeak, 0.08) << "overlapping segments inked a pixel more than once";
 }
 
 TEST_F(OutlineFixture, ALineSetNamingMaterialsDrawsOnTheirFacesOnly) {

@@ -11,6 +11,7 @@
 #include "renderer/lines/image_edges_pass.h"
 #include "renderer/lines/intersection_lines.h"
 #include "renderer/lines/line_pass.h"
+#include "renderer/lines/stroke_textures.h"
 
 namespace npr {
 namespace {
@@ -41,8 +42,19 @@ class ImageEdgesFeature final : public Feature {
   ImageEdgesPass pass_;
 };
 
+// A style's stroke texture, loaded on first use (shared by the features that draw sets). A
+// file that cannot be read is reported once; its sets then draw plain lines.
+Status loadStrokeTexture(LineStyle& style, StrokeTextures& textures) {
+  if (style.texture.empty()) return okStatus();
+  Result<StrokeTexture> t = textures.find(style.texture);
+  if (!t) return Error{t.error()};
+  style.textureBound = *t;
+  return okStatus();
+}
+
 class FeatureLinesFeature final : public Feature {
  public:
+  explicit FeatureLinesFeature(std::shared_ptr<StrokeTextures> textures) : textures_(std::move(textures)) {}
   const char* name() const override { return "feature lines"; }
   bool active(const FrameView& f) const override { return f.settings.lines.edgeKinds(); }
   Status drawOver(FrameView& f) override {
@@ -54,15 +66,21 @@ class FeatureLinesFeature final : public Feature {
     for (int layer = -1; layer < int(ls.sets.size()) && result; ++layer)
       f.scene.forEach([&](Model& m) {
         if (!result) return;
-        if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name()))
-          result = m.lines().drawStyle(*style, m.placed(f.camera), f.viewport, f.programs, f.stats);
+        if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name())) {
+          result = loadStrokeTexture(*style, *textures_);
+          if (result) result = m.lines().drawStyle(*style, m.placed(f.camera), f.viewport, f.programs, f.stats);
+        }
       });
     return result;
   }
+
+ private:
+  std::shared_ptr<StrokeTextures> textures_;
 };
 
 class IntersectionLinesFeature final : public Feature {
  public:
+  explicit IntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures) : textures_(std::move(textures)) {}
   const char* name() const override { return "intersection lines"; }
   bool active(const FrameView& f) const override { return (f.settings.lines.drawnKinds() & 16u) && !f.scene.empty(); }
   Status drawOver(FrameView& f) override {
@@ -83,13 +101,16 @@ class IntersectionLinesFeature final : public Feature {
       f.stats.cpuLinesMs += msSince(t0);
     }
     // World space: the scene's camera places them.
-    for (const LineStyle& style : lineStyles(f.settings.lines, nullptr))
-      if (style.kinds & 16u)
+    for (LineStyle& style : lineStyles(f.settings.lines, nullptr))
+      if (style.kinds & 16u) {
+        if (Status st = loadStrokeTexture(style, *textures_); !st) return st;
         if (Status st = drawLineRanges({{&buffer_, 0, count_}}, f.camera, style, f.viewport, vao_, f.programs, f.stats); !st) return st;
+      }
     return okStatus();
   }
 
  private:
+  std::shared_ptr<StrokeTextures> textures_;
   gl::VertexArray vao_;
   gl::Buffer buffer_;
   LineChains chains_{1e-4f};  // world units: vertices this near continue the last pose's strokes
@@ -99,9 +120,13 @@ class IntersectionLinesFeature final : public Feature {
 
 }  // namespace
 
-std::unique_ptr<Feature> makeIntersectionLinesFeature() { return std::make_unique<IntersectionLinesFeature>(); }
+std::unique_ptr<Feature> makeIntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures) {
+  return std::make_unique<IntersectionLinesFeature>(std::move(textures));
+}
 std::unique_ptr<Feature> makeOutlinesFeature() { return std::make_unique<OutlinesFeature>(); }
 std::unique_ptr<Feature> makeImageEdgesFeature() { return std::make_unique<ImageEdgesFeature>(); }
-std::unique_ptr<Feature> makeFeatureLinesFeature() { return std::make_unique<FeatureLinesFeature>(); }
+std::unique_ptr<Feature> makeFeatureLinesFeature(std::shared_ptr<StrokeTextures> textures) {
+  return std::make_unique<FeatureLinesFeature>(std::move(textures));
+}
 
 }  // namespace npr
