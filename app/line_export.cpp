@@ -111,7 +111,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
       lengthPx += chains.lengthPx;
       for (int k = 0; k < kEdgeKinds; ++k)
         groups.push_back({prefix + kLineKinds[k].plural + (hidden ? "-hidden" : ""), style.colours[k], hidden ? style.hiddenWidthScale * style.width : style.width,
-                          hidden ? style.hiddenInk : 1.0f, hidden ? style.hiddenDash : style.dash, chains.chains[k]});
+                          hidden ? style.hiddenInk : 1.0f, hidden ? style.hiddenDash : style.dash, chains.chains[k], hidden ? 0.0f : style.taper});
     }
   }
   std::optional<SvgFills> fills;

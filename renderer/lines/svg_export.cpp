@@ -137,6 +137,71 @@ std::string base64(const std::vector<std::uint8_t>& data) {
 
 }  // namespace
 
+std::vector<std::vector<glm::vec2>> taperedOutlines(const std::vector<glm::vec2>& chain, float width, float taper, glm::vec2 dash) {
+  std::vector<std::vector<glm::vec2>> out;
+  if (chain.size() < 2 || !(width > 0.0f)) return out;
+  std::vector<float> arc(chain.size(), 0.0f);
+  for (std::size_t i = 1; i < chain.size(); ++i) arc[i] = arc[i - 1] + glm::length(chain[i] - chain[i - 1]);
+  const float length = arc.back();
+  if (!(length > 0.0f)) return out;
+  const bool closed = chain.size() > 2 && glm::length(chain.front() - chain.back()) < 1e-3f;
+  const float ends = std::max(std::min(taper, 0.5f * length), 1e-3f);
+  const auto halfWidth = [&](float s) { return closed || taper <= 0.0f ? 0.5f * width : 0.5f * width * std::clamp(std::min(s, length - s) / ends, 0.0f, 1.0f); };
+  // The point and unit normal at arc length s (the normal of the segment it lies on, averaged
+  // with the neighbour's at a vertex, so the outline's sides join without gaps).
+  const auto normalOf = [&](std::size_t seg) {
+    const glm::vec2 d = chain[seg + 1] - chain[seg];
+    const float l = glm::length(d);
+    return l > 0.0f ? glm::vec2(-d.y, d.x) / l : glm::vec2(0.0f);
+  };
+  const auto sideAt = [&](std::size_t vertex) {
+    glm::vec2 n(0.0f);
+    if (vertex > 0) n += normalOf(vertex - 1);
+    if (vertex + 1 < chain.size()) n += normalOf(vertex);
+    if (closed && (vertex == 0 || vertex + 1 == chain.size())) n = normalOf(0) + normalOf(chain.size() - 2);
+    const float l = glm::length(n);
+    return l > 1e-6f ? n / l : glm::vec2(0.0f);
+  };
+  // The pieces to outline: [from, to] in arc length (dashes, or the whole chain).
+  std::vector<glm::vec2> pieces;
+  if (dash.x > 0.0f) {
+    for (float s = 0.0f; s < length && pieces.size() < 100000; s += dash.x + dash.y) pieces.push_back({s, std::min(s + dash.x, length)});
+  } else {
+    pieces.push_back({0.0f, length});
+  }
+  // Where the width changes: the vertices, and steps through the tapers so their outline is a
+  // curve rather than a straight cut from the point to the first vertex.
+  std::vector<float> marks(arc);
+  if (!closed && taper > 0.0f)
+    for (int k = 1; k <= 8; ++k) {
+      marks.push_back(ends * float(k) / 8.0f);
+      marks.push_back(length - ends * float(k) / 8.0f);
+    }
+  std::sort(marks.begin(), marks.end());
+  for (const glm::vec2& piece : pieces) {
+    std::vector<float> at{piece.x};
+    for (float m : marks)
+      if (m > piece.x && m < piece.y) at.push_back(m);
+    at.push_back(piece.y);
+    std::vector<glm::vec2> left, right;
+    std::size_t seg = 0;
+    for (float a : at) {
+      while (seg + 2 < chain.size() && arc[seg + 1] < a) ++seg;
+      const float t = arc[seg + 1] > arc[seg] ? std::clamp((a - arc[seg]) / (arc[seg + 1] - arc[seg]), 0.0f, 1.0f) : 0.0f;
+      const glm::vec2 p = glm::mix(chain[seg], chain[seg + 1], t);
+      // At a vertex the sides' normals are averaged, so the outline joins without gaps.
+      const glm::vec2 n = t <= 0.0f ? sideAt(seg) : t >= 1.0f ? sideAt(seg + 1) : normalOf(seg);
+      const float h = halfWidth(a);
+      left.push_back(p + n * h);
+      right.push_back(p - n * h);
+    }
+    std::vector<glm::vec2> polygon(left);
+    polygon.insert(polygon.end(), right.rbegin(), right.rend());
+    out.push_back(std::move(polygon));
+  }
+  return out;
+}
+
 std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style) {
   std::vector<SvgGroup> out;
   for (int k = 0; k < kEdgeKinds; ++k)
@@ -184,6 +249,27 @@ std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& s
   }
   for (const SvgGroup& g : groups) {
     if (g.chains.empty()) continue;
+    if (g.taper > 0.0f) {
+      // Filled outlines: one path per chain, a closed piece per dash.
+      o << "<g id=\"" << g.id << "\" fill=\"" << hexColour(g.colour) << "\" stroke=\"none\"";
+      if (g.opacity < 1.0f) o << " fill-opacity=\"" << g.opacity << "\"";
+      o << ">\n";
+      for (const auto& c : g.chains) {
+        const std::vector<std::vector<glm::vec2>> pieces = taperedOutlines(c, g.width, g.taper, g.dash);
+        if (pieces.empty()) continue;
+        o << "<path d=\"";
+        for (const auto& piece : pieces) {
+          for (std::size_t i = 0; i < piece.size(); ++i) {
+            std::snprintf(number, sizeof number, "%s%.2f %.2f", i ? "L" : "M", double(piece[i].x), double(piece[i].y));
+            o << number;
+          }
+          o << 'Z';
+        }
+        o << "\"/>\n";
+      }
+      o << "</g>\n";
+      continue;
+    }
     o << "<g id=\"" << g.id << "\" fill=\"none\" stroke=\"" << hexColour(g.colour) << "\" stroke-width=\"" << g.width
       << "\" stroke-linecap=\"" << (g.dash.x > 0.0f ? "butt" : "round") << "\" stroke-linejoin=\"round\"";
     if (g.opacity < 1.0f) o << " stroke-opacity=\"" << g.opacity << "\"";

@@ -39,7 +39,15 @@ struct SvgGroup {
   float width = 1.0f, opacity = 1.0f;
   glm::vec2 dash{0.0f};  // pixels on, off; 0: solid
   std::vector<std::vector<glm::vec2>> chains;
+  // Pixels over which each chain narrows to a point at both ends (0: blunt). Tapered chains
+  // are written as filled outlines (SVG strokes have one width), dashes cut out of them.
+  float taper = 0.0f;
 };
+
+// The outline of `chain` drawn `width` wide and narrowing to points over `taper` pixels at both
+// ends (a closed chain, first point = last, keeps its width), split into dashes (`dash` pixels
+// on, off along the chain; 0: solid): closed polygons, one per dash.
+std::vector<std::vector<glm::vec2>> taperedOutlines(const std::vector<glm::vec2>& chain, float width, float taper, glm::vec2 dash);
 // The groups of the line settings' kinds, each in its kind's colour and `style.width`.
 std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& style);
 

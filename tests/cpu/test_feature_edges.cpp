@@ -175,6 +175,44 @@ TEST(SvgExport, EdgesChainAtSharedEndsAndHiddenPartsAreCut) {
   EXPECT_EQ(svg.find("<image"), std::string::npos);
 }
 
+// Tapered lines in the SVG: filled outlines, zero wide at the chain's ends, the set's width past
+// the taper, the width in between as the GPU's lines.frag gives it (linear in the distance from
+// the end); dashes cut out of the outline along the chain; a closed chain keeps its width.
+TEST(SvgExport, TaperedChainsAreOutlinesNarrowingToPointsAndDashedAlongTheChain) {
+  const std::vector<glm::vec2> line{{0, 50}, {40, 50}, {100, 50}};
+  const auto widths = [](const std::vector<glm::vec2>& polygon) {
+    // Left side first, then the right side backwards: pair them up.
+    std::vector<std::pair<float, float>> out;  // (x, width)
+    const std::size_t n = polygon.size() / 2;
+    for (std::size_t i = 0; i < n; ++i) out.push_back({polygon[i].x, glm::length(polygon[i] - polygon[polygon.size() - 1 - i])});
+    return out;
+  };
+  const auto outlines = taperedOutlines(line, 8.0f, 20.0f, glm::vec2(0.0f));
+  ASSERT_EQ(outlines.size(), 1u);
+  int checked = 0;
+  for (const auto& [x, w] : widths(outlines[0])) {
+    const float expected = 8.0f * std::clamp(std::min(x, 100.0f - x) / 20.0f, 0.0f, 1.0f);
+    EXPECT_NEAR(w, expected, 0.01f) << "at x = " << x;
+    ++checked;
+  }
+  EXPECT_GE(checked, 19) << "the tapers are not drawn as curves";
+  const auto dashed = taperedOutlines(line, 8.0f, 20.0f, glm::vec2(10.0f, 10.0f));
+  ASSERT_EQ(dashed.size(), 5u);
+  for (std::size_t i = 0; i < dashed.size(); ++i) {
+    float lo = 1e9f, hi = -1e9f;
+    for (const glm::vec2& p : dashed[i]) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+    EXPECT_NEAR(lo, 20.0f * float(i), 0.01f);
+    EXPECT_NEAR(hi, 20.0f * float(i) + 10.0f, 0.01f);
+  }
+  const std::vector<glm::vec2> loop{{0, 0}, {50, 0}, {50, 50}, {0, 50}, {0, 0}};
+  for (const auto& [x, w] : widths(taperedOutlines(loop, 6.0f, 20.0f, glm::vec2(0.0f)).at(0))) EXPECT_NEAR(w, 6.0f, 1e-3f) << x;
+  SvgGroup g{"set1-silhouettes", glm::vec3(0.0f), 8.0f, 1.0f, glm::vec2(0.0f), {line}, 20.0f};
+  const std::string svg = svgDocument({g}, glm::ivec2(100, 100), {});
+  EXPECT_NE(svg.find("<g id=\"set1-silhouettes\" fill=\"#000000\" stroke=\"none\""), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<path d=\"M0.00 50.00L"), std::string::npos) << svg;
+  EXPECT_EQ(svg.find("<polyline"), std::string::npos);
+}
+
 // A sheet corrugated as y = A sin x, its normals up. Its radial curvature along x is A sin x
 // (positive on the bumps, bending away from the normal), zero at the inflections x = k pi.
 Mesh corrugatedSheet(float amplitude) {
