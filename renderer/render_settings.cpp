@@ -169,6 +169,9 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     } else if (key == "taper") {
       if (!parseNumber(value, set.taper) || !(set.taper >= 0.0f) || set.taper > LineSet::kMaxTaper)
         return why = "taper must be a number of pixels in 0..1000 (0: blunt ends)", false;
+    } else if (key == "curvature") {
+      if (!parseNumber(value, set.curvature) || std::fabs(set.curvature) > LineSet::kMaxCurvatureGain)
+        return why = "curvature must be a number in -4..4 (how much wider where the surface curves more; 0: off)", false;
     } else if (key == "texture") {
       if (value.empty() || value.size() > 4096) return why = "texture must be brush or an image file's path (without blanks)", false;
       set.texture = value;
@@ -183,7 +186,7 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, texture, falloff, sketchy, objects, materials)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, texture, curvature, falloff, sketchy, objects, materials)", false;
     }
   }
   return true;
@@ -273,6 +276,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     if (s.dash.x > 0.0f) out += " dash=" + formatFloat(s.dash.x) + "," + formatFloat(s.dash.y);
     if (s.taper > 0.0f) out += " taper=" + formatFloat(s.taper);
     if (!s.texture.empty()) out += " texture=" + s.texture;
+    if (s.curvature != 0.0f) out += " curvature=" + formatFloat(s.curvature);
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];

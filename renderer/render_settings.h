@@ -51,14 +51,17 @@ struct LineSet {
   // Coverage stretched along each stroke (lines/stroke_textures.h): `brush` (the painterly
   // strokes' first brush) or an image file; empty: none.
   std::string texture;
+  // Width x (the surface's curvature / the mesh's median)^curvature, within 1/4..4: positive
+  // draws tight bends and thin parts heavier, negative lighter; 0: off.
+  float curvature = 0.0f;
   bool takesMaterial(const std::string& name) const;
-  static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f;
+  static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f, kMaxCurvatureGain = 4.0f;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
   // Whether it draws on the object named `object` (null: the scene's intersection lines).
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [falloff=on|off] [sketchy=on|off]
+// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [curvature=GAIN] [falloff=on|off] [sketchy=on|off]
 // [objects=NAME,...] [materials=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);

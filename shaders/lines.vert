@@ -3,7 +3,8 @@
 // test against the model removes hidden lines without z-fighting on their own faces.
 // SKETCHY draws each edge as three jittered sub-strokes whose jitter is a hash of the edge's
 // endpoints: stable from frame to frame. Each sub-stroke tapers to a point at both ends and its
-// pressure (darkness and width) changes along it between two hashed values, as a pencil's does. DEPTH_FALLOFF thins lines with distance.
+// pressure (darkness and width) changes along it between two hashed values, as a pencil's does. DEPTH_FALLOFF thins lines with distance;
+// BY_CURVATURE widens them where the surface curves more than the mesh's median (a line set's curvature=GAIN).
 // Edges come chained into strokes (renderer/lines/line_chains.h): DASHED runs the dashes along
 // the stroke's parameter, kept from frame to frame, so they neither restart at each edge nor
 // crawl as the view turns; TAPERED narrows the stroke to points at its chain's ends; TEXTURED
@@ -16,6 +17,7 @@ layout(location = 3) in vec2 aParam;   // the stroke's parameter at the start an
 layout(location = 4) in vec2 aArc;     // the distance from the chain's start to them
 layout(location = 5) in float aLength; // the chain's length; negative: a closed loop
 layout(location = 6) in uint aMaterials;  // the faces' materials on either side, 16 bits each
+layout(location = 7) in vec2 aCurvature;  // the surface's at the start and the end (0: not known)
 
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
@@ -31,6 +33,9 @@ uniform float uValleyPixels;
 uniform vec4 uEye;
 uniform vec2 uPixelScale;
 uniform float uParamPixels;
+#ifdef BY_CURVATURE
+uniform float uCurvatureGain, uCurvatureReference;
+#endif
 #ifdef BY_MATERIAL
 // BY_MATERIAL: a line set selecting materials draws only lines on a face of one of them.
 uniform uint uMaterialMask[8];  // bit m: material m is taken (0xFFFF: none)
@@ -82,6 +87,12 @@ void main() {
   float width = uWidth;
 #ifdef DEPTH_FALLOFF
   width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);
+#endif
+#ifdef BY_CURVATURE
+  // Heavier where the surface curves more than the mesh's median (lighter, gain < 0); lines
+  // with no curvature of their own (intersections, suggestive contours) keep the width.
+  float curvature = 0.5 * (aCurvature.x + aCurvature.y);
+  if (curvature > 0.0) width *= clamp(pow(curvature / max(uCurvatureReference, 1e-6), uCurvatureGain), 0.25, 4.0);
 #endif
   bool drop = p0.w <= 0.0 || p1.w <= 0.0;  // crosses the eye plane
 #ifdef BY_MATERIAL

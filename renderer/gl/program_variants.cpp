@@ -122,6 +122,7 @@ struct SourceOf {
     if (l.tapered) s.defines.push_back("TAPERED");
     if (l.byMaterial) s.defines.push_back("BY_MATERIAL");
     if (l.textured) s.defines.push_back("TEXTURED");
+    if (l.byCurvature) s.defines.push_back("BY_CURVATURE");
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

@@ -118,6 +118,7 @@ struct LineProgram {
   bool tapered = false; // strokes narrowed to points at their chains' ends (line sets' taper=PIXELS)
   bool byMaterial = false;  // only lines on faces of the materials a set takes (materials=NAME,...)
   bool textured = false;    // a coverage texture stretched along each stroke (texture=brush|FILE)
+  bool byCurvature = false; // wider where the surface curves more (curvature=GAIN)
 };
 
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the

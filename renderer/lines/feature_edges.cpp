@@ -8,6 +8,7 @@
 
 #include "renderer/core/parallel.h"
 #include "renderer/mesh/weld.h"
+#include "renderer/orientation/principal_curvature.h"
 
 namespace npr {
 namespace {
@@ -121,6 +122,20 @@ void FeatureEdges::updatePositions(const Mesh& mesh) {
   creaseAngle_ = -1.0f;  // the static lines' ends moved
 }
 
+void FeatureEdges::estimateCurvature(const Mesh& mesh) {
+  if (!curvature_.empty() || mesh.positions.size() != remap_.size()) return;
+  const PrincipalCurvatures pc = estimatePrincipalCurvatures(mesh);
+  curvature_.assign(positions_.size(), 0.0f);
+  for (std::size_t v = 0; v < remap_.size(); ++v) {
+    const std::uint32_t w = pc.weld.remap[v];
+    curvature_[remap_[v]] = std::max(std::fabs(pc.kMax[w]), std::fabs(pc.kMin[w])) * mesh.radius;
+  }
+  std::vector<float> sorted(curvature_);
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  medianCurvature_ = sorted.empty() ? 1.0f : std::max(sorted[sorted.size() / 2], 1e-3f);
+  creaseAngle_ = -1.0f;  // the static lines found again, with it
+}
+
 const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegrees) {
   if (creaseAngleDegrees == creaseAngle_) return static_;
   creaseAngle_ = creaseAngleDegrees;
@@ -132,16 +147,14 @@ const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegre
     if (n0 == glm::vec3(0.0f) || n1 == glm::vec3(0.0f)) continue;
     // The dihedral angle between the faces is the angle between their normals.
     if (glm::dot(n0, n1) < cosLimit)
-      static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Crease),
-                         materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])});
+      static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Crease, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])));
   }
   for (size_t e = 0; e < boundary_.size() / 2; ++e)
-    static_.push_back({positions_[boundary_[e * 2]], positions_[boundary_[e * 2 + 1]], float(EdgeKind::Boundary), materialsOf(boundaryFace_[e], boundaryFace_[e])});
+    static_.push_back(line(boundary_[e * 2], boundary_[e * 2 + 1], EdgeKind::Boundary, materialsOf(boundaryFace_[e], boundaryFace_[e])));
   if (faceMaterial_.size() == faceNormals_.size())
     for (size_t e = 0; e < manifoldFaces_.size() / 2; ++e)
       if (faceMaterial_[manifoldFaces_[e * 2]] != faceMaterial_[manifoldFaces_[e * 2 + 1]])
-        static_.push_back({positions_[manifoldEnds_[e * 2]], positions_[manifoldEnds_[e * 2 + 1]], float(EdgeKind::Material),
-                           materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])});
+        static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Material, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])));
   return static_;
 }
 
@@ -159,7 +172,7 @@ const std::vector<FeatureLine>& FeatureEdges::silhouettes(const glm::vec3& eye) 
       if (facing_[manifoldFaces_[i * 2]] != facing_[manifoldFaces_[i * 2 + 1]]) {
         const std::uint32_t front = facing_[manifoldFaces_[i * 2]] ? manifoldFaces_[i * 2] : manifoldFaces_[i * 2 + 1];
         const std::uint32_t back = front == manifoldFaces_[i * 2] ? manifoldFaces_[i * 2 + 1] : manifoldFaces_[i * 2];
-        out.push_back({positions_[manifoldEnds_[i * 2]], positions_[manifoldEnds_[i * 2 + 1]], float(EdgeKind::Silhouette), materialsOf(front, back)});
+        out.push_back(line(manifoldEnds_[i * 2], manifoldEnds_[i * 2 + 1], EdgeKind::Silhouette, materialsOf(front, back)));
       }
   });
   silhouettes_.clear();

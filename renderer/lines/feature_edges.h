@@ -33,6 +33,10 @@ struct FeatureLine {
   // one face twice); kNoMaterial where the mesh has none or the line is not on a face's edge
   // (suggestive contours, intersections).
   glm::u16vec2 materials{kNoMaterial, kNoMaterial};
+  // The surface's curvature at a and b: the larger principal curvature's magnitude, times the
+  // mesh's radius (1 on a sphere the size of the model); 0 where not estimated (only lines of
+  // meshes whose FeatureEdges estimated it carry it, for line sets' curvature=GAIN).
+  glm::vec2 curvature{0.0f};
 };
 
 class FeatureEdges {
@@ -47,6 +51,14 @@ class FeatureEdges {
   const std::vector<FeatureLine>& staticLines(float creaseAngleDegrees);
   // Silhouettes seen from `eye` (object space), recomputed in parallel over faces and edges.
   const std::vector<FeatureLine>& silhouettes(const glm::vec3& eye);
+
+  // Estimates the surface's curvature at each vertex (orientation/principal_curvature.h), once:
+  // the lines found afterwards carry it (FeatureLine::curvature). `mesh` is the one built from.
+  void estimateCurvature(const Mesh& mesh);
+  bool hasCurvature() const { return !curvature_.empty(); }
+  // The median over the vertices (a line set's curvature=GAIN widens lines where the surface
+  // is more curved than that); 1 before estimateCurvature.
+  float medianCurvature() const { return medianCurvature_; }
 
   std::size_t weldedVertices() const { return positions_.size(); }
   std::size_t manifoldEdges() const { return manifoldFaces_.size() / 2; }
@@ -72,6 +84,13 @@ class FeatureEdges {
   std::size_t duplicateFaces_ = 0, junctionCount_ = 0;
   float creaseAngle_ = -1.0f;
   std::vector<FeatureLine> static_, silhouettes_;
+  std::vector<float> curvature_;  // per welded vertex (empty: not estimated)
+  float medianCurvature_ = 1.0f;
+  FeatureLine line(std::uint32_t v0, std::uint32_t v1, EdgeKind kind, glm::u16vec2 materials) const {
+    FeatureLine l{positions_[v0], positions_[v1], float(kind), materials};
+    if (!curvature_.empty()) l.curvature = {curvature_[v0], curvature_[v1]};
+    return l;
+  }
   std::vector<std::uint8_t> facing_;
 };
 

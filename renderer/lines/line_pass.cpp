@@ -46,6 +46,14 @@ void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, cons
     edges_ = std::make_unique<FeatureEdges>(*mesh_);
     ++stats.meshCachesBuilt;
   }
+  // A set widening lines by curvature: the surface's, estimated once per mesh, then carried by
+  // every line found (the rest pose's on a deforming mesh, as the other attached data).
+  if (edges_ && !edges_->hasCurvature() && std::any_of(ls.sets.begin(), ls.sets.end(), [](const LineSet& s) { return s.curvature != 0.0f; })) {
+    edges_->estimateCurvature(*mesh_);
+    ++stats.meshCachesBuilt;
+    uploadedCreaseAngle_ = -1.0f;
+    silhouetteEye_ = glm::vec3(NAN);
+  }
   if (!vao_) {
     vao_ = gl::createVertexArray();
     staticLines_ = gl::createBuffer();
@@ -93,6 +101,7 @@ void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, cons
 Status LinePass::drawStyle(LineStyle style, const CameraMatrices& camera, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
   if (!mesh_ || !vao_) return okStatus();
   if (style.byMaterial()) style.resolveMaterials(mesh_->materials);
+  if (edges_) style.curvatureReference = edges_->medianCurvature();
   {
     std::vector<LineRange> ranges;
     if (style.kinds & 1u) ranges.push_back({&silhouettes_, 0, silhouetteCount_});
@@ -132,6 +141,7 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.falloff = set.falloff;
   s.taper = set.taper;
   s.texture = set.texture;
+  s.curvatureGain = set.curvature;
   s.kinds = set.kinds;
   if (!set.materials.empty()) s.materialNames = &set.materials;
   return s;
@@ -169,8 +179,9 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     const glm::vec2 dash = hidden ? style.hiddenDash : style.dash;
     const bool tapered = style.taper > 0.0f && !hidden;
     const bool textured = style.textureBound.id != 0 && !hidden;
+    const bool byCurvature = style.curvatureGain != 0.0f;
     Result<gl::ShaderProgram*> prog =
-        programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured}, stats.shaderBuilds);
+        programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured, byCurvature}, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     if (textured) {
@@ -200,6 +211,10 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     // stroke, and unchanged as the view turns about it.
     p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
     if (tapered) p.set("uTaper", style.taper);
+    if (byCurvature) {
+      p.set("uCurvatureGain", style.curvatureGain);
+      p.set("uCurvatureReference", style.curvatureReference);
+    }
     if (textured) {
       gl::bindTexture(gl::TextureUnit::LineTexture, GL_TEXTURE_2D, style.textureBound.id);
       p.set("uStrokeTexture", gl::unitIndex(gl::TextureUnit::LineTexture));
@@ -227,6 +242,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       glEnableVertexAttribArray(6);
       glVertexAttribIPointer(6, 1, GL_UNSIGNED_INT, sizeof(ChainedLine), reinterpret_cast<void*>(base + offsetof(ChainedLine, materials)));
       glVertexAttribDivisor(6, GLuint(repeat));
+      attribute(7, 2, offsetof(ChainedLine, curvature));
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

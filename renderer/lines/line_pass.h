@@ -48,6 +48,9 @@ struct LineStyle {
   float taper = 0.0f;                   // pixels at each end of a stroke (0: blunt)
   std::string texture;                  // stretched along each stroke (stroke_textures.h); empty: none
   StrokeTexture textureBound;           // what `texture` names, once the feature has loaded it (id 0: none)
+  // Width x (curvature / reference)^gain, within 1/4..4 (0: off); the reference is the mesh's
+  // median curvature (FeatureEdges::medianCurvature), set where the style is drawn.
+  float curvatureGain = 0.0f, curvatureReference = 1.0f;
   // A set selecting materials: the materials it takes, by index into the mesh's, as bits
   // (resolve() fills them from the set's names); lines on no such face are not drawn.
   const std::vector<std::string>* materialNames = nullptr;

@@ -74,6 +74,7 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
           if (pick(2)) set += " taper=" + formatFloat(float(uniform(0, 100)));
           if (pick(3) == 0) set += std::string(" materials=") + (pick(2) ? "Paint*" : "Glass,Chrome");
           if (pick(3) == 0) set += " texture=brush";
+          if (pick(3) == 0) set += " curvature=" + formatFloat(float(uniform(-4, 4)));
           if (pick(2)) set += std::string(" falloff=") + (pick(2) ? "on" : "off");
           if (pick(2)) set += std::string(" sketchy=") + (pick(2) ? "on" : "off");
           out += (out.empty() ? "" : "\n") + set;
@@ -185,6 +186,7 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
            {"crease taper=nan", "set 1: taper must be"},
            {"crease materials=", "set 1: materials must name at least one material"},
            {"crease texture=", "set 1: texture must be brush or an image file"},
+           {"crease curvature=5", "set 1: curvature must be"},
            {"crease shade=on", "set 1: unknown key 'shade'"},
            {";", "no set"}}) {
     EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;

@@ -455,6 +455,50 @@ TEST_F(OutlineFixture, AStrokeTextureIsStretchedOnceAlongTheChainAndInkedOnce) {
   EXPECT_NEAR(peak, 0.5 * solidPeak, 0.08) << "overlapping segments inked a pixel more than once";
 }
 
+// Width by curvature on a spindle (an ellipsoid 4 times longer than wide, along y): its
+// curvature is about 4 times the median at the tips and the median along the middle, so a set
+// with curvature=1 inks the tips' outline heavier than the middle's, and curvature=-1 lighter,
+// against the same set without it.
+TEST_F(OutlineFixture, ALineSetWithCurvatureDrawsTightBendsHeavier) {
+  const Mesh spindle = ellipsoid(64, 64, glm::vec3(0.25f, 1.0f, 0.25f));
+  int top = kSize, bottom = -1;
+  {
+    const LineMask plain = lineMask(draw(spindle, []() {
+      LineSettings l;
+      std::string why;
+      EXPECT_TRUE(parseLineSets("silhouette width=3 colour=0,0,0", l.sets, &why));
+      return l;
+    }()));
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x)
+        if (plain.at(x, y)) top = std::min(top, y), bottom = std::max(bottom, y);
+  }
+  ASSERT_GT(bottom - top, 150) << "the spindle is not upright in the picture";
+  const int band = (bottom - top) / 10;
+  // Ink in the outer tenth at each end over ink in the middle fifth.
+  auto tipsOverMiddle = [&](const char* sets) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    const LineMask mask = lineMask(draw(spindle, l));
+    int tips = 0, middle = 0;
+    const int centre = (top + bottom) / 2;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        if (!mask.at(x, y)) continue;
+        if (y <= top + band || y >= bottom - band) ++tips;
+        if (std::abs(y - centre) <= band) ++middle;
+      }
+    return double(tips) / double(std::max(middle, 1));
+  };
+  const double plain = tipsOverMiddle("silhouette width=3 colour=0,0,0");
+  const double heavier = tipsOverMiddle("silhouette width=3 colour=0,0,0 curvature=1");
+  const double lighter = tipsOverMiddle("silhouette width=3 colour=0,0,0 curvature=-1");
+  std::printf("ink at the spindle's tips over its middle: %.2f plain, %.2f with curvature=1, %.2f with curvature=-1\n", plain, heavier, lighter);
+  EXPECT_GT(heavier, 1.5 * plain) << "tight bends are not drawn heavier";
+  EXPECT_LT(lighter, plain / 1.3) << "a negative gain does not draw them lighter";
+}
+
 TEST_F(OutlineFixture, ALineSetNamingMaterialsDrawsOnTheirFacesOnly) {
   // A cube whose top two triangles are "Lid" and the rest "Box". A set of silhouettes and creases
   // selecting Lid draws red only along the top's edges; one selecting Box* draws the others;
