@@ -5,6 +5,7 @@
 // ends. TEXTURED multiplies the ink by a texture stretched along the stroke (a brush, or the
 // user's image). uInk lightens (the hidden lines of the base style).
 in vec3 vColour;
+flat in float vInk;
 in float vAcross;
 flat in float vHalfWidth;
 #ifdef DASHED
@@ -33,7 +34,7 @@ uniform vec2 uDash;
 out vec4 fragColor;
 void main() {
   float halfWidth = vHalfWidth;
-  float ink = uInk;
+  float ink = uInk * vInk;
 #ifdef SKETCHY
   float t = clamp(vAlong / max(vLength, 1e-3), 0.0, 1.0);
   float pressure = mix(vPressure.x, vPressure.y, t);
@@ -41,7 +42,7 @@ void main() {
   float taperPixels = min(6.0, vLength / 3.0);
   float taper = smoothstep(0.0, 1.0, min(vAlong, vLength - vAlong) / max(taperPixels, 1e-3));
   halfWidth = 0.5 + (vHalfWidth - 0.5) * mix(0.35, 1.0, pressure) * taper;
-  ink = pressure;
+  ink = pressure * vInk;
 #endif
 #ifdef DASHED
   if (mod(vDash, uDash.x + uDash.y) > uDash.x) discard;

@@ -18,6 +18,7 @@ layout(location = 4) in vec2 aArc;     // the distance from the chain's start to
 layout(location = 5) in float aLength; // the chain's length; negative: a closed loop
 layout(location = 6) in uint aMaterials;  // the faces' materials on either side, 16 bits each
 layout(location = 7) in vec2 aCurvature;  // the surface's at the start and the end (0: not known)
+layout(location = 8) in float aInk;       // how much of its ink the line draws (suggestive contours fade in)
 
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
@@ -43,6 +44,7 @@ bool taken(uint m) { return m < 256u && (uMaterialMask[m >> 5] & (1u << (m & 31u
 #endif
 
 out vec3 vColour;
+flat out float vInk;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
 #ifdef DASHED
@@ -84,6 +86,7 @@ void main() {
   vec4 p0 = uModelViewProjection * vec4(start, 1.0);
   vec4 p1 = uModelViewProjection * vec4(end_, 1.0);
   vColour = uColours[int(aKind + 0.5)];
+  vInk = aInk;
   float width = uWidth;
 #ifdef DEPTH_FALLOFF
   width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);

@@ -37,6 +37,9 @@ struct FeatureLine {
   // mesh's radius (1 on a sphere the size of the model); 0 where not estimated (only lines of
   // meshes whose FeatureEdges estimated it carry it, for line sets' curvature=GAIN).
   glm::vec2 curvature{0.0f};
+  // How much of the line's ink it draws (0..1): suggestive contours fade in from their
+  // threshold (suggestive_contours.h), so they do not pop as the view turns; 1 for the others.
+  float ink = 1.0f;
 };
 
 class FeatureEdges {

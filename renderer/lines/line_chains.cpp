@@ -272,8 +272,9 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
         const glm::u16vec2 m = lines[b + segs[i]].materials;
         const std::uint32_t materials = std::uint32_t(m.x) | std::uint32_t(m.y) << 16;
         const glm::vec2 curvature = lines[b + segs[i]].curvature;  // its ends stay its own (see above)
-        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, materials, curvature});
-        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, materials, curvature});
+        const float ink = lines[b + segs[i]].ink;
+        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, materials, curvature, ink});
+        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, materials, curvature, ink});
       }
       ++chainId;
     }

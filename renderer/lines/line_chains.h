@@ -20,7 +20,7 @@
 
 namespace npr {
 
-// One segment as lines.vert reads it (attributes 0-7).
+// One segment as lines.vert reads it (attributes 0-8).
 struct ChainedLine {
   glm::vec3 a, b;
   float kind;         // EdgeKind
@@ -29,6 +29,7 @@ struct ChainedLine {
   float length;       // the chain's length; negative for a closed loop (it has no ends)
   std::uint32_t materials;  // the faces' materials (FeatureLine::materials), low 16 bits first
   glm::vec2 curvature;      // the surface's at a and b (FeatureLine::curvature)
+  float ink;                // FeatureLine::ink
 };
 
 // A step of a chain: a segment, walked from its second end to its first when `reversed`.

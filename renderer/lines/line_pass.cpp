@@ -243,6 +243,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       glVertexAttribIPointer(6, 1, GL_UNSIGNED_INT, sizeof(ChainedLine), reinterpret_cast<void*>(base + offsetof(ChainedLine, materials)));
       glVertexAttribDivisor(6, GLuint(repeat));
       attribute(7, 2, offsetof(ChainedLine, curvature));
+      attribute(8, 1, offsetof(ChainedLine, ink));
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

@@ -56,7 +56,13 @@ const std::vector<FeatureLine>& SuggestiveContours::lines(const glm::vec3& eye, 
       const glm::vec3 gradient = ((k[1] - k[0]) * glm::cross(e2, normal) + (k[2] - k[0]) * glm::cross(normal, e1)) / area2;
       const glm::vec3 w = tangentView_[t[0]] + tangentView_[t[1]] + tangentView_[t[2]];
       const float lw = glm::length(w);
-      if (!(lw > 0.0f) || !(glm::dot(gradient, w) / lw > minDerivative)) continue;
+      const float derivative = lw > 0.0f ? glm::dot(gradient, w) / lw : 0.0f;
+      if (!(derivative > minDerivative)) continue;
+      // Faded in over the threshold's first doubling, and near the silhouette over the facing
+      // limit's: a contour appears at no ink as the view turns, rather than popping in whole
+      // (DeCarlo, Finkelstein and Rusinkiewicz 2004).
+      const float facing = (facing_[t[0]] + facing_[t[1]] + facing_[t[2]]) / 3.0f;
+      const float ink = std::clamp(derivative / minDerivative - 1.0f, 0.0f, 1.0f) * std::clamp(facing / kMinFacing - 1.0f, 0.0f, 1.0f);
       // The two edges whose ends differ in sign, cut where kappa_r interpolates to zero.
       glm::vec3 ends[2];
       int found = 0;
@@ -68,7 +74,11 @@ const std::vector<FeatureLine>& SuggestiveContours::lines(const glm::vec3& eye, 
         const float along = k[a] / (k[a] - k[bEnd]);
         ends[found++] = p[a] + (p[bEnd] - p[a]) * std::clamp(along, 0.0f, 1.0f);
       }
-      if (found == 2) out.push_back({ends[0], ends[1], float(EdgeKind::Suggestive)});
+      if (found == 2 && ink > 0.0f) {
+        FeatureLine l{ends[0], ends[1], float(EdgeKind::Suggestive)};
+        l.ink = ink;
+        out.push_back(l);
+      }
     }
   });
   lines_.clear();

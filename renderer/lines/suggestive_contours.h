@@ -9,7 +9,9 @@
 // kappa_r per vertex, finds its zero crossing in each front face (linear along the edges), and
 // keeps the segment where the face's gradient of kappa_r along w passes a threshold, which
 // drops the noise of nearly flat regions (DeCarlo et al.'s t_d, here relative to the mesh's
-// size so one value suits every model).
+// size so one value suits every model). Each line's ink fades in from 0 at the threshold to
+// full at twice it, and likewise from the facing limit: a contour appears gradually as the view
+// turns instead of popping in (DeCarlo, Finkelstein and Rusinkiewicz 2004 fade them so).
 #pragma once
 
 #include <memory>
