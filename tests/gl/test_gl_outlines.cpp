@@ -15,6 +15,8 @@
 
 #include "gl/gl_test_env.h"
 #include "renderer/core/image_io.h"
+#include "renderer/lines/stroke_textures.h"
+#include "renderer/strokes/brush_shapes.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -453,6 +455,26 @@ TEST_F(OutlineFixture, AStrokeTextureIsStretchedOnceAlongTheChainAndInkedOnce) {
   const double peak = mean(halfInk.peak, left + eighth, right - eighth), solidPeak = mean(solid.peak, left + eighth, right - eighth);
   std::printf("half coverage: %.2f of full ink at the stroke's centre (solid %.2f)\n", peak, solidPeak);
   EXPECT_NEAR(peak, 0.5 * solidPeak, 0.08) << "overlapping segments inked a pixel more than once";
+}
+
+// A texture file that cannot be read when the frame draws (removed after it was checked) is
+// reported once, naming it; the set then draws plain lines, and the brush always loads.
+TEST_F(OutlineFixture, AStrokeTextureThatFailsIsReportedOnceAndItsSetDrawsPlain) {
+  StrokeTextures textures;
+  const std::string gone = ::testing::TempDir() + "/no-such-stroke.png";
+  Result<StrokeTexture> first = textures.find(gone);
+  ASSERT_FALSE(first);
+  EXPECT_NE(first.error().find("no-such-stroke.png"), std::string::npos) << first.error();
+  Result<StrokeTexture> again = textures.find(gone);
+  ASSERT_TRUE(again) << "reported twice";
+  EXPECT_EQ(again->id, 0u);
+  Result<StrokeTexture> brush = textures.find("brush");
+  ASSERT_TRUE(brush) << brush.error();
+  EXPECT_NE(brush->id, 0u);
+  Result<StrokeCoverage> coverage = strokeCoverage("brush");
+  ASSERT_TRUE(coverage);
+  EXPECT_EQ(coverage->width, kBrushLength);
+  EXPECT_EQ(coverage->height, kBrushWidth);
 }
 
 // Width by curvature on a spindle (an ellipsoid 4 times longer than wide, along y): its
