@@ -152,13 +152,17 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     } else if (key == "width") {
       if (!parseNumber(value, set.width) || set.width < LineSet::kMinWidth || set.width > LineSet::kMaxWidth)
         return why = "width must be a number in 0.1..64 (pixels)", false;
+    } else if ((key == "colour" || key == "color") && value == "tone") {
+      set.toneColour = true;
+      set.colour.reset();
     } else if (key == "colour" || key == "color") {
       const std::vector<std::string> c = split(value, ',');
       glm::vec3 rgb;
       if (c.size() != 3 || !parseNumber(c[0], rgb.r) || !parseNumber(c[1], rgb.g) || !parseNumber(c[2], rgb.b) ||
           glm::any(glm::lessThan(rgb, glm::vec3(0.0f))) || glm::any(glm::greaterThan(rgb, glm::vec3(1.0f))))
-        return why = "colour must be R,G,B, each in 0..1", false;
+        return why = "colour must be R,G,B, each in 0..1, or tone (the palette entry the lit tone matches)", false;
       set.colour = rgb;
+      set.toneColour = false;
     } else if (key == "dash") {
       const std::vector<std::string> d = split(value, ',');
       glm::vec2 dash;
@@ -272,7 +276,8 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     out += kinds;
     if (s.visibility != LineSet::Visibility::Visible) out += s.visibility == LineSet::Visibility::Hidden ? " visibility=hidden" : " visibility=both";
     out += " width=" + formatFloat(s.width);
-    if (s.colour) out += " colour=" + formatFloat(s.colour->r) + "," + formatFloat(s.colour->g) + "," + formatFloat(s.colour->b);
+    if (s.toneColour) out += " colour=tone";
+    else if (s.colour) out += " colour=" + formatFloat(s.colour->r) + "," + formatFloat(s.colour->g) + "," + formatFloat(s.colour->b);
     if (s.dash.x > 0.0f) out += " dash=" + formatFloat(s.dash.x) + "," + formatFloat(s.dash.y);
     if (s.taper > 0.0f) out += " taper=" + formatFloat(s.taper);
     if (!s.texture.empty()) out += " texture=" + s.texture;

@@ -35,6 +35,9 @@ struct LineSet {
   enum class Visibility : std::uint8_t { Visible, Hidden, Both } visibility = Visibility::Visible;
   float width = 2.0f;                 // pixels
   std::optional<glm::vec3> colour;    // none: each kind's colour (silhouette-colour, ...)
+  // colour=tone: each line in the average colour of the palette entry its lit tone matches (lit
+  // at the line with the surface's normal, as the painterly strokes are), over `colour`.
+  bool toneColour = false;
   glm::vec2 dash{0.0f};               // pixels on, off; on 0: solid
   bool falloff = false;               // thinner with distance
   bool sketchy = false;
@@ -61,7 +64,7 @@ struct LineSet {
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [curvature=GAIN] [falloff=on|off] [sketchy=on|off]
+// [colour=R,G,B|tone] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [curvature=GAIN] [falloff=on|off] [sketchy=on|off]
 // [objects=NAME,...] [materials=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);

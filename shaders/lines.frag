@@ -4,6 +4,12 @@
 // lines: 6 in 10 by default). TAPERED narrows the stroke to points over uTaper pixels at its
 // ends. TEXTURED multiplies the ink by a texture stretched along the stroke (a brush, or the
 // user's image). uInk lightens (the hidden lines of the base style).
+#ifdef TONE_COLOUR
+// colour=tone: the average colour of the palette entry the lit tone matches.
+#include "palette.glsl"
+uniform vec3 uEntryColour[PALETTE_SIZE];
+in vec3 vLit;
+#endif
 in vec3 vColour;
 flat in float vInk;
 in float vAcross;
@@ -63,5 +69,9 @@ void main() {
 #endif
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;
+#ifdef TONE_COLOUR
+  fragColor = vec4(uEntryColour[matchEntry(vLit)], alpha);
+#else
   fragColor = vec4(vColour, alpha);
+#endif
 }

@@ -10,6 +10,14 @@
 // crawl as the view turns; TAPERED narrows the stroke to points at its chain's ends; TEXTURED
 // stretches a texture along it. All are in pixels at the object's centre (uParamPixels per
 // object unit).
+#ifdef TONE_COLOUR
+// colour=tone: lit at the line with the surface's normal, as the painterly strokes are.
+#include "lighting.glsl"
+uniform mat4 uModelView;
+uniform mat3 uNormalMatrix;
+layout(location = 9) in vec3 aNormal;
+out vec3 vLit;
+#endif
 layout(location = 0) in vec3 aStart;
 layout(location = 1) in vec3 aEnd;
 layout(location = 2) in float aKind;
@@ -150,4 +158,11 @@ void main() {
   vAlong = end ? vLength : 0.0;
 #endif
   gl_Position = vec4(s / half_ * p.w, p.z - 3e-4 * p.w, p.w);
+#ifdef TONE_COLOUR
+  vec3 eyePosition = (uModelView * vec4(end ? end_ : start, 1.0)).xyz;
+  vec3 n = uNormalMatrix * aNormal;
+  // A line with no normal of its own (none known) faces the eye.
+  n = dot(n, n) > 1e-12 ? normalize(n) : normalize(-eyePosition);
+  vLit = shadeGL(eyePosition, n, false);
+#endif
 }

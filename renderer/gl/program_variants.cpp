@@ -123,6 +123,11 @@ struct SourceOf {
     if (l.byMaterial) s.defines.push_back("BY_MATERIAL");
     if (l.textured) s.defines.push_back("TEXTURED");
     if (l.byCurvature) s.defines.push_back("BY_CURVATURE");
+    if (l.lighting && l.palette) {
+      s.defines.push_back("TONE_COLOUR");
+      for (auto& d : l.lighting->glslDefines()) s.defines.push_back(d);
+      for (auto& d : paletteDefines(*l.palette)) s.defines.push_back(d);
+    }
     return s;
   }
   ProgramSource operator()(const OutlineProgram& o) const {

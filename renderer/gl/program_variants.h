@@ -119,6 +119,9 @@ struct LineProgram {
   bool byMaterial = false;  // only lines on faces of the materials a set takes (materials=NAME,...)
   bool textured = false;    // a coverage texture stretched along each stroke (texture=brush|FILE)
   bool byCurvature = false; // wider where the surface curves more (curvature=GAIN)
+  // colour=tone: lit with these lighting features, matched with this palette.
+  std::optional<LightingFeatures> lighting = std::nullopt;
+  std::optional<PaletteVariant> palette = std::nullopt;
 };
 
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the

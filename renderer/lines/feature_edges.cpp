@@ -147,14 +147,15 @@ const std::vector<FeatureLine>& FeatureEdges::staticLines(float creaseAngleDegre
     if (n0 == glm::vec3(0.0f) || n1 == glm::vec3(0.0f)) continue;
     // The dihedral angle between the faces is the angle between their normals.
     if (glm::dot(n0, n1) < cosLimit)
-      static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Crease, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])));
+      static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Crease, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1]), n0 + n1));
   }
   for (size_t e = 0; e < boundary_.size() / 2; ++e)
-    static_.push_back(line(boundary_[e * 2], boundary_[e * 2 + 1], EdgeKind::Boundary, materialsOf(boundaryFace_[e], boundaryFace_[e])));
+    static_.push_back(line(boundary_[e * 2], boundary_[e * 2 + 1], EdgeKind::Boundary, materialsOf(boundaryFace_[e], boundaryFace_[e]), normalOf(boundaryFace_[e])));
   if (faceMaterial_.size() == faceNormals_.size())
     for (size_t e = 0; e < manifoldFaces_.size() / 2; ++e)
       if (faceMaterial_[manifoldFaces_[e * 2]] != faceMaterial_[manifoldFaces_[e * 2 + 1]])
-        static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Material, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1])));
+        static_.push_back(line(manifoldEnds_[e * 2], manifoldEnds_[e * 2 + 1], EdgeKind::Material, materialsOf(manifoldFaces_[e * 2], manifoldFaces_[e * 2 + 1]),
+                               normalOf(manifoldFaces_[e * 2]) + normalOf(manifoldFaces_[e * 2 + 1])));
   return static_;
 }
 
@@ -172,7 +173,7 @@ const std::vector<FeatureLine>& FeatureEdges::silhouettes(const glm::vec3& eye) 
       if (facing_[manifoldFaces_[i * 2]] != facing_[manifoldFaces_[i * 2 + 1]]) {
         const std::uint32_t front = facing_[manifoldFaces_[i * 2]] ? manifoldFaces_[i * 2] : manifoldFaces_[i * 2 + 1];
         const std::uint32_t back = front == manifoldFaces_[i * 2] ? manifoldFaces_[i * 2 + 1] : manifoldFaces_[i * 2];
-        out.push_back(line(manifoldEnds_[i * 2], manifoldEnds_[i * 2 + 1], EdgeKind::Silhouette, materialsOf(front, back)));
+        out.push_back(line(manifoldEnds_[i * 2], manifoldEnds_[i * 2 + 1], EdgeKind::Silhouette, materialsOf(front, back), normalOf(front)));
       }
   });
   silhouettes_.clear();

@@ -40,6 +40,9 @@ struct FeatureLine {
   // How much of the line's ink it draws (0..1): suggestive contours fade in from their
   // threshold (suggestive_contours.h), so they do not pop as the view turns; 1 for the others.
   float ink = 1.0f;
+  // The surface's normal there (the front face's for a silhouette, the two faces' mean for a
+  // crease; zero where unknown): what a line set with colour=tone is lit with.
+  glm::vec3 normal{0.0f};
 };
 
 class FeatureEdges {
@@ -89,11 +92,14 @@ class FeatureEdges {
   std::vector<FeatureLine> static_, silhouettes_;
   std::vector<float> curvature_;  // per welded vertex (empty: not estimated)
   float medianCurvature_ = 1.0f;
-  FeatureLine line(std::uint32_t v0, std::uint32_t v1, EdgeKind kind, glm::u16vec2 materials) const {
+  FeatureLine line(std::uint32_t v0, std::uint32_t v1, EdgeKind kind, glm::u16vec2 materials, const glm::vec3& normal) const {
     FeatureLine l{positions_[v0], positions_[v1], float(kind), materials};
     if (!curvature_.empty()) l.curvature = {curvature_[v0], curvature_[v1]};
+    const float n = glm::length(normal);
+    if (n > 0.0f) l.normal = normal / n;
     return l;
   }
+  glm::vec3 normalOf(std::uint32_t face) const { return face < faceNormals_.size() ? faceNormals_[face] : glm::vec3(0.0f); }
   std::vector<std::uint8_t> facing_;
 };
 

@@ -81,7 +81,18 @@ class Hierarchy {
           if (!boxes_[ti].overlaps(boxes_[tj])) continue;
           if (++tested > limit) return;
           glm::vec3 from, to;
-          if (triangleIntersection(tris_[ti].data(), tris_[tj].data(), from, to)) out.push_back({from, to, float(EdgeKind::Intersection)});
+          if (triangleIntersection(tris_[ti].data(), tris_[tj].data(), from, to)) {
+            // Lit (colour=tone) as the mean of the two surfaces that meet there.
+            const auto unitNormal = [&](std::uint32_t t) {
+              const glm::vec3 n = glm::cross(tris_[t][1] - tris_[t][0], tris_[t][2] - tris_[t][0]);
+              const float l = glm::length(n);
+              return l > 0.0f ? n / l : glm::vec3(0.0f);
+            };
+            FeatureLine l{from, to, float(EdgeKind::Intersection)};
+            const glm::vec3 n = unitNormal(ti) + unitNormal(tj);
+            if (glm::length(n) > 1e-6f) l.normal = glm::normalize(n);
+            out.push_back(l);
+          }
         }
       return;
     }

@@ -20,7 +20,7 @@
 
 namespace npr {
 
-// One segment as lines.vert reads it (attributes 0-8).
+// One segment as lines.vert reads it (attributes 0-9).
 struct ChainedLine {
   glm::vec3 a, b;
   float kind;         // EdgeKind
@@ -30,6 +30,7 @@ struct ChainedLine {
   std::uint32_t materials;  // the faces' materials (FeatureLine::materials), low 16 bits first
   glm::vec2 curvature;      // the surface's at a and b (FeatureLine::curvature)
   float ink;                // FeatureLine::ink
+  glm::vec3 normal;         // FeatureLine::normal
 };
 
 // A step of a chain: a segment, walked from its second end to its first when `reversed`.

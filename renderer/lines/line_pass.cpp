@@ -8,6 +8,8 @@
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/texture_units.h"
+#include "renderer/lighting/lighting_model.h"
+#include "renderer/lighting/lighting_uniforms.h"
 
 namespace npr {
 namespace {
@@ -141,6 +143,7 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.falloff = set.falloff;
   s.taper = set.taper;
   s.texture = set.texture;
+  s.toneColour = set.toneColour;
   s.curvatureGain = set.curvature;
   s.kinds = set.kinds;
   if (!set.materials.empty()) s.materialNames = &set.materials;
@@ -180,8 +183,12 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     const bool tapered = style.taper > 0.0f && !hidden;
     const bool textured = style.textureBound.id != 0 && !hidden;
     const bool byCurvature = style.curvatureGain != 0.0f;
-    Result<gl::ShaderProgram*> prog =
-        programs.get(gl::LineProgram{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured, byCurvature}, stats.shaderBuilds);
+    gl::LineProgram variant{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured, byCurvature};
+    if (style.tonedNow()) {
+      variant.lighting = style.lighting->features();
+      variant.palette = style.palette->matchingVariant(style.match);
+    }
+    Result<gl::ShaderProgram*> prog = programs.get(variant, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
     if (textured) {
@@ -211,6 +218,15 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     // stroke, and unchanged as the view turns about it.
     p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
     if (tapered) p.set("uTaper", style.taper);
+    if (variant.lighting) {
+      // Lit in eye space as the strokes are (strokes.vert): the lines' space to the eye's.
+      p.set("uModelView", placed.view);
+      p.set("uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(placed.view))));
+      uploadLightingUniforms(p, prepareLighting<float>(*style.lighting));
+      style.palette->bind(p, false);
+      const std::vector<glm::vec3>& averages = style.palette->averages();
+      p.setArray("uEntryColour", averages.data(), int(averages.size()));
+    }
     if (byCurvature) {
       p.set("uCurvatureGain", style.curvatureGain);
       p.set("uCurvatureReference", style.curvatureReference);
@@ -244,6 +260,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       glVertexAttribDivisor(6, GLuint(repeat));
       attribute(7, 2, offsetof(ChainedLine, curvature));
       attribute(8, 1, offsetof(ChainedLine, ink));
+      attribute(9, 3, offsetof(ChainedLine, normal));
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

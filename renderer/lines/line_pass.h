@@ -20,6 +20,8 @@
 #include "renderer/lines/feature_edges.h"
 #include "renderer/lines/line_chains.h"
 #include "renderer/lines/stroke_textures.h"
+#include "renderer/lighting/lighting_state.h"
+#include "renderer/palette/gpu_palette.h"
 #include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/render_settings.h"
@@ -51,6 +53,13 @@ struct LineStyle {
   // Width x (curvature / reference)^gain, within 1/4..4 (0: off); the reference is the mesh's
   // median curvature (FeatureEdges::medianCurvature), set where the style is drawn.
   float curvatureGain = 0.0f, curvatureReference = 1.0f;
+  // colour=tone: lit with `lighting` at each line and drawn in the average colour of the entry
+  // of `palette` its tone matches; the feature drawing it sets them (none: the set's colours).
+  bool toneColour = false;
+  const LightingState* lighting = nullptr;
+  const GpuPalette* palette = nullptr;
+  MatchMode match = MatchMode::Intensity;
+  bool tonedNow() const { return toneColour && lighting && palette; }
   // A set selecting materials: the materials it takes, by index into the mesh's, as bits
   // (resolve() fills them from the set's names); lines on no such face are not drawn.
   const std::vector<std::string>* materialNames = nullptr;

@@ -69,7 +69,7 @@ std::string randomValue(const Setting& row, std::mt19937& rng) {
           if (pick(2)) set += std::string(",") + kinds[pick(5)];
           if (pick(2)) set += std::string(" visibility=") + visibility[pick(3)];
           if (pick(2)) set += " width=" + formatFloat(float(uniform(0.1, 64)));
-          if (pick(2)) set += " colour=" + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + ",0";
+          if (pick(2)) set += pick(4) ? " colour=" + formatFloat(float(uniform(0, 1))) + "," + formatFloat(float(uniform(0, 1))) + ",0" : std::string(" colour=tone");
           if (pick(2)) set += " dash=" + formatFloat(float(uniform(0.5, 20))) + "," + formatFloat(float(uniform(0.5, 20)));
           if (pick(2)) set += " taper=" + formatFloat(float(uniform(0, 100)));
           if (pick(3) == 0) set += std::string(" materials=") + (pick(2) ? "Paint*" : "Glass,Chrome");

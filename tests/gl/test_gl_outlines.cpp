@@ -477,6 +477,48 @@ TEST_F(OutlineFixture, AStrokeTextureThatFailsIsReportedOnceAndItsSetDrawsPlain)
   EXPECT_EQ(coverage->height, kBrushWidth);
 }
 
+// colour=tone: a sphere lit from the right (eye space) with a two-entry palette whose bright
+// entry averages yellow and dark entry navy: its silhouette set draws yellow on the lit right
+// and navy on the unlit left, and a set with a fixed colour neither.
+TEST_F(OutlineFixture, ALineSetColouredByToneTakesThePaletteEntryOfTheLitToneAtTheLine) {
+  Palette p = test::greyRamp(2);
+  p.entries[0].average = glm::vec3(1.0f, 1.0f, 0.2f);
+  p.entries[1].average = glm::vec3(0.0f, 0.0f, 0.3f);
+  ASSERT_TRUE(r->setPalette(p));
+  const float side[4] = {1, 0, 0, 0};
+  r->lighting().setModelView(glm::mat4(1.0f));
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, side));
+  auto count = [&](const char* sets) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    const ImageRGBA8 img = draw(sphere, l);
+    struct {
+      int yellowRight = 0, yellowLeft = 0, navyRight = 0, navyLeft = 0;
+    } n;
+    // A band about the middle row: there the outline's normal points left or right, at the
+    // light or away (above and below it is across the light, dark on both sides).
+    for (int y = kSize / 2 - kSize / 8; y < kSize / 2 + kSize / 8; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const std::uint8_t* px = &img.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4];
+        const bool yellow = px[0] > 150 && px[1] > 150 && px[2] < 110, navy = px[0] < 40 && px[1] < 40 && px[2] > 45;
+        const bool right = x > kSize / 2;
+        (right ? n.yellowRight : n.yellowLeft) += yellow;
+        (right ? n.navyRight : n.navyLeft) += navy;
+      }
+    return n;
+  };
+  const auto toned = count("silhouette width=4 colour=tone");
+  std::printf("colour=tone: yellow %d px right, %d left; navy %d right, %d left\n", toned.yellowRight, toned.yellowLeft, toned.navyRight, toned.navyLeft);
+  EXPECT_GT(toned.yellowRight, 80) << "the lit side's lines are not in the bright entry's colour";
+  EXPECT_GT(toned.navyLeft, 80) << "the unlit side's lines are not in the dark entry's colour";
+  EXPECT_LT(toned.yellowLeft, toned.yellowRight / 10);
+  EXPECT_LT(toned.navyRight, toned.navyLeft / 10);
+  const auto fixed = count("silhouette width=4 colour=0,0,0");
+  EXPECT_EQ(fixed.yellowRight + fixed.yellowLeft + fixed.navyRight + fixed.navyLeft, 0);
+  ASSERT_TRUE(r->setPalette(whitePalette()));
+}
+
 // Width by curvature on a spindle (an ellipsoid 4 times longer than wide, along y): its
 // curvature is about 4 times the median at the tips and the median along the middle, so a set
 // with curvature=1 inks the tips' outline heavier than the middle's, and curvature=-1 lighter,

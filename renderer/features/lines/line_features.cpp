@@ -42,9 +42,13 @@ class ImageEdgesFeature final : public Feature {
   ImageEdgesPass pass_;
 };
 
-// A style's stroke texture, loaded on first use (shared by the features that draw sets). A
-// file that cannot be read is reported once; its sets then draw plain lines.
-Status loadStrokeTexture(LineStyle& style, StrokeTextures& textures) {
+// What a style reads from the frame: its stroke texture, loaded on first use (shared by the
+// features that draw sets; a file that cannot be read is reported once, its sets then draw
+// plain lines), and for colour=tone the frame's lighting and main palette.
+Status prepareStyle(LineStyle& style, StrokeTextures& textures, const FrameView& f) {
+  style.lighting = &f.lighting;
+  style.palette = f.palette;
+  style.match = f.settings.match;
   if (style.texture.empty()) return okStatus();
   Result<StrokeTexture> t = textures.find(style.texture);
   if (!t) return Error{t.error()};
@@ -67,7 +71,7 @@ class FeatureLinesFeature final : public Feature {
       f.scene.forEach([&](Model& m) {
         if (!result) return;
         if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name())) {
-          result = loadStrokeTexture(*style, *textures_);
+          result = prepareStyle(*style, *textures_, f);
           if (result) result = m.lines().drawStyle(*style, m.placed(f.camera), f.viewport, f.programs, f.stats);
         }
       });
@@ -103,7 +107,7 @@ class IntersectionLinesFeature final : public Feature {
     // World space: the scene's camera places them.
     for (LineStyle& style : lineStyles(f.settings.lines, nullptr))
       if (style.kinds & 16u) {
-        if (Status st = loadStrokeTexture(style, *textures_); !st) return st;
+        if (Status st = prepareStyle(style, *textures_, f); !st) return st;
         if (Status st = drawLineRanges({{&buffer_, 0, count_}}, f.camera, style, f.viewport, vao_, f.programs, f.stats); !st) return st;
       }
     return okStatus();
