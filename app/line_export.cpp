@@ -1,13 +1,16 @@
 // --svg (see line_export.h).
 #include "app/line_export.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <optional>
 
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/lighting/lighting_model.h"
 #include "renderer/lines/line_pass.h"
 #include "renderer/lines/region_trace.h"
 #include "renderer/lines/svg_export.h"
@@ -79,6 +82,16 @@ Result<SvgFills> traceFills(Renderer& renderer, const CameraMatrices& camera, co
 
 }  // namespace
 
+namespace {
+// A colour as an id's suffix: "tone-3a2b1c".
+std::string hexName(const glm::vec3& c) {
+  char s[16];
+  auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  std::snprintf(s, sizeof s, "tone-%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
+  return s;
+}
+}  // namespace
+
 Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
                  const SvgContents& what, const std::string& path) {
   if (!settings.lines.objectSpace() && !what.fill)
@@ -104,15 +117,36 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
       return set ? (set->appliesTo(object) ? set->kinds : 0) : ls.baseKinds(object);
     }, set);
     if (mine.empty()) continue;
-    for (const bool hidden : {false, true}) {
-      if (!(hidden ? style.hidden : style.visible)) continue;
-      const SvgLines chains = visibleLineChains(mine, camera, size, eye, hidden);
-      paths += chains.paths;
-      lengthPx += chains.lengthPx;
-      for (int k = 0; k < kEdgeKinds; ++k)
-        groups.push_back({prefix + kLineKinds[k].plural + (hidden ? "-hidden" : ""), style.colours[k], hidden ? style.hiddenWidthScale * style.width : style.width,
-                          hidden ? style.hiddenInk : 1.0f, hidden ? style.hiddenDash : style.dash, chains.chains[k], hidden ? 0.0f : style.taper});
+    // colour=tone: the lines split by the palette entry their lit tone matches, a group each in
+    // the entry's average colour, lit and matched on the CPU as the line shader does on the GPU.
+    std::vector<std::pair<std::vector<FeatureLine>, std::optional<glm::vec3>>> parts;
+    const GpuPalette* palette = renderer.palette();
+    if (style.toneColour && palette && palette->matcher()) {
+      const PreparedLighting<float> lit = prepareLighting<float>(renderer.lighting());
+      const glm::mat3 normalToEye = glm::transpose(glm::inverse(glm::mat3(camera.view)));
+      std::map<int, std::vector<FeatureLine>> byEntry;
+      for (const FeatureLine& l : mine) {
+        const glm::vec3 at = glm::vec3(camera.view * glm::vec4(0.5f * (l.a + l.b), 1.0f));
+        glm::vec3 n = normalToEye * l.normal;
+        n = glm::dot(n, n) > 1e-12f ? glm::normalize(n) : glm::normalize(-at);
+        byEntry[palette->matcher()->match(shade(lit, at, n, false))].push_back(l);
+      }
+      for (auto& [entry, lines] : byEntry) parts.push_back({std::move(lines), palette->averages().at(std::size_t(entry))});
+    } else {
+      parts.push_back({mine, std::nullopt});
     }
+    for (const auto& [lines, colour] : parts)
+      for (const bool hidden : {false, true}) {
+        if (!(hidden ? style.hidden : style.visible)) continue;
+        const SvgLines chains = visibleLineChains(lines, camera, size, eye, hidden);
+        paths += chains.paths;
+        lengthPx += chains.lengthPx;
+        const std::string suffix = colour ? "-" + hexName(*colour) : "";
+        for (int k = 0; k < kEdgeKinds; ++k)
+          groups.push_back({prefix + kLineKinds[k].plural + (hidden ? "-hidden" : "") + suffix, colour.value_or(style.colours[k]),
+                            hidden ? style.hiddenWidthScale * style.width : style.width, hidden ? style.hiddenInk : 1.0f,
+                            hidden ? style.hiddenDash : style.dash, chains.chains[k], hidden ? 0.0f : style.taper});
+      }
   }
   std::optional<SvgFills> fills;
   if (what.fill) {

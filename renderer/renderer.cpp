@@ -553,11 +553,15 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
       lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !taken(l.materials.x) && !taken(l.materials.y); }),
                   lines.end());
     }
-    if (!isIdentity(m.transform()))
+    if (!isIdentity(m.transform())) {
+      const glm::mat3 normals = glm::transpose(glm::inverse(glm::mat3(m.transform())));
       for (FeatureLine& l : lines) {
         l.a = glm::vec3(m.transform() * glm::vec4(l.a, 1.0f));
         l.b = glm::vec3(m.transform() * glm::vec4(l.b, 1.0f));
+        const glm::vec3 n = normals * l.normal;
+        l.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f);
       }
+    }
     out.insert(out.end(), lines.begin(), lines.end());
   });
   if (settings.lines.drawnKinds() & 16u) {

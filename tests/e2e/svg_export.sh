@@ -62,6 +62,17 @@ for args in "--path pixel" "--path triangle --pattern-scale 2"; do
     echo "FAIL: --svg-fill ($args): $(cat "$tmp/err")"; fail=1
   fi
 done
+# A set coloured by tone: its lines in groups by palette entry, each in that entry's average
+# colour (the wood palette's browns), none in the kinds' black; a tapered set as filled outlines.
+if "$viewer" "$src/models/bunny.obj" --headless --size 320x240 --palette "$src/palettes/wood" --line-set "silhouette width=3 colour=tone" \
+     --line-set "crease width=4 taper=20 colour=0,0,0" --crease-angle 40 --svg "$tmp/tone.svg" 2>"$tmp/err"; then
+  toned=$(grep -c '<g id="set1-silhouettes-tone-[0-9a-f]*" fill="none" stroke="#' "$tmp/tone.svg")
+  [ "$toned" -ge 2 ] || { echo "FAIL: colour=tone: $toned groups by entry (expected several)"; fail=1; }
+  grep -q '<g id="set1-silhouettes" ' "$tmp/tone.svg" && { echo "FAIL: colour=tone: a group in the kind's colour"; fail=1; }
+  grep -q '<g id="set2-creases" fill="#000000" stroke="none"' "$tmp/tone.svg" || { echo "FAIL: a tapered set is not written as filled outlines"; fail=1; }
+else
+  echo "FAIL: colour=tone --svg: $(cat "$tmp/err")"; fail=1
+fi
 # With the frame embedded underneath, and a refusal without lines.
 "$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
 grep -q 'data:image/png;base64,' "$tmp/raster.svg" || { echo "FAIL: --svg-raster embeds no image"; fail=1; }
