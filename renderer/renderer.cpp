@@ -206,12 +206,14 @@ void Renderer::updateToneRange(const CameraMatrices& camera, const RenderSetting
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  // About 4096 triangles over the whole scene: enough for stable percentiles, a fraction of a
-  // millisecond on the CPU.
+  // About 1024 triangles over the whole scene for one range: enough for stable percentiles
+  // (the spider orbiting moves it at most 2 quanta a frame, as 4096 did), a tenth of a
+  // millisecond on the CPU. Each object's own range needs more, about 4096 over the scene
+  // (with 1024 the dark object of test_gl_tone_range moved 8 quanta a frame), at least 64 each
+  // (a scene of many parts keeps about the same total).
   std::size_t models = 0;
   scene_.forEach([&](const Model&) { ++models; });
-  // Per object, at least 64 each (a scene of many parts keeps about the same total).
-  const std::size_t budget = std::max<std::size_t>(perObject ? 64 : 256, 4096 / std::max<std::size_t>(models, 1));
+  const std::size_t budget = perObject ? std::max<std::size_t>(64, 4096 / std::max<std::size_t>(models, 1)) : std::max<std::size_t>(256, 1024 / std::max<std::size_t>(models, 1));
   toneSamples_.clear();
   int slot = 0;
   scene_.forEach([&](Model& m) {
