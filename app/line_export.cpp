@@ -82,16 +82,6 @@ Result<SvgFills> traceFills(Renderer& renderer, const CameraMatrices& camera, co
 
 }  // namespace
 
-namespace {
-// A colour as an id's suffix: "tone-3a2b1c".
-std::string hexName(const glm::vec3& c) {
-  char s[16];
-  auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-  std::snprintf(s, sizeof s, "tone-%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
-  return s;
-}
-}  // namespace
-
 Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
                  const SvgContents& what, const std::string& path) {
   if (!settings.lines.objectSpace() && !what.fill)
@@ -141,7 +131,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
         const SvgLines chains = visibleLineChains(lines, camera, size, eye, hidden);
         paths += chains.paths;
         lengthPx += chains.lengthPx;
-        const std::string suffix = colour ? "-" + hexName(*colour) : "";
+        const std::string suffix = colour ? "-tone-" + hexColour(*colour).substr(1) : "";
         for (int k = 0; k < kEdgeKinds; ++k)
           groups.push_back({prefix + kLineKinds[k].plural + (hidden ? "-hidden" : "") + suffix, colour.value_or(style.colours[k]),
                             hidden ? style.hiddenWidthScale * style.width : style.width, hidden ? style.hiddenInk : 1.0f,

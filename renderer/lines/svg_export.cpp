@@ -111,14 +111,14 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
   return out;
 }
 
-namespace {
-
 std::string hexColour(const glm::vec3& c) {
   char s[8];
   auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
   std::snprintf(s, sizeof s, "#%02x%02x%02x", byte(c.r), byte(c.g), byte(c.b));
   return s;
 }
+
+namespace {
 
 std::string base64(const std::vector<std::uint8_t>& data) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

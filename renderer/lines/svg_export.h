@@ -32,6 +32,9 @@ struct SvgLines {
 SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
                            const ImageRGBA32F& eyePosition, bool hiddenParts = false);
 
+// "#rrggbb", each channel clamped to 0..1 and rounded.
+std::string hexColour(const glm::vec3& c);
+
 // One group of the document: polylines in one stroke style.
 struct SvgGroup {
   std::string id;
