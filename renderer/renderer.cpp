@@ -352,7 +352,7 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   // The whole model's, for every part: the parts hide each other's back faces.
   const bool cullBackFaces = backFacesHidden(model, placed, s);
   auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette) {
-    if (s.materials) materials.update(mesh, lighting_, stats_);
+    if (s.materials || materials.coverage()) materials.update(mesh, lighting_, stats_);
     FrameContext frame{placed, view.viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
@@ -389,7 +389,7 @@ Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
 }
 
 bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& s) {
-  const bool hidden = s.tuning.cullHiddenBackFaces && model.mesh().closed && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
+  const bool hidden = s.tuning.cullHiddenBackFaces && model.mesh().closed && !model.mesh().seeThrough && glm::determinant(glm::mat3(model.transform())) > 0.0f &&
                       sphereBeyondNearPlane(placed, model.sceneRadius());
   stats_.backFacesCulled = stats_.backFacesCulled || hidden;
   return hidden;
@@ -499,7 +499,7 @@ Status Renderer::renderGeometry(const CameraMatrices& camera, GeometryOutput out
   clearViewport(viewport);
   Status result = okStatus();
   for (const PlacedMesh& m : scene_.placed(camera))
-    if (result) result = drawGeometry(*m.mesh, m.camera, output, programs_, stats_);
+    if (result) result = drawGeometry(m, output, programs_, stats_);
   gl::restoreDefaults();
   return result;
 }

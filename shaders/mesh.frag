@@ -20,6 +20,7 @@
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 // DEFER_TURN (turned lookups on dense meshes) writes the pixel's stroke angle and entry for
 // turn_resolve.frag instead.
+// ALPHA_COVERAGE discards what a see-through material leaves out (coverage.glsl), in every pass.
 // CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
 // shadows block, or 1 - the occlusion factor; pixels where it is 0 are left alone.
@@ -84,10 +85,11 @@ in float vControl;
 #ifdef PATH_TRIANGLE
 uniform int uEntry;  // drawn bucket by bucket
 #endif
-#if defined(MATERIALS) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
-#ifdef VERTEX_COLOURS
+#if defined(MATERIALS) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD) && defined(VERTEX_COLOURS)
 in vec3 vColour;
 #endif
+#if (defined(MATERIALS) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)) || defined(ALPHA_COVERAGE)
+#include "material.glsl"
 #ifdef MATERIAL_UNIFORM
 #define vMaterial 0u
 #else
@@ -95,8 +97,10 @@ flat in uint vMaterial;
 #endif
 #ifdef MATERIAL_MAPS
 in vec2 vTexcoord;
-uniform sampler2DArray uMaterialMaps;  // diffuse maps, mipmapped, repeating
 #endif
+#endif
+#ifdef ALPHA_COVERAGE
+#include "coverage.glsl"
 #endif
 
 layout(location = 0) out vec4 fragColor;
@@ -126,6 +130,11 @@ vec4 deferTurn(int e) {
 #endif
 
 void main() {
+#if defined(ALPHA_COVERAGE) && defined(MATERIAL_MAPS)
+  if (!covered(vMaterial, vTexcoord)) discard;
+#elif defined(ALPHA_COVERAGE)
+  if (!covered(vMaterial, vec2(0.0))) discard;
+#endif
 #ifdef CONTROL
   // The parameter first: where it is 0 (most of the frame) nothing needs lighting or a lookup
   // (a GPU skips them; llvmpipe's quads pay anyway: measured). Below 1/512 a blend moves no

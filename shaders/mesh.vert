@@ -2,7 +2,8 @@
 // every variant and declared invariant, so the stencil path's passes produce equal depths.
 // PER_VERTEX_LIGHTING (the `vertex` path and Gouraud reference) lights here. MATERIALS adds
 // the mesh's own appearance: a colour (white where the mesh has none), texture coordinates
-// and a material index per vertex (vertices are split where these differ). ORIENT_FIELD passes
+// and a material index per vertex (vertices are split where these differ); ALPHA_COVERAGE passes
+// the material and coordinates on in every pass (coverage.glsl). ORIENT_FIELD passes
 // the hatching direction field on (orientation.glsl); OCCLUSION the baked ambient occlusion.
 // CONTROL_SHADOW / CONTROL_OCCLUSION with per-vertex lighting pass the control-image palette's
 // weight on (mesh.frag).
@@ -20,22 +21,25 @@ invariant gl_Position;
 out vec3 vPosition;  // eye space
 out vec3 vNormal;    // eye space, not normalised
 
-#ifdef MATERIALS
+#if defined(MATERIALS) || defined(ALPHA_COVERAGE)
 #include "material.glsl"
 layout(location = 2) in vec3 aColour;
 layout(location = 3) in vec2 aTexcoord;
 layout(location = 4) in uint aMaterial;
 layout(location = 5) in vec3 aMapAverage;  // the diffuse map around this vertex (per-vertex paths)
-#ifndef PER_VERTEX_LIGHTING
-#ifdef VERTEX_COLOURS
+#endif
+#if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING) && defined(VERTEX_COLOURS)
 out vec3 vColour;
 #endif
+// The material and map coordinates reach the fragment stage where it lights with them, or
+// where it decides coverage (ALPHA_COVERAGE: see-through materials, in every pass).
+#if (defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)) || defined(ALPHA_COVERAGE)
+#define MATERIAL_VARYINGS
 #ifdef MATERIAL_MAPS
 out vec2 vTexcoord;
 #endif
 #ifndef MATERIAL_UNIFORM
 flat out uint vMaterial;
-#endif
 #endif
 #endif
 
@@ -97,10 +101,10 @@ void main() {
 #elif defined(ORIENT_LIGHT)
   vStrokeDirection = screenDirectionClip(gl_Position, uProjection * vec4(lightAcrossSurface(eye.xyz, vNormal), 0.0));
 #endif
-#if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING)
-#ifdef VERTEX_COLOURS
+#if defined(MATERIALS) && !defined(PER_VERTEX_LIGHTING) && defined(VERTEX_COLOURS)
   vColour = aColour;
 #endif
+#ifdef MATERIAL_VARYINGS
 #ifdef MATERIAL_MAPS
   vTexcoord = aTexcoord;
 #endif

@@ -66,9 +66,11 @@ struct SourceOf {
     for (auto& d : shadingDefines(m.shading)) s.defines.push_back(d);
     if (m.palette) for (auto& d : paletteDefines(*m.palette)) s.defines.push_back(d);
     if (m.materials) s.defines.push_back("MATERIALS");
-    if (m.materials && m.materialMaps) s.defines.push_back("MATERIAL_MAPS");
+    if (m.alphaCoverage) s.defines.push_back("ALPHA_COVERAGE");
+    const bool table = m.materials || m.alphaCoverage;
+    if (table && m.materialMaps) s.defines.push_back("MATERIAL_MAPS");
     if (m.materials && m.vertexColours) s.defines.push_back("VERTEX_COLOURS");
-    if (m.materials && m.materialUniform) s.defines.push_back("MATERIAL_UNIFORM");
+    if (table && m.materialUniform) s.defines.push_back("MATERIAL_UNIFORM");
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
     if (m.deferTurn) s.defines.push_back("DEFER_TURN");
@@ -174,7 +176,12 @@ struct SourceOf {
     return s;
   }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
-  ProgramSource operator()(const ShadowDepthProgram&) const { return {"shadow_depth.vert", "shadow_depth.frag", {}}; }
+  ProgramSource operator()(const ShadowDepthProgram& d) const {
+    ProgramSource s{"shadow_depth.vert", "shadow_depth.frag", {}};
+    if (d.alphaCoverage) s.defines.push_back("ALPHA_COVERAGE");
+    if (d.alphaCoverage && d.materialMaps) s.defines.push_back("MATERIAL_MAPS");
+    return s;
+  }
   ProgramSource operator()(const OcclusionBakeProgram&) const { return {"occlusion_bake.vert", "occlusion_bake.frag", {}}; }
   ProgramSource operator()(const TriangleLightProgram& t) const {
     ProgramSource s{"triangle_light.vert", "triangle_light.frag", t.lighting.glslDefines()};

@@ -81,6 +81,9 @@ struct MeshProgram {
   bool materialMaps = false;  // ... some of which have a diffuse map
   bool vertexColours = false; // ... and the mesh has vertex colours
   bool materialUniform = false;  // ... one material per draw, from uniforms (else the table)
+  // A see-through mesh in any shading: fragments its materials' alpha leaves out are discarded
+  // (coverage.glsl; FrameContext::program sets it); reads the maps where materialMaps.
+  bool alphaCoverage = false;
   StrokeSource stroke = StrokeSource::None;
   int shadowLayers = 0;       // lit through shadow maps with this many layers (shadows.glsl); 0: none
   bool occlusion = false;     // ambient and diffuse scaled by the baked ambient occlusion (attribute 7)
@@ -151,7 +154,10 @@ struct ScreenOcclusionProgram {
 struct MarkerProgram {};
 
 // shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
-struct ShadowDepthProgram {};
+struct ShadowDepthProgram {
+  bool alphaCoverage = false;  // a see-through caster (mesh.frag's ALPHA_COVERAGE)
+  bool materialMaps = false;   // ... whose materials have maps
+};
 
 // fullscreen.vert + ground_shadow.frag: the ground's visibility per light from the shadow maps.
 struct GroundShadowProgram {

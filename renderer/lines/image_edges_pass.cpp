@@ -19,7 +19,7 @@ Status ImageEdgesPass::draw(const std::vector<PlacedMesh>& meshes, const CameraM
   target_.bindAndClear();
   Status status = okStatus();
   for (const PlacedMesh& m : meshes)
-    if (status) status = drawGeometry(*m.mesh, m.camera, GeometryOutput::EyeNormal, programs, stats);
+    if (status) status = drawGeometry(m, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> sobel = programs.get(gl::EdgeProgram{}, stats.shaderBuilds);
   if (status && !sobel) status = Error{sobel.error()};
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));

@@ -16,7 +16,8 @@
 //               for the same highlight width as a Beckmann lobe of that roughness)
 //   emission = emissiveFactor; baseColorTexture is the diffuse map (with KHR_texture_transform
 //   applied to the coordinates); KHR_materials_unlit emits the base colour (illum 0);
-//   alpha modes and double-sidedness are reported, drawn opaque and culled as every mesh.
+//   alphaMode MASK and BLEND with alphaCutoff and the base colour's alpha (MeshMaterial::alpha:
+//   cut-outs, and screen-door transparency for blending); every surface is drawn two-sided.
 #include <tiny_gltf.h>
 
 #include <unistd.h>
@@ -342,8 +343,15 @@ class GltfReader {
       } else {
         transforms_.push_back(glm::mat3(1.0f));
       }
-      if (g.alphaMode == "BLEND" || g.alphaMode == "MASK")
-        warn_.add(name_ + ": material '" + printable(mat.name) + "' is " + (g.alphaMode == "BLEND" ? "blended" : "masked") + "; drawn opaque");
+      if (g.alphaMode == "MASK") {
+        if (!std::isfinite(g.alphaCutoff)) return fail("material " + std::to_string(i) + " has a non-finite alphaCutoff");
+        mat.alpha = MeshMaterial::Alpha::Mask;
+        mat.alphaCutoff = std::clamp(static_cast<float>(g.alphaCutoff), 0.0f, 1.0f);
+      } else if (g.alphaMode == "BLEND") {
+        mat.alpha = MeshMaterial::Alpha::Blend;
+      } else if (g.alphaMode != "OPAQUE") {
+        warn_.add(name_ + ": material '" + printable(mat.name) + "' has an unknown alphaMode '" + printable(g.alphaMode) + "'; drawn opaque");
+      }
       materials_.push_back(std::move(mat));
     }
     // The default material for primitives that name none, last.

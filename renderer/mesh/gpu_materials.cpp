@@ -23,10 +23,30 @@ gl::Texture bufferTexture(const gl::Buffer& buffer, GLenum format, gl::TextureUn
   return t;
 }
 
+// A material's coverage as its row's top byte (shaders/material.glsl decodes it): 0 opaque;
+// 1..126 a mask's cutoff on the map's alpha, (code - 1) / 125, with the opacity folded in;
+// 127 a mask never reached; 128..255 a blend's opacity, (code - 128) / 127.
+std::uint32_t coverageCode(const MeshMaterial& m) {
+  const float opacity = std::clamp(m.opacity, 0.0f, 1.0f);
+  switch (m.alpha) {
+    case MeshMaterial::Alpha::Opaque: return 0;
+    case MeshMaterial::Alpha::Mask: {
+      // alpha = opacity x map >= cutoff  <=>  map >= cutoff / opacity
+      const float cutoff = std::clamp(m.alphaCutoff, 0.0f, 1.0f);
+      if (cutoff <= 0.0f) return 1;
+      if (opacity <= 0.0f || cutoff / opacity > 1.0f) return 127;
+      return 1u + static_cast<std::uint32_t>(cutoff / opacity * 125.0f + 0.5f);
+    }
+    case MeshMaterial::Alpha::Blend: return 128u + static_cast<std::uint32_t>(opacity * 127.0f + 0.5f);
+  }
+  return 0;
+}
+
 }  // namespace
 
 void GpuMaterials::clear() {
   active_ = false;
+  coverage_ = false;
   tableBuffer_.reset();
   table_.reset();
   maps_.reset();
@@ -38,6 +58,7 @@ void GpuMaterials::upload(const Mesh& mesh) {
   clear();
   if (!mesh.hasAppearance()) return;
   active_ = true;
+  coverage_ = mesh.seeThrough;
   tableBuffer_ = gl::createBuffer();
   const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1);
   gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::uvec4), GL_DYNAMIC_DRAW);
@@ -95,7 +116,8 @@ void GpuMaterials::update(const Mesh& mesh, const LightingState& lighting, Frame
     // Shininess (0..128) in 1/512ths: 16 bits split over the diffuse and specular words.
     const std::uint32_t shininess = static_cast<std::uint32_t>(std::clamp(m.shininess, 0.0f, 127.99f) * 512.0f + 0.5f);
     rows.push_back(glm::uvec4(colour(m.ambient) | (static_cast<std::uint32_t>(map + 1) << 24), colour(m.diffuse) | ((shininess >> 8) << 24),
-                              colour(m.specular) | ((shininess & 255u) << 24), colour(m.emission)));
+                              colour(m.specular) | ((shininess & 255u) << 24),
+                              colour(m.emission) | (i < mesh.materials.size() ? coverageCode(mesh.materials[i]) << 24 : 0u)));
   }
   if (rows == rows_) return;
   rows_ = std::move(rows);
@@ -118,6 +140,7 @@ void GpuMaterials::setMaterial(gl::ShaderProgram& p, std::size_t material) const
   p.set("uMaterialColours[3]", colours[3]);
   p.set("uMaterialShininess", float(((row.y >> 24) << 8) | (row.z >> 24)) / 512.0f);
   p.set("uMaterialMap", float(row.x >> 24) - 1.0f);
+  if (coverage_) p.set("uMaterialCoverage", float(row.w >> 24));
 }
 
 void GpuMaterials::bind(gl::ShaderProgram& p) const {

@@ -3,6 +3,15 @@
 // shaders/material.glsl), the diffuse maps as one mipmapped texture array (every map resized
 // to a common size). The mesh's vertex colours, texture coordinates, material indices and
 // map averages are vertex attributes (gpu_mesh.h).
+//
+// A see-through mesh (Mesh::seeThrough: glTF's MASK and BLEND) keeps its table and maps bound
+// in every mesh pass, lit on the GPU or not: each fragment's coverage is its material's alpha
+// (its row's fourth byte) times its map's, and fragments not covered are discarded
+// (shaders/material.glsl). A mask cuts at its cutoff. A blend is drawn as screen-door
+// transparency: covered where the alpha exceeds a 4x4 ordered-dither threshold. That needs no
+// sorting and no second pass, works alike in the stencil path's buckets, the per-triangle
+// paths and the GPU-lit ones, and reads as a halftone beside the palettes' own screens; its
+// cost is the dither's grain, where a sorted blend would be smooth.
 #pragma once
 
 #include <vector>
@@ -24,6 +33,8 @@ class GpuMaterials {
   void clear();
   bool active() const { return active_; }
   bool hasMaps() const { return maps_.id() != 0; }
+  // Whether some fragments are discarded by their material's alpha (Mesh::seeThrough).
+  bool coverage() const { return coverage_; }
   int mapSide() const { return mapSide_; }
 
   // Rewrites the table where it changed (the default material follows the lighting state).
@@ -38,6 +49,7 @@ class GpuMaterials {
 
  private:
   bool active_ = false;
+  bool coverage_ = false;
   gl::Buffer tableBuffer_;
   gl::Texture table_, maps_;
   int mapSide_ = 0;

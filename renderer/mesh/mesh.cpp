@@ -10,6 +10,22 @@
 
 namespace npr {
 
+bool seeThrough(const Mesh& m) {
+  for (const MeshMaterial& mat : m.materials) {
+    if (mat.alpha == MeshMaterial::Alpha::Opaque) continue;
+    // The least alpha the material reaches: the opacity, times its map's least alpha.
+    float least = mat.opacity;
+    if (mat.diffuseMap >= 0 && static_cast<std::size_t>(mat.diffuseMap) < m.textures.size()) {
+      const std::vector<std::uint8_t>& px = m.textures[static_cast<std::size_t>(mat.diffuseMap)].image.pixels;
+      std::uint8_t a = 255;
+      for (std::size_t i = 3; i < px.size() && a > 0; i += 4) a = std::min(a, px[i]);
+      least *= static_cast<float>(a) / 255.0f;
+    }
+    if (mat.alpha == MeshMaterial::Alpha::Mask ? least < mat.alphaCutoff : least < 1.0f) return true;
+  }
+  return false;
+}
+
 void computeFaceTints(Mesh& m) {
   m.faceTints.clear();
   const size_t nf = m.indices.size() / 3;
@@ -121,6 +137,7 @@ void finalizeMesh(Mesh& m) {
   }
   m.closed = closedSurface(m.positions, m.indices, m.sourceVertex);
   computeFaceTints(m);
+  m.seeThrough = seeThrough(m);
   m.report.vertices = nv;
   m.report.triangles = nf;
 }

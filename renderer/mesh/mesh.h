@@ -52,8 +52,13 @@ struct MeshMaterial {
   std::string name;
   glm::vec3 ambient{0.2f}, diffuse{0.8f}, specular{0.0f}, emission{0.0f};
   float shininess = 0.0f;
-  float opacity = 1.0f;  // d (or 1 - Tr); reported, drawn opaque
+  float opacity = 1.0f;  // d (or 1 - Tr): reported, drawn opaque; glTF's base colour alpha: see `alpha`
   int illum = 2;
+  // glTF's alpha mode. The surface's alpha is opacity times the diffuse map's alpha. Mask:
+  // drawn only where it reaches alphaCutoff (a cut-out). Blend: screen-door transparency,
+  // drawn at that share of each 4x4 block of pixels, in no order (gpu_materials.h says why).
+  enum class Alpha : std::uint8_t { Opaque, Mask, Blend } alpha = Alpha::Opaque;
+  float alphaCutoff = 0.5f;
   int diffuseMap = -1;   // into Mesh::textures; modulates ambient and diffuse (map_Kd)
   int opacityMap = -1;   // map_d: reported, not drawn
   bool fromLightingState = false;  // the default material: taken from the lighting state at draw time
@@ -107,12 +112,17 @@ struct Mesh {
   // per-triangle paths modulate ambient and diffuse by, and averaged around each vertex the
   // per-vertex paths (finalizeMesh fills it; empty when no material has a map).
   std::vector<glm::vec3> faceTints;
+  // Whether some material leaves part of the surface undrawn (its alpha mode, opacity and map's
+  // alpha: cut-outs and screen-door transparency, mesh.frag's ALPHA_COVERAGE); finalizeMesh
+  // fills it. Such a mesh is never treated as closed when culling.
+  bool seeThrough = false;
   MeshDeformation deformation;
   LoadReport report;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
   // Whether the file gave anything beyond the shape (what `--materials on` draws).
   bool hasAppearance() const { return !materials.empty() || !colours.empty(); }
+
 };
 
 // Fills the radius, centroids and normals from `positions` and `indices` (used by the loader
@@ -127,5 +137,7 @@ bool closedSurface(const std::vector<glm::vec3>& positions, const std::vector<st
 void updateFaceGeometry(Mesh& m);
 // faceTints from the texture maps (part of finalizeMesh; empty when no material has a map).
 void computeFaceTints(Mesh& m);
+// Mesh::seeThrough from the materials and their maps' alpha (part of finalizeMesh).
+bool seeThrough(const Mesh& m);
 
 }  // namespace npr

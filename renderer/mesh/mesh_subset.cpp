@@ -13,6 +13,7 @@ Mesh meshSubset(const Mesh& m, const std::vector<char>& keep) {
   s.materials = m.materials;
   s.textures = m.textures;
   s.radius = m.radius;
+  s.seeThrough = m.seeThrough;  // as the whole: a part draws through the whole's materials
   s.report = m.report;
   const std::size_t nf = m.triangleCount();
   const bool mats = m.faceMaterials.size() == nf, tints = m.faceTints.size() == nf;

@@ -7,13 +7,13 @@
 #include "renderer/core/frame_stats.h"
 #include "renderer/core/result.h"
 #include "renderer/gl/program_cache.h"
-#include "renderer/mesh/gpu_mesh.h"
+#include "renderer/scene/placed_mesh.h"
 
 namespace npr {
 
 enum class GeometryOutput { EyePosition, EyeNormal };
 
-[[nodiscard]] Status drawGeometry(const GpuMesh& mesh, const CameraMatrices& camera, GeometryOutput output,
-                                  gl::ProgramCache& programs, FrameStats& stats);
+// A see-through mesh leaves out what its materials' alpha does in every other pass.
+[[nodiscard]] Status drawGeometry(const PlacedMesh& mesh, GeometryOutput output, gl::ProgramCache& programs, FrameStats& stats);
 
 }  // namespace npr

@@ -100,6 +100,19 @@ struct FrameContext {
   [[nodiscard]] Result<gl::ShaderProgram*> program(const gl::ProgramVariant& variant) {
     return programs.get(variant, stats.shaderBuilds);
   }
+  // A mesh pass's program: on a see-through mesh with its coverage (every pass drawing the
+  // surface leaves out the same fragments), the material table and maps bound to it.
+  [[nodiscard]] Result<gl::ShaderProgram*> program(gl::MeshProgram variant) {
+    if (!materials.coverage()) return programs.get(variant, stats.shaderBuilds);
+    variant.alphaCoverage = true;
+    if (!variant.materials && !variant.materialUniform) variant.materialMaps = materials.hasMaps();
+    Result<gl::ShaderProgram*> p = programs.get(variant, stats.shaderBuilds);
+    if (p) {
+      (*p)->use();
+      materials.bind(**p);
+    }
+    return p;
+  }
 };
 
 class RenderPass {

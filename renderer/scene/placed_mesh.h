@@ -4,6 +4,7 @@
 #pragma once
 
 #include "renderer/core/camera.h"
+#include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 
 namespace npr {
@@ -11,6 +12,7 @@ namespace npr {
 struct PlacedMesh {
   const GpuMesh* mesh;
   CameraMatrices camera;
+  const GpuMaterials* materials = nullptr;  // for a see-through mesh's coverage (GpuMaterials::coverage)
 };
 
 }  // namespace npr

@@ -117,7 +117,7 @@ class Scene {
   std::vector<PlacedMesh> placed(const CameraMatrices& camera) const {
     std::vector<PlacedMesh> meshes;
     for (const auto& e : models_)
-      if (e.visible) meshes.push_back({&e.model->gpu(), e.model->placed(camera)});
+      if (e.visible) meshes.push_back({&e.model->gpu(), e.model->placed(camera), &e.model->materials()});
     return meshes;
   }
   // The first shown model (null when none is).

@@ -47,7 +47,7 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
   // (1) what the frame shows: normals and depth
   geometry_.bindAndClear();
   for (const PlacedMesh& m : meshes)
-    if (status) status = drawGeometry(*m.mesh, m.camera, GeometryOutput::EyeNormal, programs, stats);
+    if (status) status = drawGeometry(m, GeometryOutput::EyeNormal, programs, stats);
   Result<gl::ShaderProgram*> estimate = programs.get(gl::ScreenOcclusionProgram{false}, stats.shaderBuilds);
   Result<gl::ShaderProgram*> blur = programs.get(gl::ScreenOcclusionProgram{true}, stats.shaderBuilds);
   if (status && !estimate) status = Error{estimate.error()};

@@ -124,6 +124,15 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
 
   Result<gl::ShaderProgram*> prog = programs.get(gl::ShadowDepthProgram{}, stats.shaderBuilds);
   if (!prog) return Error{prog.error()};
+  // See-through casters' programs, with and without maps.
+  gl::ShaderProgram* seeThrough[2] = {nullptr, nullptr};
+  for (const ShadowCaster& c : scene.casters) {
+    if (!c.materials) continue;
+    const bool maps = c.materials->hasMaps();
+    Result<gl::ShaderProgram*> p = programs.get(gl::ShadowDepthProgram{true, maps}, stats.shaderBuilds);
+    if (!p) return Error{p.error()};
+    seeThrough[maps ? 1 : 0] = *p;
+  }
   GLint target = 0, vp[4];
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
   glGetIntegerv(GL_VIEWPORT, vp);
@@ -132,7 +141,6 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
   glDrawBuffer(GL_NONE);
   glReadBuffer(GL_NONE);
   glViewport(0, 0, size, size);
-  (*prog)->use();
   for (const LightMap& m : maps_) {
     if (m.firstLayer < 0) continue;
     for (int f = 0; f < (m.point ? 6 : 1); ++f) {
@@ -142,7 +150,10 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
       glClear(GL_DEPTH_BUFFER_BIT);
       gl::apply(gl::pass::kShadowDepth);
       for (const ShadowCaster& c : scene.casters) {
-        (*prog)->set("uLightViewProjection", m.viewProjection[size_t(f)] * c.transform);
+        gl::ShaderProgram& p = c.materials ? *seeThrough[c.materials->hasMaps() ? 1 : 0] : **prog;
+        p.use();
+        if (c.materials) c.materials->bind(p);
+        p.set("uLightViewProjection", m.viewProjection[size_t(f)] * c.transform);
         c.mesh->drawAll();
         ++stats.drawCalls;
       }

@@ -17,6 +17,7 @@
 #include "renderer/gl/gl_handle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/lighting_state.h"
+#include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 
 namespace npr {
@@ -25,6 +26,9 @@ namespace npr {
 struct ShadowCaster {
   const GpuMesh* mesh;
   glm::mat4 transform{1.0f};
+  // A see-through caster's materials (GpuMaterials::coverage): its cut-outs and screen doors
+  // let light through as they let the eye (null: opaque).
+  const GpuMaterials* materials = nullptr;
 };
 
 struct ShadowScene {

@@ -209,6 +209,41 @@ TEST(Gltf, KhronosBrokenSamplesAreRefusedOrReadWithWarnings) {
   EXPECT_TRUE(contains(missing.error(), "BoxTextured0.bin") || contains(missing.error(), ".bin")) << missing.error();
 }
 
+TEST(Gltf, AlphaModesBecomeMasksAndScreenDoorBlends) {
+  TempDir d;
+  auto withMaterial = [&](const std::string& material) {
+    Doc doc;
+    doc.materials = "[" + material + "]";
+    doc.meshes = R"([{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}])";
+    return load(d, doc);
+  };
+  auto mask = withMaterial(R"({"alphaMode":"MASK","alphaCutoff":0.3,"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.2]}})");
+  ASSERT_TRUE(mask) << mask.error();
+  ASSERT_FALSE(mask->materials.empty());
+  EXPECT_EQ(mask->materials[0].alpha, MeshMaterial::Alpha::Mask);
+  EXPECT_FLOAT_EQ(mask->materials[0].alphaCutoff, 0.3f);
+  EXPECT_TRUE(mask->seeThrough);  // alpha 0.2 under a cutoff of 0.3: cut away whole
+  EXPECT_TRUE(mask->report.warnings.empty());
+  auto kept = withMaterial(R"({"alphaMode":"MASK","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.6]}})");
+  ASSERT_TRUE(kept) << kept.error();
+  EXPECT_FLOAT_EQ(kept->materials[0].alphaCutoff, 0.5f);  // the specification's default
+  EXPECT_FALSE(kept->seeThrough);  // 0.6 reaches 0.5 everywhere: nothing is cut, drawn as opaque
+  auto blend = withMaterial(R"({"alphaMode":"BLEND","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,0.4]}})");
+  ASSERT_TRUE(blend) << blend.error();
+  EXPECT_EQ(blend->materials[0].alpha, MeshMaterial::Alpha::Blend);
+  EXPECT_FLOAT_EQ(blend->materials[0].opacity, 0.4f);
+  EXPECT_TRUE(blend->seeThrough);
+  auto opaque = withMaterial(R"({"alphaMode":"BLEND","pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1]}})");
+  ASSERT_TRUE(opaque) << opaque.error();
+  EXPECT_FALSE(opaque->seeThrough);  // a blend at full opacity without a map covers every pixel
+  auto odd = withMaterial(R"({"alphaMode":"GLASS\u0007"})");
+  ASSERT_TRUE(odd) << odd.error();
+  EXPECT_EQ(odd->materials[0].alpha, MeshMaterial::Alpha::Opaque);
+  ASSERT_EQ(odd->report.warnings.size(), 1u);
+  EXPECT_TRUE(contains(odd->report.warnings[0], "unknown alphaMode 'GLASS")) << odd->report.warnings[0];
+  EXPECT_FALSE(contains(odd->report.warnings[0], "\a")) << "a control character printed raw";
+}
+
 TEST(Gltf, TextureTransformMovesTheCoordinates) {
   auto m = loadMesh(kSamples + "textureTransform/TextureTransformTest.gltf");
   ASSERT_TRUE(m) << m.error();

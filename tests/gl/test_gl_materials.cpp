@@ -4,6 +4,8 @@
 // different entries in MATCH_COLORS; assimp's textured spider renders in colour.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -15,6 +17,7 @@
 #include "renderer/lighting/lighting_model.h"
 #include "renderer/lighting/mesh_materials.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/paths/path_table.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -151,6 +154,152 @@ TEST_F(Fixture, StencilEqualsTriangleWithMaterials) {
     s.materials = false;
     EXPECT_GT(test::countDiffering(triangle, renderImage(*r, cam, s, w, h)), w * h / 20) << matchModeName(mode);
   }
+}
+
+// A camera-facing square of side 1.2 at z = `z` with one material, texture coordinates over
+// it and, when `cutLeft`, a map whose left half is transparent (alpha 0) and right half opaque.
+Mesh seeThroughSquare(MeshMaterial::Alpha alpha, float opacity, bool cutLeft, float z) {
+  Mesh m = test::square(4);
+  for (glm::vec3& p : m.positions) p = glm::vec3(p.x * 0.6f, p.y * 0.6f, z);
+  for (const glm::vec3& p : m.positions) m.texcoords.push_back(glm::vec2(p.x / 1.2f + 0.5f, p.y / 1.2f + 0.5f));
+  MeshMaterial mat;
+  mat.name = "glass";
+  mat.ambient = mat.diffuse = glm::vec3(0.9f, 0.3f, 0.1f);
+  mat.alpha = alpha;
+  mat.opacity = opacity;
+  if (cutLeft) {
+    ImageRGBA8 map{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, 255)};
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 8; ++x) map.pixels[(std::size_t(y) * 16 + x) * 4 + 3] = 0;
+    m.textures.push_back({"cut.png", std::move(map)});
+    mat.diffuseMap = 0;
+  }
+  m.materials.push_back(mat);
+  m.faceMaterials.assign(m.triangleCount(), 0);
+  finalizeMesh(m);
+  return m;
+}
+
+// glTF's MASK: a square whose map's left half is transparent, in front of a sphere. In every
+// path the left half shows what is behind it (the sphere and background, exactly as without the
+// square) and the right half the square (exactly as an opaque square); a band about the cut,
+// where the map's bilinear filter mixes the halves, is not counted.
+TEST_F(Fixture, AMaskedMaterialIsCutOutInEveryPath) {
+  const Mesh sphere = test::icosphere(3);
+  const glm::mat4 behind = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -0.4f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
+  const Mesh opaque = seeThroughSquare(MeshMaterial::Alpha::Opaque, 1.0f, true, 0.3f);
+  const Mesh masked = seeThroughSquare(MeshMaterial::Alpha::Mask, 1.0f, true, 0.3f);
+  EXPECT_FALSE(opaque.seeThrough);
+  EXPECT_TRUE(masked.seeThrough);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  constexpr int kSide = 120;
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  const CameraMatrices cam = c.matrices(1.0f);
+  r->addModel(sphere, behind);
+  for (RenderPath path : userRenderPaths()) {
+    RenderSettings s;
+    s.path = path;
+    const ImageRGBA8 back = renderImage(*r, cam, s, kSide, kSide);
+    const ModelId o = r->addModel(opaque);
+    const ImageRGBA8 front = renderImage(*r, cam, s, kSide, kSide);
+    r->removeModel(o);
+    const ModelId m = r->addModel(masked);
+    const ImageRGBA8 cut = renderImage(*r, cam, s, kSide, kSide);
+    r->removeModel(m);
+    int counted[2] = {0, 0}, wrong[2] = {0, 0};
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x) {
+        const std::size_t i = (std::size_t(y) * kSide + x) * 4;
+        auto same = [&](const ImageRGBA8& a, const ImageRGBA8& b) { return std::equal(&a.pixels[i], &a.pixels[i] + 3, &b.pixels[i]); };
+        if (same(back, front) || std::abs(x - kSide / 2) < 4) continue;  // the square not seen here, or the cut's band
+        const int side = x < kSide / 2 ? 0 : 1;
+        ++counted[side];
+        wrong[side] += !same(cut, side == 0 ? back : front);
+      }
+    for (int side : {0, 1}) {
+      EXPECT_GT(counted[side], kSide * kSide / 10) << renderPathName(path) << ": the square is not on screen";
+      EXPECT_LE(wrong[side], counted[side] / 100) << renderPathName(path) << (side ? ": the kept half" : ": the cut half") << ", " << wrong[side]
+                                                  << " of " << counted[side] << " pixels differ";
+    }
+  }
+}
+
+// glTF's BLEND, drawn as screen-door transparency: a square of opacity 0.25 covers a quarter of
+// its pixels (4 of every 4x4 block) in every path, the same ones every frame; 0.75 three quarters.
+TEST_F(Fixture, ABlendedMaterialCoversItsOpacitysShareOfPixelsInEveryPath) {
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  constexpr int kSide = 96;
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  const CameraMatrices cam = c.matrices(1.0f);
+  const Mesh opaque = seeThroughSquare(MeshMaterial::Alpha::Opaque, 1.0f, false, 0.0f);
+  for (float opacity : {0.25f, 0.75f}) {
+    const Mesh blended = seeThroughSquare(MeshMaterial::Alpha::Blend, opacity, false, 0.0f);
+    ASSERT_TRUE(blended.seeThrough);
+    for (RenderPath path : userRenderPaths()) {
+      RenderSettings s;
+      s.path = path;
+      const ImageRGBA8 empty = renderImage(*r, cam, s, kSide, kSide);
+      const ModelId o = r->addModel(opaque);
+      const ImageRGBA8 full = renderImage(*r, cam, s, kSide, kSide);
+      r->removeModel(o);
+      const ModelId b = r->addModel(blended);
+      const ImageRGBA8 part = renderImage(*r, cam, s, kSide, kSide);
+      const ImageRGBA8 again = renderImage(*r, cam, s, kSide, kSide);
+      r->removeModel(b);
+      int square = 0, drawn = 0;
+      for (std::size_t i = 0; i < std::size_t(kSide * kSide) * 4; i += 4) {
+        if (std::equal(&empty.pixels[i], &empty.pixels[i] + 3, &full.pixels[i])) continue;
+        ++square;
+        drawn += std::equal(&part.pixels[i], &part.pixels[i] + 3, &full.pixels[i]);
+      }
+      ASSERT_GT(square, kSide * kSide / 8) << renderPathName(path);
+      EXPECT_NEAR(double(drawn) / square, opacity, 0.04) << renderPathName(path) << ": " << drawn << " of " << square;
+      EXPECT_EQ(test::countDiffering(part, again), 0) << renderPathName(path) << ": the screen door moved in a still view";
+    }
+  }
+}
+
+// A see-through caster lets light through where it lets the eye: a square held flat above a
+// slab, lit from straight above, shadows the slab; with its map's left half cut away, about half
+// as much of the slab (the pixels where the square itself is not in view).
+TEST_F(Fixture, AMaskedCasterCastsTheShadowOfWhatIsLeft) {
+  const glm::mat4 faceUp = glm::rotate(glm::mat4(1.0f), glm::radians(-90.0f), glm::vec3(1, 0, 0));
+  const Mesh slab = test::square(8);
+  const glm::mat4 slabPlace = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -0.5f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(1.2f)) * faceUp;
+  const glm::mat4 squarePlace = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.2f, 0.0f)) * faceUp;
+  const Mesh opaque = seeThroughSquare(MeshMaterial::Alpha::Opaque, 1.0f, true, 0.0f);
+  const Mesh masked = seeThroughSquare(MeshMaterial::Alpha::Mask, 1.0f, true, 0.0f);
+  constexpr int kSide = 160;
+  const CameraMatrices cam = testCamera(1.0f, 30.0f, 50.0f);
+  const float above[4] = {0.0f, 1.0f, 0.0f, 0.0f};
+  r->lighting().setModelView(cam.view);
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, above));
+  RenderSettings s;
+  s.path = RenderPath::Reference;
+  r->addModel(slab, slabPlace);
+  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSide, kSide);
+  const ImageRGBA8 lit = renderImage(*r, cam, s, kSide, kSide);
+  int shadowed[2] = {0, 0}, slabPixels = 0;
+  for (int k : {0, 1}) {
+    const ModelId id = r->addModel(k == 0 ? opaque : masked, squarePlace);
+    const ImageRGBA32F both = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSide, kSide);
+    s.shadows = true;
+    const ImageRGBA8 shade = renderImage(*r, cam, s, kSide, kSide);
+    s.shadows = false;
+    r->removeModel(id);
+    auto luminance = [](const ImageRGBA8& img, std::size_t i) { return (int(img.pixels[4 * i]) + img.pixels[4 * i + 1] + img.pixels[4 * i + 2]) / 765.0f; };
+    for (std::size_t i = 0; i < std::size_t(kSide * kSide); ++i) {
+      if (slabAlone.pixels[4 * i + 2] == 0.0f || std::fabs(both.pixels[4 * i + 2] - slabAlone.pixels[4 * i + 2]) > 1e-4f) continue;
+      slabPixels += k == 0;
+      shadowed[k] += luminance(shade, i) < luminance(lit, i) - 0.1f;
+    }
+  }
+  EXPECT_GT(slabPixels, kSide * kSide / 5);
+  ASSERT_GT(shadowed[0], 1000) << "the opaque square casts no shadow: the test tests nothing";
+  EXPECT_GT(shadowed[1], shadowed[0] * 35 / 100) << shadowed[1] << " of " << shadowed[0];
+  EXPECT_LT(shadowed[1], shadowed[0] * 65 / 100) << shadowed[1] << " of " << shadowed[0] << ": the cut half still casts";
 }
 
 // A camera-facing square split into two triangles: the left one red, the right one blue.
