@@ -69,7 +69,7 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   std::vector<std::string> objectPalette;
   app.add_option("--object-palette", objectPalette,
                  "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
-  std::vector<std::string> objectDetail;
+  std::vector<std::string> objectDetail, materialDetail;
   app.add_option("--object-detail", objectDetail,
                  "OBJECT=VALUE: the object's detail in [0, 1], which picks the row of a palette with 'axis detail' (repeatable; default 0)");
   app.add_option("--animation", o.playAnimation,
@@ -111,6 +111,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit");
   app.add_option("--palette-sheet", o.paletteSheet,
                  "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
+  app.add_option("--material-detail", materialDetail,
+                 "MATERIAL=VALUE: the detail in [0, 1] of the faces of material MATERIAL, in place of their object's, for a palette with "
+                 "'axis detail' (repeatable; needs --materials on)");
   app.add_option("--palette-for", paletteFor,
                  "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
   app.add_option("--animate", animate,
@@ -241,14 +244,24 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       return {std::nullopt, fail("--object-palette " + printable(op.substr(0, eq)) + ": palette file '" + printable(file) + "' does not exist")};
     o.objectPalettes.emplace_back(op.substr(0, eq), file);
   }
-  for (const std::string& od : objectDetail) {
-    const std::size_t eq = od.rfind('=');
-    char* end = nullptr;
-    const float v = eq == std::string::npos ? 0.0f : std::strtof(od.c_str() + eq + 1, &end);
-    if (eq == std::string::npos || eq == 0 || eq + 1 == od.size() || *end != '\0' || !(v >= 0.0f && v <= 1.0f))
-      return {std::nullopt, fail("--object-detail must be OBJECT=VALUE with VALUE in [0, 1], got '" + printable(od) + "'")};
-    o.objectDetails.emplace_back(od.substr(0, eq), v);
-  }
+  // NAME=VALUE with VALUE in [0, 1], for --object-detail and --material-detail.
+  auto details = [&](const char* flag, const char* what, const std::vector<std::string>& given,
+                     std::vector<std::pair<std::string, float>>& into) -> bool {
+    for (const std::string& d : given) {
+      const std::size_t eq = d.rfind('=');
+      char* end = nullptr;
+      const float v = eq == std::string::npos ? 0.0f : std::strtof(d.c_str() + eq + 1, &end);
+      if (eq == std::string::npos || eq == 0 || eq + 1 == d.size() || *end != '\0' || !(v >= 0.0f && v <= 1.0f)) {
+        (void)fail(std::string(flag) + " must be " + what + "=VALUE with VALUE in [0, 1], got '" + printable(d) + "'");
+        return false;
+      }
+      into.emplace_back(d.substr(0, eq), v);
+    }
+    return true;
+  };
+  if (!details("--object-detail", "OBJECT", objectDetail, o.objectDetails) ||
+      !details("--material-detail", "MATERIAL", materialDetail, o.materialDetails))
+    return {std::nullopt, 2};
   for (const std::string& pf : paletteFor) {
     const std::size_t eq = pf.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == pf.size())

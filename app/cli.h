@@ -30,6 +30,7 @@ struct Options {
   bool splitObjects = false;        // --split-objects: OBJ groups as objects           // --no-file-lights: the viewer's light even where the file has lights          // --camera-from-file N: the scene's camera N (1-based; -1 none)
   std::vector<std::pair<std::string, std::string>> objectPalettes;  // --object-palette OBJECT=FILE
   std::vector<std::pair<std::string, float>> objectDetails;         // --object-detail OBJECT=VALUE
+  std::vector<std::pair<std::string, float>> materialDetails;       // --material-detail MATERIAL=VALUE
   std::string playAnimation;  // --animation NAME|NUMBER|all|none (empty: all)
   double time = 0.0;          // --time SECONDS: the scene's clock at the first frame
   bool play = false;          // --play: the clock runs (the window; headless sequences always run it)

@@ -65,6 +65,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   }
   for (const auto& [material, file] : o.materialPalettes)
     if (Status s = state.setMaterialPalette(material, file, renderer); !s) return s;
+  for (const auto& [material, detail] : o.materialDetails) state.setMaterialDetail(material, detail, renderer);
   if (Status s = applySettings(o.settings, false, state, renderer); !s) return s;
   state.fileLights = o.fileLights;
   if (!o.playAnimation.empty()) {

@@ -60,10 +60,11 @@ Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, 
   camera.frame(1.0f);  // the scene is fitted into the unit sphere
   renderer.resetPattern();
   for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);
+  for (const auto& [material, detail] : materialDetails) noteMissingMaterial(material, "its detail");
   return okStatus();
 }
 
-void ViewerState::noteMissingMaterial(const std::string& material) {
+void ViewerState::noteMissingMaterial(const std::string& material, const char* forWhat) {
   if (scene.empty()) return;
   std::vector<std::string> names;
   for (const ViewerObject& o : scene.objects())
@@ -74,7 +75,7 @@ void ViewerState::noteMissingMaterial(const std::string& material) {
     }
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-  note("no material named '" + material + "' in " + scene.label() + " for its palette" +
+  note("no material named '" + printable(material) + "' in " + scene.label() + " for " + forWhat +
        (list.empty() ? std::string(" (the scene has no materials)") : " (its materials: " + list + ")"));
 }
 
@@ -97,6 +98,12 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
   materialPalettes[material] = path;
   noteMissingMaterial(material);
   return okStatus();
+}
+
+void ViewerState::setMaterialDetail(const std::string& material, float detail, Renderer& renderer) {
+  renderer.setMaterialDetail(material, detail);
+  materialDetails[material] = detail;
+  noteMissingMaterial(material, "its detail");
 }
 
 Status ViewerState::setControlPalette(ControlParameter parameter, const std::string& path, Renderer& renderer) {

@@ -52,6 +52,10 @@ struct ViewerState {
   // returns the material to the main palette. A palette that fails to load changes nothing.
   Status setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer);
   std::map<std::string, std::string> materialPalettes;  // material name -> palette file
+  // Per-material detail (Renderer::setMaterialDetail), kept when the model changes; a model
+  // without that material is told so.
+  void setMaterialDetail(const std::string& material, float detail, Renderer& renderer);
+  std::map<std::string, float> materialDetails;
   // Control-image palettes (drawn where shadows fall / in crevices); an empty path removes
   // it. A palette that fails to load changes nothing.
   Status setControlPalette(ControlParameter parameter, const std::string& path, Renderer& renderer);
@@ -59,7 +63,7 @@ struct ViewerState {
   // Says when a control palette is loaded but this frame's settings give it nothing to show.
   void noteIdleControlPalettes();
   void note(const std::string& message);
-  void noteMissingMaterial(const std::string& material);
+  void noteMissingMaterial(const std::string& material, const char* forWhat = "its palette");
 
   // The view this frame is drawn from: the file's camera when one is chosen, else the orbit's.
   CameraMatrices view(float aspect) const;

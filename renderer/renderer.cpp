@@ -119,6 +119,14 @@ void Renderer::clearMaterialPalette(const std::string& material) {
   if (materialPalettes_.erase(material)) partsDirty_ = true;
 }
 
+void Renderer::setMaterialDetail(const std::string& material, float detail) {
+  const float d = std::isfinite(detail) ? std::clamp(detail, 0.0f, 1.0f) : 0.0f;
+  const auto it = materialDetails_.find(material);
+  if (it != materialDetails_.end() && it->second == d) return;
+  materialDetails_[material] = d;
+  partsDirty_ = true;
+}
+
 Status Renderer::setControlPalette(ControlParameter parameter, const Palette& palette) {
   Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
   if (!uploaded) return Error{uploaded.error()};
@@ -156,7 +164,11 @@ Status Renderer::prepare(const RenderSettings& s) {
       const auto it = materialPalettes_.find(material);
       return it == materialPalettes_.end() ? nullptr : it->second.get();
     };
-    scene_.forEachIncludingHidden([&](Model& m) { m.splitByPalette(paletteOf, stats_); });
+    auto detailOf = [&](const std::string& material) -> std::optional<float> {
+      const auto it = materialDetails_.find(material);
+      return it == materialDetails_.end() ? std::nullopt : std::optional<float>(it->second);
+    };
+    scene_.forEachIncludingHidden([&](Model& m) { m.splitByMaterial(paletteOf, detailOf, stats_); });
   }
   // A depth axis counts in scene radii, so a palette with rows suits any model's units.
   const float sceneRadius = scene_.empty() ? 1.0f : scene_.bounds().w;
@@ -351,13 +363,14 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   }
   // The whole model's, for every part: the parts hide each other's back faces.
   const bool cullBackFaces = backFacesHidden(model, placed, s);
-  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette) {
+  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette,
+                  float detail) {
     if (s.materials || materials.coverage()) materials.update(mesh, lighting_, stats_);
     FrameContext frame{placed, view.viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
     frame.cullBackFaces = cullBackFaces;
-    frame.axisDetail = model.detail();
+    frame.axisDetail = detail;
     return drawPart(view, &model, frame, s.path);
   };
   GpuPalette* main = mainPaletteOf(model);
@@ -367,11 +380,14 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     ToneSlot(const Renderer& renderer, int slot) : r(renderer) { r.selectToneSlot(slot); }
     ~ToneSlot() { r.selectToneSlot(0); }
   } toneSlot(*this, model.toneSlot);
-  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), main);
+  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), main, model.detail());
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : main); !st) return st;
+    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : main,
+                         part->detail.value_or(model.detail()));
+        !st)
+      return st;
   return okStatus();
 }
 

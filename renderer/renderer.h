@@ -98,6 +98,10 @@ class Renderer {
   // (every path; matched with its own matcher), the rest with the main one. Kept across
   // meshes, applied to whichever has a material of that name; on failure nothing changes.
   [[nodiscard]] Status setMaterialPalette(const std::string& material, const Palette& palette);
+  // Per-material detail: faces of the material named `material` take `detail` (clamped to
+  // [0, 1]; not finite: 0) in place of their model's, for a palette with `axis detail` (with
+  // materials on, as per-material palettes). Kept across meshes, like the palettes.
+  void setMaterialDetail(const std::string& material, float detail);
   void clearMaterialPalette(const std::string& material);
   // Control-image palettes (passes/control_palette_pass.h): drawn where shadows fall or in
   // crevices, blended in by that parameter over the main palette. Matched with the main
@@ -221,6 +225,7 @@ class Renderer {
   bool backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& settings);
 
   std::map<std::string, std::unique_ptr<GpuPalette>> materialPalettes_;
+  std::map<std::string, float> materialDetails_;
   std::map<const Model*, std::unique_ptr<GpuPalette>> modelPalettes_;
   // The palette a model's surfaces are drawn with where no material palette applies.
   GpuPalette* mainPaletteOf(const Model& model) const {
@@ -240,7 +245,7 @@ class Renderer {
     if (shadowPalette_) fn(*shadowPalette_);
     if (occlusionPalette_) fn(*occlusionPalette_);
   }
-  bool partsDirty_ = false;  // the material palettes changed since the models were split
+  bool partsDirty_ = false;  // the material palettes or details changed since the models were split
 
   LightingState lighting_;
   FrameStats stats_;

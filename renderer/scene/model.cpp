@@ -164,8 +164,8 @@ void Model::occlusionBaked(FrameStats& stats) {
   stats.bufferUploads += 1;
 }
 
-void Model::uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats) {
-  for (std::size_t g = 0; g < palettes.size(); ++g) {
+void Model::uploadParts(const std::vector<PartKey>& keys, const std::vector<std::size_t>& partOf, FrameStats& stats) {
+  for (std::size_t g = 0; g < keys.size(); ++g) {
     std::vector<char> keep(mesh_->triangleCount(), 0);
     bool any = false;
     for (std::size_t f = 0; f < keep.size(); ++f) {
@@ -174,7 +174,8 @@ void Model::uploadParts(const std::vector<const GpuPalette*>& palettes, const st
     }
     if (!any) continue;
     auto part = std::make_unique<Part>();
-    part->palette = palettes[g];
+    part->palette = keys[g].first;
+    part->detail = keys[g].second;
     part->mesh = meshSubset(*mesh_, keep);
     // Only the part's index buffer is its own: it draws through the model's vertex streams
     // (the direction field and occlusion included, when the model has them).

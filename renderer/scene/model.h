@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -107,23 +108,26 @@ class Model {
   void occlusionBaked(FrameStats& stats);  // uploads the finished bake to the model and its parts
   const std::vector<float>* occlusionValues() const { return occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr; }
 
-  // A part of the model drawn with one palette (null: the main one), with its own GPU copy,
-  // appearance and per-triangle cache. Empty when no material of the mesh has its own palette.
+  // A part of the model drawn with one palette (null: the main one) and one detail (none: the
+  // model's), with its own GPU copy, appearance and per-triangle cache. Empty when no material
+  // of the mesh has its own palette or detail.
   struct Part {
     const GpuPalette* palette = nullptr;
+    std::optional<float> detail;  // what a palette with `axis detail` picks its row by
     Mesh mesh;
     GpuMesh gpu;
     GpuMaterials materials;
     TriangleShadingCache triangles;
   };
   // Splits the model into parts by the palette each material is drawn with (`paletteOf`
-  // returns null for the main palette).
-  template <class PaletteOf>
-  void splitByPalette(PaletteOf&& paletteOf, FrameStats& stats);
+  // returns null for the main palette) and its detail (`detailOf` returns none for the model's).
+  template <class PaletteOf, class DetailOf>
+  void splitByMaterial(PaletteOf&& paletteOf, DetailOf&& detailOf, FrameStats& stats);
   std::vector<std::unique_ptr<Part>>& parts() { return parts_; }
 
  private:
-  void uploadParts(const std::vector<const GpuPalette*>& palettes, const std::vector<std::size_t>& partOf, FrameStats& stats);
+  using PartKey = std::pair<const GpuPalette*, std::optional<float>>;
+  void uploadParts(const std::vector<PartKey>& keys, const std::vector<std::size_t>& partOf, FrameStats& stats);
 
   void adopt(const Mesh& mesh);  // mesh_ and rest_ for a new mesh (a posed copy when it deforms)
   void poseOnCpu(bool upload, FrameStats& stats);
@@ -152,21 +156,21 @@ class Model {
   std::vector<std::unique_ptr<Part>> parts_;
 };
 
-template <class PaletteOf>
-void Model::splitByPalette(PaletteOf&& paletteOf, FrameStats& stats) {
+template <class PaletteOf, class DetailOf>
+void Model::splitByMaterial(PaletteOf&& paletteOf, DetailOf&& detailOf, FrameStats& stats) {
   parts_.clear();
   if (mesh_->faceMaterials.size() != mesh_->triangleCount()) return;
-  // The palette of each material: 0 the main one, k > 0 the k-th distinct material palette.
-  std::vector<const GpuPalette*> palettes{nullptr};
+  // The part of each material: 0 the main palette at the model's detail, k > 0 the k-th
+  // distinct pair of a material's palette and detail.
+  std::vector<PartKey> keys{{nullptr, std::nullopt}};
   std::vector<std::size_t> partOf(mesh_->materials.size(), 0);
   for (std::size_t i = 0; i < mesh_->materials.size(); ++i) {
-    const GpuPalette* p = paletteOf(mesh_->materials[i].name);
-    if (!p) continue;
-    auto at = std::find(palettes.begin(), palettes.end(), p);
-    if (at == palettes.end()) at = palettes.insert(palettes.end(), p);
-    partOf[i] = static_cast<std::size_t>(at - palettes.begin());
+    const PartKey key{paletteOf(mesh_->materials[i].name), detailOf(mesh_->materials[i].name)};
+    auto at = std::find(keys.begin(), keys.end(), key);
+    if (at == keys.end()) at = keys.insert(keys.end(), key);
+    partOf[i] = static_cast<std::size_t>(at - keys.begin());
   }
-  if (palettes.size() > 1) uploadParts(palettes, partOf, stats);
+  if (keys.size() > 1) uploadParts(keys, partOf, stats);
 }
 
 }  // namespace npr

@@ -223,6 +223,14 @@ expect 2 "--object-detail out of range" -- "$viewer" --headless "$src/models/bun
 grep -q -- "--object-detail must be OBJECT=VALUE with VALUE in \[0, 1\], got 'bunny=2'" "$tmp/err" || { echo "FAIL: --object-detail message: $(cat "$tmp/err")"; fail=1; }
 expect 1 "--object-detail of no such object" -- "$viewer" --headless --size 64x64 "$src/models/bunny.obj" --object-detail kettle=0.5
 grep -q "no object named 'kettle'" "$tmp/err" || { echo "FAIL: --object-detail unknown object: $(cat "$tmp/err")"; fail=1; }
+# ... and each material's --material-detail the row of its faces (the spider's body here).
+expect 0 "a detail palette on the spider" -- "$viewer" --headless --size 160x96 /usr/share/assimp/models/OBJ/spider.obj --materials on --palette "$tmp/detail.palette" --screenshot "$tmp/mdetail0.png"
+expect 0 "--material-detail" -- "$viewer" --headless --size 160x96 /usr/share/assimp/models/OBJ/spider.obj --materials on --palette "$tmp/detail.palette" --material-detail Skin=1 --screenshot "$tmp/mdetail1.png"
+cmp -s "$tmp/mdetail0.png" "$tmp/mdetail1.png" && { echo "FAIL: --material-detail changes nothing"; fail=1; }
+expect 2 "--material-detail out of range" -- "$viewer" --headless "$src/models/bunny.obj" --material-detail Skin=-1
+grep -q -- "--material-detail must be MATERIAL=VALUE with VALUE in \[0, 1\], got 'Skin=-1'" "$tmp/err" || { echo "FAIL: --material-detail message: $(cat "$tmp/err")"; fail=1; }
+expect 0 "--material-detail of no such material" -- "$viewer" --headless --size 64x64 /usr/share/assimp/models/OBJ/spider.obj --material-detail Kettle=0.5 --screenshot "$tmp/mdetail2.png"
+grep -q "no material named 'Kettle' in .* for its detail" "$tmp/err" || { echo "FAIL: --material-detail unknown material: $(cat "$tmp/err")"; fail=1; }
 expect 2 "bad --layout" -- "$viewer" --headless --layout diagonal
 grep -q -- "--layout must be file, row or grid" "$tmp/err" || { echo "FAIL: --layout message: $(cat "$tmp/err")"; fail=1; }
 expect 0 "--camera-from-file" -- "$viewer" --headless --size 96x96 "$G/cameras/Cameras.gltf" --camera-from-file 2 --screenshot "$tmp/ortho.png"
