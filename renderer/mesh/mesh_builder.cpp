@@ -6,29 +6,21 @@
 #include <limits>
 #include <string>
 
+#include "renderer/mesh/manifold_fans.h"
+
 namespace npr {
 
 // Adds triangles to the halfedge mesh. OpenMesh asserts (and so aborts the viewer) on a face
 // that names one vertex twice or a vertex that does not exist, so those never reach it: they
 // are dropped here and counted, whichever reader produced them. Faces it refuses for other
 // reasons (complex edges, duplicates, flipped neighbours) are drawn on their own copies of the
-// vertices and counted.
+// vertices and counted. Triangles that form manifold fans (manifold_fans.h) are refused
+// nowhere, so for them the structure is not built: the output is the input, faces in order
+// and corners in order (OpenMesh keeps both: a face starts at its first corner).
 void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> tris, Mesh& m,
                   std::vector<std::uint32_t>* vertexOrigin, std::vector<std::uint32_t>* faceOrigin) {
-  TriMesh mesh;
-  mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
-  std::vector<TriMesh::VertexHandle> vh(verts.size());
-  for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));
-  std::size_t refused = 0, degenerate = 0;
   const long nv = static_cast<long>(verts.size());
-  verts = {};
-  // OpenMesh prints an error line for each refused face; we count them in the report instead.
-  auto& errlog = omerr();
-  errlog.disable();
-  if (vertexOrigin) {
-    vertexOrigin->resize(static_cast<std::size_t>(nv));
-    for (std::size_t i = 0; i < vertexOrigin->size(); ++i) (*vertexOrigin)[i] = static_cast<std::uint32_t>(i);
-  }
+  std::size_t degenerate = 0, kept = 0;
   if (faceOrigin) faceOrigin->clear();
   for (std::size_t ti = 0; ti < tris.size(); ++ti) {
     const auto& t = tris[ti];
@@ -38,31 +30,55 @@ void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> 
       continue;
     }
     if (faceOrigin) faceOrigin->push_back(static_cast<std::uint32_t>(ti));
-    const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
-    if (fh.is_valid()) continue;
-    ++refused;
-    TriMesh::VertexHandle c[3];
-    for (int k = 0; k < 3; ++k) {
-      const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
-      c[k] = mesh.add_vertex(p);
-      if (vertexOrigin) vertexOrigin->push_back(static_cast<std::uint32_t>(t[k]));
-    }
-    mesh.add_face(c[0], c[1], c[2]);
+    tris[kept++] = t;
   }
-  errlog.enable();
-  tris = {};
-  // The arrays the renderer draws: every vertex (copies for refused faces included) and each
-  // face's corners in the halfedge structure's order, a cyclic rotation of the file's (the
-  // winding is kept).
-  const auto* pts = mesh.points();
-  m.positions.resize(mesh.n_vertices());
-  for (size_t i = 0; i < m.positions.size(); ++i) m.positions[i] = glm::vec3(pts[i][0], pts[i][1], pts[i][2]);
-  m.indices.resize(mesh.n_faces() * 3);
-  for (auto f : mesh.faces()) {
-    auto h = mesh.halfedge_handle(f);
-    for (int k = 0; k < 3; ++k) {
-      m.indices[static_cast<size_t>(f.idx()) * 3 + static_cast<size_t>(k)] = static_cast<std::uint32_t>(mesh.to_vertex_handle(h).idx());
-      h = mesh.next_halfedge_handle(h);
+  tris.resize(kept);
+  if (vertexOrigin) {
+    vertexOrigin->resize(static_cast<std::size_t>(nv));
+    for (std::size_t i = 0; i < vertexOrigin->size(); ++i) (*vertexOrigin)[i] = static_cast<std::uint32_t>(i);
+  }
+  std::size_t refused = 0;
+  if (formsManifoldFans(tris, verts.size())) {
+    m.positions = std::move(verts);
+    m.indices.resize(tris.size() * 3);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      for (std::size_t k = 0; k < 3; ++k) m.indices[f * 3 + k] = static_cast<std::uint32_t>(tris[f][k]);
+  } else {
+    TriMesh mesh;
+    mesh.reserve(verts.size(), tris.size() * 3 / 2 + 16, tris.size());
+    std::vector<TriMesh::VertexHandle> vh(verts.size());
+    for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));
+    verts = {};
+    // OpenMesh prints an error line for each refused face; we count them in the report instead.
+    auto& errlog = omerr();
+    errlog.disable();
+    for (const auto& t : tris) {
+      const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
+      if (fh.is_valid()) continue;
+      ++refused;
+      TriMesh::VertexHandle c[3];
+      for (int k = 0; k < 3; ++k) {
+        const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
+        c[k] = mesh.add_vertex(p);
+        if (vertexOrigin) vertexOrigin->push_back(static_cast<std::uint32_t>(t[k]));
+      }
+      mesh.add_face(c[0], c[1], c[2]);
+    }
+    errlog.enable();
+    tris = {};
+    // The arrays the renderer draws: every vertex (copies for refused faces included) and each
+    // face's corners in the halfedge structure's order, a cyclic rotation of the file's (the
+    // winding is kept).
+    const auto* pts = mesh.points();
+    m.positions.resize(mesh.n_vertices());
+    for (size_t i = 0; i < m.positions.size(); ++i) m.positions[i] = glm::vec3(pts[i][0], pts[i][1], pts[i][2]);
+    m.indices.resize(mesh.n_faces() * 3);
+    for (auto f : mesh.faces()) {
+      auto h = mesh.halfedge_handle(f);
+      for (int k = 0; k < 3; ++k) {
+        m.indices[static_cast<size_t>(f.idx()) * 3 + static_cast<size_t>(k)] = static_cast<std::uint32_t>(mesh.to_vertex_handle(h).idx());
+        h = mesh.next_halfedge_handle(h);
+      }
     }
   }
   m.report.non_manifold_faces = refused;

@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <random>
 #include <sstream>
 
+#include "renderer/mesh/manifold_fans.h"
+#include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
@@ -248,6 +251,86 @@ TEST(MeshLoader, ReportJsonHasTheDocumentedFields) {
                           "\"non_manifold_faces\":0", "\"warnings\":[", "\"load_ms\":"})
     EXPECT_NE(j.find(key), std::string::npos) << key << " in " << j;
   EXPECT_NE(j.find("a \\\"quoted\\\" name.obj"), std::string::npos) << j;
+}
+
+
+// The builder skips the halfedge structure for triangles forming manifold fans, on the premise
+// that OpenMesh would refuse none of them in any order. Checked here on closed and open
+// surfaces with their faces shuffled and their corners rotated: OpenMesh, fed the same faces in
+// the same order, refuses none and keeps every corner where it was, so the two builds are the
+// same mesh. Surfaces that are not such fans are told apart, and the builder refuses the same
+// faces as before on them.
+std::vector<std::array<int, 3>> facesOf(const Mesh& m) {
+  std::vector<std::array<int, 3>> t(m.triangleCount());
+  for (std::size_t f = 0; f < t.size(); ++f)
+    for (std::size_t k = 0; k < 3; ++k) t[f][k] = static_cast<int>(m.indices[f * 3 + k]);
+  return t;
+}
+
+TEST(ManifoldFans, OpenMeshRefusesNoFaceOfManifoldFansInAnyOrder) {
+  auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
+  ASSERT_TRUE(bunny) << bunny.error();
+  std::mt19937 rng(7);
+  const std::vector<Mesh> surfaces = {test::icosphere(3), test::torus(48, 24), test::square(6), *bunny};
+  for (std::size_t s = 0; s < surfaces.size(); ++s)
+    for (int round = 0; round < 4; ++round) {
+      std::vector<std::array<int, 3>> faces = facesOf(surfaces[s]);
+      if (round > 0) std::shuffle(faces.begin(), faces.end(), rng);
+      for (auto& f : faces) std::rotate(f.begin(), f.begin() + std::uniform_int_distribution<int>(0, 2)(rng), f.end());
+      ASSERT_TRUE(formsManifoldFans(faces, surfaces[s].positions.size())) << "surface " << s << ": the check tests nothing";
+      TriMesh om;
+      std::vector<TriMesh::VertexHandle> vh;
+      for (const glm::vec3& p : surfaces[s].positions) vh.push_back(om.add_vertex(TriMesh::Point(p.x, p.y, p.z)));
+      std::size_t refused = 0, moved = 0;
+      for (std::size_t f = 0; f < faces.size(); ++f) {
+        const auto fh = om.add_face(vh[std::size_t(faces[f][0])], vh[std::size_t(faces[f][1])], vh[std::size_t(faces[f][2])]);
+        if (!fh.is_valid()) {
+          ++refused;
+          continue;
+        }
+        auto h = om.halfedge_handle(fh);
+        for (std::size_t k = 0; k < 3; ++k, h = om.next_halfedge_handle(h)) moved += om.to_vertex_handle(h).idx() != faces[f][k];
+      }
+      EXPECT_EQ(refused, 0u) << "surface " << s << ", round " << round;
+      EXPECT_EQ(moved, 0u) << "surface " << s << ", round " << round;
+      Mesh built;
+      buildTriMesh(surfaces[s].positions, faces, built);
+      ASSERT_EQ(built.indices.size(), faces.size() * 3);
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k) ASSERT_EQ(built.indices[f * 3 + k], std::uint32_t(faces[f][k]));
+    }
+}
+
+TEST(ManifoldFans, WhatIsNotOneFanPerVertexIsLeftToTheHalfedgeStructure) {
+  const Mesh sphere = test::icosphere(2);
+  const std::size_t nv = sphere.positions.size();
+  std::vector<std::array<int, 3>> faces = facesOf(sphere);
+  ASSERT_TRUE(formsManifoldFans(faces, nv));
+  auto with = [&](auto change) {
+    std::vector<std::array<int, 3>> f = faces;
+    change(f);
+    return f;
+  };
+  const auto duplicate = with([](auto& f) { f.push_back(f[0]); });
+  const auto flipped = with([](auto& f) { std::swap(f[3][0], f[3][1]); });
+  EXPECT_FALSE(formsManifoldFans(duplicate, nv));
+  EXPECT_FALSE(formsManifoldFans(flipped, nv));
+  // Two triangles touching at one vertex only (a bowtie): two fans there.
+  const std::vector<std::array<int, 3>> bowtie = {{0, 1, 2}, {0, 3, 4}};
+  EXPECT_FALSE(formsManifoldFans(bowtie, 5));
+  EXPECT_TRUE(formsManifoldFans({{0, 1, 2}, {0, 2, 3}}, 4));  // an open fan
+  // Three triangles on one edge.
+  EXPECT_FALSE(formsManifoldFans({{0, 1, 2}, {1, 0, 3}, {1, 0, 4}}, 5));
+  // A vertex on more triangles than the check walks: a closed fan of 70 about vertex 0.
+  std::vector<std::array<int, 3>> wide;
+  for (int i = 0; i < 70; ++i) wide.push_back({0, 1 + i, 1 + (i + 1) % 70});
+  EXPECT_FALSE(formsManifoldFans(wide, 71));
+  // Refused faces still come out as before: drawn on copies, counted.
+  Mesh built;
+  buildTriMesh(sphere.positions, duplicate, built);
+  EXPECT_EQ(built.report.non_manifold_faces, 1u);
+  EXPECT_EQ(built.positions.size(), nv + 3);
+  EXPECT_EQ(built.triangleCount(), duplicate.size());
 }
 
 }  // namespace
