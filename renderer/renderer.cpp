@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "renderer/core/elapsed.h"
+#include "renderer/core/parallel.h"
 #include "renderer/gl/gpu_choice.h"
 #include "renderer/gl/pass_state.h"
 #include "renderer/lines/intersection_lines.h"
@@ -299,6 +300,42 @@ void Renderer::prepareOrientation(const RenderSettings& s) {
   if (turned && s.orient.source == OrientSource::Curvature) scene_.forEach([&](Model& m) { (void)m.directionField(stats_); });
 }
 
+// The per-triangle paths light each model's triangles on the CPU when it draws. A large model's
+// lighting is split over the cores (parallel.h); a scene's small models would each light on
+// one core, one after another: here they light side by side, a share of the models per core,
+// before the frame draws them, and each cache then finds its lighting done and only uploads
+// (bench_scene: 16 objects against one merged mesh). Only where the draw will ask for exactly
+// this lighting: CPU-lit (no shadows, which Auto lights on the GPU), no baked occlusion, one tone
+// range for the scene, no per-material parts; elsewhere the draw lights as before.
+void Renderer::prepareTriangleShading(const CameraMatrices& camera, const RenderSettings& s) {
+  if ((s.path != RenderPath::Stencil && s.path != RenderPath::Triangle) || s.triangleLighting == TriangleLighting::Gpu || s.shadows ||
+      s.occlusion)
+    return;
+  std::vector<Model*> models;
+  scene_.forEach([&](Model& m) {
+    if (m.toneSlot == 0 && (m.parts().empty() || !s.materials) && mainPaletteOf(m)) models.push_back(&m);
+  });
+  if (models.size() < 2) return;
+  std::vector<FrameStats> counted(models.size());
+  parallelChunks(
+      models.size(), workerCount(),
+      [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t i = begin; i < end; ++i) {
+          Model& m = *models[i];
+          const GpuPalette& p = *mainPaletteOf(m);
+          m.triangles().expectRows(s.paletteAxis && p.axis().rows > 1);
+          m.triangles().prepare(lighting_, m.placed(camera).view, *p.matcher(), p.matcherId(), counted[i], s.materials, nullptr,
+                                s.occlusionStrength);
+        }
+      },
+      1);
+  for (const FrameStats& c : counted) {
+    stats_.cpuShadingMs += c.cpuShadingMs;
+    stats_.lightingRecomputes += c.lightingRecomputes;
+    stats_.modelsLitAhead += c.lightingRecomputes;
+  }
+}
+
 Model* Renderer::prepareGround() {
   if (scene_.empty()) return nullptr;
   if (ground_ && groundVersion_ == scene_.layoutVersion()) return ground_.get();
@@ -454,6 +491,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   preparePattern(first, first ? first->placed(camera) : camera, s, viewport);
   prepareOrientation(s);
   Status result = prepareFeatures(frame);
+  prepareTriangleShading(camera, s);
   timer_.begin();
   clearViewport(viewport);
   for (Feature* f : active_)

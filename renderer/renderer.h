@@ -267,6 +267,8 @@ class Renderer {
   // Gives every palette this frame's hatching orientation; computes the direction field of
   // every model when a palette turns along the curvature and a model has none yet.
   void prepareOrientation(const RenderSettings& settings);
+  // The per-triangle paths' CPU lighting of a scene's models, side by side (see renderer.cpp).
+  void prepareTriangleShading(const CameraMatrices& camera, const RenderSettings& settings);
   double occlusionBudgetMs_ = 0.0;
   glm::ivec2 frameOffset_{0};
   std::function<void(const std::string&, double)> progress_;

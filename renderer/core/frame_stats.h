@@ -10,6 +10,7 @@ struct FrameStats {
   double gpuMs = -1.0;         // GPU time of the most recent frame whose timer query finished
   int nonEmptyBuckets = 0;
   int lightingRecomputes = 0;  // per-triangle shading runs
+  int modelsLitAhead = 0;      // of them, a scene's models lit side by side before drawing (Renderer::prepareTriangleShading)
   int bufferUploads = 0;       // mesh, bucket, per-triangle entry and LUT uploads
   int shaderBuilds = 0;
   int lutBuilds = 0;

@@ -73,6 +73,19 @@ void TriangleShadingCache::setMesh(const Mesh* mesh) {
 void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher,
                                   unsigned matcherId, FrameStats& stats, bool materials, const std::vector<float>* occlusion,
                                   float occlusionStrength) {
+  prepare(lighting, modelView, matcher, matcherId, stats, materials, occlusion, occlusionStrength);
+  if (!bucketsUploaded_ && !rowsNext_) {
+    gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t),
+                     GL_STREAM_DRAW);
+    bucketsUploaded_ = true;
+    ++stats.bufferUploads;
+  }
+  stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
+}
+
+void TriangleShadingCache::prepare(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher,
+                                   unsigned matcherId, FrameStats& stats, bool materials, const std::vector<float>* occlusion,
+                                   float occlusionStrength) {
   const bool rigid = isSimilarity(modelView);
   materials = materials && mesh_->hasAppearance();
   const float* occ = occlusion && occlusion->size() == mesh_->positions.size() ? occlusion->data() : nullptr;
@@ -144,13 +157,6 @@ void TriangleShadingCache::update(const LightingState& lighting, const glm::mat4
     columnsFresh_ = true;
     boundsValid_ = false;
   }
-  if (!bucketsUploaded_ && !rowsNext_) {
-    gl::uploadBuffer(bucketIndices_, shading_.bucketIndices.data(), shading_.bucketIndices.size() * sizeof(std::uint32_t),
-                     GL_STREAM_DRAW);
-    bucketsUploaded_ = true;
-    ++stats.bufferUploads;
-  }
-  stats.nonEmptyBuckets = shading_.nonEmptyBuckets;
 }
 
 void TriangleShadingCache::setEntries(std::vector<std::uint8_t>&& entries, int paletteSize, FrameStats& stats) {

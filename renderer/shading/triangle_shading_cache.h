@@ -35,6 +35,10 @@ class TriangleShadingCache {
   // face's ambient and diffuse by mix(1, its vertices' mean, strength); null: none.
   void update(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
               FrameStats& stats, bool materials = false, const std::vector<float>* occlusion = nullptr, float occlusionStrength = 1.0f);
+  // update()'s lighting alone, without GL (no upload): safe on another thread, one per cache.
+  // An update() with the same arguments afterwards finds it done and only uploads.
+  void prepare(const LightingState& lighting, const glm::mat4& modelView, const PaletteMatcher& matcher, unsigned matcherId,
+               FrameStats& stats, bool materials = false, const std::vector<float>* occlusion = nullptr, float occlusionStrength = 1.0f);
   // Entries lit and matched on the GPU instead (gpu()): buckets built from them and uploaded;
   // the next CPU update recomputes whatever its key says.
   void setEntries(std::vector<std::uint8_t>&& entries, int paletteSize, FrameStats& stats);

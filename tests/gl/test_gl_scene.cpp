@@ -165,6 +165,59 @@ TEST_F(SceneFixture, EachModelKeepsItsOwnCaches) {
   EXPECT_EQ(r->model(ia)->directionFieldIfComputed(), fieldA);
 }
 
+// The per-triangle paths light a scene's models side by side before the frame draws them
+// (Renderer::prepareTriangleShading): each model is lit once a frame, ahead, and not again when
+// it draws (a key that differed would light it twice), and the picture is the one each model
+// gives alone in the same place.
+TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
+  const Mesh sphere = icosphere(3);
+  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  std::vector<glm::mat4> places;
+  for (int i = 0; i < 4; ++i)
+    places.push_back(glm::translate(glm::mat4(1.0f), glm::vec3(-0.6f + 0.4f * float(i), 0.1f * float(i % 2), 0.0f)) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(0.18f)));
+  const CameraMatrices cam = test::testCamera(1.0f);
+  auto light = [&](int frame) {
+    const float pos[4] = {std::cos(float(frame)), 1.0f, std::sin(float(frame)), 0.0f};
+    r->lighting().setModelView(cam.view);
+    return r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos);
+  };
+  for (RenderPath path : {RenderPath::Triangle, RenderPath::Stencil}) {
+    RenderSettings s;
+    s.path = path;
+    ASSERT_TRUE(light(0));
+    // Each model alone (one model: not lit ahead), and nothing: the reference pictures.
+    const ImageRGBA8 empty = test::renderImage(*r, cam, s, kSize, kSize);
+    std::vector<ImageRGBA8> each;
+    for (const glm::mat4& place : places) {
+      const ModelId id = r->addModel(sphere, place);
+      each.push_back(test::renderImage(*r, cam, s, kSize, kSize));
+      r->removeModel(id);
+    }
+    std::vector<ModelId> ids;
+    for (const glm::mat4& place : places) ids.push_back(r->addModel(sphere, place));
+    for (int frame = 0; frame < 3; ++frame) {
+      ASSERT_TRUE(light(frame));  // the light moves every frame: every model is lit again, once
+      const ImageRGBA8 all = test::renderImage(*r, cam, s, kSize, kSize);
+      EXPECT_EQ(r->stats().lightingRecomputes, 4) << renderPathName(path) << ", frame " << frame;
+      EXPECT_EQ(r->stats().modelsLitAhead, 4) << renderPathName(path) << ", frame " << frame;
+      if (frame > 0) continue;
+      // Every model's pixels as it drew them alone (the spheres do not overlap on screen).
+      int differ = 0, counted = 0;
+      for (std::size_t i = 0; i < std::size_t(kSize * kSize) * 4; i += 4)
+        for (const ImageRGBA8& one : each) {
+          if (std::equal(&one.pixels[i], &one.pixels[i] + 3, &empty.pixels[i])) continue;
+          ++counted;
+          differ += !std::equal(&one.pixels[i], &one.pixels[i] + 3, &all.pixels[i]);
+        }
+      EXPECT_GT(counted, kSize * kSize / 20) << renderPathName(path);
+      // (Within 1%: the scene's automatic tone range is fitted to four spheres, not one.)
+      EXPECT_LE(differ, counted / 100) << renderPathName(path) << ": " << differ << " of " << counted;
+    }
+    for (ModelId id : ids) r->removeModel(id);
+  }
+}
+
 TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
   const Mesh a = icosphere(3), b = torus(48, 24);
   const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
