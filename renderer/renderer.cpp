@@ -421,7 +421,7 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->mesh, part->gpu, part->materials, part->triangles, part->palette ? part->palette : main,
+    if (Status st = draw(part->mesh, part->gpu, model.materials(), part->triangles, part->palette ? part->palette : main,
                          part->detail.value_or(model.detail()));
         !st)
       return st;

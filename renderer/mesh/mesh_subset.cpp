@@ -10,8 +10,8 @@ Mesh meshSubset(const Mesh& m, const std::vector<char>& keep) {
   s.colours = m.colours;
   s.texcoords = m.texcoords;
   s.sourceVertex = m.sourceVertex;
-  s.materials = m.materials;
-  s.textures = m.textures;
+  s.materials = m.materials;  // every one, so face materials stay valid; the maps are not copied:
+                              // a part draws through the whole's (Model::Part)
   s.radius = m.radius;
   s.seeThrough = m.seeThrough;  // as the whole: a part draws through the whole's materials
   s.report = m.report;

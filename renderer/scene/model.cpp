@@ -180,9 +180,8 @@ void Model::uploadParts(const std::vector<PartKey>& keys, const std::vector<std:
     // Only the part's index buffer is its own: it draws through the model's vertex streams
     // (the direction field and occlusion included, when the model has them).
     part->gpu.uploadPart(gpu_, part->mesh);
-    part->materials.upload(part->mesh);
     part->triangles.setMesh(&part->mesh);
-    stats.bufferUploads += 2;
+    stats.bufferUploads += 1;
     parts_.push_back(std::move(part));
   }
 }

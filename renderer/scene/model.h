@@ -109,14 +109,15 @@ class Model {
   const std::vector<float>* occlusionValues() const { return occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr; }
 
   // A part of the model drawn with one palette (null: the main one) and one detail (none: the
-  // model's), with its own GPU copy, appearance and per-triangle cache. Empty when no material
-  // of the mesh has its own palette or detail.
+  // model's), with its own index buffer and per-triangle cache. It draws through the model's
+  // vertex streams and the model's materials and maps (the same table: a part keeps every
+  // material, so indices stay valid). Empty when no material of the mesh has its own palette
+  // or detail.
   struct Part {
     const GpuPalette* palette = nullptr;
     std::optional<float> detail;  // what a palette with `axis detail` picks its row by
     Mesh mesh;
     GpuMesh gpu;
-    GpuMaterials materials;
     TriangleShadingCache triangles;
   };
   // Splits the model into parts by the palette each material is drawn with (`paletteOf`
