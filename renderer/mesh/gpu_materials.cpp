@@ -63,8 +63,17 @@ void GpuMaterials::upload(const Mesh& mesh) {
   const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1);
   gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::uvec4), GL_DYNAMIC_DRAW);
   table_ = bufferTexture(tableBuffer_, GL_RGBA32UI, gl::TextureUnit::MaterialTable);
+  if (!mesh.textures.empty() && !mesh.texcoords.empty()) uploadMaps(mesh);
+  // A see-through mesh's coverage is read by passes that may run before the frame's update()
+  // (the shadow maps, the geometry pass): its rows are written now, with the default lighting
+  // state's colours until then (coverage does not depend on them).
+  if (coverage_) {
+    FrameStats unused;
+    update(mesh, LightingState{}, unused);
+  }
+}
 
-  if (mesh.textures.empty() || mesh.texcoords.empty()) return;
+void GpuMaterials::uploadMaps(const Mesh& mesh) {
   int side = 1;
   for (const MeshTexture& t : mesh.textures) side = std::max({side, t.image.width, t.image.height});
   mapSide_ = std::min(side, kMaxMapSide);

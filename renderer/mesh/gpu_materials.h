@@ -48,6 +48,8 @@ class GpuMaterials {
   bool mapped(std::size_t material) const;
 
  private:
+  void uploadMaps(const Mesh& mesh);
+
   bool active_ = false;
   bool coverage_ = false;
   gl::Buffer tableBuffer_;

@@ -225,6 +225,24 @@ TEST_F(Fixture, AMaskedMaterialIsCutOutInEveryPath) {
   }
 }
 
+// The geometry pass (image-space edges, screen-space occlusion, the tests' eye positions) leaves
+// out what the cut leaves out, from the first frame on: a masked square's geometry has its
+// right half only.
+TEST_F(Fixture, TheGeometryPassLeavesOutWhatAMaskCuts) {
+  const Mesh masked = seeThroughSquare(MeshMaterial::Alpha::Mask, 1.0f, true, 0.0f);
+  constexpr int kSide = 96;
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  r->addModel(masked);
+  const ImageRGBA32F pos = test::renderGeometry(*r, c.matrices(1.0f), GeometryOutput::EyePosition, kSide, kSide);
+  int half[2] = {0, 0};
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x)
+      if (std::abs(x - kSide / 2) >= 3 && pos.pixels[(std::size_t(y) * kSide + x) * 4 + 2] != 0.0f) ++half[x < kSide / 2 ? 0 : 1];
+  EXPECT_EQ(half[0], 0);
+  EXPECT_GT(half[1], kSide * kSide / 8);
+}
+
 // glTF's BLEND, drawn as screen-door transparency: a square of opacity 0.25 covers a quarter of
 // its pixels (4 of every 4x4 block) in every path, the same ones every frame; 0.75 three quarters.
 TEST_F(Fixture, ABlendedMaterialCoversItsOpacitysShareOfPixelsInEveryPath) {
