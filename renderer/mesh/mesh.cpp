@@ -32,16 +32,21 @@ void computeFaceTints(Mesh& m) {
   bool textured = false;
   for (const MeshMaterial& mat : m.materials) textured |= mat.diffuseMap >= 0;
   if (!textured || m.texcoords.size() != m.positions.size() || m.faceMaterials.size() != nf) return;
-  std::vector<std::unique_ptr<TextureAverager>> maps(m.textures.size());
-  for (size_t t = 0; t < maps.size(); ++t) maps[t] = std::make_unique<TextureAverager>(m.textures[t].image);
+  // Per map, an averager for opaque materials and one weighted by alpha for see-through ones,
+  // each made only when some material needs it.
+  std::vector<std::unique_ptr<TextureAverager>> maps[2] = {std::vector<std::unique_ptr<TextureAverager>>(m.textures.size()),
+                                                           std::vector<std::unique_ptr<TextureAverager>>(m.textures.size())};
   m.faceTints.assign(nf, glm::vec3(1.0f));
   for (size_t f = 0; f < nf; ++f) {
     const std::uint16_t mi = m.faceMaterials[f];
     if (mi >= m.materials.size()) continue;
     const int map = m.materials[mi].diffuseMap;
-    if (map < 0 || static_cast<size_t>(map) >= maps.size()) continue;
+    if (map < 0 || static_cast<size_t>(map) >= m.textures.size()) continue;
+    const bool weighted = m.materials[mi].alpha != MeshMaterial::Alpha::Opaque;
+    std::unique_ptr<TextureAverager>& averager = maps[weighted ? 1 : 0][static_cast<size_t>(map)];
+    if (!averager) averager = std::make_unique<TextureAverager>(m.textures[static_cast<size_t>(map)].image, weighted);
     const std::uint32_t* id = &m.indices[f * 3];
-    m.faceTints[f] = maps[static_cast<size_t>(map)]->average(m.texcoords[id[0]], m.texcoords[id[1]], m.texcoords[id[2]]);
+    m.faceTints[f] = averager->average(m.texcoords[id[0]], m.texcoords[id[1]], m.texcoords[id[2]]);
   }
 }
 

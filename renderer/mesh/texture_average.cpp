@@ -6,16 +6,17 @@
 
 namespace npr {
 
-TextureAverager::TextureAverager(const ImageRGBA8& image) {
+TextureAverager::TextureAverager(const ImageRGBA8& image, bool alphaWeighted) {
   Level base;
   base.width = std::max(image.width, 1);
   base.height = std::max(image.height, 1);
-  base.texels.assign(static_cast<std::size_t>(base.width) * static_cast<std::size_t>(base.height), glm::vec3(1.0f));
+  base.texels.assign(static_cast<std::size_t>(base.width) * static_cast<std::size_t>(base.height), glm::vec4(1.0f));
   if (image.width > 0 && image.height > 0 && image.pixels.size() >= static_cast<std::size_t>(image.width) * image.height * 4) {
     for (int y = 0; y < image.height; ++y)
       for (int x = 0; x < image.width; ++x) {
         const std::uint8_t* px = &image.pixels[(static_cast<std::size_t>(image.height - 1 - y) * image.width + x) * 4];
-        base.texels[static_cast<std::size_t>(y) * base.width + x] = glm::vec3(px[0], px[1], px[2]) / 255.0f;
+        const float w = alphaWeighted ? float(px[3]) / 255.0f : 1.0f;
+        base.texels[static_cast<std::size_t>(y) * base.width + x] = glm::vec4(glm::vec3(px[0], px[1], px[2]) / 255.0f * w, w);
       }
   }
   levels_.push_back(std::move(base));
@@ -30,7 +31,7 @@ TextureAverager::TextureAverager(const ImageRGBA8& image) {
         // Odd sizes: the last coarse texel also takes the leftover row or column.
         const int x0 = x * 2, y0 = y * 2;
         const int x1 = (x == c.width - 1) ? f.width : x0 + 2, y1 = (y == c.height - 1) ? f.height : y0 + 2;
-        glm::vec3 sum(0.0f);
+        glm::vec4 sum(0.0f);
         for (int yy = y0; yy < y1; ++yy)
           for (int xx = x0; xx < x1; ++xx) sum += f.texels[static_cast<std::size_t>(yy) * f.width + xx];
         c.texels[static_cast<std::size_t>(y) * c.width + x] = sum / float((x1 - x0) * (y1 - y0));
@@ -39,9 +40,14 @@ TextureAverager::TextureAverager(const ImageRGBA8& image) {
   }
 }
 
-glm::vec3 TextureAverager::whole() const { return levels_.back().texels[0]; }
+namespace {
+// A weighted sum's colour; where nothing was weighted (all cut away), white: nothing shows.
+glm::vec3 colourOf(const glm::vec4& weighted) { return weighted.w > 1e-6f ? glm::vec3(weighted) / weighted.w : glm::vec3(1.0f); }
+}  // namespace
 
-glm::vec3 TextureAverager::sample(const Level& l, glm::vec2 uv) const {
+glm::vec3 TextureAverager::whole() const { return colourOf(levels_.back().texels[0]); }
+
+glm::vec4 TextureAverager::sample(const Level& l, glm::vec2 uv) const {
   // Bilinear, repeating. The coordinate is wrapped into [0, 1) first: a far one (a texture
   // transform's offset of 1e24, found by fuzz_gltf) must not overflow the texel index.
   uv -= glm::floor(uv);
@@ -68,9 +74,9 @@ glm::vec3 TextureAverager::average(const glm::vec2& a, const glm::vec2& b, const
                                static_cast<int>(levels_.size()) - 1);
   const Level& l = levels_[static_cast<std::size_t>(level)];
   const glm::vec2 centre = (a + b + c) / 3.0f;
-  glm::vec3 sum = sample(l, centre) * 4.0f;
+  glm::vec4 sum = sample(l, centre) * 4.0f;
   for (const glm::vec2& corner : {a, b, c}) sum += sample(l, glm::mix(centre, corner, 0.6f));
-  return sum / 7.0f;
+  return colourOf(sum);
 }
 
 }  // namespace npr

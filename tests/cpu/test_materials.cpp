@@ -191,5 +191,44 @@ TEST(Materials, TextureAverageOverATriangle) {
   EXPECT_NEAR(avg.average({NAN, 0.0f}, {1.0f, 0.0f}, {0.5f, 1.0f}).r, 0.5f, 1e-3f);
 }
 
+
+// A see-through material's per-triangle tint (what the per-triangle paths light it with) is the
+// colour of the texels drawn, weighted by alpha: a map whose transparent half is red and opaque
+// half blue tints both faces of a square over it blue; on an opaque material, each face takes
+// the half it mostly lies on.
+TEST(Materials, ASeeThroughMaterialsTintWeighsItsMapByAlpha) {
+  Mesh m = test::square(1);
+  for (const glm::vec3& p : m.positions) m.texcoords.push_back(glm::vec2(p.x * 0.5f + 0.5f, p.y * 0.5f + 0.5f));
+  ImageRGBA8 map{16, 16, std::vector<std::uint8_t>(16 * 16 * 4, 255)};
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      std::uint8_t* px = &map.pixels[(std::size_t(y) * 16 + x) * 4];
+      px[0] = x < 8 ? 255 : 0, px[1] = 0, px[2] = x < 8 ? 0 : 255, px[3] = x < 8 ? 0 : 255;
+    }
+  m.textures.push_back({"half.png", map});
+  m.materials.resize(1);
+  m.materials[0].diffuseMap = 0;
+  m.faceMaterials.assign(m.triangleCount(), 0);
+  for (MeshMaterial::Alpha alpha : {MeshMaterial::Alpha::Opaque, MeshMaterial::Alpha::Mask, MeshMaterial::Alpha::Blend}) {
+    m.materials[0].alpha = alpha;
+    computeFaceTints(m);
+    ASSERT_EQ(m.faceTints.size(), m.triangleCount());
+    const glm::vec3 mean = (m.faceTints[0] + m.faceTints[1]) / 2.0f;  // one face mostly on each half
+    if (alpha == MeshMaterial::Alpha::Opaque) {
+      EXPECT_NEAR(mean.r, 0.5f, 0.01f);  // both halves count
+      EXPECT_NEAR(mean.b, 0.5f, 0.01f);
+    }
+    for (const glm::vec3& t : m.faceTints) {
+      if (alpha != MeshMaterial::Alpha::Opaque) {
+        EXPECT_LT(t.r, 0.02f) << "the cut-away red counts";
+        EXPECT_GT(t.b, 0.98f);
+      }
+    }
+  }
+  // Wholly cut away: white (nothing of it shows), not black or NaN.
+  TextureAverager none(ImageRGBA8{2, 2, std::vector<std::uint8_t>(16, 0)}, true);
+  EXPECT_EQ(none.whole(), glm::vec3(1.0f));
+}
+
 }  // namespace
 }  // namespace npr
