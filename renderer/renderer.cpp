@@ -400,9 +400,10 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   }
   // The whole model's, for every part: the parts hide each other's back faces.
   const bool cullBackFaces = backFacesHidden(model, placed, s);
-  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, GpuMaterials& materials, TriangleShadingCache& triangles, const GpuPalette* palette,
-                  float detail) {
-    if (s.materials || materials.coverage()) materials.update(mesh, lighting_, stats_);
+  // The model's materials, once for every part (a part keeps every material: the same rows).
+  GpuMaterials& materials = model.materials();
+  if (s.materials || materials.coverage()) materials.update(model.mesh(), lighting_, stats_);
+  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, TriangleShadingCache& triangles, const GpuPalette* palette, float detail) {
     FrameContext frame{placed, view.viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
@@ -417,12 +418,11 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     ToneSlot(const Renderer& renderer, int slot) : r(renderer) { r.selectToneSlot(slot); }
     ~ToneSlot() { r.selectToneSlot(0); }
   } toneSlot(*this, model.toneSlot);
-  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.materials(), model.triangles(), main, model.detail());
+  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.triangles(), main, model.detail());
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->mesh, part->gpu, model.materials(), part->triangles, part->palette ? part->palette : main,
-                         part->detail.value_or(model.detail()));
+    if (Status st = draw(part->mesh, part->gpu, part->triangles, part->palette ? part->palette : main, part->detail.value_or(model.detail()));
         !st)
       return st;
   return okStatus();

@@ -20,6 +20,7 @@
 
 #include "renderer/core/frame_stats.h"
 #include "renderer/gl/gl_handle.h"
+#include "renderer/gl/program_variants.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh.h"
@@ -35,6 +36,14 @@ class GpuMaterials {
   bool hasMaps() const { return maps_.id() != 0; }
   // Whether some fragments are discarded by their material's alpha (Mesh::seeThrough).
   bool coverage() const { return coverage_; }
+  // A mesh program drawing this mesh, with its coverage when it is see-through (the maps read
+  // where the program does not already choose them by material); bind() then gives it the
+  // table and maps.
+  void addCoverage(gl::MeshProgram& variant) const {
+    if (!coverage_) return;
+    variant.alphaCoverage = true;
+    if (!variant.materials && !variant.materialUniform) variant.materialMaps = hasMaps();
+  }
   int mapSide() const { return mapSide_; }
 
   // Rewrites the table where it changed (the default material follows the lighting state).

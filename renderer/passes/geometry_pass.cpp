@@ -8,14 +8,12 @@ namespace npr {
 Status drawGeometry(const PlacedMesh& m, GeometryOutput output, gl::ProgramCache& programs, FrameStats& stats) {
   gl::MeshProgram variant;
   variant.shading = output == GeometryOutput::EyePosition ? gl::MeshShading::EyePosition : gl::MeshShading::EyeNormal;
-  const bool coverage = m.materials && m.materials->coverage();
-  variant.alphaCoverage = coverage;
-  variant.materialMaps = coverage && m.materials->hasMaps();
+  if (m.materials) m.materials->addCoverage(variant);
   Result<gl::ShaderProgram*> prog = programs.get(variant, stats.shaderBuilds);
   if (!prog) return Error{prog.error()};
   gl::apply(gl::pass::kMesh);
   (*prog)->use();
-  if (coverage) m.materials->bind(**prog);
+  if (variant.alphaCoverage) m.materials->bind(**prog);
   setMeshTransform(**prog, m.camera);
   m.mesh->drawAll();
   ++stats.drawCalls;

@@ -103,11 +103,9 @@ struct FrameContext {
   // A mesh pass's program: on a see-through mesh with its coverage (every pass drawing the
   // surface leaves out the same fragments), the material table and maps bound to it.
   [[nodiscard]] Result<gl::ShaderProgram*> program(gl::MeshProgram variant) {
-    if (!materials.coverage()) return programs.get(variant, stats.shaderBuilds);
-    variant.alphaCoverage = true;
-    if (!variant.materials && !variant.materialUniform) variant.materialMaps = materials.hasMaps();
+    materials.addCoverage(variant);
     Result<gl::ShaderProgram*> p = programs.get(variant, stats.shaderBuilds);
-    if (p) {
+    if (p && variant.alphaCoverage) {
       (*p)->use();
       materials.bind(**p);
     }

@@ -86,8 +86,14 @@ Status StencilPath::draw(FrameContext& f) {
   setMeshTransform(**mask, f.camera);
   if (buffersFromMasks && objectPattern) f.palette->bindPattern(**mask);
   if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask);
-  (*bgQuad)->use();
-  f.palette->bindBackground(**bgQuad);
+  // Layers stored over the background are drawn opaque: the background under them would be
+  // covered, so it is not drawn (a draw per bucket saved, which is most of what a scene's
+  // objects cost this path beyond the merged mesh: bench_scene).
+  const bool layersOpaque = layerVariant.opaque;
+  if (!layersOpaque) {
+    (*bgQuad)->use();
+    f.palette->bindBackground(**bgQuad);
+  }
   const glm::ivec2 bufferOrigin = buffersFromMasks ? glm::ivec2(0) : glm::ivec2(vp.x, vp.y);
   auto bindLayerQuad = [&](gl::ShaderProgram& quad) {
     quad.use();
@@ -115,10 +121,7 @@ Status StencilPath::draw(FrameContext& f) {
     ++f.stats.drawCalls;
   };
   // (2) the background under the pixels marked `mark`, (3) the palette layer blended over it,
-  // clearing the mark as it is drawn. Layers stored over the background are drawn opaque: the
-  // background under them would be covered, so it is not drawn (a draw per bucket saved, which
-  // is most of what a scene's objects cost this path beyond the merged mesh: bench_scene).
-  const bool layersOpaque = layerVariant.opaque;
+  // clearing the mark as it is drawn (the background only under layers not stored over it).
   auto drawQuads = [&](int k, std::uint32_t count, int mark) {
     glm::ivec4 rect = vp;
     if (s.stencilScissor) {

@@ -180,6 +180,14 @@ Mesh seeThroughSquare(MeshMaterial::Alpha alpha, float opacity, bool cutLeft, fl
   return m;
 }
 
+// One frame with `mesh` in the scene for it alone.
+ImageRGBA8 renderWithModel(Renderer& r, const Mesh& mesh, const CameraMatrices& cam, const RenderSettings& s, int side) {
+  const ModelId id = r.addModel(mesh);
+  ImageRGBA8 img = renderImage(r, cam, s, side, side);
+  r.removeModel(id);
+  return img;
+}
+
 // glTF's MASK: a square whose map's left half is transparent, in front of a sphere. In every
 // path the left half shows what is behind it (the sphere and background, exactly as without the
 // square) and the right half the square (exactly as an opaque square); a band about the cut,
@@ -201,12 +209,8 @@ TEST_F(Fixture, AMaskedMaterialIsCutOutInEveryPath) {
     RenderSettings s;
     s.path = path;
     const ImageRGBA8 back = renderImage(*r, cam, s, kSide, kSide);
-    const ModelId o = r->addModel(opaque);
-    const ImageRGBA8 front = renderImage(*r, cam, s, kSide, kSide);
-    r->removeModel(o);
-    const ModelId m = r->addModel(masked);
-    const ImageRGBA8 cut = renderImage(*r, cam, s, kSide, kSide);
-    r->removeModel(m);
+    const ImageRGBA8 front = renderWithModel(*r, opaque, cam, s, kSide);
+    const ImageRGBA8 cut = renderWithModel(*r, masked, cam, s, kSide);
     int counted[2] = {0, 0}, wrong[2] = {0, 0};
     for (int y = 0; y < kSide; ++y)
       for (int x = 0; x < kSide; ++x) {
@@ -259,9 +263,7 @@ TEST_F(Fixture, ABlendedMaterialCoversItsOpacitysShareOfPixelsInEveryPath) {
       RenderSettings s;
       s.path = path;
       const ImageRGBA8 empty = renderImage(*r, cam, s, kSide, kSide);
-      const ModelId o = r->addModel(opaque);
-      const ImageRGBA8 full = renderImage(*r, cam, s, kSide, kSide);
-      r->removeModel(o);
+      const ImageRGBA8 full = renderWithModel(*r, opaque, cam, s, kSide);
       const ModelId b = r->addModel(blended);
       const ImageRGBA8 part = renderImage(*r, cam, s, kSide, kSide);
       const ImageRGBA8 again = renderImage(*r, cam, s, kSide, kSide);

@@ -19,11 +19,8 @@ class ShadowsFeature final : public Feature {
     ready_ = false;
     const Model* ground = f.settings.ground ? f.ground() : nullptr;
     ShadowScene scene;
-    f.scene.forEach([&](Model& m) {
-      const bool seeThrough = m.materials().coverage();
-      if (seeThrough) m.materials().update(m.mesh(), f.lighting, f.stats);  // the rows the casters' coverage reads
-      scene.casters.push_back({&m.gpu(), m.transform(), seeThrough ? &m.materials() : nullptr});
-    });
+    f.scene.forEach(
+        [&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform(), m.materials().coverage() ? &m.materials() : nullptr}); });
     const glm::vec4 bounds = f.scene.bounds();
     scene.centre = glm::vec3(bounds);
     scene.casterRadius = bounds.w;
