@@ -272,13 +272,15 @@ void Renderer::preparePattern(Model* model, const CameraMatrices& placed, const 
     pixelsPerFrontTriangle_ = model->pixelsPerFrontTriangle(placed, viewport);
     perVertex = pixelsPerFrontTriangle_ >= kPatternPerVertexPixels;
   }
-  auto place = [&](GpuPalette& p) {
-    p.setPatternFrame(frame, scale, s.patternLinearFilter);
-    p.setObjectPattern(s.pattern == PatternSpace::Object, pixelSize, eyeToObject);
-    p.setPlacement(glm::vec2(frameOffset_), viewport, perVertex);
-  };
-  if (palette_) place(*palette_);
-  forEachExtraPalette(place);
+  pattern_.frame = frame;
+  pattern_.scale = scale;
+  pattern_.linearFilter = s.patternLinearFilter;
+  pattern_.object = s.pattern == PatternSpace::Object;
+  pattern_.pixelSize = pixelSize;
+  pattern_.eyeToObject = eyeToObject;
+  pattern_.frameOffset = glm::vec2(frameOffset_);
+  pattern_.viewport = viewport;
+  pattern_.perVertex = perVertex;
 }
 
 void Renderer::prepareOrientation(const RenderSettings& s) {
@@ -288,15 +290,11 @@ void Renderer::prepareOrientation(const RenderSettings& s) {
       light = lighting_.light(i).position;
       break;
     }
-  bool turned = false;
-  if (palette_) {
-    palette_->setOrientation(s.orient, light);
-    turned = palette_->oriented();
-  }
-  forEachExtraPalette([&](GpuPalette& p) {
-    p.setOrientation(s.orient, light);
-    turned = turned || p.oriented();
-  });
+  pattern_.orient = s.orient;
+  pattern_.orient.bins = std::clamp(s.orient.bins, OrientSettings::kMinBins, OrientSettings::kMaxBins);
+  pattern_.light = light;
+  bool turned = palette_ && palette_->oriented(pattern_);
+  forEachExtraPalette([&](const GpuPalette& p) { turned = turned || p.oriented(pattern_); });
   if (turned && s.orient.source == OrientSource::Curvature) scene_.forEach([&](Model& m) { (void)m.directionField(stats_); });
 }
 
@@ -356,7 +354,7 @@ Model* Renderer::prepareGround() {
 }
 
 FrameView Renderer::frameView(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, bool colour) {
-  return FrameView{camera,     s,       viewport,   colour,          scene_,   lighting_, palette_.get(), programs_, stats_,
+  return FrameView{camera,     s,       viewport,   colour,          scene_,   lighting_, palette_.get(), pattern_, programs_, stats_,
                    emptyVao_, [this] { return prepareGround(); }, progress_, occlusionBudgetMs_};
 }
 
@@ -403,8 +401,8 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   // The model's materials, once for every part (a part keeps every material: the same rows).
   GpuMaterials& materials = model.materials();
   if (s.materials || materials.coverage()) materials.update(model.mesh(), lighting_, stats_);
-  auto draw = [&](const Mesh& mesh, GpuMesh& gpu, TriangleShadingCache& triangles, const GpuPalette* palette, float detail) {
-    FrameContext frame{placed, view.viewport, s, lighting_, gpu, mesh, materials, palette, triangles, programs_, stats_, emptyVao_, output};
+  auto draw = [&](GpuMesh& gpu, TriangleShadingCache& triangles, const GpuPalette* palette, float detail) {
+    FrameContext frame{placed, view.viewport, s, lighting_, gpu, model.mesh(), materials, palette, pattern_, triangles, programs_, stats_, emptyVao_, output};
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
     frame.cullBackFaces = cullBackFaces;
@@ -418,11 +416,11 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     ToneSlot(const Renderer& renderer, int slot) : r(renderer) { r.selectToneSlot(slot); }
     ~ToneSlot() { r.selectToneSlot(0); }
   } toneSlot(*this, model.toneSlot);
-  if (model.parts().empty() || !s.materials) return draw(model.mesh(), model.gpu(), model.triangles(), main, model.detail());
+  if (model.parts().empty() || !s.materials) return draw(model.gpu(), model.triangles(), main, model.detail());
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->mesh, part->gpu, part->triangles, part->palette ? part->palette : main, part->detail.value_or(model.detail()));
+    if (Status st = draw(part->gpu, part->triangles, part->palette ? part->palette : main, part->detail.value_or(model.detail()));
         !st)
       return st;
   return okStatus();
@@ -435,7 +433,7 @@ Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
   // The ground has no materials of its own: lit with the lighting state's material.
   RenderSettings plain = view.settings;
   plain.materials = false;
-  FrameContext frame{view.camera, view.viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(),
+  FrameContext frame{view.camera, view.viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(), pattern_,
                      ground->triangles(), programs_, stats_, emptyVao_, output};
   frame.sceneView = view.camera.view;
   return drawPart(view, nullptr, frame, plain.path);
@@ -451,7 +449,7 @@ bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed,
 TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPalette* palette, gl::MeshOutput output) {
   const bool meshPath = s.path == RenderPath::Triangle || s.path == RenderPath::Vertex || s.path == RenderPath::Pixel || s.path == RenderPath::Smooth;
   // The object pattern's coordinate comes from the surface, which the resolve cannot see.
-  if (!meshPath || output != gl::MeshOutput::Colour || !palette || !palette->oriented() || palette->patternMapping() == gl::PatternMapping::Object)
+  if (!meshPath || output != gl::MeshOutput::Colour || !palette || !palette->oriented(pattern_) || pattern_.mapping() == gl::PatternMapping::Object)
     return nullptr;
   const TurnPlacement where = s.tuning.turnPlacement;
   if (where == TurnPlacement::InMeshPass || (where == TurnPlacement::Auto && !resolveTurnAutomatically(softwareRasterizer_, pixelsPerFrontTriangle_))) return nullptr;
@@ -496,7 +494,7 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   clearViewport(viewport);
   for (Feature* f : active_)
     if (result) result = f->afterClear(frame);
-  if (result) result = drawBackground(palette_.get(), programs_, emptyVao_, stats_);
+  if (result) result = drawBackground(palette_.get(), pattern_, programs_, emptyVao_, stats_);
   if (result) result = drawScene(frame, gl::MeshOutput::Colour, first);
   for (Feature* f : active_)
     if (result) result = f->drawOver(frame);
@@ -538,9 +536,9 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
     const CameraMatrices placed = m.placed(camera);
     preparePattern(&m, placed, s, viewport);
     prepareOrientation(s);
-    FrameContext frame{placed, viewport, s, lighting_, m.gpu(), m.mesh(), m.materials(), palette_.get(), m.triangles(), programs_, stats_, emptyVao_};
+    FrameContext frame{placed, viewport, s, lighting_, m.gpu(), m.mesh(), m.materials(), palette_.get(), pattern_, m.triangles(), programs_, stats_, emptyVao_};
     frame.sceneView = camera.view;
-    if (palette_->oriented()) result = drawStrokeAngles(frame);
+    if (palette_->oriented(pattern_)) result = drawStrokeAngles(frame);
   });
   gl::restoreDefaults();
   return result;

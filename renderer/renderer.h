@@ -155,6 +155,8 @@ class Renderer {
   const PatternTracker& patternTracker() const;
   // The main palette as the last frame drew it (null before one is set).
   const GpuPalette* palette() const { return palette_.get(); }
+  // How the palettes' textures lay on the model drawn last (patterns/pattern_placement.h).
+  const PatternPlacement& patternPlacement() const { return pattern_; }
   // The first model's ambient occlusion bake: started the first time a frame asks for
   // occlusion, run for at most `occlusionBudgetMs` per frame (0: to the end in one frame, as
   // headless runs and tests want), uploaded when done. Null before it starts.
@@ -236,8 +238,8 @@ class Renderer {
   GpuPalette* controlPalette(ControlParameter parameter) const {
     return parameter == ControlParameter::Shadow ? shadowPalette_.get() : occlusionPalette_.get();
   }
-  // Calls fn(GpuPalette&) for every palette loaded besides the main one: per-material, then
-  // control palettes (each frame gives them its pattern and orientation).
+  // Calls fn(GpuPalette&) for every palette loaded besides the main one: per-object,
+  // per-material, then control palettes.
   template <class Fn>
   void forEachExtraPalette(Fn&& fn) const {
     for (const auto& [model, p] : modelPalettes_) fn(*p);
@@ -260,12 +262,15 @@ class Renderer {
   TurnResolvePass turnResolve_;
   float pixelsPerFrontTriangle_ = 0.0f;  // the model being drawn, from its bounding disc (preparePattern)
   bool softwareRasterizer_ = true;       // GL_RENDERER names llvmpipe or the like: choices tuned for it apply
-  // Gives every palette this model's pattern frame (anchored) or none (screen) and where it is
-  // drawn (the viewport, a poster tile's offset, per-vertex or per-pixel placement); the
-  // orientation's screen directions use the same viewport, so it runs before prepareOrientation.
+  // How the model drawn next lays every palette's textures (patterns/pattern_placement.h),
+  // handed to its passes with the frame (FrameContext::pattern).
+  PatternPlacement pattern_;
+  // The pattern_ of this model: its frame (anchored) or none (screen) and where it is drawn (the
+  // viewport, a poster tile's offset, per-vertex or per-pixel placement); the orientation's
+  // screen directions use the same viewport, so it runs before prepareOrientation.
   void preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& settings, const glm::ivec4& viewport);
-  // Gives every palette this frame's hatching orientation; computes the direction field of
-  // every model when a palette turns along the curvature and a model has none yet.
+  // This frame's hatching orientation in pattern_; computes the direction field of every model
+  // when a palette turns along the curvature and a model has none yet.
   void prepareOrientation(const RenderSettings& settings);
   // The per-triangle paths' CPU lighting of a scene's models, side by side (see renderer.cpp).
   void prepareTriangleShading(const CameraMatrices& camera, const RenderSettings& settings);

@@ -34,6 +34,9 @@ struct FrameView {
   Scene& scene;
   const LightingState& lighting;
   const GpuPalette* palette;  // the main one; null when none is loaded
+  // How the palettes' textures lie on the model drawn last (patterns/pattern_placement.h): set
+  // per model as each is drawn, so the passes over the frame read the last one's.
+  const PatternPlacement& pattern;
   gl::ProgramCache& programs;
   FrameStats& stats;
   const gl::VertexArray& emptyVao;  // full-screen passes make their vertices in the shader

@@ -28,16 +28,16 @@ std::vector<Material> glMaterials(const Mesh& mesh, const LightingState& lightin
   return out;
 }
 
-std::vector<glm::vec3> faceColourScale(const Mesh& mesh) {
+std::vector<glm::vec3> faceColourScale(const Mesh& mesh, const Mesh& vertices) {
   const std::size_t nf = mesh.triangleCount();
-  const bool colours = mesh.colours.size() == mesh.positions.size() && !mesh.colours.empty();
+  const bool colours = vertices.colours.size() == vertices.positions.size() && !vertices.colours.empty();
   const bool tints = mesh.faceTints.size() == nf && nf > 0;
   if (!colours && !tints) return {};
   std::vector<glm::vec3> scale(nf, glm::vec3(1.0f));
   for (std::size_t f = 0; f < nf; ++f) {
     if (colours) {
       const std::uint32_t* id = &mesh.indices[f * 3];
-      scale[f] = (mesh.colours[id[0]] + mesh.colours[id[1]] + mesh.colours[id[2]]) / 3.0f;
+      scale[f] = (vertices.colours[id[0]] + vertices.colours[id[1]] + vertices.colours[id[2]]) / 3.0f;
     }
     if (tints) scale[f] *= mesh.faceTints[f];
   }

@@ -18,7 +18,9 @@ Material glMaterial(const MeshMaterial& m, const LightingState& lighting, bool v
 
 // Per triangle, what scales its material's ambient and diffuse colours: the mean of its
 // vertex colours times its texture map's average over it. Empty when neither exists.
-std::vector<glm::vec3> faceColourScale(const Mesh& mesh);
+// `vertices`: the mesh whose vertex colours `mesh`'s indices point into (`mesh` itself, or the
+// whole it is part of: mesh_subset.h).
+std::vector<glm::vec3> faceColourScale(const Mesh& mesh, const Mesh& vertices);
 
 // Whether any material (or vertex colour) can give a specular term.
 bool meshHasSpecular(const Mesh& mesh, const LightingState& lighting);

@@ -20,14 +20,14 @@ gl::OutlineProgram::Method methodOf(OutlineMethod m) {
 }  // namespace
 
 Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& ls, const GpuPalette* palette,
-                            MatchMode match, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
+                            const PatternPlacement& pattern, MatchMode match, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
   struct Draw {
     gl::OutlineProgram variant;
     bool on;
   };
   gl::OutlineProgram rim{gl::OutlineProgram::Method::Rim, std::nullopt};
   if (palette) {
-    rim.palette = palette->variant(match);
+    rim.palette = palette->variant(match, pattern);
     rim.palette->orientBins = 0;  // the rim is a smudge along the outline: not turned
     // The rim's faces are fattened past the surface: no object-space position to map, so the
     // object-space pattern is read in screen space there, through the scaled mapping (the
@@ -52,7 +52,7 @@ Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, c
     }
     if (d.variant.method == gl::OutlineProgram::Method::Rim) {
       p.set("uRimLimit", std::clamp(ls.rimLimit, 0.0f, 1.0f));
-      palette->bind(p, false);
+      palette->bind(p, pattern, false);
     } else {
       p.set("uColour", ls.silhouetteColour);
     }

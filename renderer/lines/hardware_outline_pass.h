@@ -17,9 +17,9 @@
 namespace npr {
 
 // Draws what `lines` asks of the two (nothing when neither is on). The rim needs `palette`
-// (it is skipped without one) and matches in `match`.
+// (it is skipped without one), laid as `pattern` says, and matches in `match`.
 [[nodiscard]] Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& lines,
-                                          const GpuPalette* palette, MatchMode match, const glm::ivec4& viewport,
+                                          const GpuPalette* palette, const PatternPlacement& pattern, MatchMode match, const glm::ivec4& viewport,
                                           gl::ProgramCache& programs, FrameStats& stats);
 
 }  // namespace npr

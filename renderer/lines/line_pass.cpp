@@ -223,7 +223,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       p.set("uModelView", placed.view);
       p.set("uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(placed.view))));
       uploadLightingUniforms(p, prepareLighting<float>(*style.lighting));
-      style.palette->bind(p, false);
+      style.palette->bindMatching(p);
       const std::vector<glm::vec3>& averages = style.palette->averages();
       p.setArray("uEntryColour", averages.data(), int(averages.size()));
     }

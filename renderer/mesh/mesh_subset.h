@@ -1,16 +1,27 @@
-// A mesh restricted to some of its faces, for drawing parts of a model with different
-// palettes (per-material palettes): every vertex array and material is kept (indices stay
-// valid), the per-face arrays keep the chosen faces in order. The texture maps are left out:
-// a part lights with the whole's face tints (copied per face) and draws through its maps.
+// Some of a mesh's triangles, for drawing parts of a model with different palettes
+// (per-material palettes) without copying its vertices: the chosen triangles' vertex indices,
+// which still point into the whole's vertex arrays, their per-face arrays in order, and every
+// material (face materials stay valid). The vertex arrays and texture maps stay the whole's:
+// the per-triangle work reads vertices there (TriangleShadingCache::setMesh's `vertices`) and a
+// part draws through the whole's streams and maps (Model::Part).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "renderer/mesh/mesh.h"
 
 namespace npr {
 
+struct MeshFaces {
+  // indices, faceCentroids, faceNormals, faceMaterials, faceTints and materials; no vertices.
+  Mesh faces;
+  std::vector<std::uint32_t> ofWhole;  // per face: the whole's triangle it is
+};
+
 // `keep` has one flag per triangle of `mesh`.
-Mesh meshSubset(const Mesh& mesh, const std::vector<char>& keep);
+MeshFaces meshFaces(const Mesh& mesh, const std::vector<char>& keep);
+// The faces' centroids and normals again from the whole's, which moved (a posed mesh).
+void copyFaceGeometry(const Mesh& whole, MeshFaces& part);
 
 }  // namespace npr

@@ -213,18 +213,18 @@ float GpuPalette::rowPosition(const glm::vec3& eyePosition, const glm::vec3& eye
   return paletteRowAt(paletteAxisValue(axis_.kind, eyePosition, eyeNormal, detail), axisMap_, axis_.rows);
 }
 
-gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
+gl::PaletteVariant GpuPalette::variant(MatchMode mode, const PatternPlacement& at) const {
   gl::PaletteVariant v;
   v.size = size();
   v.layerSizesDiffer = sizesDiffer_;
   v.precomposited = precomposited_;
   v.backgroundImage = backgroundImage_;
   v.match = mode;
-  v.pattern = patternMapping();
-  v.filtered = filtered();
-  v.orientBins = orientBins();
+  v.pattern = at.mapping();
+  v.filtered = filtered(at);
+  v.orientBins = orientBins(at);
   v.entryAngleShared = v.orientBins > 0 && sharedAngle_.has_value();
-  v.patternPerVertex = patternPerVertex_ && gl::mapsScreenPosition(v.pattern);
+  v.patternPerVertex = at.perVertex && gl::mapsScreenPosition(v.pattern);
   if (axis_.rows > 1) {
     v.rows = axis_.rows;
     v.columns = columns_;
@@ -235,15 +235,9 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode) const {
   return v;
 }
 
-void GpuPalette::setOrientation(const OrientSettings& orient, const glm::vec4& lightEye) {
-  orient_ = orient;
-  orient_.bins = std::clamp(orient.bins, OrientSettings::kMinBins, OrientSettings::kMaxBins);
-  orientLight_ = lightEye;
-}
-
-gl::StrokeSource GpuPalette::strokeSource() const {
-  if (!oriented()) return gl::StrokeSource::None;
-  switch (orient_.source) {
+gl::StrokeSource GpuPalette::strokeSource(const PatternPlacement& at) const {
+  if (!oriented(at)) return gl::StrokeSource::None;
+  switch (at.orient.source) {
     case OrientSource::Curvature: return gl::StrokeSource::Field;
     case OrientSource::Light: return gl::StrokeSource::Light;
     case OrientSource::Fixed: return gl::StrokeSource::Fixed;
@@ -252,27 +246,28 @@ gl::StrokeSource GpuPalette::strokeSource() const {
   return gl::StrokeSource::None;
 }
 
-void GpuPalette::bindStrokeSource(gl::ShaderProgram& prog) const {
-  switch (strokeSource()) {
-    case gl::StrokeSource::Fixed: prog.set("uOrientFixed", float(orient_.degrees * M_PI / 180.0)); break;
+void GpuPalette::bindStrokeSource(gl::ShaderProgram& prog, const PatternPlacement& at) const {
+  switch (strokeSource(at)) {
+    case gl::StrokeSource::Fixed: prog.set("uOrientFixed", float(at.orient.degrees * M_PI / 180.0)); break;
     case gl::StrokeSource::Light:
-      prog.set("uOrientLight", orientLight_);
-      prog.set("uViewportSize", glm::vec2(viewport_.z, viewport_.w));
+      prog.set("uOrientLight", at.light);
+      prog.set("uViewportSize", glm::vec2(at.viewport.z, at.viewport.w));
       break;
-    case gl::StrokeSource::Field: prog.set("uViewportSize", glm::vec2(viewport_.z, viewport_.w)); break;
+    case gl::StrokeSource::Field: prog.set("uViewportSize", glm::vec2(at.viewport.z, at.viewport.w)); break;
     case gl::StrokeSource::None: break;
   }
 }
 
-void GpuPalette::bindOrientation(gl::ShaderProgram& prog) const {
-  if (!oriented()) return;
-  std::vector<glm::vec2> steps(static_cast<size_t>(orient_.bins));
-  for (int b = 0; b < orient_.bins; ++b) {
-    const double a = M_PI * b / orient_.bins;
+void GpuPalette::bindOrientation(gl::ShaderProgram& prog, const PatternPlacement& at) const {
+  if (!oriented(at)) return;
+  const int bins = at.orient.bins;
+  std::vector<glm::vec2> steps(static_cast<size_t>(bins));
+  for (int b = 0; b < bins; ++b) {
+    const double a = M_PI * b / bins;
     steps[static_cast<size_t>(b)] = glm::vec2(float(std::cos(a)), float(std::sin(a)));
   }
-  prog.setArray("uBinRotation", steps.data(), orient_.bins);
-  prog.set("uFrameTurn", pattern_ ? pattern_->rotation : 0.0f);
+  prog.setArray("uBinRotation", steps.data(), bins);
+  prog.set("uFrameTurn", at.frame ? at.frame->rotation : 0.0f);
 }
 
 namespace {
@@ -284,105 +279,80 @@ namespace {
 // centres stay exact.
 constexpr float kTexelShift = 0.0371f;
 
-// The anchored pattern's octave split: fract(log2 scale) and how far the dissolve from the
-// coarse octave to the fine one has gone. The dissolve runs over the middle half of the octave
-// only: in the outer quarters one octave shows alone (marks within 2^0.25 of the pattern
-// scale), which costs a scaled pattern's single lookup and no hash, so an orbiting or panning
-// camera, whose scale stays near 1, never pays for it; zooms pay while they cross the middle.
-struct OctaveSplit {
-  float octave = 0.0f, fade = 0.0f;
-};
-constexpr float kFadeBegin = 0.25f, kFadeEnd = 0.75f;
-OctaveSplit octaveSplit(const std::optional<PatternFrame>& frame) {
-  if (!frame) return {};
-  const float l = std::log2(frame->scale);
-  const float octave = l - std::floor(l);
-  return {octave, std::clamp((octave - kFadeBegin) / (kFadeEnd - kFadeBegin), 0.0f, 1.0f)};
-}
 }  // namespace
-
-gl::PatternMapping GpuPalette::patternMapping() const {
-  if (objectPattern_) return gl::PatternMapping::Object;
-  if (pattern_) {
-    const float fade = octaveSplit(pattern_).fade;
-    // One octave alone is a fixed scale through the frame (bindPattern folds it in).
-    return fade > 0.0f && fade < 1.0f ? gl::PatternMapping::Anchored : gl::PatternMapping::Scaled;
-  }
-  return patternScale_ != 1.0f ? gl::PatternMapping::Scaled : gl::PatternMapping::Screen;
-}
 
 int GpuPalette::lodFor(float texelsPerPixel) const {
   if (!(texelsPerPixel > std::sqrt(2.0f))) return 0;
   return std::min(mipLevels_ - 1, int(std::lround(std::log2(texelsPerPixel))));
 }
 
-void GpuPalette::bindPattern(gl::ShaderProgram& prog) const {
-  if (patternMapping() == gl::PatternMapping::Screen) return;
+void GpuPalette::bindPattern(gl::ShaderProgram& prog, const PatternPlacement& at) const {
+  if (at.mapping() == gl::PatternMapping::Screen) return;
   // A fixed scale is the identity frame; the anchored frame's scale is split into octaves (the
   // coarse layer's marks are S 2^octave pixels wide; only PATTERN_ANCHORED reads the fine one,
   // and where the dissolve is complete the fine octave is drawn alone, as the coarse one).
-  const PatternFrame frame = pattern_.value_or(PatternFrame{});
-  const OctaveSplit split = octaveSplit(pattern_);
-  const float markSize = patternScale_ * std::exp2(split.fade >= 1.0f ? split.octave - 1.0f : split.octave);
+  const PatternFrame frame = at.frame.value_or(PatternFrame{});
+  const OctaveSplit split = at.octaves();
+  const float markSize = at.scale * std::exp2(split.fade >= 1.0f ? split.octave - 1.0f : split.octave);
   const float c = std::cos(frame.rotation), s = std::sin(frame.rotation);
   // u = R(-rotation) (x + frameOffset - origin) / markSize, column-major.
   const glm::mat2 m = glm::mat2(c, -s, s, c) / markSize;
-  const glm::vec2 offset = m * (frameOffset_ - frame.translation) + glm::vec2(filtered() ? 0.0f : kTexelShift);
+  const glm::vec2 offset = m * (at.frameOffset - frame.translation) + glm::vec2(filtered(at) ? 0.0f : kTexelShift);
   prog.set("uPatternMatrix", glm::vec4(m[0], m[1]));
   prog.set("uPatternOffset", offset);
   // The same from clip positions (pattern_vertex.glsl): a pixel is S/2 (clip / w + 1) + O for
   // the viewport's size S and corner O, so u w = M S/2 clip.xy + (M (S/2 + O) + offset) w.
-  const glm::vec2 half = glm::vec2(viewport_.z, viewport_.w) * 0.5f;
+  const glm::vec2 half = glm::vec2(at.viewport.z, at.viewport.w) * 0.5f;
   const glm::mat2 clip = m * glm::mat2(half.x, 0.0f, 0.0f, half.y);
   prog.set("uPatternClipMatrix", glm::vec4(clip[0], clip[1]));
-  prog.set("uPatternClipOffset", m * (half + glm::vec2(viewport_.x, viewport_.y)) + offset);
+  prog.set("uPatternClipOffset", m * (half + glm::vec2(at.viewport.x, at.viewport.y)) + offset);
   prog.set("uPatternFade", split.fade);
   prog.set("uPatternLod", glm::vec2(float(lodFor(1.0f / markSize)), float(lodFor(2.0f / markSize))));
-  if (objectPattern_) {
+  if (at.object) {
     // Octaves are chosen per pixel from its depth (pattern.glsl); the coarse one's texels are
     // 1 to 2 pattern-scale pixels wide, the fine one's read one level down: the levels above,
     // whose frame is the identity here (octave 0, marks of the pattern scale).
-    prog.set("uPixelSize", pixelSize_);
-    prog.set("uEyeToObject", eyeToObject_);
-    prog.set("uPatternScale", patternScale_);
+    prog.set("uPixelSize", at.pixelSize);
+    prog.set("uEyeToObject", at.eyeToObject);
+    prog.set("uPatternScale", at.scale);
   }
 }
 
-void GpuPalette::bindLayers(gl::ShaderProgram& prog) const {
-  prog.set("uFrameOffset", frameOffset_);
+void GpuPalette::bindLayers(gl::ShaderProgram& prog, const PatternPlacement& at) const {
+  prog.set("uFrameOffset", at.frameOffset);
   // Filtered lookups (pattern.glsl's mappedTexel) read the sRGB view.
-  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered() ? layersSrgb_.id() : layers_.id());
+  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered(at) ? layersSrgb_.id() : layers_.id());
   prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
 }
 
-void GpuPalette::bindBackground(gl::ShaderProgram& prog) const {
-  prog.set("uFrameOffset", frameOffset_);
+void GpuPalette::bindBackground(gl::ShaderProgram& prog, const PatternPlacement& at) const {
+  prog.set("uFrameOffset", at.frameOffset);
   if (backgroundImage_) {
     gl::bindTexture(TextureUnit::Background, GL_TEXTURE_2D, background_.id());
     prog.set("uBackground", gl::unitIndex(TextureUnit::Background));
     prog.set("uBackgroundSize", backgroundSize_);
-    prog.set("uBackgroundScale", 1.0f / patternScale_);
+    prog.set("uBackgroundScale", 1.0f / at.scale);
   } else {
     prog.set("uBackgroundColour", backgroundColour_);
   }
 }
 
-void GpuPalette::bind(gl::ShaderProgram& prog, bool turned) const {
-  bindLayers(prog);
+void GpuPalette::bind(gl::ShaderProgram& prog, const PatternPlacement& at, bool turned) const {
+  bindLayers(prog, at);
   if (sizesDiffer_) prog.setArray("uLayerSize", layerSizes_.data(), size());
   else prog.set("uLayerSize0", layerSizes_[0]);
-  bindBackground(prog);
-  bindPattern(prog);
+  bindBackground(prog, at);
+  bindPattern(prog, at);
   if (axis_.rows > 1) prog.set("uAxisMap", axisMap_);
-  if (turned && oriented()) {
+  if (turned && oriented(at)) {
     if (sharedAngle_) {
       prog.set("uSharedEntryAngle", *sharedAngle_);
       prog.setArray("uTurnedEntries", turnedEntryBits_.data(), int(turnedEntryBits_.size()));
     } else {
       prog.setArray("uEntryAngle", entryAngles_.data(), size());
     }
-    bindOrientation(prog);
-    bindStrokeSource(prog);
+    bindOrientation(prog, at);
+    bindStrokeSource(prog, at);
   }
   const MatcherSlot& m = current();
   if (m.matcher && m.matcher->mode() == MatchMode::Colors) {

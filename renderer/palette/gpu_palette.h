@@ -1,7 +1,8 @@
 // A palette on the GPU: its entries as one texture array (layers precomposited over the
 // background where that is exact), the background image, and the matcher with its lookup
 // tables for the current match mode, range scale and bands. Binds all of it for palette.glsl
-// and says which palette variant a program must be compiled for.
+// and says which palette variant a program must be compiled for, as the frame places the
+// pattern (patterns/pattern_placement.h: the frame's, not the palette's).
 #pragma once
 
 #include <memory>
@@ -18,7 +19,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_matcher.h"
-#include "renderer/patterns/pattern_tracker.h"
+#include "renderer/patterns/pattern_placement.h"
 #include "renderer/render_settings.h"
 
 namespace npr {
@@ -60,53 +61,27 @@ class GpuPalette {
   // Unique across palettes, slots and rebuilds: what per-triangle results computed with it are keyed by.
   unsigned matcherId() const { return current().id; }
 
-  // The pattern for the frames drawn next: the anchored pattern's frame (nullopt: screen
-  // space) and the pattern scale (texel size in pixels, > 0).
-  void setPatternFrame(const std::optional<PatternFrame>& frame, float patternScale = 1.0f, bool linearFilter = false) {
-    pattern_ = frame;
-    patternScale_ = patternScale;
-    linearFilter_ = linearFilter;
-  }
-  // The object-space pattern (--pattern object) for the frames drawn next, or not; `pixelSize`
-  // is the object units one pixel spans at eye depth 1 (2 / (projection[1][1] x height)),
-  // `eyeToObject` the view's inverse.
-  void setObjectPattern(bool on, float pixelSize, const glm::mat4& eyeToObject) {
-    objectPattern_ = on;
-    pixelSize_ = pixelSize;
-    eyeToObject_ = eyeToObject;
-  }
-  // Where this viewport's pixels sit in the whole frame (a poster's tile), so patterns
-  // continue across tiles; the viewport the frames are drawn in (x, y, width, height), so
-  // vertex stages can place the pattern from clip positions; and whether mesh passes do
-  // (pattern_vertex.glsl: where triangles span a few pixels or more) or each pixel does.
-  void setPlacement(const glm::vec2& frameOffset, const glm::ivec4& viewport, bool perVertex) {
-    frameOffset_ = frameOffset;
-    viewport_ = viewport;
-    patternPerVertex_ = perVertex;
-  }
-  gl::PatternMapping patternMapping() const;
   bool layerSizesDiffer() const { return sizesDiffer_; }
   // Layers stored composited over the background (opaque; alpha then holds tone thresholds).
   bool precomposited() const { return precomposited_; }
   // Mapped lookups filter bilinearly in linear light (asked for, and the layers share a size).
-  bool filtered() const { return linearFilter_ && patternMapping() != gl::PatternMapping::Screen && !sizesDiffer_; }
+  bool filtered(const PatternPlacement& at) const {
+    return at.linearFilter && at.mapping() != gl::PatternMapping::Screen && !sizesDiffer_;
+  }
   // Mip levels of the layer array (level 0 included).
   int mipLevels() const { return mipLevels_; }
   // The mip level a pattern drawn at `texelsPerPixel` reads: the nearest level (GL's
   // NEAREST_MIPMAP rule), clamped to the levels there are.
   int lodFor(float texelsPerPixel) const;
 
-  // Hatching orientation for the frames drawn next: where the stroke angle comes from and the
-  // first enabled light (eye space) for OrientSource::Light (the viewport is setPlacement's).
-  void setOrientation(const OrientSettings& orient, const glm::vec4& lightEye);
-  // Whether lookups are turned: an orientation is set and some entry has a dominant direction
-  // (a stipple palette costs nothing under --orient).
-  bool oriented() const { return orient_.source != OrientSource::None && anyOriented_; }
+  // Whether lookups are turned: the frame orients the hatching and some entry has a dominant
+  // direction (a stipple palette costs nothing under --orient).
+  bool oriented(const PatternPlacement& at) const { return at.orient.source != OrientSource::None && anyOriented_; }
   // Whether some entry has a stroke direction (what an orientation would turn).
   bool hasOrientedEntries() const { return anyOriented_; }
   // Where mesh passes take the stroke angle from (None when not oriented).
-  gl::StrokeSource strokeSource() const;
-  int orientBins() const { return oriented() ? orient_.bins : 0; }
+  gl::StrokeSource strokeSource(const PatternPlacement& at) const;
+  int orientBins(const PatternPlacement& at) const { return oriented(at) ? at.orient.bins : 0; }
   // Entry k's stroke direction in radians (below -10: none, left unturned).
   float entryAngle(int entry) const { return entryAngles_[static_cast<size_t>(entry)]; }
 
@@ -117,30 +92,26 @@ class GpuPalette {
   bool hasToneThresholds() const { return toneThresholds_; }
   const std::string& toneThresholdNote() const { return toneThresholdNote_; }
 
-  gl::PaletteVariant variant(MatchMode mode) const;
-  // For programs that only match (read no texels of the layers): no mapping, filter or turns.
-  gl::PaletteVariant matchingVariant(MatchMode mode) const {
-    gl::PaletteVariant v = variant(mode);
-    v.pattern = gl::PatternMapping::Screen;
-    v.filtered = false;
-    v.orientBins = 0;
-    v.entryAngleShared = false;
-    v.patternPerVertex = false;
-    return v;
-  }
+  // The variant of a program that draws this palette as the frame places it.
+  gl::PaletteVariant variant(MatchMode mode, const PatternPlacement& at) const;
+  // For programs that only match (read no texels of the layers): no mapping, filter or turns,
+  // whatever the frame's placement.
+  gl::PaletteVariant matchingVariant(MatchMode mode) const { return variant(mode, PatternPlacement{}); }
   // The stroke source's uniforms (orientation.glsl): fixed angle, light, viewport size.
-  void bindStrokeSource(gl::ShaderProgram& program) const;
+  void bindStrokeSource(gl::ShaderProgram& program, const PatternPlacement& at) const;
   // The turned lookups' uniforms (steps, the frame's turn), for palette.glsl and layer quads.
-  void bindOrientation(gl::ShaderProgram& program) const;
-  // The anchored pattern's uniforms (pattern.glsl), when anchored.
-  void bindPattern(gl::ShaderProgram& program) const;
+  void bindOrientation(gl::ShaderProgram& program, const PatternPlacement& at) const;
+  // The pattern's uniforms (pattern.glsl), when mapped.
+  void bindPattern(gl::ShaderProgram& program, const PatternPlacement& at) const;
   // Everything palette.glsl samples: layers, background, lookup tables, and their uniforms;
   // with `turned`, for a program compiled with this palette's orientation (orientBins()).
-  void bind(gl::ShaderProgram& program, bool turned) const;
+  void bind(gl::ShaderProgram& program, const PatternPlacement& at, bool turned) const;
+  // What a matchingVariant() program reads.
+  void bindMatching(gl::ShaderProgram& program) const { bind(program, PatternPlacement{}, false); }
   // Only the layer array (the stencil path's layer quad).
-  void bindLayers(gl::ShaderProgram& program) const;
+  void bindLayers(gl::ShaderProgram& program, const PatternPlacement& at) const;
   // What quad.frag's background needs (an image or a colour).
-  void bindBackground(gl::ShaderProgram& program) const;
+  void bindBackground(gl::ShaderProgram& program, const PatternPlacement& at) const;
 
  private:
   GpuPalette() = default;
@@ -177,15 +148,6 @@ class GpuPalette {
   std::vector<MatcherSlot> slots_ = std::vector<MatcherSlot>(1);
   mutable int active_ = 0;
   const MatcherSlot& current() const { return slots_[size_t(active_)]; }
-  std::optional<PatternFrame> pattern_;
-  float patternScale_ = 1.0f;
-  bool linearFilter_ = false;
-  bool objectPattern_ = false;
-  float pixelSize_ = 1.0f;
-  glm::mat4 eyeToObject_{1.0f};
-  glm::vec2 frameOffset_{0.0f};
-  glm::ivec4 viewport_{0, 0, 1, 1};
-  bool patternPerVertex_ = false;
   int mipLevels_ = 1;
   std::vector<float> entryAngles_;
   bool anyOriented_ = false;
@@ -193,8 +155,6 @@ class GpuPalette {
   // radians, and which entries are turned, one bit each (palette.glsl's uTurnedEntries).
   std::optional<float> sharedAngle_;
   std::vector<int> turnedEntryBits_;
-  OrientSettings orient_;
-  glm::vec4 orientLight_{0, 0, 1, 0};
 };
 
 }  // namespace npr

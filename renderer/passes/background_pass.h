@@ -1,5 +1,6 @@
 // The background every frame starts from: the palette's paper (a colour or a tiled image in
-// screen space), white without a palette. Drawn behind everything; touches no depth.
+// screen space, at the frame's pattern scale and tile offset), white without a palette. Drawn
+// behind everything; touches no depth.
 #pragma once
 
 #include "renderer/core/frame_stats.h"
@@ -10,7 +11,7 @@
 
 namespace npr {
 
-[[nodiscard]] Status drawBackground(const GpuPalette* palette, gl::ProgramCache& programs, const gl::VertexArray& emptyVao,
-                                    FrameStats& stats);
+[[nodiscard]] Status drawBackground(const GpuPalette* palette, const PatternPlacement& pattern, gl::ProgramCache& programs,
+                                    const gl::VertexArray& emptyVao, FrameStats& stats);
 
 }  // namespace npr

@@ -13,8 +13,8 @@ Status drawMesh(FrameContext& f, const gl::MeshProgram& variant, bool pattern) {
   gl::apply(f.meshPass(gl::pass::kMesh));
   (*prog)->use();
   setMeshTransform(**prog, f.camera);
-  if (pattern) f.palette->bindPattern(**prog);
-  else f.palette->bindStrokeSource(**prog);
+  if (pattern) f.palette->bindPattern(**prog, f.pattern);
+  else f.palette->bindStrokeSource(**prog, f.pattern);
   f.gpuMesh.drawAll();
   ++f.stats.drawCalls;
   return okStatus();

@@ -34,6 +34,7 @@ struct FrameContext {
   const Mesh& mesh;
   const GpuMaterials& materials;      // active when the mesh has an appearance
   const GpuPalette* palette;         // set whenever the path uses a palette
+  const PatternPlacement& pattern;   // how every palette's textures lie on this model, this frame
   TriangleShadingCache& triangles;   // shared by the per-triangle paths
   gl::ProgramCache& programs;
   FrameStats& stats;
@@ -73,7 +74,7 @@ struct FrameContext {
   // same frame: a control palette); selections are the same turned or not, so they ignore the
   // orientation.
   gl::PaletteVariant paletteVariant(const GpuPalette* p = nullptr) const {
-    gl::PaletteVariant v = (p ? p : palette)->variant(settings.match);
+    gl::PaletteVariant v = (p ? p : palette)->variant(settings.match, pattern);
     if (output != gl::MeshOutput::Colour) v.orientBins = 0;
     v.patternRest = v.pattern == gl::PatternMapping::Object && gpuMesh.deforms();
     if (paletteAxis(p).rows < 2) v.rows = 1;  // a palette with rows drawn with its first only
@@ -87,10 +88,10 @@ struct FrameContext {
   PaletteAxis paletteAxis(const GpuPalette* p = nullptr) const { return settings.paletteAxis ? (p ? p : palette)->axis() : PaletteAxis{}; }
   // Where a mesh pass with the palette takes each pixel's stroke angle from.
   gl::StrokeSource strokeSource(const GpuPalette* p = nullptr) const {
-    return output == gl::MeshOutput::Colour ? (p ? p : palette)->strokeSource() : gl::StrokeSource::None;
+    return output == gl::MeshOutput::Colour ? (p ? p : palette)->strokeSource(pattern) : gl::StrokeSource::None;
   }
   void bindPalette(gl::ShaderProgram& program, const GpuPalette* p = nullptr) const {
-    (p ? p : palette)->bind(program, output == gl::MeshOutput::Colour);
+    (p ? p : palette)->bind(program, pattern, output == gl::MeshOutput::Colour);
     if ((p ? p : palette)->axis().kind == PaletteAxisKind::Detail) program.set("uAxisDetail", axisDetail);
   }
 

@@ -23,11 +23,11 @@ Status StencilPath::draw(FrameContext& f) {
 
   const gl::StrokeSource stroke = f.strokeSource();
   const bool angleBuffer = stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light;
-  const bool objectPattern = f.palette->patternMapping() == gl::PatternMapping::Object;
+  const bool objectPattern = f.pattern.mapping() == gl::PatternMapping::Object;
   Result<gl::ShaderProgram*> bgQuad = f.program(gl::QuadProgram{gl::QuadProgram::Kind::Background, f.palette->backgroundImage()});
   if (!bgQuad) return Error{bgQuad.error()};
-  const gl::QuadProgram layerVariant{gl::QuadProgram::Kind::Layer, false, f.palette->patternMapping(), f.palette->layerSizesDiffer(),
-                                     f.palette->filtered(), f.palette->orientBins(), angleBuffer, f.palette->precomposited()};
+  const gl::QuadProgram layerVariant{gl::QuadProgram::Kind::Layer, false, f.pattern.mapping(), f.palette->layerSizesDiffer(),
+                                     f.palette->filtered(f.pattern), f.palette->orientBins(f.pattern), angleBuffer, f.palette->precomposited()};
   Result<gl::ShaderProgram*> layerQuad = f.program(layerVariant);
   if (!layerQuad) return Error{layerQuad.error()};
   // Layers with no stroke direction are drawn unturned, by the same quad without orientation:
@@ -84,29 +84,29 @@ Status StencilPath::draw(FrameContext& f) {
 
   (*mask)->use();
   setMeshTransform(**mask, f.camera);
-  if (buffersFromMasks && objectPattern) f.palette->bindPattern(**mask);
-  if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask);
+  if (buffersFromMasks && objectPattern) f.palette->bindPattern(**mask, f.pattern);
+  if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask, f.pattern);
   // Layers stored over the background are drawn opaque: the background under them would be
   // covered, so it is not drawn (a draw per bucket saved, which is most of what a scene's
   // objects cost this path beyond the merged mesh: bench_scene).
   const bool layersOpaque = layerVariant.opaque;
   if (!layersOpaque) {
     (*bgQuad)->use();
-    f.palette->bindBackground(**bgQuad);
+    f.palette->bindBackground(**bgQuad, f.pattern);
   }
   const glm::ivec2 bufferOrigin = buffersFromMasks ? glm::ivec2(0) : glm::ivec2(vp.x, vp.y);
   auto bindLayerQuad = [&](gl::ShaderProgram& quad) {
     quad.use();
-    f.palette->bindLayers(quad);
-    f.palette->bindPattern(quad);
+    f.palette->bindLayers(quad, f.pattern);
+    f.palette->bindPattern(quad, f.pattern);
     if (objectPattern) patternCoordinates_.bind(quad, bufferOrigin);
   };
   if (*plainQuad != *layerQuad) bindLayerQuad(**plainQuad);
   bindLayerQuad(**layerQuad);  // last: still in use for the orientation's uniforms below
   if (stroke != gl::StrokeSource::None) {
-    f.palette->bindOrientation(**layerQuad);
+    f.palette->bindOrientation(**layerQuad, f.pattern);
     if (angleBuffer) strokeAngles_.bind(**layerQuad, bufferOrigin);
-    else f.palette->bindStrokeSource(**layerQuad);
+    else f.palette->bindStrokeSource(**layerQuad, f.pattern);
   }
 
   // (1) the bucket's triangles mark the pixels where they are visible so far with `mark`

@@ -96,14 +96,9 @@ void Model::poseOnCpu(bool upload, FrameStats& stats) {
   triangles_.geometryChanged();
   lines_.geometryChanged();
   strokes_.geometryChanged();
-  // Parts hold copies of the vertices and their own faces' centroids and normals.
+  // Parts read the model's vertices; their own faces' centroids and normals follow.
   for (auto& p : parts_) {
-    Mesh& part = p->mesh;
-    if (part.positions.size() != mesh_->positions.size()) continue;
-    part.positions = mesh_->positions;
-    part.normals = mesh_->normals;
-    updateFaceGeometry(part);
-    part.radius = mesh_->radius;
+    copyFaceGeometry(*mesh_, p->faces);
     p->triangles.geometryChanged();
   }
   cpuStale_ = false;
@@ -176,11 +171,11 @@ void Model::uploadParts(const std::vector<PartKey>& keys, const std::vector<std:
     auto part = std::make_unique<Part>();
     part->palette = keys[g].first;
     part->detail = keys[g].second;
-    part->mesh = meshSubset(*mesh_, keep);
+    part->faces = meshFaces(*mesh_, keep);
     // Only the part's index buffer is its own: it draws through the model's vertex streams
     // (the direction field and occlusion included, when the model has them).
-    part->gpu.uploadPart(gpu_, part->mesh);
-    part->triangles.setMesh(&part->mesh);
+    part->gpu.uploadPart(gpu_, part->faces.faces);
+    part->triangles.setMesh(&part->faces.faces, mesh_);
     stats.bufferUploads += 1;
     parts_.push_back(std::move(part));
   }

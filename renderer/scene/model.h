@@ -20,6 +20,7 @@
 #include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
+#include "renderer/mesh/mesh_subset.h"
 #include "renderer/orientation/direction_field.h"
 #include "renderer/palette/tone_range.h"
 #include "renderer/patterns/pattern_tracker.h"
@@ -109,14 +110,14 @@ class Model {
   const std::vector<float>* occlusionValues() const { return occlusion_ && occlusion_->done() ? &occlusion_->values() : nullptr; }
 
   // A part of the model drawn with one palette (null: the main one) and one detail (none: the
-  // model's), with its own index buffer and per-triangle cache. It draws through the model's
-  // vertex streams and the model's materials and maps (the same table: a part keeps every
-  // material, so indices stay valid). Empty when no material of the mesh has its own palette
-  // or detail.
+  // model's): its triangles (the model's vertex indices and their per-face data, no vertices:
+  // mesh_subset.h), its own index buffer and per-triangle cache. It draws through the model's
+  // vertex streams, materials and maps (the same table: a part keeps every material, so
+  // indices stay valid). Empty when no material of the mesh has its own palette or detail.
   struct Part {
     const GpuPalette* palette = nullptr;
     std::optional<float> detail;  // what a palette with `axis detail` picks its row by
-    Mesh mesh;
+    MeshFaces faces;
     GpuMesh gpu;
     TriangleShadingCache triangles;
   };
@@ -125,6 +126,7 @@ class Model {
   template <class PaletteOf, class DetailOf>
   void splitByMaterial(PaletteOf&& paletteOf, DetailOf&& detailOf, FrameStats& stats);
   std::vector<std::unique_ptr<Part>>& parts() { return parts_; }
+  const std::vector<std::unique_ptr<Part>>& parts() const { return parts_; }
 
  private:
   using PartKey = std::pair<const GpuPalette*, std::optional<float>>;

@@ -9,8 +9,9 @@
 
 namespace npr {
 
-void GpuTriangleLighting::setMesh(const Mesh* mesh) {
+void GpuTriangleLighting::setMesh(const Mesh* mesh, const Mesh* vertices) {
   mesh_ = mesh;
+  vertices_ = vertices ? vertices : mesh;
   vao_.reset();
   centroids_.reset();
   normals_.reset();
@@ -45,7 +46,7 @@ Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::Progr
     glBindVertexArray(0);
     stats.bufferUploads += 2;
   }
-  const bool occluded = in.occlusion && in.occlusion->size() == mesh_->positions.size();
+  const bool occluded = in.occlusion && in.occlusion->size() == vertices_->positions.size();
   if (occluded && occlusionFrom_ != in.occlusion->data()) {
     std::vector<float> face(nt);
     const float* o = in.occlusion->data();
@@ -102,7 +103,7 @@ Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::Progr
   p.set("uNormalMatrix", glm::transpose(glm::inverse(glm::mat3(in.camera.view))));
   p.set("uTargetSize", size);
   uploadLightingUniforms(p, prepareLighting<float>(in.lighting));
-  in.palette.bind(p, false);
+  in.palette.bindMatching(p);
   if (in.shadows) in.shadows->bind(p, in.sceneView);
   if (occluded) p.set("uOcclusionStrength", std::clamp(in.occlusionStrength, 0.0f, 1.0f));
   glBindVertexArray(vao_.id());

@@ -35,7 +35,9 @@ struct GpuTriangleLightingInputs {
 
 class GpuTriangleLighting {
  public:
-  void setMesh(const Mesh* mesh);
+  // `vertices`: the mesh `mesh`'s indices point into when it holds only triangles (a part of a
+  // model, mesh_subset.h); null: `mesh` itself.
+  void setMesh(const Mesh* mesh, const Mesh* vertices = nullptr);
   // The mesh's faces moved (a posed mesh): their centroids and normals are sent again.
   void geometryChanged();
   // One entry per triangle of the mesh into `entries`.
@@ -44,6 +46,7 @@ class GpuTriangleLighting {
 
  private:
   const Mesh* mesh_ = nullptr;
+  const Mesh* vertices_ = nullptr;
   gl::VertexArray vao_;
   gl::Buffer centroids_, normals_, occlusion_;
   const float* occlusionFrom_ = nullptr;

@@ -373,14 +373,14 @@ void bucketTriangles(const Mesh& mesh, int entries, int threads, TriangleShading
   scatterBuckets(mesh, counts, entries, chunks, true, out);
 }
 
-void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+void projectVertices(const std::vector<glm::vec3>& positions, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
                      std::vector<glm::vec2>& screen) {
-  const size_t nv = mesh.positions.size();
+  const size_t nv = positions.size();
   screen.resize(nv);
   const glm::vec2 half = glm::vec2(viewport) * 0.5f;
   parallelChunks(nv, threads > 0 ? threads : workerCount(), [&](size_t b, size_t e, int) {
     for (size_t v = b; v < e; ++v) {
-      const glm::vec4 cp = modelViewProjection * glm::vec4(mesh.positions[v], 1.0f);
+      const glm::vec4 cp = modelViewProjection * glm::vec4(positions[v], 1.0f);
       // Behind the eye the projection is meaningless: mark it so the bucket spans the screen.
       screen[v] = cp.w > 1e-6f ? (glm::vec2(cp) / cp.w + 1.0f) * half : glm::vec2(NAN);
     }

@@ -56,7 +56,7 @@ void bucketTriangles(const Mesh& mesh, int entries, int threads, TriangleShading
 
 // Every vertex in window pixels (NaN where it lies behind the eye). Depends only on the view,
 // so callers keep it while only the lighting changes.
-void projectVertices(const Mesh& mesh, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
+void projectVertices(const std::vector<glm::vec3>& positions, const glm::mat4& modelViewProjection, const glm::ivec2& viewport, int threads,
                      std::vector<glm::vec2>& screen);
 
 // The screen rectangle (x0, y0, x1, y1 in pixels) each bucket's triangles cover, for the

@@ -56,13 +56,14 @@ void TriangleShadingCache::geometryChanged() {
   gpu_.geometryChanged();
 }
 
-void TriangleShadingCache::setMesh(const Mesh* mesh) {
+void TriangleShadingCache::setMesh(const Mesh* mesh, const Mesh* vertices) {
   mesh_ = mesh;
+  vertices_ = vertices ? vertices : mesh;
   faceScale_.clear();
   faceScaleValid_ = false;
   occludedScale_.clear();
   occludedWith_ = nullptr;
-  gpu_.setMesh(mesh);
+  gpu_.setMesh(mesh, vertices);
   ++meshId_;
   key_.valid = false;
   bucketsUploaded_ = false;
@@ -87,8 +88,8 @@ void TriangleShadingCache::prepare(const LightingState& lighting, const glm::mat
                                    unsigned matcherId, FrameStats& stats, bool materials, const std::vector<float>* occlusion,
                                    float occlusionStrength) {
   const bool rigid = isSimilarity(modelView);
-  materials = materials && mesh_->hasAppearance();
-  const float* occ = occlusion && occlusion->size() == mesh_->positions.size() ? occlusion->data() : nullptr;
+  materials = materials && vertices_->hasAppearance();
+  const float* occ = occlusion && occlusion->size() == vertices_->positions.size() ? occlusion->data() : nullptr;
   if (!occ) occlusionStrength = 0.0f;
   const glm::mat4 toSpace = rigid ? glm::inverse(modelView) : glm::mat4(1.0f);
   PreparedLighting<float> prepared = prepareLighting<float>(lighting, toSpace);
@@ -110,7 +111,7 @@ void TriangleShadingCache::prepare(const LightingState& lighting, const glm::mat
     opt.buildBuckets = !rowsNext_;  // rows: applyRows buckets by layer instead
     if (materials || occ) {
       if (materials && !faceScaleValid_) {
-        faceScale_ = packFaceScale(faceColourScale(*mesh_));
+        faceScale_ = packFaceScale(faceColourScale(*mesh_, *vertices_));
         const auto& fmat = mesh_->faceMaterials;
         singleMaterial_ = fmat.empty() ? -1 : fmat[0];
         for (std::uint16_t x : fmat)
@@ -119,7 +120,7 @@ void TriangleShadingCache::prepare(const LightingState& lighting, const glm::mat
       }
       FaceMaterials fm;
       if (materials) {
-        fm.materials = glMaterials(*mesh_, lighting);
+        fm.materials = glMaterials(*vertices_, lighting);
         fm.faceMaterial = mesh_->faceMaterials.size() == mesh_->triangleCount() ? mesh_->faceMaterials.data() : nullptr;
         if (fm.faceMaterial && singleMaterial_ >= 0) {  // every face has one material: no per-face lookup
           fm.materials = {fm.materials[static_cast<std::size_t>(singleMaterial_)]};
@@ -193,7 +194,7 @@ void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& a
     const glm::vec3* centroids = mesh_->faceCentroids.data();
     const glm::vec3* faceNormals = mesh_->faceNormals.data();
     const std::uint32_t* idx = mesh_->indices.data();
-    const glm::vec3* pos = mesh_->positions.data();
+    const glm::vec3* pos = vertices_->positions.data();
     // Under a similarity (a scene's usual placement) in object space: the eye brought into the
     // mesh's space, distances scaled back; angles are kept. Otherwise in eye space, normals by
     // the inverse transpose.
@@ -240,7 +241,7 @@ void TriangleShadingCache::applyRows(const PaletteAxis& axis, const glm::vec2& a
 void TriangleShadingCache::updateBounds(const glm::mat4& mvp, const glm::ivec2& size, FrameStats& stats) {
   if (mvp != projectedWith_ || size != projectedSize_ || projectedMesh_ != meshId_) {
     const auto t0 = std::chrono::steady_clock::now();
-    projectVertices(*mesh_, mvp, size, 0, screenVertices_);
+    projectVertices(vertices_->positions, mvp, size, 0, screenVertices_);
     stats.cpuShadingMs += msSince(t0);
     projectedWith_ = mvp;
     projectedSize_ = size;

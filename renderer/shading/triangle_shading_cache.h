@@ -24,8 +24,10 @@ namespace npr {
 
 class TriangleShadingCache {
  public:
-  // Forgets everything computed for the previous mesh.
-  void setMesh(const Mesh* mesh);
+  // Forgets everything computed for the previous mesh. `vertices`: the mesh `mesh`'s indices
+  // point into when it holds only triangles (a part of a model, mesh_subset.h), whose vertex
+  // positions, colours and materials are read; null: `mesh` itself.
+  void setMesh(const Mesh* mesh, const Mesh* vertices = nullptr);
   // The mesh was deformed in place (a posed mesh): lighting, buckets and bounds are worked out
   // again; what depends only on its materials is kept.
   void geometryChanged();
@@ -67,6 +69,7 @@ class TriangleShadingCache {
 
  private:
   const Mesh* mesh_ = nullptr;
+  const Mesh* vertices_ = nullptr;  // mesh_ or the whole it is part of
   unsigned meshId_ = 0;  // bumped per setMesh
   TriangleShading shading_;
   gl::Buffer bucketIndices_;

@@ -102,7 +102,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   p.set("uLightEye", glm::vec3(light));
   p.set("uLightPositional", light.w != 0.0f ? 1.0f : 0.0f);
   uploadLightingUniforms(p, prepareLighting<float>(lighting));
-  palette.bind(p, false);
+  palette.bindMatching(p);
   const std::vector<glm::vec3>& averages = palette.averages();
   p.setArray("uEntryColour", averages.data(), int(averages.size()));
   gl::bindTexture(gl::TextureUnit::Brush, GL_TEXTURE_2D, brush_.id());

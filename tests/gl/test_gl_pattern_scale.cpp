@@ -99,7 +99,7 @@ TEST_F(Fixture, ScaledPatternTilesFromTheWindowCornerInAViewportAwayFromIt) {
         s.patternScale = scale;
         target->bind();
         ASSERT_TRUE(r->render(cam.matrices(float(w) / h), s, {ox, oy, w, h}));
-        EXPECT_EQ(r->palette()->variant(MatchMode::Intensity).patternPerVertex, cells == 1) << cells << " cells";
+        EXPECT_EQ(r->palette()->variant(MatchMode::Intensity, r->patternPlacement()).patternPerVertex, cells == 1) << cells << " cells";
         const ImageRGBA8 img = target->readRGBA8();
         const ImageRGBA8& level = scale < 1.0f ? p.entries[0].mips[0] : p.entries[0].image;
         const int n = level.width;

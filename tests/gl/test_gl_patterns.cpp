@@ -330,15 +330,13 @@ TEST_F(Fixture, FaceNormalsPlaceTheObjectPatternAsVertexNormalsDoOnAFlatSquare) 
 // what the dissolve has reached there; at the wrap it is the next octave's coarse one), and the tone stays that of the screen's pattern.
 TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone) {
   const Palette crosshatch = test::shippedPalette("crosshatch");
-  auto gpu = GpuPalette::upload(crosshatch);
-  ASSERT_TRUE(gpu);
   for (float octave : {0.0f, 0.2f, 0.3f, 0.5f, 0.7f, 0.8f, 0.95f, 1.1f, 1.5f, -0.1f, -0.5f}) {
-    PatternFrame f;
-    f.scale = std::exp2(octave);
-    (*gpu)->setPatternFrame(f);
+    PatternPlacement at;
+    at.frame = PatternFrame{};
+    at.frame->scale = std::exp2(octave);
     const float o = octave - std::floor(octave);
     const bool dissolving = o > 0.25f && o < 0.75f;
-    EXPECT_EQ((*gpu)->patternMapping(), dissolving ? gl::PatternMapping::Anchored : gl::PatternMapping::Scaled) << "octave " << octave;
+    EXPECT_EQ(at.mapping(), dissolving ? gl::PatternMapping::Anchored : gl::PatternMapping::Scaled) << "octave " << octave;
   }
 
   const Mesh sq = test::square();

@@ -364,6 +364,43 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
   }
 }
 
+// A deforming model split into parts by material (per-material palettes): each part's
+// triangles follow the pose as the whole's do. The parts read the model's posed vertices and
+// take their faces' centroids and normals from it (mesh_subset.h); given the main palette
+// again, the split model draws the bent pose as the whole model does, in every path.
+TEST_F(SceneFixture, ABendingModelsPartsFollowItsPose) {
+  Mesh rest = test::skinnedCylinder(48, 40);
+  rest.materials.resize(2);
+  rest.materials[0].name = "foot";
+  rest.materials[1].name = "head";
+  rest.faceMaterials.resize(rest.triangleCount());
+  for (std::size_t f = 0; f < rest.triangleCount(); ++f) rest.faceMaterials[f] = rest.faceCentroids[f].y > 0.0f ? 1 : 0;
+  const Palette hatch = test::shippedPalette("hatch");
+  ASSERT_TRUE(r->setPalette(hatch));
+  const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
+  for (const PathInfo& path : renderPaths()) {
+    if (!path.userSelectable || !path.usesPalette) continue;
+    SCOPED_TRACE(path.name);
+    RenderSettings s;
+    s.path = path.id;
+    s.materials = true;
+    r->clearModels();
+    r->clearMaterialPalette("head");
+    const ModelId id = r->addModel(rest);
+    (void)test::renderImage(*r, cam, s, kSize, kSize);  // at rest
+    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {}));
+    const ImageRGBA8 whole = test::renderImage(*r, cam, s, kSize, kSize);
+    ASSERT_TRUE(r->setMaterialPalette("head", hatch));
+    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(0.0f), {}));
+    (void)test::renderImage(*r, cam, s, kSize, kSize);  // the parts made, at rest
+    ASSERT_EQ(r->model(id)->parts().size(), 2u);
+    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {}));
+    const ImageRGBA8 split = test::renderImage(*r, cam, s, kSize, kSize);
+    EXPECT_EQ(test::countDiffering(whole, split), 0) << "the parts do not follow the pose";
+  }
+  r->clearMaterialPalette("head");
+}
+
 // A pose made on the GPU (animation/gpu_deformation.h) draws what the CPU's pose draws: skin and
 // morph target together, in every GPU-lit path, with shadows from the posed mesh and the
 // hatching field carried by the skin. The GPU alone poses while nothing reads the mesh on the

@@ -24,7 +24,8 @@ class OutlinesFeature final : public Feature {
     Status result = okStatus();
     f.scene.forEach([&](Model& m) {
       if (result)
-        result = drawHardwareOutlines(m.gpu(), m.placed(f.camera), f.settings.lines, f.palette, f.settings.match, f.viewport, f.programs, f.stats);
+        result = drawHardwareOutlines(m.gpu(), m.placed(f.camera), f.settings.lines, f.palette, f.pattern, f.settings.match, f.viewport,
+                                      f.programs, f.stats);
     });
     return result;
   }
