@@ -52,7 +52,7 @@ struct MeshMaterial {
   std::string name;
   glm::vec3 ambient{0.2f}, diffuse{0.8f}, specular{0.0f}, emission{0.0f};
   float shininess = 0.0f;
-  float opacity = 1.0f;  // d (or 1 - Tr): reported, drawn opaque; glTF's base colour alpha: see `alpha`
+  float opacity = 1.0f;  // d (or 1 - Tr), glTF's base colour alpha: see `alpha`
   int illum = 2;
   // glTF's alpha mode. The surface's alpha is opacity times the diffuse map's alpha. Mask:
   // drawn only where it reaches alphaCutoff (a cut-out). Blend: screen-door transparency,
@@ -60,7 +60,7 @@ struct MeshMaterial {
   enum class Alpha : std::uint8_t { Opaque, Mask, Blend } alpha = Alpha::Opaque;
   float alphaCutoff = 0.5f;
   int diffuseMap = -1;   // into Mesh::textures; modulates ambient and diffuse (map_Kd)
-  int opacityMap = -1;   // map_d: reported, not drawn
+  int opacityMap = -1;   // map_d, until the OBJ reader folds it into diffuseMap's alpha (opacity_map.h)
   bool fromLightingState = false;  // the default material: taken from the lighting state at draw time
 };
 

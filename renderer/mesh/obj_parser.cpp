@@ -8,12 +8,15 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <utility>
 #include <unordered_map>
 
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
 #include "renderer/core/printable.h"
 #include "renderer/mesh/mtl_parser.h"
+#include "renderer/mesh/opacity_map.h"
 
 #include "renderer/mesh/polygon_soup.h"
 
@@ -249,6 +252,63 @@ class ObjParser {
     }
   }
 
+  // The material's transparency, as Blender's importer reads it: `d` (or 1 - `Tr`) times map_d
+  // is the surface's alpha, drawn as screen-door transparency (MeshMaterial::Alpha::Blend; a
+  // map_d of black and white is a cut-out). map_d is folded into the diffuse map's alpha, the
+  // one map coverage reads (opacity_map.h), each pair of maps once. A material with no opacity
+  // at all and no map would vanish: `Tr 1` is what exporters that write Tr the other way round
+  // mean by opaque, so it is drawn opaque with a warning.
+  void transparency(MeshMaterial& m, const std::string& where) {
+    if (m.opacityMap < 0 && !(m.opacity < 1.0f)) return;
+    if (m.opacityMap < 0 && m.opacity <= 0.0f) {
+      warn_.add(where + ": material '" + m.name + "' is wholly transparent (d 0 or Tr 1); drawn opaque, as some exporters write Tr "
+                "the other way round");
+      m.opacity = 1.0f;
+      return;
+    }
+    m.alpha = MeshMaterial::Alpha::Blend;
+    if (m.opacityMap < 0) return;
+    const std::pair<int, int> key{m.diffuseMap, m.opacityMap};
+    auto it = combinedMaps_.find(key);
+    if (it == combinedMaps_.end()) {
+      int index = -1;
+      if (soup_.textures.size() >= kMaxModelTextures) {
+        warn_.add(where + ": more than " + std::to_string(kMaxModelTextures) + " texture maps; material '" + m.name +
+                  "' is drawn without its opacity map");
+      } else {
+        const MeshTexture& opacity = soup_.textures[std::size_t(m.opacityMap)];
+        const ImageRGBA8* colour = m.diffuseMap >= 0 ? &soup_.textures[std::size_t(m.diffuseMap)].image : nullptr;
+        MeshTexture combined{(m.diffuseMap >= 0 ? soup_.textures[std::size_t(m.diffuseMap)].path + " with " : "") + opacity.path,
+                             withOpacityMap(colour, opacity.image)};
+        index = static_cast<int>(soup_.textures.size());
+        soup_.textures.push_back(std::move(combined));
+      }
+      it = combinedMaps_.emplace(key, index).first;
+    }
+    if (it->second < 0) return;
+    m.diffuseMap = it->second;
+    m.opacityMap = -1;  // drawn through the folded map: the maps apart are not uploaded
+  }
+
+  // The maps no material draws any more (folded into another: transparency), so they are
+  // neither kept nor uploaded; they stay in the report's list of maps loaded.
+  void dropUnusedTextures() {
+    std::vector<int> remap(soup_.textures.size(), -1);
+    for (const MeshMaterial& m : soup_.materials)
+      for (int map : {m.diffuseMap, m.opacityMap})
+        if (map >= 0) remap[std::size_t(map)] = 0;
+    std::vector<MeshTexture> kept;
+    for (std::size_t t = 0; t < soup_.textures.size(); ++t)
+      if (remap[t] == 0) {
+        remap[t] = static_cast<int>(kept.size());
+        kept.push_back(std::move(soup_.textures[t]));
+      }
+    soup_.textures = std::move(kept);
+    for (MeshMaterial& m : soup_.materials)
+      for (int* map : {&m.diffuseMap, &m.opacityMap})
+        if (*map >= 0) *map = remap[std::size_t(*map)];
+  }
+
   // Gives the used materials the values their libraries define (whichever of usemtl and
   // mtllib came first), and loads their texture maps, each file once.
   void resolveMaterials() {
@@ -296,7 +356,9 @@ class ObjParser {
       if (m.shininess < 1.0f) m.specular = glm::vec3(0.0f);
       m.diffuseMap = texture(def.diffuseMapPath.empty() ? def.ambientMapPath : def.diffuseMapPath, def.where);
       m.opacityMap = texture(def.opacityMapPath, def.where);
+      transparency(m, def.where);
     }
+    if (!combinedMaps_.empty()) dropUnusedTextures();
     report_.materials = soup_.materials.size() - 1;
   }
 
@@ -329,6 +391,7 @@ class ObjParser {
   std::unordered_map<std::string, std::uint16_t> materialIndex_;
   std::vector<std::string> firstUse_;  // where each material (after the default) was first used
   std::vector<MtlMaterial> library_;
+  std::map<std::pair<int, int>, int> combinedMaps_;  // (diffuse map, opacity map) -> their folded map
   bool texWarned_ = false, materialsWarned_ = false;
   static constexpr std::size_t kMaxGroups = 4096;
   std::vector<std::uint32_t>* groups_;

@@ -230,5 +230,63 @@ TEST(Materials, ASeeThroughMaterialsTintWeighsItsMapByAlpha) {
   EXPECT_EQ(none.whole(), glm::vec3(1.0f));
 }
 
+// MTL transparency, read as Blender's importer reads it: d (or 1 - Tr) and map_d are the
+// surface's alpha, drawn as screen-door transparency; map_d is folded into the diffuse map's
+// alpha (the one map the renderer's coverage reads), the maps apart are not kept; a material
+// with no opacity at all and no map (Tr 1, written the other way round) is drawn opaque with a
+// warning naming the file and line.
+TEST(Materials, DAndTrAndMapDBecomeTheSurfacesAlpha) {
+  TempDir d;
+  ImageRGBA8 red{4, 2, std::vector<std::uint8_t>(4 * 2 * 4, 255)};
+  for (std::size_t i = 0; i < red.pixels.size(); i += 4) red.pixels[i + 1] = red.pixels[i + 2] = 0;
+  ASSERT_TRUE(writeImage((d.path() / "leaf.png").string(), red));
+  // Grey, no alpha: black on the left, white on the right.
+  ImageRGBA8 mask{2, 1, {0, 0, 0, 255, 255, 255, 255, 255}};
+  ASSERT_TRUE(writeImage((d.path() / "mask.png").string(), mask));
+  d.write("t.mtl",
+          "newmtl glass\nd 0.3\n"
+          "newmtl solid\nd 1\n"
+          "newmtl inverted\nTr 1\n"
+          "newmtl leaf\nmap_Kd leaf.png\nmap_d mask.png\n"
+          "newmtl cutout\nmap_d mask.png\n");
+  auto m = loadMesh(d.write("t.obj", std::string("mtllib t.mtl\n") + kQuad +
+                                         "vt 0 0\nvt 1 0\nvt 1 1\nusemtl glass\nf 1/1 2/2 3/3\nusemtl solid\nf 1/1 3/3 4/1\n"
+                                         "usemtl inverted\nf 1/1 2/2 4/1\nusemtl leaf\nf 2/2 3/3 4/1\nusemtl cutout\nf 1/1 2/2 3/3\n"));
+  ASSERT_TRUE(m) << m.error();
+  const MeshMaterial* glass = material(*m, "glass");
+  ASSERT_TRUE(glass);
+  EXPECT_EQ(glass->alpha, MeshMaterial::Alpha::Blend);
+  EXPECT_FLOAT_EQ(glass->opacity, 0.3f);
+  EXPECT_EQ(material(*m, "solid")->alpha, MeshMaterial::Alpha::Opaque);
+  const MeshMaterial* inverted = material(*m, "inverted");
+  EXPECT_EQ(inverted->alpha, MeshMaterial::Alpha::Opaque);
+  EXPECT_EQ(inverted->opacity, 1.0f);
+  EXPECT_TRUE(anyWarning(*m, "t.mtl line 5: material 'inverted' is wholly transparent")) << m->report.toJson();
+  // The leaf's map: its red, with the mask's grey as alpha (the mask stretched over it).
+  const MeshMaterial* leaf = material(*m, "leaf");
+  EXPECT_EQ(leaf->alpha, MeshMaterial::Alpha::Blend);
+  ASSERT_GE(leaf->diffuseMap, 0);
+  EXPECT_EQ(leaf->opacityMap, -1);
+  const ImageRGBA8& folded = m->textures[std::size_t(leaf->diffuseMap)].image;
+  ASSERT_EQ(folded.width, 4);
+  ASSERT_EQ(folded.height, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 4; ++x) {
+      const std::uint8_t* px = &folded.pixels[(std::size_t(y) * 4 + std::size_t(x)) * 4];
+      EXPECT_EQ(px[0], 255);
+      EXPECT_EQ(px[1], 0);
+      EXPECT_EQ(px[3], x < 2 ? 0 : 255) << x << "," << y;
+    }
+  // map_d alone: white, the mask as alpha, at the mask's size.
+  const MeshMaterial* cutout = material(*m, "cutout");
+  ASSERT_GE(cutout->diffuseMap, 0);
+  const ImageRGBA8& white = m->textures[std::size_t(cutout->diffuseMap)].image;
+  ASSERT_EQ(white.width, 2);
+  EXPECT_EQ(white.pixels, (std::vector<std::uint8_t>{255, 255, 255, 0, 255, 255, 255, 255}));
+  // Only the folded maps are kept for drawing, not leaf.png and mask.png apart.
+  EXPECT_EQ(m->textures.size(), 2u);
+  EXPECT_TRUE(m->seeThrough);
+}
+
 }  // namespace
 }  // namespace npr
