@@ -380,16 +380,16 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // ---------------------------------------------------------------------------------------
 // The surfaces
 
-Status Renderer::drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared) {
+Status Renderer::drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared, const PartDraw* draw) {
   Status status = okStatus();
   scene_.forEach([&](Model& m) {
-    if (status) status = drawModel(frame, m, output, &m != prepared);
+    if (status) status = drawModel(frame, m, output, &m != prepared, draw);
   });
   if (!status || scene_.empty()) return status;
-  return drawGround(frame, output);
+  return drawGround(frame, output, draw);
 }
 
-Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool preparePalettes) {
+Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool preparePalettes, const PartDraw* draw) {
   const RenderSettings& s = view.settings;
   const CameraMatrices placed = model.placed(view.camera);
   if (output == gl::MeshOutput::Colour && preparePalettes) {
@@ -401,13 +401,13 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
   // The model's materials, once for every part (a part keeps every material: the same rows).
   GpuMaterials& materials = model.materials();
   if (s.materials || materials.coverage()) materials.update(model.mesh(), lighting_, stats_);
-  auto draw = [&](GpuMesh& gpu, TriangleShadingCache& triangles, const GpuPalette* palette, float detail) {
+  auto drawOne = [&](GpuMesh& gpu, TriangleShadingCache& triangles, const GpuPalette* palette, float detail) {
     FrameContext frame{placed, view.viewport, s, lighting_, gpu, model.mesh(), materials, palette, pattern_, triangles, programs_, stats_, emptyVao_, output};
     frame.sceneView = view.camera.view;
     frame.turnResolve = turnResolveFor(s, palette, output);
     frame.cullBackFaces = cullBackFaces;
     frame.axisDetail = detail;
-    return drawPart(view, &model, frame, s.path);
+    return draw ? (*draw)(view, &model, frame) : drawPart(view, &model, frame, s.path);
   };
   GpuPalette* main = mainPaletteOf(model);
   // Its own tone range's matchers while it draws (per-object fitting; slot 0 otherwise).
@@ -416,17 +416,17 @@ Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output,
     ToneSlot(const Renderer& renderer, int slot) : r(renderer) { r.selectToneSlot(slot); }
     ~ToneSlot() { r.selectToneSlot(0); }
   } toneSlot(*this, model.toneSlot);
-  if (model.parts().empty() || !s.materials) return draw(model.gpu(), model.triangles(), main, model.detail());
+  if (model.parts().empty() || !s.materials) return drawOne(model.gpu(), model.triangles(), main, model.detail());
   // One draw of the path per palette, each over its part of the model; depth testing across
   // the parts keeps the nearest surface, whichever part is drawn first.
   for (auto& part : model.parts())
-    if (Status st = draw(part->gpu, part->triangles, part->palette ? part->palette : main, part->detail.value_or(model.detail()));
+    if (Status st = drawOne(part->gpu, part->triangles, part->palette ? part->palette : main, part->detail.value_or(model.detail()));
         !st)
       return st;
   return okStatus();
 }
 
-Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
+Status Renderer::drawGround(FrameView& view, gl::MeshOutput output, const PartDraw* draw) {
   if (!view.settings.ground || !palette_) return okStatus();
   Model* ground = prepareGround();
   if (!ground) return okStatus();
@@ -436,7 +436,7 @@ Status Renderer::drawGround(FrameView& view, gl::MeshOutput output) {
   FrameContext frame{view.camera, view.viewport, plain, lighting_, ground->gpu(), ground->mesh(), ground->materials(), palette_.get(), pattern_,
                      ground->triangles(), programs_, stats_, emptyVao_, output};
   frame.sceneView = view.camera.view;
-  return drawPart(view, nullptr, frame, plain.path);
+  return draw ? (*draw)(view, nullptr, frame) : drawPart(view, nullptr, frame, plain.path);
 }
 
 bool Renderer::backFacesHidden(const Model& model, const CameraMatrices& placed, const RenderSettings& s) {
@@ -529,17 +529,13 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
   if (Status st = applyPoses(s); !st) return st;
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
+  FrameView frame = frameView(camera, s, viewport, false);
   clearViewport(viewport);
-  Status result = okStatus();
-  scene_.forEach([&](Model& m) {
-    if (!result) return;
-    const CameraMatrices placed = m.placed(camera);
-    preparePattern(&m, placed, s, viewport);
-    prepareOrientation(s);
-    FrameContext frame{placed, viewport, s, lighting_, m.gpu(), m.mesh(), m.materials(), palette_.get(), pattern_, m.triangles(), programs_, stats_, emptyVao_};
-    frame.sceneView = camera.view;
-    if (palette_->oriented(pattern_)) result = drawStrokeAngles(frame);
-  });
+  // The colour frame's surfaces, each part drawing its palette's stroke angles instead of its texels.
+  const PartDraw angles = [](FrameView&, const Model*, FrameContext& f) {
+    return f.palette && f.palette->oriented(f.pattern) ? drawStrokeAngles(f) : okStatus();
+  };
+  const Status result = drawScene(frame, gl::MeshOutput::Colour, nullptr, &angles);
   gl::restoreDefaults();
   return result;
 }

@@ -130,8 +130,9 @@ class Renderer {
   [[nodiscard]] Status renderSelection(const CameraMatrices& camera, const RenderSettings& settings, SelectionOutput output,
                                        const glm::ivec4& viewport);
   // Each pixel's hatching stroke angle on screen for `settings.orient` (radians in red, 1 in
-  // green where there is one; read from a float target). All invalid when the palette has no
-  // entry with a stroke direction.
+  // green where there is one; read from a float target), through the colour frame's surfaces:
+  // each model, part and the ground with its own palette's orientation. All invalid where that
+  // palette has no entry with a stroke direction.
   [[nodiscard]] Status renderStrokeAngles(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
   // The scene's interpolated eye-space position or normal (read from a float target).
   [[nodiscard]] Status renderGeometry(const CameraMatrices& camera, GeometryOutput output, const glm::ivec4& viewport);
@@ -209,13 +210,16 @@ class Renderer {
   Status prepareFeatures(FrameView& frame);
   // Depth and stencil cleared in the viewport only (the split view draws two).
   void clearViewport(const glm::ivec4& viewport);
-  // The scene's surfaces with the path: every model's parts, then the ground. Colour frames set
-  // each model's pattern and orientation in the palettes first, but for `prepared`'s (done).
-  Status drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared);
-  // One model's parts (or the whole model) with the path.
-  Status drawModel(FrameView& frame, Model& model, gl::MeshOutput output, bool preparePalettes);
-  // The ground plane with the path's own pass, after the models (--ground).
-  Status drawGround(FrameView& frame, gl::MeshOutput output);
+  // What each part of the scene is drawn with; drawPart (the path) unless a frame of another
+  // kind says otherwise (renderStrokeAngles).
+  using PartDraw = std::function<Status(FrameView&, const Model*, FrameContext&)>;
+  // The scene's surfaces with the path (or `draw`): every model's parts, then the ground. Colour
+  // frames set each model's pattern placement and orientation first, but for `prepared`'s (done).
+  Status drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared, const PartDraw* draw = nullptr);
+  // One model's parts (or the whole model) with the path (or `draw`).
+  Status drawModel(FrameView& frame, Model& model, gl::MeshOutput output, bool preparePalettes, const PartDraw* draw);
+  // The ground plane with the path's own pass (or `draw`), after the models (--ground).
+  Status drawGround(FrameView& frame, gl::MeshOutput output, const PartDraw* draw);
   // One part of the scene (a model, a per-material part, the ground) with the active
   // features' share: the path, then the control-image palettes over it.
   Status drawPart(FrameView& view, const Model* model, FrameContext& frame, RenderPath path);
