@@ -117,7 +117,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
       std::map<int, std::vector<FeatureLine>> byEntry;
       for (const FeatureLine& l : mine) {
         const glm::vec3 at = glm::vec3(camera.view * glm::vec4(0.5f * (l.a + l.b), 1.0f));
-        glm::vec3 n = normalToEye * l.normal;
+        glm::vec3 n = normalToEye * l.attributes.normal;
         n = glm::dot(n, n) > 1e-12f ? glm::normalize(n) : glm::normalize(-at);
         byEntry[palette->matcher()->match(shade(lit, at, n, false))].push_back(l);
       }

@@ -600,7 +600,7 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
     if (set && !set->materials.empty()) {
       const std::vector<MeshMaterial>& materials = m.mesh().materials;
       const auto taken = [&](std::uint16_t i) { return i < materials.size() && set->takesMaterial(materials[i].name); };
-      lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !taken(l.materials.x) && !taken(l.materials.y); }),
+      lines.erase(std::remove_if(lines.begin(), lines.end(), [&](const FeatureLine& l) { return !taken(l.attributes.materials.x) && !taken(l.attributes.materials.y); }),
                   lines.end());
     }
     if (!isIdentity(m.transform())) {
@@ -608,8 +608,8 @@ std::vector<FeatureLine> Renderer::featureLines(const CameraMatrices& camera, co
       for (FeatureLine& l : lines) {
         l.a = glm::vec3(m.transform() * glm::vec4(l.a, 1.0f));
         l.b = glm::vec3(m.transform() * glm::vec4(l.b, 1.0f));
-        const glm::vec3 n = normals * l.normal;
-        l.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f);
+        const glm::vec3 n = normals * l.attributes.normal;
+        l.attributes.normal = glm::dot(n, n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f);
       }
     }
     out.insert(out.end(), lines.begin(), lines.end());

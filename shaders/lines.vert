@@ -24,7 +24,7 @@ layout(location = 2) in float aKind;
 layout(location = 3) in vec2 aParam;   // the stroke's parameter at the start and the end
 layout(location = 4) in vec2 aArc;     // the distance from the chain's start to them
 layout(location = 5) in float aLength; // the chain's length; negative: a closed loop
-layout(location = 6) in uint aMaterials;  // the faces' materials on either side, 16 bits each
+layout(location = 6) in uvec2 aMaterials;  // the faces' materials on either side
 layout(location = 7) in vec2 aCurvature;  // the surface's at the start and the end (0: not known)
 layout(location = 8) in float aInk;       // how much of its ink the line draws (suggestive contours fade in)
 
@@ -107,7 +107,7 @@ void main() {
 #endif
   bool drop = p0.w <= 0.0 || p1.w <= 0.0;  // crosses the eye plane
 #ifdef BY_MATERIAL
-  drop = drop || !(taken(aMaterials & 0xFFFFu) || taken(aMaterials >> 16));
+  drop = drop || !(taken(aMaterials.x) || taken(aMaterials.y));
 #endif
   if (drop) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);

@@ -26,9 +26,11 @@ inline constexpr int kEdgeKinds = 6;
 // A line's faces' materials (Mesh::materials) where it has them: line sets select by them.
 inline constexpr std::uint16_t kNoMaterial = 0xFFFF;
 
-struct FeatureLine {
-  glm::vec3 a, b;
-  float kind;  // EdgeKind
+// What a line carries besides its ends: one value per segment (or per end), kept with the
+// segment when lines are chained (line_chains.h) and streamed to lines.vert as it is laid out
+// here (line_pass.cpp's kLineStreams). A new per-line value is a field here, set where lines are
+// found, a row in kLineStreams and an input in lines.vert.
+struct LineAttributes {
   // The materials of the faces on either side (a silhouette's front face first; a boundary's
   // one face twice); kNoMaterial where the mesh has none or the line is not on a face's edge
   // (suggestive contours, intersections).
@@ -43,6 +45,12 @@ struct FeatureLine {
   // The surface's normal there (the front face's for a silhouette, the two faces' mean for a
   // crease; zero where unknown): what a line set with colour=tone is lit with.
   glm::vec3 normal{0.0f};
+};
+
+struct FeatureLine {
+  glm::vec3 a, b;
+  float kind;  // EdgeKind
+  LineAttributes attributes = {};
 };
 
 class FeatureEdges {
@@ -93,10 +101,10 @@ class FeatureEdges {
   std::vector<float> curvature_;  // per welded vertex (empty: not estimated)
   float medianCurvature_ = 1.0f;
   FeatureLine line(std::uint32_t v0, std::uint32_t v1, EdgeKind kind, glm::u16vec2 materials, const glm::vec3& normal) const {
-    FeatureLine l{positions_[v0], positions_[v1], float(kind), materials};
-    if (!curvature_.empty()) l.curvature = {curvature_[v0], curvature_[v1]};
+    FeatureLine l{positions_[v0], positions_[v1], float(kind), {materials}};
+    if (!curvature_.empty()) l.attributes.curvature = {curvature_[v0], curvature_[v1]};
     const float n = glm::length(normal);
-    if (n > 0.0f) l.normal = normal / n;
+    if (n > 0.0f) l.attributes.normal = normal / n;
     return l;
   }
   glm::vec3 normalOf(std::uint32_t face) const { return face < faceNormals_.size() ? faceNormals_[face] : glm::vec3(0.0f); }

@@ -90,7 +90,7 @@ class Hierarchy {
             };
             FeatureLine l{from, to, float(EdgeKind::Intersection)};
             const glm::vec3 n = unitNormal(ti) + unitNormal(tj);
-            if (glm::length(n) > 1e-6f) l.normal = glm::normalize(n);
+            if (glm::length(n) > 1e-6f) l.attributes.normal = glm::normalize(n);
             out.push_back(l);
           }
         }

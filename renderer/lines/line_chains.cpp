@@ -269,13 +269,9 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
       // keeps its own way round (the sketchy strokes' jitter hashes its ends in order).
       for (std::size_t i = 0; i + 1 < nv; ++i) {
         const glm::vec2 p(params[i], paramOf(i + 1, group[i]));
-        const glm::u16vec2 m = lines[b + segs[i]].materials;
-        const std::uint32_t materials = std::uint32_t(m.x) | std::uint32_t(m.y) << 16;
-        const glm::vec2 curvature = lines[b + segs[i]].curvature;  // its ends stay its own (see above)
-        const float ink = lines[b + segs[i]].ink;
-        const glm::vec3 normal = lines[b + segs[i]].normal;
-        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, materials, curvature, ink, normal});
-        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, materials, curvature, ink, normal});
+        const LineAttributes& at = lines[b + segs[i]].attributes;  // its ends stay its own (see above)
+        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, at});
+        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, at});
       }
       ++chainId;
     }

@@ -20,17 +20,14 @@
 
 namespace npr {
 
-// One segment as lines.vert reads it (attributes 0-9).
+// One segment as lines.vert reads it (line_pass.cpp's kLineStreams).
 struct ChainedLine {
   glm::vec3 a, b;
   float kind;         // EdgeKind
   glm::vec2 param;    // the stroke's parameter at a and at b (object units)
   glm::vec2 arc;      // the distance along the chain from its start to a and to b
   float length;       // the chain's length; negative for a closed loop (it has no ends)
-  std::uint32_t materials;  // the faces' materials (FeatureLine::materials), low 16 bits first
-  glm::vec2 curvature;      // the surface's at a and b (FeatureLine::curvature)
-  float ink;                // FeatureLine::ink
-  glm::vec3 normal;         // FeatureLine::normal
+  LineAttributes attributes;  // the segment's own, as found (its ends keep their way round)
 };
 
 // A step of a chain: a segment, walked from its second end to its first when `reversed`.

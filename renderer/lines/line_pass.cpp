@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 
 #include "renderer/core/elapsed.h"
@@ -13,6 +14,28 @@
 
 namespace npr {
 namespace {
+
+// How a buffer of ChainedLines reaches lines.vert: one row per input (its location), read once
+// per instance (per segment). Integer types are read as integers.
+struct LineStream {
+  GLuint location;
+  GLint components;
+  GLenum type;
+  std::size_t offset;
+};
+constexpr std::size_t kAttributes = offsetof(ChainedLine, attributes);
+const LineStream kLineStreams[] = {
+    {0, 3, GL_FLOAT, offsetof(ChainedLine, a)},
+    {1, 3, GL_FLOAT, offsetof(ChainedLine, b)},
+    {2, 1, GL_FLOAT, offsetof(ChainedLine, kind)},
+    {3, 2, GL_FLOAT, offsetof(ChainedLine, param)},
+    {4, 2, GL_FLOAT, offsetof(ChainedLine, arc)},
+    {5, 1, GL_FLOAT, offsetof(ChainedLine, length)},
+    {6, 2, GL_UNSIGNED_SHORT, kAttributes + offsetof(LineAttributes, materials)},
+    {7, 2, GL_FLOAT, kAttributes + offsetof(LineAttributes, curvature)},
+    {8, 1, GL_FLOAT, kAttributes + offsetof(LineAttributes, ink)},
+    {9, 3, GL_FLOAT, kAttributes + offsetof(LineAttributes, normal)},
+};
 // Object units a screen pixel spans at the lines' origin (the object's centre).
 float centrePixel(const CameraMatrices& placed, const glm::ivec4& viewport) {
   const float pixel = 2.0f / (placed.projection[1][1] * float(std::max(viewport.w, 1)));
@@ -244,23 +267,13 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       if (r.count == 0) continue;
       glBindBuffer(GL_ARRAY_BUFFER, r.buffer->id());
       const auto base = static_cast<std::uintptr_t>(r.first * sizeof(ChainedLine));
-      const auto attribute = [&](GLuint a, int components, std::size_t offset) {
-        glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, components, GL_FLOAT, GL_FALSE, sizeof(ChainedLine), reinterpret_cast<void*>(base + offset));
-        glVertexAttribDivisor(a, GLuint(repeat));
-      };
-      attribute(0, 3, offsetof(ChainedLine, a));
-      attribute(1, 3, offsetof(ChainedLine, b));
-      attribute(2, 1, offsetof(ChainedLine, kind));
-      attribute(3, 2, offsetof(ChainedLine, param));
-      attribute(4, 2, offsetof(ChainedLine, arc));
-      attribute(5, 1, offsetof(ChainedLine, length));
-      glEnableVertexAttribArray(6);
-      glVertexAttribIPointer(6, 1, GL_UNSIGNED_INT, sizeof(ChainedLine), reinterpret_cast<void*>(base + offsetof(ChainedLine, materials)));
-      glVertexAttribDivisor(6, GLuint(repeat));
-      attribute(7, 2, offsetof(ChainedLine, curvature));
-      attribute(8, 1, offsetof(ChainedLine, ink));
-      attribute(9, 3, offsetof(ChainedLine, normal));
+      for (const LineStream& in : kLineStreams) {
+        glEnableVertexAttribArray(in.location);
+        const auto at = reinterpret_cast<void*>(base + in.offset);
+        if (in.type == GL_FLOAT) glVertexAttribPointer(in.location, in.components, in.type, GL_FALSE, sizeof(ChainedLine), at);
+        else glVertexAttribIPointer(in.location, in.components, in.type, sizeof(ChainedLine), at);
+        glVertexAttribDivisor(in.location, GLuint(repeat));
+      }
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(r.count) * repeat);
       stats.lines += static_cast<int>(r.count);
       ++stats.drawCalls;

@@ -76,8 +76,8 @@ const std::vector<FeatureLine>& SuggestiveContours::lines(const glm::vec3& eye, 
       }
       if (found == 2 && ink > 0.0f) {
         FeatureLine l{ends[0], ends[1], float(EdgeKind::Suggestive)};
-        l.ink = ink;
-        l.normal = normal / std::sqrt(area2);
+        l.attributes.ink = ink;
+        l.attributes.normal = normal / std::sqrt(area2);
         out.push_back(l);
       }
     }

@@ -316,15 +316,15 @@ TEST(SuggestiveContours, ContoursFadeInInsteadOfPoppingAsTheViewTurns) {
     for (const FeatureLine& l : lines) {
       const glm::vec3 m = 0.5f * (l.a + l.b);
       const double len = glm::length(l.b - l.a);
-      EXPECT_GT(l.ink, 0.0f);
-      EXPECT_LE(l.ink, 1.0f);
+      EXPECT_GT(l.attributes.ink, 0.0f);
+      EXPECT_LE(l.attributes.ink, 1.0f);
       length += len;
-      ink += len * l.ink;
+      ink += len * l.attributes.ink;
       bool seen = frame == 0;
       for (const glm::vec3& p : before) seen = seen || glm::length(p - m) < 0.05f * bunny->radius;
       if (!seen) {
         appearedLength += len;
-        appearedInk += len * l.ink;
+        appearedInk += len * l.attributes.ink;
       }
       now.push_back(m);
     }
@@ -358,11 +358,11 @@ TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
   for (const FeatureLine& l : lines) {
     const bool top = l.a.y == 1.0f && l.b.y == 1.0f;
     const glm::u16vec2 want = top ? glm::u16vec2(0, 1) : glm::u16vec2(0, 0);
-    EXPECT_TRUE(l.materials == want || l.materials == glm::u16vec2(want.y, want.x)) << "kind " << l.kind << " at y " << l.a.y << ", " << l.b.y;
+    EXPECT_TRUE(l.attributes.materials == want || l.attributes.materials == glm::u16vec2(want.y, want.x)) << "kind " << l.kind << " at y " << l.a.y << ", " << l.b.y;
   }
   for (const FeatureLine& l : edges.silhouettes(glm::vec3(3.0f, 2.0f, 2.5f))) {
     const bool top = l.a.y == 1.0f && l.b.y == 1.0f;
-    EXPECT_EQ(l.materials.x == 1 || l.materials.y == 1, top);
+    EXPECT_EQ(l.attributes.materials.x == 1 || l.attributes.materials.y == 1, top);
   }
   // One material: none.
   m.faceMaterials.assign(12, 0);
@@ -371,7 +371,7 @@ TEST(FeatureEdges, MaterialBoundariesAreTheEdgesBetweenTwoMaterials) {
   // No materials at all: none named.
   m.faceMaterials.clear();
   FeatureEdges none(m);
-  for (const FeatureLine& l : none.staticLines(60.0f)) EXPECT_EQ(l.materials, glm::u16vec2(kNoMaterial));
+  for (const FeatureLine& l : none.staticLines(60.0f)) EXPECT_EQ(l.attributes.materials, glm::u16vec2(kNoMaterial));
 }
 
 
