@@ -12,7 +12,7 @@
 //  PATH_EYE_POSITION, PATH_EYE_NORMAL  interpolated geometry, for accuracy references
 //  PATH_STROKE_ANGLE  the pixel's hatching angle on screen (radians, valid) for the stencil path
 // ORIENT_FIELD, ORIENT_LIGHT or ORIENT_FIXED: where the hatching angle comes from (orientation.glsl).
-// SCREEN_OCCLUSION reads this frame's screen-space occlusion where OCCLUSION reads the bake.
+// SCREEN_OCCLUSION reads this frame's screen-space occlusion where OCCLUSION reads the bake (occlusion.glsl).
 // MATERIALS lights with the mesh's own material, vertex colour and diffuse map (per pixel;
 // the per-vertex paths light in mesh.vert with the map's average around each vertex).
 // OUTPUT_ENTRY writes the chosen palette entry (entry / 255 in red; with a two-dimensional
@@ -44,34 +44,7 @@ in vec3 vNormal;
 #if defined(ORIENT_FIELD) || defined(ORIENT_LIGHT)
 in vec2 vStrokeDirection;
 #endif
-#if defined(SCREEN_OCCLUSION)
-uniform sampler2D uScreenOcclusion;  // this frame's, 1 open (shadows/screen_occlusion_pass.h)
-uniform vec4 uScreenOcclusionFrame;  // the viewport's origin, texels per pixel
-uniform float uOcclusionStrength;
-// The half-resolution estimate at this pixel: the four texels around it, bilinear weights
-// scaled down where a texel's depth is not this surface's (no halo across silhouettes).
-float screenOcclusion() {
-  vec2 t = (gl_FragCoord.xy - uScreenOcclusionFrame.xy) * uScreenOcclusionFrame.zw - 0.5;
-  ivec2 base = ivec2(floor(t));
-  vec2 f = t - vec2(base);
-  ivec2 top = textureSize(uScreenOcclusion, 0) - 1;
-  float z = -vPosition.z, sum = 0.0, weight = 0.0;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      vec2 s = texelFetch(uScreenOcclusion, clamp(base + ivec2(i, j), ivec2(0), top), 0).rg;
-      float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y) / (abs(s.y - z) + 0.01 * z + 1e-6);
-      sum += w * s.x;
-      weight += w;
-    }
-  return weight > 0.0 ? sum / weight : 1.0;
-}
-#define OCCLUSION_FACTOR mix(1.0, screenOcclusion(), uOcclusionStrength)
-#elif defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
-in float vOcclusion;
-#define OCCLUSION_FACTOR vOcclusion
-#else
-#define OCCLUSION_FACTOR 1.0
-#endif
+#include "occlusion.glsl"
 #if defined(PATH_VERTEX) || defined(PATH_GOURAUD)
 in vec3 vColorFront;
 in vec3 vColorBack;
