@@ -18,14 +18,12 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (f.shadows) variant.shadowLayers = f.shadows->layers();
-  const bool perPixel = shading == gl::MeshShading::Pixel || shading == gl::MeshShading::Smooth || shading == gl::MeshShading::Phong;
-  variant.screenOcclusion = f.screenOcclusion && perPixel;
-  variant.groundShadowMap = f.groundShadows && perPixel && variant.shadowLayers > 0;
-  variant.occlusion = !f.screenOcclusion && shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
+  variant.occlusion = shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (palette) {
     variant.palette = f.paletteVariant(palette);
     variant.stroke = f.strokeSource(palette);
   }
+  for (std::size_t i = 0; i < f.inputCount; ++i) f.inputs[i]->addTo(variant, f);
   return variant;
 }
 
@@ -41,8 +39,7 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   if (palette) f.bindPalette(p, palette);
   if (f.shadows) f.shadows->bind(p, f.sceneView);
   if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
-  if (variant.screenOcclusion) f.screenOcclusion->bind(p, f.viewport);
-  if (variant.groundShadowMap) f.groundShadows->bind(p);
+  for (std::size_t i = 0; i < f.inputCount; ++i) f.inputs[i]->bind(p, variant, f);
 }
 
 }  // namespace npr

@@ -4,6 +4,9 @@
 // and sets its fixed-function state from the presets in gl/pass_state.h.
 #pragma once
 
+#include <array>
+#include <cstddef>
+
 #include <glm/glm.hpp>
 
 #include "renderer/core/camera.h"
@@ -17,13 +20,27 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/render_settings.h"
 #include "renderer/shading/triangle_shading_cache.h"
-#include "renderer/shadows/ground_shadow_pass.h"
-#include "renderer/shadows/screen_occlusion_pass.h"
 #include "renderer/shadows/shadow_maps.h"
 
 namespace npr {
 
 class TurnResolvePass;
+struct FrameContext;
+
+// A feature's share of the GPU-lit surface programs (paths/lit_mesh_program.h): what it adds to
+// a pass's variant (a typed field, whose define selects its GLSL: a file of its own that
+// mesh.frag includes) and what it binds. A feature hands it to each surface pass it reads into
+// (Feature::shade, FrameContext::addInput), so the passes keep no field for it. Inputs add in
+// the feature table's order: a later one may override an earlier one's choice (screen-space
+// occlusion replaces the bake).
+class SurfaceInput {
+ public:
+  virtual void addTo(gl::MeshProgram& variant, const FrameContext& frame) const = 0;
+  virtual void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const = 0;
+
+ protected:
+  ~SurfaceInput() = default;
+};
 
 struct FrameContext {
   const CameraMatrices& camera;  // placed by the model's transform (the scene's view times it)
@@ -47,10 +64,13 @@ struct FrameContext {
   glm::mat4 sceneView{1.0f};
   // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
-  // The ground's shadow texture, when this pass draws the ground and the texture is ready.
-  const GroundShadowPass* groundShadows = nullptr;
-  // This frame's screen-space occlusion, when on (per-pixel shadings read it instead of the bake).
-  const ScreenOcclusionPass* screenOcclusion = nullptr;
+  // The features' inputs to this pass's GPU-lit programs (SurfaceInput), in table order.
+  static constexpr std::size_t kMaxInputs = 8;
+  std::array<const SurfaceInput*, kMaxInputs> inputs{};
+  std::size_t inputCount = 0;
+  void addInput(const SurfaceInput* input) {
+    if (inputCount < kMaxInputs) inputs[inputCount++] = input;
+  }
   // Control-image palettes (passes/control_palette_pass.h), when loaded.
   const GpuPalette* shadowPalette = nullptr;
   const GpuPalette* occlusionPalette = nullptr;

@@ -145,7 +145,9 @@ TEST_F(Shadows, CubeShadowOnTheGroundIsDarkerInEveryPath) {
 
 TEST_F(Shadows, GroundShadowTextureAgreesWithPerPixelLookups) {
   // The ground's shadows read from its texture choose the entries the per-pixel lookups choose,
-  // but along the shadow's soft edge, for each kind of light.
+  // but along the shadow's soft edge, for each kind of light. Somewhere along those edges the
+  // two differ: the ground does read its texture (on this machine 6, 11, 0 and 8 pixels).
+  int edgeDifferences = 0;
   for (const glm::vec4 position : {glm::vec4(1.0f, 1.0f, 0.3f, 0.0f), glm::vec4(2.0f, 2.0f, 0.5f, 1.0f)}) {
     light(position);
     for (RenderPath path : {RenderPath::Pixel, RenderPath::Smooth}) {
@@ -162,8 +164,10 @@ TEST_F(Shadows, GroundShadowTextureAgreesWithPerPixelLookups) {
       const int shadowPixels = test::countDiffering(perPixel, unshadowed);
       EXPECT_GT(shadowPixels, 1500) << "the scene must show a shadow";
       EXPECT_LT(test::countDiffering(perPixel, textured), shadowPixels / 20) << "w " << position.w;
+      edgeDifferences += test::countDiffering(perPixel, textured);
     }
   }
+  EXPECT_GT(edgeDifferences, 0) << "the ground's shadow texture is not read";
 }
 
 TEST_F(Shadows, GoochToneCoolsInCastShadow) {

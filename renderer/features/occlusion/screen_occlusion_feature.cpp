@@ -5,13 +5,14 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
+#include "renderer/paths/lit_mesh_program.h"
 #include "renderer/paths/render_pass.h"
 #include "renderer/shadows/screen_occlusion_pass.h"
 
 namespace npr {
 namespace {
 
-class ScreenOcclusionFeature final : public Feature {
+class ScreenOcclusionFeature final : public Feature, SurfaceInput {
  public:
   const char* name() const override { return "occlusion (screen)"; }
   bool active(const FrameView& f) const override {
@@ -29,7 +30,16 @@ class ScreenOcclusionFeature final : public Feature {
     return okStatus();
   }
   void shade(const FrameView&, const Model*, FrameContext& frame) override {
-    if (ready_) frame.screenOcclusion = &pass_;
+    if (ready_) frame.addInput(this);
+  }
+  // The per-pixel shadings read this frame's estimate (occlusion.glsl) instead of the bake;
+  // the others draw no occlusion while it is on.
+  void addTo(gl::MeshProgram& variant, const FrameContext&) const override {
+    variant.screenOcclusion = shadesPerPixel(variant.shading);
+    variant.occlusion = false;
+  }
+  void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
+    if (variant.screenOcclusion) pass_.bind(program, frame.viewport);
   }
 
  private:

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
+#include "renderer/paths/lit_mesh_program.h"
 #include "renderer/paths/render_pass.h"
 #include "renderer/shadows/ground_shadow_pass.h"
 #include "renderer/shadows/shadow_maps.h"
@@ -36,12 +37,24 @@ class ShadowsFeature final : public Feature {
   void shade(const FrameView& f, const Model* model, FrameContext& frame) override {
     if (!ready_) return;
     frame.shadows = &maps_;
-    if (!model && f.settings.tuning.groundShadowTexture && groundShadows_.ready()) frame.groundShadows = &groundShadows_;
+    if (!model && f.settings.tuning.groundShadowTexture && groundShadows_.ready()) frame.addInput(&groundInput_);
   }
 
  private:
+  // The ground's per-pixel shadings read its shadow texture instead of the maps.
+  struct GroundInput final : SurfaceInput {
+    const GroundShadowPass& pass;
+    explicit GroundInput(const GroundShadowPass& p) : pass(p) {}
+    void addTo(gl::MeshProgram& variant, const FrameContext&) const override {
+      variant.groundShadowMap = shadesPerPixel(variant.shading) && variant.shadowLayers > 0;
+    }
+    void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext&) const override {
+      if (variant.groundShadowMap) pass.bind(program);
+    }
+  };
   ShadowMaps maps_;
   GroundShadowPass groundShadows_;
+  GroundInput groundInput_{groundShadows_};
   bool ready_ = false;
 };
 
