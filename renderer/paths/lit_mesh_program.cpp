@@ -38,7 +38,7 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   }
   if (palette) f.bindPalette(p, palette);
   if (f.shadows) f.shadows->bind(p, f.sceneView);
-  if (variant.occlusion || variant.screenOcclusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
+  if (variant.occlusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   for (std::size_t i = 0; i < f.inputCount; ++i) f.inputs[i]->bind(p, variant, f);
 }
 

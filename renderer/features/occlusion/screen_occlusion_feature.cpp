@@ -39,7 +39,9 @@ class ScreenOcclusionFeature final : public Feature, SurfaceInput {
     variant.occlusion = false;
   }
   void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
-    if (variant.screenOcclusion) pass_.bind(program, frame.viewport);
+    if (!variant.screenOcclusion) return;
+    pass_.bind(program, frame.viewport);
+    program.set("uOcclusionStrength", std::clamp(frame.settings.occlusionStrength, 0.0f, 1.0f));
   }
 
  private:
