@@ -1,7 +1,6 @@
 // GPU-lit mesh programs (see lit_mesh_program.h).
 #include "renderer/paths/lit_mesh_program.h"
 
-#include <algorithm>
 
 #include "renderer/lighting/lighting_uniforms.h"
 #include "renderer/lighting/mesh_materials.h"
@@ -18,7 +17,6 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
   if (f.shadows) variant.shadowLayers = f.shadows->layers();
-  variant.occlusion = shading != gl::MeshShading::LitTextured && f.settings.occlusion && f.gpuMesh.hasOcclusion();
   if (palette) {
     variant.palette = f.paletteVariant(palette);
     variant.stroke = f.strokeSource(palette);
@@ -38,7 +36,6 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
   }
   if (palette) f.bindPalette(p, palette);
   if (f.shadows) f.shadows->bind(p, f.sceneView);
-  if (variant.occlusion) p.set("uOcclusionStrength", std::clamp(f.settings.occlusionStrength, 0.0f, 1.0f));
   for (std::size_t i = 0; i < f.inputCount; ++i) f.inputs[i]->bind(p, variant, f);
 }
 

@@ -1,7 +1,7 @@
 // The program and uniforms of a GPU-lit mesh pass (mesh.vert + mesh.frag lighting on the GPU):
-// lights or the mesh's own materials, shadow maps, baked occlusion, a palette, and what the
-// active features add (SurfaceInput). Shared by
-// the single-pass paths (shaded_path.h) and the control-image palettes drawn over any path
+// lights or the mesh's own materials, shadow maps, a palette, and what the active features add
+// (SurfaceInput: baked and screen-space occlusion, the ground's shadow texture). Shared by the
+// single-pass paths (shaded_path.h) and the control-image palettes drawn over any path
 // (passes/control_palette_pass.h), so both light a pixel the same way.
 #pragma once
 

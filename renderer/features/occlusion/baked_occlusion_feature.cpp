@@ -1,6 +1,7 @@
 // Ambient occlusion baked per vertex (`--occlusion`, method baked) as a feature: each model's
 // bake runs the first frames that ask for it, within the frame's work budget, and the surface
 // passes of that model read its values (shadows/occlusion_bake.h).
+#include <algorithm>
 #include <memory>
 
 #include "renderer/features/feature.h"
@@ -9,7 +10,7 @@
 namespace npr {
 namespace {
 
-class BakedOcclusionFeature final : public Feature {
+class BakedOcclusionFeature final : public Feature, SurfaceInput {
  public:
   const char* name() const override { return "occlusion (baked)"; }
   bool active(const FrameView& f) const override { return f.settings.occlusion && f.settings.occlusionMethod == OcclusionMethod::Baked; }
@@ -34,7 +35,17 @@ class BakedOcclusionFeature final : public Feature {
     return status;
   }
   void shade(const FrameView&, const Model* model, FrameContext& frame) override {
-    if (model) frame.occlusion = model->occlusionValues();
+    if (!model) return;
+    frame.occlusion = model->occlusionValues();  // the per-triangle paths light with it on the CPU
+    frame.addInput(this);
+  }
+  // The GPU-lit passes read the bake from the mesh's occlusion stream once it is uploaded: per
+  // vertex (mesh.vert) or interpolated per pixel (occlusion.glsl).
+  void addTo(gl::MeshProgram& variant, const FrameContext& frame) const override {
+    variant.occlusion = variant.shading != gl::MeshShading::LitTextured && frame.gpuMesh.hasOcclusion();
+  }
+  void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
+    if (variant.occlusion) program.set("uOcclusionStrength", std::clamp(frame.settings.occlusionStrength, 0.0f, 1.0f));
   }
 };
 
