@@ -16,7 +16,6 @@ gl::MeshProgram litMeshProgram(const FrameContext& f, gl::MeshShading shading, c
   variant.materialMaps = materials && f.materials.hasMaps();
   variant.vertexColours = materials && !f.mesh.colours.empty();
   variant.lighting = materials ? materialFeatures(f.mesh, f.lighting) : f.lighting.features();
-  if (f.shadows) variant.shadowLayers = f.shadows->layers();
   if (palette) {
     variant.palette = f.paletteVariant(palette);
     variant.stroke = f.strokeSource(palette);
@@ -35,7 +34,6 @@ void bindLitMesh(const FrameContext& f, gl::ShaderProgram& p, const gl::MeshProg
     uploadLightingUniforms(p, prepareLighting<float>(f.lighting));
   }
   if (palette) f.bindPalette(p, palette);
-  if (f.shadows) f.shadows->bind(p, f.sceneView);
   for (std::size_t i = 0; i < f.inputCount; ++i) f.inputs[i]->bind(p, variant, f);
 }
 

@@ -12,7 +12,7 @@
 namespace npr {
 namespace {
 
-class ShadowsFeature final : public Feature {
+class ShadowsFeature final : public Feature, SurfaceInput {
  public:
   const char* name() const override { return "shadows"; }
   bool active(const FrameView& f) const override { return f.settings.shadows && !f.scene.empty(); }
@@ -36,12 +36,19 @@ class ShadowsFeature final : public Feature {
   }
   void shade(const FrameView& f, const Model* model, FrameContext& frame) override {
     if (!ready_) return;
-    frame.shadows = &maps_;
+    frame.shadows = &maps_;  // the per-triangle paths light with them on the GPU
+    frame.addInput(this);
     if (!model && f.settings.tuning.groundShadowTexture && groundShadows_.ready()) frame.addInput(&groundInput_);
+  }
+  // The GPU-lit passes look the maps up (shadows.glsl), with the scene's view.
+  void addTo(gl::MeshProgram& variant, const FrameContext&) const override { variant.shadowLayers = maps_.layers(); }
+  void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
+    if (variant.shadowLayers > 0) maps_.bind(program, frame.sceneView);
   }
 
  private:
-  // The ground's per-pixel shadings read its shadow texture instead of the maps.
+  // The ground's per-pixel shadings read its shadow texture instead of the maps (added after
+  // the maps' input, whose layers it needs).
   struct GroundInput final : SurfaceInput {
     const GroundShadowPass& pass;
     explicit GroundInput(const GroundShadowPass& p) : pass(p) {}
