@@ -58,11 +58,12 @@ struct FrameContext {
   const gl::VertexArray& emptyVao;   // for full-screen triangles (vertices made in the shader)
   // Palette paths write their texels, or the selection behind them (tests, the benchmark).
   gl::MeshOutput output = gl::MeshOutput::Colour;
-  // This frame's shadow maps, when shadows are on and some light has one; they are bound with
-  // the scene's view (eye to scene space), not the model's.
+  // This frame's shadow maps, when shadows are on and some light has one, and the baked ambient
+  // occlusion per vertex of this mesh, when on and baked: what the per-triangle paths light with
+  // (on the CPU or the GPU); the GPU-lit programs take theirs as inputs. Maps are bound with the
+  // scene's view (eye to scene space), not the model's.
   const ShadowMaps* shadows = nullptr;
   glm::mat4 sceneView{1.0f};
-  // The baked ambient occlusion per vertex of this mesh, when occlusion is on and baked.
   const std::vector<float>* occlusion = nullptr;
   // The features' inputs to this pass's GPU-lit programs (SurfaceInput), in table order.
   static constexpr std::size_t kMaxInputs = 8;
