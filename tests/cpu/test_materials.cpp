@@ -7,6 +7,7 @@
 
 #include "renderer/core/image_io.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/opacity_map.h"
 #include "renderer/mesh/texture_average.h"
 #include "support/test_util.h"
 
@@ -286,6 +287,26 @@ TEST(Materials, DAndTrAndMapDBecomeTheSurfacesAlpha) {
   // Only the folded maps are kept for drawing, not leaf.png and mask.png apart.
   EXPECT_EQ(m->textures.size(), 2u);
   EXPECT_TRUE(m->seeThrough);
+}
+
+// Folding an opacity map into a colour map of another size, or none, or an empty one: every
+// texel of the result is written from the opacity texel under it; nothing is read outside
+// either image (the sanitizer tier runs this).
+TEST(Materials, OpacityMapsFoldIntoColourMapsOfAnySize) {
+  const ImageRGBA8 grey{1, 5, std::vector<std::uint8_t>(1 * 5 * 4, 128)};  // opaque mid grey
+  const ImageRGBA8 colour{3, 1, std::vector<std::uint8_t>(3 * 1 * 4, 255)};
+  const ImageRGBA8 a = withOpacityMap(&colour, grey);
+  ASSERT_EQ(a.width, 3);
+  ASSERT_EQ(a.height, 1);
+  for (int x = 0; x < 3; ++x) EXPECT_EQ(a.pixels[std::size_t(x) * 4 + 3], 128);
+  const ImageRGBA8 b = withOpacityMap(nullptr, grey);  // no colour map: white at the mask's size
+  EXPECT_EQ(b.width, 1);
+  EXPECT_EQ(b.height, 5);
+  EXPECT_EQ(b.pixels[0], 255);
+  EXPECT_EQ(b.pixels[3], 128);
+  const ImageRGBA8 empty;
+  EXPECT_EQ(withOpacityMap(&colour, empty).pixels, colour.pixels);  // nothing to fold
+  EXPECT_EQ(withOpacityMap(&empty, grey).width, 1);                 // an empty colour map is none
 }
 
 }  // namespace
