@@ -389,13 +389,10 @@ Status Renderer::drawScene(FrameView& frame, gl::MeshOutput output, const Model*
   return drawGround(frame, output, draw);
 }
 
-Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool preparePalettes, const PartDraw* draw) {
+Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool placePattern, const PartDraw* draw) {
   const RenderSettings& s = view.settings;
   const CameraMatrices placed = model.placed(view.camera);
-  if (output == gl::MeshOutput::Colour && preparePalettes) {
-    preparePattern(&model, placed, s, view.viewport);
-    prepareOrientation(s);
-  }
+  if (output == gl::MeshOutput::Colour && placePattern) preparePattern(&model, placed, s, view.viewport);
   // The whole model's, for every part: the parts hide each other's back faces.
   const bool cullBackFaces = backFacesHidden(model, placed, s);
   // The model's materials, once for every part (a part keeps every material: the same rows).
@@ -483,8 +480,8 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   if (Status st = prepare(s); !st) return st;
   collectGpuTime();
   FrameView frame = frameView(camera, s, viewport, true);
-  // The palettes' pattern and orientation for the first model (the paper reads the placement
-  // too); the other models set theirs before they are drawn.
+  // The frame's orientation, and the pattern placement of the first model (the paper reads it
+  // too); the other models place theirs before they are drawn.
   Model* first = scene_.first();
   preparePattern(first, first ? first->placed(camera) : camera, s, viewport);
   prepareOrientation(s);
@@ -530,6 +527,7 @@ Status Renderer::renderStrokeAngles(const CameraMatrices& camera, const RenderSe
   if (Status st = prepare(s); !st) return st;
   if (!palette_) return Error{"no palette loaded"};
   FrameView frame = frameView(camera, s, viewport, false);
+  prepareOrientation(s);
   clearViewport(viewport);
   // The colour frame's surfaces, each part drawing its palette's stroke angles instead of its texels.
   const PartDraw angles = [](FrameView&, const Model*, FrameContext& f) {

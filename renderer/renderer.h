@@ -214,10 +214,10 @@ class Renderer {
   // kind says otherwise (renderStrokeAngles).
   using PartDraw = std::function<Status(FrameView&, const Model*, FrameContext&)>;
   // The scene's surfaces with the path (or `draw`): every model's parts, then the ground. Colour
-  // frames set each model's pattern placement and orientation first, but for `prepared`'s (done).
+  // frames place each model's pattern first, but for `prepared`'s (done).
   Status drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared, const PartDraw* draw = nullptr);
   // One model's parts (or the whole model) with the path (or `draw`).
-  Status drawModel(FrameView& frame, Model& model, gl::MeshOutput output, bool preparePalettes, const PartDraw* draw);
+  Status drawModel(FrameView& frame, Model& model, gl::MeshOutput output, bool placePattern, const PartDraw* draw);
   // The ground plane with the path's own pass (or `draw`), after the models (--ground).
   Status drawGround(FrameView& frame, gl::MeshOutput output, const PartDraw* draw);
   // One part of the scene (a model, a per-material part, the ground) with the active
@@ -270,11 +270,11 @@ class Renderer {
   // handed to its passes with the frame (FrameContext::pattern).
   PatternPlacement pattern_;
   // The pattern_ of this model: its frame (anchored) or none (screen) and where it is drawn (the
-  // viewport, a poster tile's offset, per-vertex or per-pixel placement); the orientation's
-  // screen directions use the same viewport, so it runs before prepareOrientation.
+  // viewport, a poster tile's offset, per-vertex or per-pixel placement).
   void preparePattern(Model* model, const CameraMatrices& placed, const RenderSettings& settings, const glm::ivec4& viewport);
-  // This frame's hatching orientation in pattern_; computes the direction field of every model
-  // when a palette turns along the curvature and a model has none yet.
+  // This frame's hatching orientation in pattern_, once per frame (the same for every model);
+  // computes the direction field of every model when a palette turns along the curvature and a
+  // model has none yet.
   void prepareOrientation(const RenderSettings& settings);
   // The per-triangle paths' CPU lighting of a scene's models, side by side (see renderer.cpp).
   void prepareTriangleShading(const CameraMatrices& camera, const RenderSettings& settings);
