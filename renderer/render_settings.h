@@ -227,11 +227,12 @@ std::optional<glm::vec2> parseStrokeSize(const std::string& s);
 // `auto`: the GPU when shadows are on (the CPU lighting has no shadow maps), else the CPU.
 enum class TriangleLighting { Auto, Cpu, Gpu };
 
-// Where a deforming mesh (skins, morph targets) is posed (animation/gpu_deformation.h): `auto`
-// on the GPU, into the buffers every pass draws from, unless the frame reads the mesh on the CPU
-// (per-triangle paths, object-space lines, painterly strokes, the anchored pattern), then on the
-// CPU and uploaded; `gpu` on the GPU always, and on the CPU too when the frame reads it there;
-// `cpu` on the CPU and uploaded, as before. Without compute shaders (OpenGL 4.3) on the CPU.
+// Where a deforming mesh (skins, morph targets) is posed (animation/gpu_deformation.h): `gpu`
+// on the GPU, into the buffers every pass draws from, and on the CPU too when the frame reads
+// the mesh there (per-triangle paths, object-space lines, painterly strokes, the anchored
+// pattern), without uploading it; `cpu` on the CPU and uploaded, as before; `auto` as `gpu`,
+// except on a software rasterizer when the frame reads the mesh on the CPU: there as `cpu`
+// (poseTargets in renderer.h has the figures). Without compute shaders (OpenGL 4.3) on the CPU.
 enum class PosePlacement { Auto, Cpu, Gpu };
 
 // Where ambient occlusion comes from: baked per vertex once per mesh (shadows/occlusion_bake.h)

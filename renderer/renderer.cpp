@@ -147,12 +147,18 @@ bool framePosesOnCpu(const RenderSettings& s) {
   return pathInfo(s.path).perTriangle || s.lines.drawnKinds() != 0 || s.strokes.on || s.pattern == PatternSpace::Anchored;
 }
 
+PoseTargets poseTargets(const RenderSettings& s, bool softwareRasterizer) {
+  PoseTargets t;
+  t.cpu = s.deform == PosePlacement::Cpu || framePosesOnCpu(s);
+  t.gpu = s.deform == PosePlacement::Gpu || (s.deform == PosePlacement::Auto && (!t.cpu || !softwareRasterizer));
+  return t;
+}
+
 Status Renderer::applyPoses(const RenderSettings& s) {
-  const bool onCpu = s.deform == PosePlacement::Cpu || framePosesOnCpu(s);
-  const bool onGpu = s.deform == PosePlacement::Gpu || (s.deform == PosePlacement::Auto && !onCpu);
+  const PoseTargets on = poseTargets(s, softwareRasterizer_);
   Status status = okStatus();
   scene_.forEachIncludingHidden([&](Model& m) {
-    if (status) status = m.applyPose(onGpu, onCpu, programs_, stats_);
+    if (status) status = m.applyPose(on.gpu, on.cpu, programs_, stats_);
   });
   return status;
 }

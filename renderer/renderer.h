@@ -49,6 +49,18 @@ struct FrameContext;
 // on it, the anchored pattern fits samples read on it. Else the GPU's pose serves every pass.
 bool framePosesOnCpu(const RenderSettings& settings);
 
+// Where a frame poses its deforming meshes (`--deform`). `auto` poses on the GPU, and on the
+// CPU too where the frame reads the pose there; posing on both then skips the CPU copy's
+// upload, which on a GPU costs more than the compute dispatch (an H100: the 871K torus's
+// triangle path 22.5 ms posed on the CPU alone, 19.7 ms on both), while on a software
+// rasterizer the dispatch runs on the CPU's own cores (llvmpipe: 1.34x against 1.71x the still
+// frame), so there the CPU poses alone.
+struct PoseTargets {
+  bool gpu = false;
+  bool cpu = false;
+};
+PoseTargets poseTargets(const RenderSettings& settings, bool softwareRasterizer);
+
 class Renderer {
  public:
   [[nodiscard]] static Result<std::unique_ptr<Renderer>> create();

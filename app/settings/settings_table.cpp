@@ -243,9 +243,9 @@ std::vector<Setting> buildTable() {
                                           [](Look& l) -> TriangleLighting& { return l.render.triangleLighting; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Triangle || l.render.path == RenderPath::Stencil; };
   t.push_back(choiceRow<PosePlacement>("deform", "deform on", "path",
-                                       "Where a skinned or morphing mesh is posed: auto (the GPU, unless the frame reads the mesh on the CPU: "
-                                       "per-triangle paths, object-space lines, strokes, the anchored pattern), gpu (always, and the CPU too when "
-                                       "read there), cpu (uploaded each pose)",
+                                       "Where a skinned or morphing mesh is posed: gpu (always, and the CPU too when the frame reads the mesh there: "
+                                       "per-triangle paths, object-space lines, strokes, the anchored pattern), cpu (uploaded each pose), "
+                                       "auto (gpu, but cpu where a software rasterizer's frame reads the mesh on the CPU)",
                                        {{"auto", PosePlacement::Auto}, {"cpu", PosePlacement::Cpu}, {"gpu", PosePlacement::Gpu}},
                                        [](Look& l) -> PosePlacement& { return l.render.deform; }));
   t.push_back(boolRow("gouraud", "Gouraud reference", "path", "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting",

@@ -4,6 +4,7 @@
 
 #include "renderer/gl/gpu_choice.h"
 #include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/renderer.h"
 
 namespace npr {
 namespace {
@@ -119,6 +120,33 @@ TEST(DeviceTuning, TheTurnIsResolvedOnlyOnASoftwareRasterizerForDenseMeshes) {
   EXPECT_FALSE(resolveTurnAutomatically(true, 178.0f)); // the bunny
   EXPECT_FALSE(resolveTurnAutomatically(false, 1.4f));
   EXPECT_FALSE(resolveTurnAutomatically(false, 178.0f));
+}
+
+// Another (bench_animation on an H100): where the frame reads a deforming mesh on the CPU, a GPU
+// poses it there too, so the CPU's copy is not uploaded; llvmpipe poses it on the CPU alone.
+TEST(DeviceTuning, AutoPosesOnBothOnAGpuAndOnTheCpuAloneOnASoftwareRasterizer) {
+  RenderSettings s;
+  s.path = RenderPath::Triangle;  // reads the pose on the CPU
+  PoseTargets soft = poseTargets(s, true), hard = poseTargets(s, false);
+  EXPECT_TRUE(soft.cpu && !soft.gpu);
+  EXPECT_TRUE(hard.cpu && hard.gpu);
+  s.path = RenderPath::Pixel;  // reads it on the GPU only, wherever that is
+  soft = poseTargets(s, true), hard = poseTargets(s, false);
+  EXPECT_TRUE(soft.gpu && !soft.cpu);
+  EXPECT_TRUE(hard.gpu && !hard.cpu);
+  s.strokes.on = true;  // strokes are seeded on the CPU's pose
+  EXPECT_TRUE(poseTargets(s, true).cpu && !poseTargets(s, true).gpu);
+  EXPECT_TRUE(poseTargets(s, false).cpu && poseTargets(s, false).gpu);
+  // The explicit choices hold on either.
+  for (bool software : {true, false}) {
+    s.deform = PosePlacement::Cpu;
+    EXPECT_TRUE(poseTargets(s, software).cpu && !poseTargets(s, software).gpu);
+    s.deform = PosePlacement::Gpu;
+    EXPECT_TRUE(poseTargets(s, software).cpu && poseTargets(s, software).gpu);
+    s.strokes.on = false;
+    EXPECT_TRUE(!poseTargets(s, software).cpu && poseTargets(s, software).gpu);
+    s.strokes.on = true;
+  }
 }
 
 }  // namespace
