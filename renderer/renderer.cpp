@@ -33,6 +33,7 @@ bool isIdentity(const glm::mat4& m) { return m == glm::mat4(1.0f); }
 Result<std::unique_ptr<Renderer>> Renderer::create() {
   if (epoxy_gl_version() < 33) return Error{"the renderer needs OpenGL 3.3 or later; this context is " + std::to_string(epoxy_gl_version())};
   std::unique_ptr<Renderer> r(new Renderer());
+  gl::forgetAppliedState();  // perhaps a new context: nothing of its state is known
   r->emptyVao_ = gl::createVertexArray();
   const auto* glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   r->softwareRasterizer_ = !glRenderer || isSoftwareRenderer(glRenderer);

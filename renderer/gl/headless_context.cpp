@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 
 #include "renderer/gl/gl_debug.h"
+#include "renderer/gl/pass_state.h"
 
 // EGL_EXT_device_query_name, newer than the registry epoxy was generated from.
 #ifndef EGL_RENDERER_EXT
@@ -92,6 +93,7 @@ Result<Opened> openOn(EGLDisplay dpy, bool debug) {
     eglDestroyContext(dpy, ctx);
     return fail("eglMakeCurrent without a surface failed (EGL_KHR_surfaceless_context missing?)");
   }
+  gl::forgetAppliedState();  // a new context holds GL's defaults, not what was applied before
   return Opened{dpy, ctx};
 }
 

@@ -1,5 +1,6 @@
 // FBO creation and read-back (see offscreen_target.h).
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/gl/pass_state.h"
 
 #include <algorithm>
 
@@ -53,6 +54,7 @@ void OffscreenTarget::copyToWindow() const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   glDisable(GL_SCISSOR_TEST);  // a blit is clipped by it (a pass may leave it on)
+  gl::forgetAppliedState();
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -108,6 +110,7 @@ void clearRightOf(int fromX, int width, int height) {
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
   glDisable(GL_SCISSOR_TEST);
+  gl::forgetAppliedState();
 }
 int maxFramebufferSide() {
   GLint renderbuffer = 0, viewport[2] = {0, 0};

@@ -1,52 +1,86 @@
 // Applying pass states (see pass_state.h).
 #include "renderer/gl/pass_state.h"
 
+#include <optional>
+#include <utility>
+
 namespace npr::gl {
 
+namespace {
+
+// What GL holds of the pass state, as the last apply() set it; none: unknown, set everything.
+// Every field is sent when it differs, enabled or not (a blend function while blending is off
+// is harmless), so the copy mirrors GL exactly.
+std::optional<PassState> g_held;
+StateTraffic g_traffic;
+
+// Sends `set` when the field differs from what GL holds (or nothing is known).
+template <class Field, class Set>
+void update(bool all, Field& held, const Field& wanted, Set set) {
+  if (all || held != wanted) {
+    set();
+    held = wanted;
+    ++g_traffic.sent;
+  } else {
+    ++g_traffic.skipped;
+  }
+}
+
+void toggle(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
+
+}  // namespace
+
+StateTraffic stateTraffic() { return g_traffic; }
+
+void forgetAppliedState() { g_held.reset(); }
+
 void apply(const PassState& s) {
-  s.depthTest ? glEnable(GL_DEPTH_TEST) : glDisable(GL_DEPTH_TEST);
-  glDepthFunc(s.depthFunc);
-  glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE);
-  const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
-  glColorMask(c, c, c, c);
-  if (s.blend && s.additive) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
-  } else if (s.blend) {
-    glEnable(GL_BLEND);
-    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
-  } else {
-    glDisable(GL_BLEND);
-  }
-  glStencilMask(0xFF);
-  if (s.stencilTest) {
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(s.stencilFunc, 1, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass);
-  } else {
-    glDisable(GL_STENCIL_TEST);
-  }
-  s.scissor ? glEnable(GL_SCISSOR_TEST) : glDisable(GL_SCISSOR_TEST);
-  s.programPointSize ? glEnable(GL_PROGRAM_POINT_SIZE) : glDisable(GL_PROGRAM_POINT_SIZE);
-  if (s.cull != 0) {
-    glEnable(GL_CULL_FACE);
-    glCullFace(s.cull);
+  const bool all = !g_held;
+  if (all) {
+    g_held.emplace();
+    glStencilMask(0xFF);
     glFrontFace(GL_CCW);
-  } else {
-    glDisable(GL_CULL_FACE);
   }
-  if (s.offsetFactor != 0.0f || s.offsetUnits != 0.0f) {
-    glEnable(GL_POLYGON_OFFSET_FILL);
+  PassState& h = *g_held;
+  update(all, h.depthTest, s.depthTest, [&] { toggle(GL_DEPTH_TEST, s.depthTest); });
+  update(all, h.depthFunc, s.depthFunc, [&] { glDepthFunc(s.depthFunc); });
+  update(all, h.depthWrite, s.depthWrite, [&] { glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE); });
+  update(all, h.colorWrite, s.colorWrite, [&] {
+    const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
+    glColorMask(c, c, c, c);
+  });
+  update(all, h.blend, s.blend, [&] { toggle(GL_BLEND, s.blend); });
+  update(all, h.additive, s.additive, [&] {
+    if (s.additive) glBlendFunc(GL_ONE, GL_ONE);
+    else glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  });
+  update(all, h.stencilTest, s.stencilTest, [&] { toggle(GL_STENCIL_TEST, s.stencilTest); });
+  // The function and its reference go in one call: held as one pair.
+  std::pair<GLenum, int> func{h.stencilFunc, h.stencilRef};
+  update(all, func, std::pair<GLenum, int>{s.stencilFunc, s.stencilRef}, [&] { glStencilFunc(s.stencilFunc, s.stencilRef, 0xFF); });
+  h.stencilFunc = func.first;
+  h.stencilRef = func.second;
+  update(all, h.stencilPass, s.stencilPass, [&] { glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass); });
+  update(all, h.scissor, s.scissor, [&] { toggle(GL_SCISSOR_TEST, s.scissor); });
+  update(all, h.programPointSize, s.programPointSize, [&] { toggle(GL_PROGRAM_POINT_SIZE, s.programPointSize); });
+  update(all, h.cull, s.cull, [&] {
+    toggle(GL_CULL_FACE, s.cull != 0);
+    if (s.cull != 0) glCullFace(s.cull);
+  });
+  std::pair<float, float> offset{h.offsetFactor, h.offsetUnits};
+  update(all, offset, std::pair<float, float>{s.offsetFactor, s.offsetUnits}, [&] {
+    toggle(GL_POLYGON_OFFSET_FILL, s.offsetFactor != 0.0f || s.offsetUnits != 0.0f);
     glPolygonOffset(s.offsetFactor, s.offsetUnits);
-  } else {
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
+  });
+  h.offsetFactor = offset.first;
+  h.offsetUnits = offset.second;
 }
 
 void restoreDefaults() {
   apply(pass::kBackground);
   glBindVertexArray(0);
   glUseProgram(0);
+  forgetAppliedState();
 }
 
 }  // namespace npr::gl

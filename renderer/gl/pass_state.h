@@ -15,6 +15,7 @@ struct PassState {
   bool additive = false;  // with blend: one + one instead of source-over
   bool stencilTest = false;
   GLenum stencilFunc = GL_ALWAYS;
+  int stencilRef = 1;            // the value compared and written (all 8 bits)
   GLenum stencilPass = GL_KEEP;  // op when stencil and depth pass
   bool scissor = false;
   bool programPointSize = false;
@@ -145,11 +146,25 @@ inline constexpr PassState kAccumulate = [] { PassState s; s.blend = true; s.add
 inline constexpr PassState kMarker = [] { PassState s; s.programPointSize = true; return s; }();
 }  // namespace pass
 
+// Makes GL hold `state`. Only what differs from the state applied last is sent: a scene's
+// objects each apply their pass, and the stencil path two per bucket, so most of a pass state
+// is already held (bench_scene counts the calls saved). Every pass writes all stencil bits: the
+// mask is set whatever the preset.
 void apply(const PassState& state);
-// Every pass writes all stencil bits: the mask is set whatever the preset.
+// Code that changes these states with raw GL calls (a blit, a clear of part of the window, a
+// test's probe) says so, and the next apply() sets every state again. A new context or
+// renderer starts from here too.
+void forgetAppliedState();
 // restoreDefaults leaves the context as an overlay drawn after the renderer expects it (Dear
 // ImGui's backend sets its own state but not the stencil mask, the bound program or the
-// vertex array).
+// vertex array), and forgets the applied state, since what runs between frames may change it.
 void restoreDefaults();
+
+// GL state calls apply() sent and skipped as already held, since the process started.
+struct StateTraffic {
+  long long sent = 0;
+  long long skipped = 0;
+};
+StateTraffic stateTraffic();
 
 }  // namespace npr::gl

@@ -116,32 +116,62 @@ Result<ShaderProgram> ShaderProgram::buildCompute(const std::string& computeFile
   return p;
 }
 
-GLint ShaderProgram::location(const char* name) {
-  auto it = locations_.find(name);
-  if (it != locations_.end()) return it->second;
+namespace {
+UniformTraffic g_traffic;
+}  // namespace
+
+UniformTraffic uniformTraffic() { return g_traffic; }
+
+ShaderProgram::Uniform& ShaderProgram::uniform(const char* name) {
+  auto it = uniforms_.find(name);
+  if (it != uniforms_.end()) return it->second;
   const GLint loc = glGetUniformLocation(program_.id(), name);
   if (loc < 0 && g_strict && !mentions(source_, name))
     reportError("uniform '" + std::string(name) + "' is declared by no stage of program " + label_);
-  locations_.emplace(name, loc);
-  return loc;
+  Uniform& u = uniforms_[name];
+  u.location = loc;
+  return u;
 }
 
-void ShaderProgram::set(const char* n, int v) { glUniform1i(location(n), v); }
-void ShaderProgram::set(const char* n, unsigned v) { glUniform1ui(location(n), v); }
-void ShaderProgram::set(const char* n, float v) { glUniform1f(location(n), v); }
-void ShaderProgram::set(const char* n, const glm::vec2& v) { glUniform2fv(location(n), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* n, const glm::vec3& v) { glUniform3fv(location(n), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* n, const glm::vec4& v) { glUniform4fv(location(n), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* n, const glm::ivec2& v) { glUniform2iv(location(n), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* n, const glm::mat3& v) { glUniformMatrix3fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
-void ShaderProgram::set(const char* n, const glm::mat4& v) { glUniformMatrix4fv(location(n), 1, GL_FALSE, glm::value_ptr(v)); }
-void ShaderProgram::setArray(const char* n, const glm::vec4* v, int c) { glUniform4fv(location(n), c, glm::value_ptr(*v)); }
-void ShaderProgram::setArray(const char* n, const glm::vec3* v, int c) { glUniform3fv(location(n), c, glm::value_ptr(*v)); }
-void ShaderProgram::setArray(const char* n, const glm::mat4* v, int c) { glUniformMatrix4fv(location(n), c, GL_FALSE, glm::value_ptr(*v)); }
-void ShaderProgram::setArray(const char* n, const int* v, int c) { glUniform1iv(location(n), c, v); }
-void ShaderProgram::setArray(const char* n, const unsigned* v, int c) { glUniform1uiv(location(n), c, v); }
-void ShaderProgram::setArray(const char* n, const glm::vec2* v, int c) { glUniform2fv(location(n), c, glm::value_ptr(*v)); }
-void ShaderProgram::setArray(const char* n, const float* v, int c) { glUniform1fv(location(n), c, v); }
-void ShaderProgram::setArray(const char* n, const glm::ivec2* v, int c) { glUniform2iv(location(n), c, glm::value_ptr(*v)); }
+GLint ShaderProgram::changed(const char* name, const void* value, std::size_t bytes) {
+  Uniform& u = uniform(name);
+  if (u.location < 0) return -1;
+  const auto* v = static_cast<const unsigned char*>(value);
+  if (u.sent.size() == bytes && std::memcmp(u.sent.data(), v, bytes) == 0) {
+    ++g_traffic.unchanged;
+    return -1;
+  }
+  u.sent.assign(v, v + bytes);
+  ++g_traffic.sent;
+  return u.location;
+}
+
+// Each setter sends only a changed value (changed() gives -1 otherwise; GL ignores location -1,
+// but the call is skipped outright).
+#define NPR_SET(DATA, BYTES, CALL)                          \
+  do {                                                      \
+    const GLint loc = changed(n, DATA, BYTES);              \
+    if (loc >= 0) CALL;                                     \
+  } while (false)
+
+void ShaderProgram::set(const char* n, int v) { NPR_SET(&v, sizeof v, glUniform1i(loc, v)); }
+void ShaderProgram::set(const char* n, unsigned v) { NPR_SET(&v, sizeof v, glUniform1ui(loc, v)); }
+void ShaderProgram::set(const char* n, float v) { NPR_SET(&v, sizeof v, glUniform1f(loc, v)); }
+void ShaderProgram::set(const char* n, const glm::vec2& v) { NPR_SET(&v, sizeof v, glUniform2fv(loc, 1, glm::value_ptr(v))); }
+void ShaderProgram::set(const char* n, const glm::vec3& v) { NPR_SET(&v, sizeof v, glUniform3fv(loc, 1, glm::value_ptr(v))); }
+void ShaderProgram::set(const char* n, const glm::vec4& v) { NPR_SET(&v, sizeof v, glUniform4fv(loc, 1, glm::value_ptr(v))); }
+void ShaderProgram::set(const char* n, const glm::ivec2& v) { NPR_SET(&v, sizeof v, glUniform2iv(loc, 1, glm::value_ptr(v))); }
+void ShaderProgram::set(const char* n, const glm::mat3& v) { NPR_SET(&v, sizeof v, glUniformMatrix3fv(loc, 1, GL_FALSE, glm::value_ptr(v))); }
+void ShaderProgram::set(const char* n, const glm::mat4& v) { NPR_SET(&v, sizeof v, glUniformMatrix4fv(loc, 1, GL_FALSE, glm::value_ptr(v))); }
+void ShaderProgram::setArray(const char* n, const glm::vec4* v, int c) { NPR_SET(v, sizeof *v * c, glUniform4fv(loc, c, glm::value_ptr(*v))); }
+void ShaderProgram::setArray(const char* n, const glm::vec3* v, int c) { NPR_SET(v, sizeof *v * c, glUniform3fv(loc, c, glm::value_ptr(*v))); }
+void ShaderProgram::setArray(const char* n, const glm::mat4* v, int c) { NPR_SET(v, sizeof *v * c, glUniformMatrix4fv(loc, c, GL_FALSE, glm::value_ptr(*v))); }
+void ShaderProgram::setArray(const char* n, const int* v, int c) { NPR_SET(v, sizeof *v * c, glUniform1iv(loc, c, v)); }
+void ShaderProgram::setArray(const char* n, const unsigned* v, int c) { NPR_SET(v, sizeof *v * c, glUniform1uiv(loc, c, v)); }
+void ShaderProgram::setArray(const char* n, const glm::vec2* v, int c) { NPR_SET(v, sizeof *v * c, glUniform2fv(loc, c, glm::value_ptr(*v))); }
+void ShaderProgram::setArray(const char* n, const float* v, int c) { NPR_SET(v, sizeof *v * c, glUniform1fv(loc, c, v)); }
+void ShaderProgram::setArray(const char* n, const glm::ivec2* v, int c) { NPR_SET(v, sizeof *v * c, glUniform2iv(loc, c, glm::value_ptr(*v))); }
+
+#undef NPR_SET
 
 }  // namespace npr::gl

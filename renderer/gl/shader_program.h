@@ -3,6 +3,12 @@
 // a typo the driver would silently ignore: in debug and test builds it is reported as a GL
 // error (gl_debug.h). A uniform that a variant compiled out, or the compiler optimised away,
 // is present in the source text and is skipped quietly, as GL skips location -1.
+//
+// A program keeps its uniforms' values between draws, so each setter remembers what it last
+// sent and sends a value again only when it differs: a scene's objects share the lights, the
+// palette's uniforms and the features', and only their transforms change from one object to
+// the next. Every uniform of a program is set through these setters (no raw glUniform
+// elsewhere), with the program in use, so what is remembered is what the program holds.
 #pragma once
 
 #include <string>
@@ -50,12 +56,26 @@ class ShaderProgram {
   void set(const char* name, unsigned v);
 
  private:
-  GLint location(const char* name);
+  struct Uniform {
+    GLint location = -1;
+    std::vector<unsigned char> sent;  // the bytes last sent; empty before the first
+  };
+  Uniform& uniform(const char* name);
+  // The location to send `bytes` to, or -1 where the uniform is compiled out or already holds them.
+  GLint changed(const char* name, const void* value, std::size_t bytes);
   Program program_;
   std::string label_;
   std::string source_;  // both stages, for telling a typo from a compiled-out uniform
-  std::unordered_map<std::string, GLint> locations_;
+  std::unordered_map<std::string, Uniform> uniforms_;
 };
+
+// How many uniform values the setters sent to GL and how many they found unchanged, since the
+// process started (all programs): what the benchmarks and tests read.
+struct UniformTraffic {
+  long long sent = 0;
+  long long unchanged = 0;
+};
+UniformTraffic uniformTraffic();
 
 // Whether unknown uniform names are reported: on in debug builds and in the test programs.
 void setStrictUniforms(bool on);

@@ -113,8 +113,8 @@ Status StencilPath::draw(FrameContext& f) {
   auto drawMask = [&](int k, std::uint32_t count, int mark) {
     gl::PassState state = f.meshPass(gl::pass::kStencilMask);
     state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
+    state.stencilRef = mark;
     gl::apply(state);
-    glStencilFunc(GL_ALWAYS, mark, 0xFF);
     (*mask)->use();
     f.gpuMesh.bindIndices(f.triangles.bucketIndices());
     f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
@@ -133,14 +133,16 @@ Status StencilPath::draw(FrameContext& f) {
     glScissor(rect.x, rect.y, rect.z, rect.w);
     glBindVertexArray(f.emptyVao.id());
     if (!layersOpaque) {
-      gl::apply(gl::pass::kStencilBackground);
-      glStencilFunc(GL_EQUAL, mark, 0xFF);
+      gl::PassState background = gl::pass::kStencilBackground;
+      background.stencilRef = mark;
+      gl::apply(background);
       (*bgQuad)->use();
       glDrawArrays(GL_TRIANGLES, 0, 3);
       ++f.stats.drawCalls;
     }
-    gl::apply(gl::pass::kStencilLayer);
-    glStencilFunc(GL_EQUAL, mark, 0xFF);
+    gl::PassState layer = gl::pass::kStencilLayer;
+    layer.stencilRef = mark;
+    gl::apply(layer);
     const bool turned = stroke != gl::StrokeSource::None && f.palette->entryAngle(k) > -10.0f;
     gl::ShaderProgram& quad = turned ? **layerQuad : **plainQuad;
     quad.use();

@@ -18,6 +18,8 @@
 #include "renderer/core/heap_policy.h"
 #include "renderer/gl/headless_context.h"
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/gl/pass_state.h"
+#include "renderer/gl/shader_program.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/renderer.h"
 
@@ -36,7 +38,11 @@ int main(int argc, char** argv) {
   if (!palette) return 1;
   std::printf("# bench_scene: %s, %dx%d, %d frames, median ms (interleaved)\n", ctx->info().line().c_str(), args->width, args->height,
               args->frames);
-  std::printf("%-8s %-9s %10s %10s %10s %8s\n", "objects", "path", "triangles", "merged", "objects", "ratio");
+  // cpu: render()'s own time for the objects (the draw calls' submission, where a GPU draws);
+  // uniforms, states: in one frame of the objects, the uniform values and pass-state calls sent
+  // to GL, against those skipped as already held.
+  std::printf("%-8s %-9s %10s %10s %10s %8s %10s %10s %12s %12s\n", "objects", "path", "triangles", "merged", "objects", "ratio",
+              "cpu merged", "cpu objects", "uniforms", "states");
   const std::vector<RenderPath> paths = {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth};
   // Icosphere levels with the same triangles in all (20 * 4^level per sphere).
   const std::vector<std::pair<int, int>> scenes = args->quick ? std::vector<std::pair<int, int>>{{16, 3}}
@@ -84,9 +90,22 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_scene: %d frame(s) failed\n", failed);
       return 1;
     }
-    for (std::size_t p = 0; p < paths.size(); ++p)
-      std::printf("%-8d %-9s %10zu %10.2f %10.2f %7.2fx\n", n, renderPathName(paths[p]), merged.triangleCount(), t[2 * p].medianMs,
-                  t[2 * p + 1].medianMs, t[2 * p + 1].medianMs / t[2 * p].medianMs);
+    for (std::size_t p = 0; p < paths.size(); ++p) {
+      RenderSettings s;
+      s.path = paths[p];
+      target->bind();
+      const gl::UniformTraffic before = gl::uniformTraffic();
+      const gl::StateTraffic statesBefore = gl::stateTraffic();
+      if (!(*many)->render(matrices, s, {0, 0, target->width(), target->height()})) return 1;
+      const gl::UniformTraffic after = gl::uniformTraffic();
+      const gl::StateTraffic statesAfter = gl::stateTraffic();
+      char uniforms[32], states[32];
+      std::snprintf(uniforms, sizeof uniforms, "%lld/%lld", after.sent - before.sent, after.unchanged - before.unchanged);
+      std::snprintf(states, sizeof states, "%lld/%lld", statesAfter.sent - statesBefore.sent, statesAfter.skipped - statesBefore.skipped);
+      std::printf("%-8d %-9s %10zu %10.2f %10.2f %7.2fx %10.2f %10.2f %12s %12s\n", n, renderPathName(paths[p]), merged.triangleCount(),
+                  t[2 * p].medianMs, t[2 * p + 1].medianMs, t[2 * p + 1].medianMs / t[2 * p].medianMs, t[2 * p].cpuMs, t[2 * p + 1].cpuMs,
+                  uniforms, states);
+    }
     std::fflush(stdout);
   }
   return 0;

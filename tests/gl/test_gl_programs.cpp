@@ -7,6 +7,7 @@
 
 #include "gl/gl_test_env.h"
 #include "renderer/gl/gl_debug.h"
+#include "renderer/gl/offscreen_target.h"
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/shader_program.h"
@@ -44,6 +45,46 @@ TEST(ShaderProgram, ACompiledOutUniformIsSkippedQuietly) {
   p->set("uBackground", 1);
   p->set("uBackgroundColour", glm::vec3(0.5f));
   EXPECT_EQ(gl::checkErrors("after"), before);
+  glUseProgram(0);
+}
+
+// A program keeps its uniforms between draws: a value set again unchanged is not sent again,
+// a changed one is, and each program remembers its own.
+TEST(ShaderProgram, SendsAUniformOnlyWhenItsValueChanges) {
+  Result<gl::ShaderProgram> a = gl::ShaderProgram::build("marker.vert", "marker.frag", {});
+  Result<gl::ShaderProgram> b = gl::ShaderProgram::build("marker.vert", "marker.frag", {});
+  ASSERT_TRUE(a && b);
+  const GLint locA = glGetUniformLocation(a->id(), "uColour"), locB = glGetUniformLocation(b->id(), "uColour");
+  ASSERT_GE(locA, 0);
+  auto held = [](const gl::ShaderProgram& p, GLint loc) {
+    glm::vec3 v(-1.0f);
+    glGetUniformfv(p.id(), loc, &v.x);
+    return v;
+  };
+  a->use();
+  gl::UniformTraffic t0 = gl::uniformTraffic();
+  a->set("uColour", glm::vec3(0.25f, 0.5f, 0.75f));
+  gl::UniformTraffic t1 = gl::uniformTraffic();
+  EXPECT_EQ(t1.sent - t0.sent, 1);
+  EXPECT_EQ(held(*a, locA), glm::vec3(0.25f, 0.5f, 0.75f));
+  a->set("uColour", glm::vec3(0.25f, 0.5f, 0.75f));  // unchanged: not sent
+  gl::UniformTraffic t2 = gl::uniformTraffic();
+  EXPECT_EQ(t2.sent, t1.sent);
+  EXPECT_EQ(t2.unchanged - t1.unchanged, 1);
+  a->set("uColour", glm::vec3(0.25f, 0.5f, 0.8f));  // one component changed: sent
+  EXPECT_EQ(gl::uniformTraffic().sent - t2.sent, 1);
+  EXPECT_EQ(held(*a, locA), glm::vec3(0.25f, 0.5f, 0.8f));
+  // The same value in another program is that program's first: sent, and held there.
+  b->use();
+  const gl::UniformTraffic t3 = gl::uniformTraffic();
+  b->set("uColour", glm::vec3(0.25f, 0.5f, 0.8f));
+  EXPECT_EQ(gl::uniformTraffic().sent - t3.sent, 1);
+  EXPECT_EQ(held(*b, locB), glm::vec3(0.25f, 0.5f, 0.8f));
+  // Back to the first program's earlier value: sent, because the program holds the newer one.
+  a->use();
+  a->set("uColour", glm::vec3(0.25f, 0.5f, 0.75f));
+  EXPECT_EQ(held(*a, locA), glm::vec3(0.25f, 0.5f, 0.75f));
+  EXPECT_EQ(held(*b, locB), glm::vec3(0.25f, 0.5f, 0.8f));
   glUseProgram(0);
 }
 
@@ -120,7 +161,10 @@ void expectApplied(const gl::PassState& s, const char* name) {
   glGetBooleanv(GL_COLOR_WRITEMASK, colour);
   for (GLboolean c : colour) EXPECT_EQ(c == GL_TRUE, s.colorWrite);
   EXPECT_EQ(enabled(GL_BLEND), s.blend);
-  if (s.blend) {
+  if (s.blend && s.additive) {
+    EXPECT_EQ(integer(GL_BLEND_SRC_RGB), GL_ONE);
+    EXPECT_EQ(integer(GL_BLEND_DST_RGB), GL_ONE);
+  } else if (s.blend) {
     EXPECT_EQ(integer(GL_BLEND_SRC_RGB), GL_SRC_ALPHA);
     EXPECT_EQ(integer(GL_BLEND_DST_RGB), GL_ONE_MINUS_SRC_ALPHA);
     EXPECT_EQ(integer(GL_BLEND_SRC_ALPHA), GL_ZERO);  // destination alpha stays opaque
@@ -129,14 +173,31 @@ void expectApplied(const gl::PassState& s, const char* name) {
   EXPECT_EQ(enabled(GL_STENCIL_TEST), s.stencilTest);
   if (s.stencilTest) {
     EXPECT_EQ(GLenum(integer(GL_STENCIL_FUNC)), s.stencilFunc);
+    EXPECT_EQ(integer(GL_STENCIL_REF), s.stencilRef);
     EXPECT_EQ(GLenum(integer(GL_STENCIL_PASS_DEPTH_PASS)), s.stencilPass);
   }
   EXPECT_EQ(enabled(GL_SCISSOR_TEST), s.scissor);
   EXPECT_EQ(enabled(GL_PROGRAM_POINT_SIZE), s.programPointSize);
+  EXPECT_EQ(enabled(GL_CULL_FACE), s.cull != 0);
+  if (s.cull != 0) {
+    EXPECT_EQ(GLenum(integer(GL_CULL_FACE_MODE)), s.cull);
+  }
+  EXPECT_EQ(enabled(GL_POLYGON_OFFSET_FILL), s.offsetFactor != 0.0f || s.offsetUnits != 0.0f);
+  if (s.offsetFactor != 0.0f || s.offsetUnits != 0.0f) {
+    GLfloat factor = 0.0f, units = 0.0f;
+    glGetFloatv(GL_POLYGON_OFFSET_FACTOR, &factor);
+    glGetFloatv(GL_POLYGON_OFFSET_UNITS, &units);
+    EXPECT_EQ(factor, s.offsetFactor);
+    EXPECT_EQ(units, s.offsetUnits);
+  }
   EXPECT_EQ(integer(GL_STENCIL_WRITEMASK) & 0xFF, 0xFF);
 }
 
 TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
+  // A framebuffer with stencil bits: GL reports the reference clamped to them.
+  auto target = OffscreenTarget::create(4, 4);
+  ASSERT_TRUE(target);
+  target->bind();
   // Applied in an order where each preset differs from the previous one in what it sets.
   expectApplied(gl::pass::kClearViewport, "clear viewport");
   expectApplied(gl::pass::kStencilMask, "stencil mask");
@@ -148,6 +209,16 @@ TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
   expectApplied(gl::pass::kScreenOverlay, "screen overlay");
   expectApplied(gl::pass::kClearTarget, "clear target");
   expectApplied(gl::pass::kBackground, "background");
+  expectApplied(gl::pass::kShadowDepth, "shadow depth");
+  expectApplied(gl::pass::kAccumulate, "accumulate");
+  expectApplied(gl::pass::kOutlineBackFaces, "outline back faces");
+  expectApplied(gl::pass::kTexturedLines, "textured lines");
+  // The stencil path's buckets differ only in their reference.
+  gl::PassState marked = gl::pass::kStencilLayer;
+  for (int mark : {3, 4, 1}) {
+    marked.stencilRef = mark;
+    expectApplied(marked, "stencil layer, another mark");
+  }
   // What an overlay drawn after the renderer finds.
   gl::apply(gl::pass::kStencilLayer);
   gl::restoreDefaults();
@@ -155,6 +226,27 @@ TEST(PassState, EveryPresetIsWhatGlHoldsAfterApplyingIt) {
   EXPECT_EQ(integer(GL_STENCIL_WRITEMASK) & 0xFF, 0xFF);
   EXPECT_EQ(integer(GL_CURRENT_PROGRAM), 0);
   EXPECT_EQ(integer(GL_VERTEX_ARRAY_BINDING), 0);
+}
+
+// apply() sends only what differs from the state it applied last; after raw GL changes the
+// code says so (forgetAppliedState) and the next apply() sets everything again.
+TEST(PassState, WhatIsHeldIsNotSentAgainUntilForgotten) {
+  gl::apply(gl::pass::kMesh);
+  const gl::StateTraffic t0 = gl::stateTraffic();
+  gl::apply(gl::pass::kMesh);
+  const gl::StateTraffic t1 = gl::stateTraffic();
+  EXPECT_EQ(t1.sent, t0.sent);
+  EXPECT_GT(t1.skipped, t0.skipped);
+  gl::PassState layer = gl::pass::kMesh;
+  layer.blend = true;  // one field differs: one call
+  gl::apply(layer);
+  EXPECT_EQ(gl::stateTraffic().sent - t1.sent, 1);
+  glDisable(GL_DEPTH_TEST);  // behind apply()'s back
+  gl::apply(layer);
+  EXPECT_FALSE(enabled(GL_DEPTH_TEST));  // held as far as apply() knows: not sent
+  gl::forgetAppliedState();
+  expectApplied(layer, "after forgetting");
+  gl::restoreDefaults();
 }
 
 // Passes resize their buffers while the caller's framebuffer is bound for drawing: the resize

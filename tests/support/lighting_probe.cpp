@@ -4,6 +4,7 @@
 #include <cstddef>
 
 #include "renderer/gl/offscreen_target.h"
+#include "renderer/gl/pass_state.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/lighting/lighting_uniforms.h"
 
@@ -33,8 +34,7 @@ Result<std::vector<glm::vec3>> evaluateLightingOnGpu(const LightingState& state,
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, back)));
   target->bind();
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
+  gl::apply(gl::pass::kBackground);  // no depth, no blending
   prog->use();
   prog->set("uSize", glm::ivec2(width, height));
   uploadLightingUniforms(*prog, prepareLighting<float>(state));
