@@ -388,12 +388,17 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // The surfaces
 
 Status Renderer::drawScene(FrameView& frame, gl::MeshOutput output, const Model* prepared, const PartDraw* draw) {
+  // The path may draw several objects' work together at the end (the stencil path's quads).
+  RenderPass* path = draw ? nullptr : paths_[pathIndex(frame.settings.path)].get();
+  if (path) path->beginScene();
   Status status = okStatus();
   scene_.forEach([&](Model& m) {
     if (status) status = drawModel(frame, m, output, &m != prepared, draw);
   });
-  if (!status || scene_.empty()) return status;
-  return drawGround(frame, output, draw);
+  if (status && !scene_.empty()) status = drawGround(frame, output, draw);
+  if (path)
+    if (Status st = path->endScene(); status && !st) status = st;
+  return status;
 }
 
 Status Renderer::drawModel(FrameView& view, Model& model, gl::MeshOutput output, bool placePattern, const PartDraw* draw) {
@@ -463,11 +468,14 @@ TurnResolvePass* Renderer::turnResolveFor(const RenderSettings& s, const GpuPale
 
 Status Renderer::drawPart(FrameView& view, const Model* model, FrameContext& frame, RenderPath path) {
   for (Feature* f : active_) f->shade(view, model, frame);
+  // Set before the path draws: a path that defers its work to the scene's end (the stencil
+  // path) must not, where these are drawn over each surface as it is drawn.
+  if (frame.settings.controlPalettes) {
+    frame.shadowPalette = shadowPalette_.get();
+    frame.occlusionPalette = occlusionPalette_.get();
+  }
   if (Status st = paths_[pathIndex(path)]->draw(frame); !st) return st;
-  if (!frame.settings.controlPalettes) return okStatus();
-  frame.shadowPalette = shadowPalette_.get();
-  frame.occlusionPalette = occlusionPalette_.get();
-  return drawControlPalettes(frame, path);
+  return frame.settings.controlPalettes ? drawControlPalettes(frame, path) : okStatus();
 }
 
 // ---------------------------------------------------------------------------------------

@@ -139,6 +139,10 @@ class RenderPass {
  public:
   virtual ~RenderPass() = default;
   [[nodiscard]] virtual Status draw(FrameContext& frame) = 0;
+  // Around the draws of a scene's surfaces in one frame (not the ground-only or per-object
+  // passes): a path that can draw several objects' work together defers it to endScene.
+  virtual void beginScene() {}
+  [[nodiscard]] virtual Status endScene() { return okStatus(); }
 };
 
 }  // namespace npr

@@ -13,13 +13,63 @@ namespace {
 // unmarked); a palette with more non-empty buckets is drawn in runs of this many.
 constexpr int kMarksPerRun = 255;
 
+// The smallest rectangle (x0, y0, x1, y1) holding both; an empty one (x1 <= x0) adds nothing.
+glm::ivec4 unite(const glm::ivec4& a, const glm::ivec4& b) {
+  if (b.z <= b.x || b.w <= b.y) return a;
+  return glm::ivec4(glm::min(glm::ivec2(a), glm::ivec2(b)), glm::max(glm::ivec2(a.z, a.w), glm::ivec2(b.z, b.w)));
+}
+
 }  // namespace
+
+bool StencilPath::canShare(const FrameContext& f) const {
+  // Objects share a bucket's quads where the quads are the same for all of them: one palette, a
+  // screen-space pattern (the anchored and object patterns are placed per object), no buffers
+  // read per pixel (their passes are per object), one row of the palette (a detail row is per
+  // object), and nothing drawn over each object's surface as it is drawn (control palettes).
+  if (!sceneOpen_ || f.output != gl::MeshOutput::Colour || f.shadowPalette || f.occlusionPalette || f.settings.pattern != PatternSpace::Screen)
+    return false;
+  if (f.paletteAxis().rows > 1) return false;
+  const gl::StrokeSource stroke = f.strokeSource();
+  if (stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light) return false;
+  return shared_.empty() || f.palette == shared_.front().palette;
+}
+
+void StencilPath::beginScene() {
+  sceneOpen_ = true;
+  shared_.clear();
+}
 
 Status StencilPath::draw(FrameContext& f) {
   if (f.output != gl::MeshOutput::Colour) return selection_.draw(f);
-  const RenderSettings& s = f.settings;
   if (Status st = updateTriangleShading(f); !st) return st;
-  if (s.stencilScissor) f.triangles.updateBounds(f.camera.projection * f.camera.view, {f.viewport.z, f.viewport.w}, f.stats);
+  if (f.settings.stencilScissor) f.triangles.updateBounds(f.camera.projection * f.camera.view, {f.viewport.z, f.viewport.w}, f.stats);
+  if (canShare(f)) {
+    shared_.push_back(Shared{f.camera, f.viewport, &f.settings, &f.lighting, &f.gpuMesh, &f.mesh, &f.materials, f.palette, f.pattern,
+                             &f.triangles, &f.programs, &f.stats, &f.emptyVao, f.cullBackFaces});
+    return okStatus();
+  }
+  return drawBuckets({&f});
+}
+
+Status StencilPath::endScene() {
+  sceneOpen_ = false;
+  if (shared_.empty()) return okStatus();
+  std::vector<FrameContext> frames;
+  frames.reserve(shared_.size());
+  for (Shared& o : shared_)
+    frames.push_back(FrameContext{o.camera, o.viewport, *o.settings, *o.lighting, *o.gpuMesh, *o.mesh, *o.materials, o.palette, o.pattern,
+                                  *o.triangles, *o.programs, *o.stats, *o.emptyVao});
+  for (std::size_t i = 0; i < frames.size(); ++i) frames[i].cullBackFaces = shared_[i].cullBackFaces;
+  std::vector<FrameContext*> objects;
+  for (FrameContext& fc : frames) objects.push_back(&fc);
+  const Status st = drawBuckets(objects);
+  shared_.clear();
+  return st;
+}
+
+Status StencilPath::drawBuckets(const std::vector<FrameContext*>& objects) {
+  FrameContext& f = *objects[0];  // the frame-wide state (palette, pattern, settings) is the same for all
+  const RenderSettings& s = f.settings;
 
   const gl::StrokeSource stroke = f.strokeSource();
   const bool angleBuffer = stroke == gl::StrokeSource::Field || stroke == gl::StrokeSource::Light;
@@ -70,8 +120,8 @@ Status StencilPath::draw(FrameContext& f) {
   glm::ivec4 meshRect(0, 0, vp.z, vp.w);
   if (s.stencilScissor) {
     meshRect = glm::ivec4(vp.z, vp.w, 0, 0);
-    for (const glm::ivec4& b : f.triangles.shading().bucketBounds)
-      if (b.z > b.x && b.w > b.y) meshRect = glm::ivec4(glm::min(glm::ivec2(meshRect), glm::ivec2(b)), glm::max(glm::ivec2(meshRect.z, meshRect.w), glm::ivec2(b.z, b.w)));
+    for (const FrameContext* o : objects)
+      for (const glm::ivec4& b : o->triangles.shading().bucketBounds) meshRect = unite(meshRect, b);
   }
   f.stats.surfaceBuffers += int(angleBuffer) + int(objectPattern);
   if (!buffersFromMasks) {
@@ -83,7 +133,6 @@ Status StencilPath::draw(FrameContext& f) {
   }
 
   (*mask)->use();
-  setMeshTransform(**mask, f.camera);
   if (buffersFromMasks && objectPattern) f.palette->bindPattern(**mask, f.pattern);
   if (buffersFromMasks && angleBuffer) f.palette->bindStrokeSource(**mask, f.pattern);
   // Layers stored over the background are drawn opaque: the background under them would be
@@ -109,23 +158,44 @@ Status StencilPath::draw(FrameContext& f) {
     else f.palette->bindStrokeSource(**layerQuad, f.pattern);
   }
 
-  // (1) the bucket's triangles mark the pixels where they are visible so far with `mark`
-  auto drawMask = [&](int k, std::uint32_t count, int mark) {
-    gl::PassState state = f.meshPass(gl::pass::kStencilMask);
-    state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
-    state.stencilRef = mark;
-    gl::apply(state);
-    (*mask)->use();
-    f.gpuMesh.bindIndices(f.triangles.bucketIndices());
-    f.gpuMesh.drawTriangles(f.triangles.bucketFirst(k), count);
-    ++f.stats.drawCalls;
+  // (1) each object's triangles of the bucket mark the pixels where they are visible so far
+  // with `mark` (the program is each object's: a see-through mesh binds its coverage to it)
+  auto drawMasks = [&](int k, int mark) -> Status {
+    for (FrameContext* o : objects) {
+      const std::uint32_t count = k < o->triangles.buckets() ? o->triangles.bucketCount(k) : 0;
+      if (count == 0) continue;
+      gl::PassState state = o->meshPass(gl::pass::kStencilMask);
+      state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
+      state.stencilRef = mark;
+      gl::apply(state);
+      Result<gl::ShaderProgram*> p = o == &f ? mask : o->program(maskVariant);
+      if (!p) return Error{p.error()};
+      (*p)->use();
+      setMeshTransform(**p, o->camera);
+      o->gpuMesh.bindIndices(o->triangles.bucketIndices());
+      o->gpuMesh.drawTriangles(o->triangles.bucketFirst(k), count);
+      ++f.stats.drawCalls;
+    }
+    return okStatus();
+  };
+  // A bucket's triangles over all objects, and the screen rectangle they cover.
+  auto bucketCount = [&](int k) {
+    std::uint32_t n = 0;
+    for (const FrameContext* o : objects) n += k < o->triangles.buckets() ? o->triangles.bucketCount(k) : 0;
+    return n;
+  };
+  auto bucketRect = [&](int k) {
+    glm::ivec4 r(vp.z, vp.w, 0, 0);
+    for (const FrameContext* o : objects)
+      if (k < o->triangles.buckets()) r = unite(r, o->triangles.shading().bucketBounds[static_cast<size_t>(k)]);
+    return r;
   };
   // (2) the background under the pixels marked `mark`, (3) the palette layer blended over it,
   // clearing the mark as it is drawn (the background only under layers not stored over it).
   auto drawQuads = [&](int k, std::uint32_t count, int mark) {
     glm::ivec4 rect = vp;
     if (s.stencilScissor) {
-      const glm::ivec4& b = f.triangles.shading().bucketBounds[static_cast<size_t>(k)];
+      const glm::ivec4 b = bucketRect(k);
       rect = glm::ivec4(vp.x + b.x, vp.y + b.y, b.z - b.x, b.w - b.y);
       if (count > 0 && (rect.z <= 0 || rect.w <= 0)) return;  // entirely off screen
     }
@@ -153,14 +223,18 @@ Status StencilPath::draw(FrameContext& f) {
     ++f.stats.drawCalls;
   };
 
-  std::vector<int> drawn;  // the buckets drawn, in palette order
-  for (int k = 0; k < f.triangles.buckets(); ++k)
-    if (f.triangles.bucketCount(k) > 0 || !s.stencilSkipEmpty) drawn.push_back(k);
+  // The buckets drawn, in palette order (every object's are the palette's entries).
+  int buckets = 0;
+  for (const FrameContext* o : objects) buckets = std::max(buckets, o->triangles.buckets());
+  std::vector<int> drawn;
+  for (int k = 0; k < buckets; ++k)
+    if (bucketCount(k) > 0 || !s.stencilSkipEmpty) drawn.push_back(k);
+  // Objects drawn together behave as one mesh: a nearer object's mask overwrites a farther one's
+  // mark, a farther one fails the depth test, so each pixel shows the nearest surface's bucket.
   if (!s.stencilMasksFirst) {
     for (int k : drawn) {
-      const std::uint32_t count = f.triangles.bucketCount(k);
-      if (count > 0) drawMask(k, count, 1);
-      drawQuads(k, count, 1);
+      if (Status st = drawMasks(k, 1); !st) return st;
+      drawQuads(k, bucketCount(k), 1);
     }
   } else {
     // Later buckets' triangles overwrite earlier marks where nearer, so each pixel ends marked
@@ -169,9 +243,9 @@ Status StencilPath::draw(FrameContext& f) {
       const std::size_t last = std::min(drawn.size(), first + kMarksPerRun);
       if (buffersFromMasks && !maskTarget_.bind(maskOutputs)) return Error{"the stencil path's mask framebuffer could not be bound again"};
       for (std::size_t i = first; i < last; ++i)
-        if (const std::uint32_t count = f.triangles.bucketCount(drawn[i]); count > 0) drawMask(drawn[i], count, int(i - first) + 1);
+        if (Status st = drawMasks(drawn[i], int(i - first) + 1); !st) return st;
       if (buffersFromMasks) maskTarget_.restore();
-      for (std::size_t i = first; i < last; ++i) drawQuads(drawn[i], f.triangles.bucketCount(drawn[i]), int(i - first) + 1);
+      for (std::size_t i = first; i < last; ++i) drawQuads(drawn[i], bucketCount(drawn[i]), int(i - first) + 1);
     }
   }
   glScissor(vp.x, vp.y, vp.z, vp.w);

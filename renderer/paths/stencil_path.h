@@ -16,6 +16,8 @@
 // construction (a GL test asserts the two images are equal).
 #pragma once
 
+#include <vector>
+
 #include "renderer/gl/shared_depth_framebuffer.h"
 #include "renderer/paths/render_pass.h"
 #include "renderer/passes/surface_buffer_pass.h"
@@ -26,8 +28,37 @@ namespace npr {
 class StencilPath : public RenderPass {
  public:
   Status draw(FrameContext& frame) override;
+  // A scene's objects that can share them (canShare) are lit as they are drawn but marked and
+  // covered together at the end: each bucket's quads once for all of them, instead of once per
+  // object (bench_scene: 256 objects drew 256 times the quads of one mesh).
+  void beginScene() override;
+  [[nodiscard]] Status endScene() override;
 
  private:
+  // What an object's draw leaves for endScene: its FrameContext's contents, the references
+  // made pointers (they outlive the scene's loop; the camera placed for it is copied).
+  struct Shared {
+    CameraMatrices camera;
+    glm::ivec4 viewport;
+    const RenderSettings* settings;
+    const LightingState* lighting;
+    const GpuMesh* gpuMesh;
+    const Mesh* mesh;
+    const GpuMaterials* materials;
+    const GpuPalette* palette;
+    PatternPlacement pattern;
+    TriangleShadingCache* triangles;
+    gl::ProgramCache* programs;
+    FrameStats* stats;
+    const gl::VertexArray* emptyVao;
+    bool cullBackFaces;
+  };
+  bool canShare(const FrameContext& frame) const;
+  // Masks and quads for one object or several drawn as one; the first gives the frame-wide state.
+  Status drawBuckets(const std::vector<FrameContext*>& objects);
+
+  bool sceneOpen_ = false;
+  std::vector<Shared> shared_;
   TrianglePath selection_;
   SurfaceBufferPass strokeAngles_{SurfaceBufferPass::Content::StrokeAngles};
   SurfaceBufferPass patternCoordinates_{SurfaceBufferPass::Content::PatternCoordinates};

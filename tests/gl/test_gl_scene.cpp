@@ -218,6 +218,50 @@ TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
   }
 }
 
+// The stencil path marks a scene's objects together and draws each bucket's quads once for all
+// of them: the same picture as drawing them one by one (objects that overlap on screen, in
+// front of and behind each other), with fewer draws.
+TEST_F(SceneFixture, TheStencilPathDrawsAScenesObjectsTogetherAsItDrawsThemOneByOne) {
+  const Palette hatch = test::shippedPalette("hatch");
+  ASSERT_TRUE(r->setPalette(hatch));
+  const Mesh sphere = icosphere(3);
+  std::vector<ModelId> ids;
+  for (int i = 0; i < 6; ++i)
+    ids.push_back(r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f + 0.2f * float(i), 0.08f * float(i % 3), 0.15f * float(i % 2))) *
+                                          glm::scale(glm::mat4(1.0f), glm::vec3(0.3f))));
+  const CameraMatrices cam = test::testCamera(1.0f);
+  lightFromAbove(*r, cam);
+  for (bool masksFirst : {true, false}) {
+    SCOPED_TRACE(masksFirst ? "masks first" : "mask and quads per bucket");
+    RenderSettings s;
+    s.path = RenderPath::Stencil;
+    s.stencilMasksFirst = masksFirst;
+    const ImageRGBA8 together = test::renderImage(*r, cam, s, kSize, kSize);
+    const int drawsTogether = r->stats().drawCalls;
+    // The same palette given to each object as its own: objects of different palettes are
+    // drawn one by one.
+    for (ModelId id : ids) ASSERT_TRUE(r->setModelPalette(id, hatch));
+    const ImageRGBA8 oneByOne = test::renderImage(*r, cam, s, kSize, kSize);
+    const int drawsOneByOne = r->stats().drawCalls;
+    for (ModelId id : ids) r->clearModelPalette(id);
+    std::size_t differ = 0, covered = 0;
+    const ImageRGBA8 empty = [&] {
+      for (ModelId id : ids) r->setModelVisible(id, false);
+      ImageRGBA8 e = test::renderImage(*r, cam, s, kSize, kSize);
+      for (ModelId id : ids) r->setModelVisible(id, true);
+      return e;
+    }();
+    for (std::size_t i = 0; i < together.pixels.size(); i += 4) {
+      covered += !std::equal(&together.pixels[i], &together.pixels[i] + 3, &empty.pixels[i]);
+      differ += !std::equal(&together.pixels[i], &together.pixels[i] + 3, &oneByOne.pixels[i]);
+    }
+    EXPECT_GT(covered, std::size_t(kSize * kSize / 10));
+    EXPECT_EQ(differ, 0u);
+    // Per bucket, a mask per object and one quad against a mask and a quad per object.
+    EXPECT_LT(drawsTogether, drawsOneByOne * 3 / 4) << drawsTogether << " against " << drawsOneByOne;
+  }
+}
+
 TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
   const Mesh a = icosphere(3), b = torus(48, 24);
   const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
