@@ -8,7 +8,8 @@
 # independent); then bench_frames' per-triangle lighting on the CPU against the GPU (the choice
 # made on llvmpipe) on the torus; the turn's placement forced into the mesh pass and into the
 # resolve pass on the bunny and the torus (the density threshold chosen on llvmpipe); a skinned
-# and a morphing torus against it still (bench_animation). With IMAGES, the bunny in every path
+# and a morphing torus against it still (bench_animation); scenes of many objects against one
+# mesh, with the GL calls each frame sends (bench_scene). With IMAGES, the bunny in every path
 # and every shipped style is also saved there as PNGs, with any GL error failing the run, to be
 # compared with the same pictures from llvmpipe. Needs the Release build with the benchmarks
 # (the default).
@@ -55,6 +56,9 @@ fi
 echo
 echo "A deforming torus against it still (bench_animation) at 1920x1080:"
 [ -x "$build/tests/bench/bench_animation" ] && "$build/tests/bench/bench_animation" --size 1920x1080 --frames "$frames" 2>&1
+echo
+echo "A scene of 1, 16 and 256 objects against one merged mesh (bench_scene) at 1920x1080:"
+[ -x "$build/tests/bench/bench_scene" ] && "$build/tests/bench/bench_scene" --size 1920x1080 --frames "$frames" 2>&1
 if [ -n "$images" ]; then
   mkdir -p "$images"
   fails=0
