@@ -11,65 +11,65 @@ namespace {
 // What GL holds of the pass state, as the last apply() set it; none: unknown, set everything.
 // Every field is sent when it differs, enabled or not (a blend function while blending is off
 // is harmless), so the copy mirrors GL exactly.
-std::optional<PassState> g_held;
-StateTraffic g_traffic;
+std::optional<PassState> g_heldState;
+StateTraffic g_stateTraffic;
 
 // Sends `set` when the field differs from what GL holds (or nothing is known).
 template <class Field, class Set>
-void update(bool all, Field& held, const Field& wanted, Set set) {
+void sendIfChanged(bool all, Field& held, const Field& wanted, Set set) {
   if (all || held != wanted) {
     set();
     held = wanted;
-    ++g_traffic.sent;
+    ++g_stateTraffic.sent;
   } else {
-    ++g_traffic.skipped;
+    ++g_stateTraffic.skipped;
   }
 }
 
-void toggle(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
+void setCapability(GLenum capability, bool on) { on ? glEnable(capability) : glDisable(capability); }
 
 }  // namespace
 
-StateTraffic stateTraffic() { return g_traffic; }
+StateTraffic stateTraffic() { return g_stateTraffic; }
 
-void forgetAppliedState() { g_held.reset(); }
+void forgetAppliedState() { g_heldState.reset(); }
 
 void apply(const PassState& s) {
-  const bool all = !g_held;
+  const bool all = !g_heldState;
   if (all) {
-    g_held.emplace();
+    g_heldState.emplace();
     glStencilMask(0xFF);
     glFrontFace(GL_CCW);
   }
-  PassState& h = *g_held;
-  update(all, h.depthTest, s.depthTest, [&] { toggle(GL_DEPTH_TEST, s.depthTest); });
-  update(all, h.depthFunc, s.depthFunc, [&] { glDepthFunc(s.depthFunc); });
-  update(all, h.depthWrite, s.depthWrite, [&] { glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE); });
-  update(all, h.colorWrite, s.colorWrite, [&] {
+  PassState& h = *g_heldState;
+  sendIfChanged(all, h.depthTest, s.depthTest, [&] { setCapability(GL_DEPTH_TEST, s.depthTest); });
+  sendIfChanged(all, h.depthFunc, s.depthFunc, [&] { glDepthFunc(s.depthFunc); });
+  sendIfChanged(all, h.depthWrite, s.depthWrite, [&] { glDepthMask(s.depthWrite ? GL_TRUE : GL_FALSE); });
+  sendIfChanged(all, h.colorWrite, s.colorWrite, [&] {
     const GLboolean c = s.colorWrite ? GL_TRUE : GL_FALSE;
     glColorMask(c, c, c, c);
   });
-  update(all, h.blend, s.blend, [&] { toggle(GL_BLEND, s.blend); });
-  update(all, h.additive, s.additive, [&] {
+  sendIfChanged(all, h.blend, s.blend, [&] { setCapability(GL_BLEND, s.blend); });
+  sendIfChanged(all, h.additive, s.additive, [&] {
     if (s.additive) glBlendFunc(GL_ONE, GL_ONE);
     else glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   });
-  update(all, h.stencilTest, s.stencilTest, [&] { toggle(GL_STENCIL_TEST, s.stencilTest); });
+  sendIfChanged(all, h.stencilTest, s.stencilTest, [&] { setCapability(GL_STENCIL_TEST, s.stencilTest); });
   // The function and its reference go in one call: held as one pair.
   std::pair<GLenum, int> func{h.stencilFunc, h.stencilRef};
-  update(all, func, std::pair<GLenum, int>{s.stencilFunc, s.stencilRef}, [&] { glStencilFunc(s.stencilFunc, s.stencilRef, 0xFF); });
+  sendIfChanged(all, func, std::pair<GLenum, int>{s.stencilFunc, s.stencilRef}, [&] { glStencilFunc(s.stencilFunc, s.stencilRef, 0xFF); });
   h.stencilFunc = func.first;
   h.stencilRef = func.second;
-  update(all, h.stencilPass, s.stencilPass, [&] { glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass); });
-  update(all, h.scissor, s.scissor, [&] { toggle(GL_SCISSOR_TEST, s.scissor); });
-  update(all, h.programPointSize, s.programPointSize, [&] { toggle(GL_PROGRAM_POINT_SIZE, s.programPointSize); });
-  update(all, h.cull, s.cull, [&] {
-    toggle(GL_CULL_FACE, s.cull != 0);
+  sendIfChanged(all, h.stencilPass, s.stencilPass, [&] { glStencilOp(GL_KEEP, GL_KEEP, s.stencilPass); });
+  sendIfChanged(all, h.scissor, s.scissor, [&] { setCapability(GL_SCISSOR_TEST, s.scissor); });
+  sendIfChanged(all, h.programPointSize, s.programPointSize, [&] { setCapability(GL_PROGRAM_POINT_SIZE, s.programPointSize); });
+  sendIfChanged(all, h.cull, s.cull, [&] {
+    setCapability(GL_CULL_FACE, s.cull != 0);
     if (s.cull != 0) glCullFace(s.cull);
   });
   std::pair<float, float> offset{h.offsetFactor, h.offsetUnits};
-  update(all, offset, std::pair<float, float>{s.offsetFactor, s.offsetUnits}, [&] {
-    toggle(GL_POLYGON_OFFSET_FILL, s.offsetFactor != 0.0f || s.offsetUnits != 0.0f);
+  sendIfChanged(all, offset, std::pair<float, float>{s.offsetFactor, s.offsetUnits}, [&] {
+    setCapability(GL_POLYGON_OFFSET_FILL, s.offsetFactor != 0.0f || s.offsetUnits != 0.0f);
     glPolygonOffset(s.offsetFactor, s.offsetUnits);
   });
   h.offsetFactor = offset.first;

@@ -117,10 +117,10 @@ Result<ShaderProgram> ShaderProgram::buildCompute(const std::string& computeFile
 }
 
 namespace {
-UniformTraffic g_traffic;
+UniformTraffic g_uniformTraffic;
 }  // namespace
 
-UniformTraffic uniformTraffic() { return g_traffic; }
+UniformTraffic uniformTraffic() { return g_uniformTraffic; }
 
 ShaderProgram::Uniform& ShaderProgram::uniform(const char* name) {
   auto it = uniforms_.find(name);
@@ -138,11 +138,11 @@ GLint ShaderProgram::changed(const char* name, const void* value, std::size_t by
   if (u.location < 0) return -1;
   const auto* v = static_cast<const unsigned char*>(value);
   if (u.sent.size() == bytes && std::memcmp(u.sent.data(), v, bytes) == 0) {
-    ++g_traffic.unchanged;
+    ++g_uniformTraffic.unchanged;
     return -1;
   }
   u.sent.assign(v, v + bytes);
-  ++g_traffic.sent;
+  ++g_uniformTraffic.sent;
   return u.location;
 }
 

@@ -14,7 +14,7 @@ namespace {
 constexpr int kMarksPerRun = 255;
 
 // The smallest rectangle (x0, y0, x1, y1) holding both; an empty one (x1 <= x0) adds nothing.
-glm::ivec4 unite(const glm::ivec4& a, const glm::ivec4& b) {
+glm::ivec4 uniteRects(const glm::ivec4& a, const glm::ivec4& b) {
   if (b.z <= b.x || b.w <= b.y) return a;
   return glm::ivec4(glm::min(glm::ivec2(a), glm::ivec2(b)), glm::max(glm::ivec2(a.z, a.w), glm::ivec2(b.z, b.w)));
 }
@@ -121,7 +121,7 @@ Status StencilPath::drawBuckets(const std::vector<FrameContext*>& objects) {
   if (s.stencilScissor) {
     meshRect = glm::ivec4(vp.z, vp.w, 0, 0);
     for (const FrameContext* o : objects)
-      for (const glm::ivec4& b : o->triangles.shading().bucketBounds) meshRect = unite(meshRect, b);
+      for (const glm::ivec4& b : o->triangles.shading().bucketBounds) meshRect = uniteRects(meshRect, b);
   }
   f.stats.surfaceBuffers += int(angleBuffer) + int(objectPattern);
   if (!buffersFromMasks) {
@@ -187,7 +187,7 @@ Status StencilPath::drawBuckets(const std::vector<FrameContext*>& objects) {
   auto bucketRect = [&](int k) {
     glm::ivec4 r(vp.z, vp.w, 0, 0);
     for (const FrameContext* o : objects)
-      if (k < o->triangles.buckets()) r = unite(r, o->triangles.shading().bucketBounds[static_cast<size_t>(k)]);
+      if (k < o->triangles.buckets()) r = uniteRects(r, o->triangles.shading().bucketBounds[static_cast<size_t>(k)]);
     return r;
   };
   // (2) the background under the pixels marked `mark`, (3) the palette layer blended over it,
