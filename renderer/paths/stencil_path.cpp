@@ -56,12 +56,13 @@ Status StencilPath::endScene() {
   if (shared_.empty()) return okStatus();
   std::vector<FrameContext> frames;
   frames.reserve(shared_.size());
-  for (Shared& o : shared_)
+  std::vector<FrameContext*> objects;
+  for (Shared& o : shared_) {
     frames.push_back(FrameContext{o.camera, o.viewport, *o.settings, *o.lighting, *o.gpuMesh, *o.mesh, *o.materials, o.palette, o.pattern,
                                   *o.triangles, *o.programs, *o.stats, *o.emptyVao});
-  for (std::size_t i = 0; i < frames.size(); ++i) frames[i].cullBackFaces = shared_[i].cullBackFaces;
-  std::vector<FrameContext*> objects;
-  for (FrameContext& fc : frames) objects.push_back(&fc);
+    frames.back().cullBackFaces = o.cullBackFaces;
+    objects.push_back(&frames.back());  // stable: reserved above
+  }
   const Status st = drawBuckets(objects);
   shared_.clear();
   return st;
@@ -168,7 +169,8 @@ Status StencilPath::drawBuckets(const std::vector<FrameContext*>& objects) {
       state.colorWrite = buffersFromMasks;  // outputs 1 and 2 only (output 0 goes nowhere)
       state.stencilRef = mark;
       gl::apply(state);
-      Result<gl::ShaderProgram*> p = o == &f ? mask : o->program(maskVariant);
+      // Fetched for every mask: a see-through object binds its own coverage maps to it.
+      Result<gl::ShaderProgram*> p = o->program(maskVariant);
       if (!p) return Error{p.error()};
       (*p)->use();
       setMeshTransform(**p, o->camera);

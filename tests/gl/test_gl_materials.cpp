@@ -229,6 +229,38 @@ TEST_F(Fixture, AMaskedMaterialIsCutOutInEveryPath) {
   }
 }
 
+// The stencil path marks a scene's objects together: each see-through object's masks keep its
+// own cut (its coverage bound for each of its masks), as when the objects are drawn one by one.
+TEST_F(Fixture, SeeThroughObjectsMarkedTogetherKeepTheirOwnCuts) {
+  const Mesh cutLeft = seeThroughSquare(MeshMaterial::Alpha::Mask, 1.0f, true, 0.0f);
+  Mesh cutRight = cutLeft;  // the same square, its map's other half transparent
+  for (std::size_t i = 3; i < cutRight.textures[0].image.pixels.size(); i += 4) cutRight.textures[0].image.pixels[i] = 255 - cutRight.textures[0].image.pixels[i];
+  const Palette hatch = test::shippedPalette("hatch");
+  ASSERT_TRUE(r->setPalette(hatch));
+  OrbitCamera c(0.0f, 0.0f, 3.0f);
+  c.frame(1.0f);
+  const CameraMatrices cam = c.matrices(1.0f);
+  // A light close to the squares: their triangles fall in several buckets.
+  const float pos[4] = {0.0f, 0.2f, 0.5f, 1.0f};
+  r->lighting().setModelView(cam.view);
+  ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
+  const ModelId a = r->addModel(cutLeft, glm::translate(glm::mat4(1.0f), glm::vec3(-0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
+  const ModelId b = r->addModel(cutRight, glm::translate(glm::mat4(1.0f), glm::vec3(0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
+  RenderSettings s;
+  s.path = RenderPath::Stencil;
+  constexpr int kSide = 120;
+  const ImageRGBA8 together = renderImage(*r, cam, s, kSide, kSide);
+  EXPECT_GT(r->stats().drawCalls, 4);
+  ASSERT_TRUE(r->setModelPalette(a, hatch));  // its own palette: drawn alone
+  ASSERT_TRUE(r->setModelPalette(b, hatch));
+  const int drawsTogether = r->stats().drawCalls;
+  const ImageRGBA8 oneByOne = renderImage(*r, cam, s, kSide, kSide);
+  EXPECT_LT(drawsTogether, r->stats().drawCalls);  // the quads drawn once for both
+  int differ = 0;
+  for (std::size_t i = 0; i < together.pixels.size(); i += 4) differ += !std::equal(&together.pixels[i], &together.pixels[i] + 3, &oneByOne.pixels[i]);
+  EXPECT_EQ(differ, 0);
+}
+
 // The geometry pass (image-space edges, screen-space occlusion, the tests' eye positions) leaves
 // out what the cut leaves out, from the first frame on: a masked square's geometry has its
 // right half only.
