@@ -64,8 +64,6 @@ class SceneObjects {
   const std::vector<ViewerObject>& objects() const { return objects_; }
   const std::vector<SceneFile>& files() const { return files_; }
   bool empty() const { return objects_.empty(); }
-  // The first object's mesh (the overlay's material list), or null.
-  const Mesh* firstMesh() const { return objects_.empty() ? nullptr : objects_.front().mesh.get(); }
   std::size_t triangles() const;
   // The shown object whose surface the ray through `ndc` (-1..1) meets first, or none.
   std::optional<std::size_t> pick(const CameraMatrices& camera, const glm::vec2& ndc) const;

@@ -40,7 +40,6 @@ enum class SettingType {
   File,    // a shipped palette's folder name, a path, or none
   Text,    // a value of its own form (see help and example)
 };
-const char* settingTypeName(SettingType t);
 
 struct Setting {
   std::string key;      // the command line's --key and the style file's key

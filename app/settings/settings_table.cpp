@@ -470,21 +470,6 @@ std::vector<Setting> buildTable() {
 
 }  // namespace
 
-const char* settingTypeName(SettingType t) {
-  switch (t) {
-    case SettingType::Bool: return "on|off";
-    case SettingType::Int: return "integer";
-    case SettingType::Float: return "number";
-    case SettingType::Choice: return "choice";
-    case SettingType::Kinds: return "list";
-    case SettingType::Colour: return "R,G,B";
-    case SettingType::Vector: return "X,Y,Z";
-    case SettingType::File: return "palette";
-    case SettingType::Text: return "text";
-  }
-  return "text";
-}
-
 std::string Setting::valueForm() const {
   auto num = [](double v) {
     char buf[32];

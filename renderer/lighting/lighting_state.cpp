@@ -34,12 +34,6 @@ const char* toneModelName(ToneModel t) {
   return "?";
 }
 
-std::optional<ToneModel> parseToneModel(const std::string& name) {
-  for (ToneModel t : {ToneModel::OpenGL, ToneModel::Gooch, ToneModel::Splashback, ToneModel::Charcoal})
-    if (name == toneModelName(t)) return t;
-  return std::nullopt;
-}
-
 Status LightingState::setToneModel(ToneModel model, const ToneParameters& p) {
   auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
   if (!in01(p.blue) || !in01(p.yellow) || !in01(p.alpha) || !in01(p.beta) || !in01(p.splashAlpha))

@@ -48,7 +48,6 @@ struct Material {
 // towards the eye, bright where the surface faces the viewer, 1/3 at the silhouette.
 enum class ToneModel { OpenGL, Gooch, Splashback, Charcoal };
 const char* toneModelName(ToneModel t);
-std::optional<ToneModel> parseToneModel(const std::string& name);  // what toneModelName gives
 
 struct ToneParameters {
   float blue = 0.4f;    // k_blue = (0, 0, blue)

@@ -76,7 +76,6 @@ class FeatureEdges {
 
   std::size_t weldedVertices() const { return positions_.size(); }
   std::size_t manifoldEdges() const { return manifoldFaces_.size() / 2; }
-  std::size_t boundaryEdges() const { return boundary_.size() / 2; }
   std::size_t duplicateFaces() const { return duplicateFaces_; }
   std::size_t junctionEdges() const { return junctionCount_; }
 

@@ -90,8 +90,6 @@ class LinePass {
   void setMesh(const Mesh* mesh);
   // The mesh was deformed in place: the lines follow (their edges are not searched again).
   void geometryChanged();
-  // How the silhouettes' stroke parameters moved at the last view change (line_chains.h).
-  const ChainCoherence& silhouetteCoherence() const { return silhouetteChains_.coherence(); }
   // Finds and uploads what the settings draw for this view (the static kinds once per mesh).
   void update(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport, FrameStats& stats);
   // Draws the lines of `style` found by the last update (a scene draws each style on every

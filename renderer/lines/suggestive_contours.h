@@ -38,8 +38,6 @@ class SuggestiveContours {
   // The segments seen from `eye` (object space), kind EdgeKind::Suggestive.
   const std::vector<FeatureLine>& lines(const glm::vec3& eye, float threshold = kDefaultThreshold);
 
-  // kappa_r at each welded vertex for the last lines() (tests).
-  const std::vector<float>& radialCurvature() const { return radial_; }
 
  private:
   const Mesh* mesh_;

@@ -44,7 +44,6 @@ class GpuMaterials {
     variant.alphaCoverage = true;
     if (!variant.materials && !variant.materialUniform) variant.materialMaps = hasMaps();
   }
-  int mapSide() const { return mapSide_; }
 
   // Rewrites the table where it changed (the default material follows the lighting state).
   void update(const Mesh& mesh, const LightingState& lighting, FrameStats& stats);

@@ -68,8 +68,6 @@ class GpuPalette {
   bool filtered(const PatternPlacement& at) const {
     return at.linearFilter && at.mapping() != gl::PatternMapping::Screen && !sizesDiffer_;
   }
-  // Mip levels of the layer array (level 0 included).
-  int mipLevels() const { return mipLevels_; }
   // The mip level a pattern drawn at `texelsPerPixel` reads: the nearest level (GL's
   // NEAREST_MIPMAP rule), clamped to the levels there are.
   int lodFor(float texelsPerPixel) const;

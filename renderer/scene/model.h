@@ -47,9 +47,6 @@ class Model {
   // The mesh drawn: for a mesh that deforms (skins, morph targets), the model's own posed copy,
   // current on the frames that read it on the CPU (applyPose), else the last pose made there.
   const Mesh& mesh() const { return *mesh_; }
-  // The mesh as given, in its rest pose: what is attached to the surface is computed on it
-  // (the hatching direction field) and carried by the deformation.
-  const Mesh& restMesh() const { return *rest_; }
   // Gives a deforming mesh its pose: morph `weights`, and `joints` (per skin joint, the mesh's
   // rest space to its posed space), made by the next applyPose. Nothing happens for a mesh that
   // does not deform.
