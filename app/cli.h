@@ -16,7 +16,7 @@
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_maker.h"
 #include "renderer/paths/path_table.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

@@ -29,7 +29,7 @@ Result<SvgFills> traceFills(Renderer& renderer, const CameraMatrices& camera, co
   auto target = OffscreenTarget::create(size.x, size.y, blend ? OffscreenTarget::Format::RGBA32F : OffscreenTarget::Format::RGBA8);
   if (!target) return Error{target.error()};
   target->clear(glm::vec4(0.0f));
-  if (Status s = renderer.renderSelection(camera, settings, blend ? SelectionOutput::Blend : SelectionOutput::Entry, {0, 0, size.x, size.y}); !s)
+  if (Status s = renderer.render(camera, settings, {0, 0, size.x, size.y}, blend ? FrameOutput::Blend : FrameOutput::Entry); !s)
     return Error{s.error()};
   std::vector<int> labels(std::size_t(size.x) * std::size_t(size.y));
   if (blend) {
@@ -90,7 +90,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
   auto depth = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
   if (!depth) return Error{depth.error()};
   depth->clear(glm::vec4(0.0f));
-  if (Status s = renderer.renderGeometry(camera, GeometryOutput::EyePosition, {0, 0, size.x, size.y}); !s) return s;
+  if (Status s = renderer.render(camera, RenderSettings{}, {0, 0, size.x, size.y}, FrameOutput::EyePosition); !s) return s;
   const ImageRGBA32F eye = depth->readRGBA32F();
   // One group per kind and part of each line style (the line settings' own, then the sets),
   // as the frame draws them: each style keeps, on each object, the kinds it draws there.
@@ -110,7 +110,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
     // colour=tone: the lines split by the palette entry their lit tone matches, a group each in
     // the entry's average colour, lit and matched on the CPU as the line shader does on the GPU.
     std::vector<std::pair<std::vector<FeatureLine>, std::optional<glm::vec3>>> parts;
-    const GpuPalette* palette = renderer.palette();
+    const GpuPalette* palette = renderer.palettes().main();
     if (style.toneColour && palette && palette->matcher()) {
       const PreparedLighting<float> lit = prepareLighting<float>(renderer.lighting());
       const glm::mat3 normalToEye = glm::transpose(glm::inverse(glm::mat3(camera.view)));

@@ -51,7 +51,7 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
     loaded.push_back(std::move(*s));
   }
   if (!add) {
-    renderer.clearModels();
+    renderer.scene().clear();
     objects_.clear();
     files_.clear();
   }
@@ -77,8 +77,8 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       const std::vector<SceneSkin>& skins = files_.back().skins;  // the file's, moved there
       if (o.skin >= 0 && o.skin < static_cast<int>(skins.size()))
         for (int joint : skins[static_cast<std::size_t>(o.skin)].joints) v.animated = v.animated || movedNode(joint);
-      v.id = renderer.addModel(*v.mesh, glm::mat4(1.0f));
-      renderer.setModelName(v.id, v.name);  // line sets select objects by it
+      v.id = renderer.scene().add(*v.mesh, glm::mat4(1.0f));
+      renderer.scene().setName(v.id, v.name);  // line sets select objects by it
       if (!v.mesh->deformation.empty()) files_.back().deforms = true;
       objects_.push_back(std::move(v));
     }
@@ -126,7 +126,7 @@ void SceneObjects::place(Renderer& renderer) {
   if (objects_.size() == 1) {
     fit_ = glm::inverse(files_[objects_.front().file].layout * objects_.front().inFile);
     objects_.front().placed = glm::mat4(1.0f);
-    renderer.setModelTransform(objects_.front().id, glm::mat4(1.0f));
+    renderer.scene().setTransform(objects_.front().id, glm::mat4(1.0f));
     return;
   }
   const glm::vec4 scene = boundsOf(all, [&](const ViewerObject& o) { return files_[o.file].layout * o.inFile; });
@@ -134,7 +134,7 @@ void SceneObjects::place(Renderer& renderer) {
   fit_ = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / r)) * glm::translate(glm::mat4(1.0f), -glm::vec3(scene));
   for (ViewerObject& o : objects_) {
     o.placed = toViewer(o.file) * o.inFile;
-    renderer.setModelTransform(o.id, o.placed);
+    renderer.scene().setTransform(o.id, o.placed);
   }
 }
 
@@ -153,7 +153,7 @@ void SceneObjects::deform(ViewerObject& o, const SceneFile& file, Renderer& rend
   }
   static const std::vector<float> none;
   const std::vector<float>& weights = o.node >= 0 && o.node < static_cast<int>(nodePose_.weights.size()) ? nodePose_.weights[static_cast<std::size_t>(o.node)] : none;
-  renderer.setModelDeformation(o.id, jointMatrices_, weights);
+  renderer.scene().deform(o.id, jointMatrices_, weights);
 }
 
 std::vector<SceneObjects::AnimationRef> SceneObjects::animations() const {
@@ -207,7 +207,7 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
         for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(placed[c][r]);
       if (!finite) continue;
       o.placed = placed;
-      renderer.setModelPose(o.id, o.placed);
+      renderer.scene().pose(o.id, o.placed);
     }
   }
 }
@@ -215,12 +215,12 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
 bool SceneObjects::setVisible(std::size_t object, bool visible, Renderer& renderer) {
   if (object >= objects_.size()) return false;
   objects_[object].visible = visible;
-  return renderer.setModelVisible(objects_[object].id, visible);
+  return renderer.scene().setVisible(objects_[object].id, visible);
 }
 
 bool SceneObjects::setDetail(std::size_t object, float detail, Renderer& renderer) {
-  if (object >= objects_.size() || !renderer.setModelDetail(objects_[object].id, detail)) return false;
-  objects_[object].detail = renderer.model(objects_[object].id)->detail();
+  if (object >= objects_.size() || !renderer.scene().setDetail(objects_[object].id, detail)) return false;
+  objects_[object].detail = renderer.scene().find(objects_[object].id)->detail();
   return true;
 }
 
@@ -228,13 +228,13 @@ Status SceneObjects::setPalette(std::size_t object, const std::string& path, Ren
   if (object >= objects_.size()) return Error{"no object number " + std::to_string(object + 1) + " (the scene has " + std::to_string(objects_.size()) + ")"};
   ViewerObject& o = objects_[object];
   if (path.empty()) {
-    renderer.clearModelPalette(o.id);
+    renderer.scene().clearPalette(o.id);
     o.palette.clear();
     return okStatus();
   }
   Result<Palette> p = loadPalette(path);
   if (!p) return Error{p.error()};
-  if (Status s = renderer.setModelPalette(o.id, *p); !s) return s;
+  if (Status s = renderer.scene().setPalette(o.id, *p); !s) return s;
   o.palette = path;
   return okStatus();
 }

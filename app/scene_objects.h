@@ -12,7 +12,7 @@
 
 #include "app/animation_playback.h"
 #include "app/scene_layout.h"
-#include "renderer/animation/node_animation.h"
+#include "renderer/mesh/node_animation.h"
 #include "renderer/mesh/scene_description.h"
 #include "renderer/renderer.h"
 

@@ -81,7 +81,7 @@ void ViewerState::noteMissingMaterial(const std::string& material, const char* f
 
 Status ViewerState::setMaterialPalette(const std::string& material, const std::string& path, Renderer& renderer) {
   if (path.empty()) {
-    renderer.clearMaterialPalette(material);
+    renderer.palettes().clearMaterial(material);
     materialPalettes.erase(material);
     return okStatus();
   }
@@ -90,7 +90,7 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
     note("palette for material '" + material + "' not loaded: " + p.error());
     return Error{p.error()};
   }
-  if (Status s = renderer.setMaterialPalette(material, *p); !s) {
+  if (Status s = renderer.palettes().setMaterial(material, *p); !s) {
     note("palette for material '" + material + "' not loaded: " + s.error());
     return s;
   }
@@ -101,7 +101,7 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
 }
 
 void ViewerState::setMaterialDetail(const std::string& material, float detail, Renderer& renderer) {
-  renderer.setMaterialDetail(material, detail);
+  renderer.palettes().setMaterialDetail(material, detail);
   materialDetails[material] = detail;
   noteMissingMaterial(material, "its detail");
 }
@@ -110,7 +110,7 @@ Status ViewerState::setControlPalette(ControlParameter parameter, const std::str
   const char* what = parameter == ControlParameter::Shadow ? "shadow palette" : "occlusion palette";
   std::string& current = parameter == ControlParameter::Shadow ? shadowPalette : occlusionPalette;
   if (path.empty()) {
-    renderer.clearControlPalette(parameter);
+    renderer.palettes().clearControl(parameter);
     current.clear();
     return okStatus();
   }
@@ -119,7 +119,7 @@ Status ViewerState::setControlPalette(ControlParameter parameter, const std::str
     note(std::string(what) + " not loaded: " + p.error());
     return Error{p.error()};
   }
-  if (Status s = renderer.setControlPalette(parameter, *p); !s) {
+  if (Status s = renderer.palettes().setControl(parameter, *p); !s) {
     note(std::string(what) + " not loaded: " + s.error());
     return s;
   }
@@ -143,7 +143,7 @@ Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
     note("palette not loaded: " + p.error());
     return Error{p.error()};
   }
-  if (Status s = renderer.setPalette(*p); !s) {
+  if (Status s = renderer.palettes().setMain(*p); !s) {
     note("palette not loaded: " + s.error());
     return s;
   }

@@ -85,7 +85,7 @@ Status PaletteRenderer::End(const CameraMatrices& camera, const glm::ivec4& view
     }
     mesh_.faceMaterials = triangleMaterials_;
   }
-  renderer_.setMesh(&mesh_);
+  renderer_.scene().setOnly(&mesh_);
   RenderSettings s = settings_;
   s.materials = true;
   return renderer_.render(camera, s, viewport);

@@ -69,6 +69,7 @@ out vec2 vGroundXZ;  // where the ground's shadow texture is read (lighting.glsl
 #ifdef OCCLUSION
 layout(location = 7) in float aOcclusion;  // baked: 1 open, 0 enclosed
 uniform float uOcclusionStrength;
+#include "occlusion_factor.glsl"
 out float vOcclusion;  // what ambient and diffuse are scaled by
 #endif
 
@@ -113,7 +114,7 @@ void main() {
 #endif
 #endif
 #ifdef OCCLUSION
-  vOcclusion = mix(1.0, clamp(aOcclusion, 0.0, 1.0), uOcclusionStrength);
+  vOcclusion = occlusionFactor(aOcclusion, uOcclusionStrength);
   float occlusion = vOcclusion;
 #else
   float occlusion = 1.0;

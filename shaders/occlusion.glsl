@@ -3,7 +3,7 @@
 // bake interpolated from the vertices (OCCLUSION, per-pixel shadings; the per-vertex ones light
 // with it in mesh.vert), or 1. Reads vPosition (eye space), which mesh.frag declares.
 #if defined(SCREEN_OCCLUSION)
-uniform sampler2D uScreenOcclusion;  // this frame's, 1 open (shadows/screen_occlusion_pass.h)
+uniform sampler2D uScreenOcclusion;  // this frame's, 1 open (features/occlusion/screen_occlusion_pass.h)
 uniform vec4 uScreenOcclusionFrame;  // the viewport's origin, texels per pixel
 uniform float uOcclusionStrength;
 // The half-resolution estimate at this pixel: the four texels around it, bilinear weights
@@ -23,7 +23,8 @@ float screenOcclusion() {
     }
   return weight > 0.0 ? sum / weight : 1.0;
 }
-#define OCCLUSION_FACTOR mix(1.0, screenOcclusion(), uOcclusionStrength)
+#include "occlusion_factor.glsl"
+#define OCCLUSION_FACTOR occlusionFactor(screenOcclusion(), uOcclusionStrength)
 #elif defined(OCCLUSION) && !defined(PATH_VERTEX) && !defined(PATH_GOURAUD)
 in float vOcclusion;
 #define OCCLUSION_FACTOR vOcclusion

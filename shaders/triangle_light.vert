@@ -8,6 +8,7 @@ layout(location = 1) in vec3 aFaceNormal;
 #ifdef OCCLUSION
 layout(location = 7) in float aOcclusion;  // the face's vertices' mean
 uniform float uOcclusionStrength;
+#include "occlusion_factor.glsl"
 #endif
 
 uniform mat4 uModelView;
@@ -22,7 +23,7 @@ void main() {
   vec3 eye = (uModelView * vec4(aCentroid, 1.0)).xyz;
   vec3 n = uNormalMatrix * aFaceNormal;
 #ifdef OCCLUSION
-  float occlusion = mix(1.0, clamp(aOcclusion, 0.0, 1.0), uOcclusionStrength);
+  float occlusion = occlusionFactor(aOcclusion, uOcclusionStrength);
 #else
   float occlusion = 1.0;
 #endif

@@ -1,6 +1,7 @@
 // The benchmark's files: results.csv, results.md and the speed/accuracy plots (see
 // benchmark_results.h).
 #include "app/benchmark/benchmark_results.h"
+#include "renderer/settings/choice_names.h"
 
 #include <cctype>
 #include <cstdio>
@@ -35,7 +36,7 @@ void writeBenchmarkReport(const std::vector<ConfigResult>& results, const fs::pa
   md << "Measured on " << gl << ", " << size.x << "x" << size.y << ", " << frames
      << " frames of a scripted light and camera orbit per path.\n\n";
   for (const ConfigResult& c : results) {
-    md << "### " << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << "\n\n";
+    md << "### " << c.model << ", " << c.palette << ", match " << choiceName(c.mode) << "\n\n";
     md << "| path | median ms | p95 ms | CPU ms | x reference | mean error | p95 error | max error | index differs | jumps > 1 step | pops |\n";
     md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const PathResult& p : c.paths) {
@@ -43,7 +44,7 @@ void writeBenchmarkReport(const std::vector<ConfigResult>& results, const fs::pa
       const double mismatch = hasAccuracy ? double(p.mismatched) / double(p.pixels) : 0.0;
       const double jump = p.compared ? double(p.jumps) / double(p.compared) : 0.0;
       const double pop = p.compared ? double(p.pops) / double(p.compared) : 0.0;
-      csv << '"' << c.model << "\",\"" << c.palette << "\"," << matchModeName(c.mode) << ',' << renderPathName(p.path) << ',' << frames
+      csv << '"' << c.model << "\",\"" << c.palette << "\"," << choiceName(c.mode) << ',' << renderPathName(p.path) << ',' << frames
           << ',' << size.x << ',' << size.y << ',' << fmt(p.medianMs) << ',' << fmt(p.p95Ms) << ',' << fmt(p.cpuMs) << ','
           << fmt(p.gpuMs) << ',' << fmt(p.xReference) << ',' << c.errorUnit << ',';
       if (hasAccuracy) csv << fmt(p.error.mean(), 5) << ',' << fmt(p.error.p95(), 5) << ',' << fmt(p.error.max(), 5) << ',' << fmt(mismatch, 5);
@@ -64,14 +65,14 @@ void writeBenchmarkReport(const std::vector<ConfigResult>& results, const fs::pa
        << ".\n\n";
 
     // The plot: frame time against mean error, one labelled point per path.
-    const std::string stem = "plot-" + slug(c.model) + "-" + slug(c.palette) + "-" + matchModeName(c.mode);
+    const std::string stem = "plot-" + slug(c.model) + "-" + slug(c.palette) + "-" + choiceName(c.mode);
     std::ofstream data(dir / (stem + ".dat"));
     for (const PathResult& p : c.paths)
       if (p.pixels > 0) data << renderPathName(p.path) << ' ' << p.medianMs << ' ' << p.error.mean() << '\n';
     data.close();
     std::ofstream gp(dir / (stem + ".gp"));
     gp << "set terminal pngcairo size 900,600 noenhanced\nset output '" << (dir / (stem + ".png")).string() << "'\n"
-        << "set title '" << c.model << ", " << c.palette << ", match " << matchModeName(c.mode) << " (" << size.x << "x" << size.y
+        << "set title '" << c.model << ", " << c.palette << ", match " << choiceName(c.mode) << " (" << size.x << "x" << size.y
         << ")'\nset xlabel 'median frame time (ms)'\nset ylabel 'mean error (" << c.errorUnit << ")'\n"
         << "set grid\nset key outside right title 'path'\nset offsets graph 0.15, graph 0.15, graph 0.15, graph 0.15\n";
     // The plain lit render's frame time, for scale: a dashed vertical line.

@@ -31,6 +31,8 @@
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/shadows/occlusion_bake.h"
 #include "app/cli.h"
+#include "renderer/settings/choice_names.h"
+#include "renderer/lighting/occlusion_factor.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -75,7 +77,6 @@ void measureAccuracy(Renderer& r, const Mesh& mesh, const OrbitCamera& base, glm
   // With shadows or occlusion on, the reference casts rays through the mesh for them.
   const std::optional<RayScene> rays = settings.shadows || settings.occlusion ? std::optional<RayScene>(std::in_place, mesh) : std::nullopt;
   const std::vector<glm::vec3> skyDirections = OcclusionBake::sampleDirections(OcclusionBake::kDefaultDirections);
-  const double occlusionStrength = std::clamp(double(settings.occlusionStrength), 0.0, 1.0);
   auto target = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
   if (!target) return;
   const float aspect = float(size.x) / float(size.y);
@@ -88,23 +89,23 @@ void measureAccuracy(Renderer& r, const Mesh& mesh, const OrbitCamera& base, glm
   for (int f = 0; f < frames; ++f) {
     const MotionFrame m = motion(float(f), frames, base, aspect);
     expectOk(setLight(r, m), out.failures);
-    auto geometry = [&](GeometryOutput o) {
+    auto geometry = [&](FrameOutput o) {
       target->clear(glm::vec4(0.0f));
-      expectOk(r.renderGeometry(m.camera, o, {0, 0, size.x, size.y}), out.failures);
+      expectOk(r.render(m.camera, RenderSettings{}, {0, 0, size.x, size.y}, o == FrameOutput::EyePosition ? FrameOutput::EyePosition : FrameOutput::EyeNormal), out.failures);
       return target->readRGBA32F();
     };
     auto selection = [&](const RenderSettings& s) {
       target->clear(glm::vec4(0.0f));
-      expectOk(r.renderSelection(m.camera, s, SelectionOutput::Blend, {0, 0, size.x, size.y}), out.failures);
+      expectOk(r.render(m.camera, s, {0, 0, size.x, size.y}, FrameOutput::Blend), out.failures);
       return target->readRGBA32F();
     };
-    const ImageRGBA32F pos = geometry(GeometryOutput::EyePosition);
-    const ImageRGBA32F nrm = geometry(GeometryOutput::EyeNormal);
+    const ImageRGBA32F pos = geometry(FrameOutput::EyePosition);
+    const ImageRGBA32F nrm = geometry(FrameOutput::EyeNormal);
     // The first palette render makes the matcher for this palette, mode and scale.
     RenderSettings first = settings;
     first.path = RenderPath::Pixel;
     (void)selection(first);
-    const PaletteMatcher& matcher = *r.matcher();
+    const PaletteMatcher& matcher = *r.palettes().matcher();
     const auto lighting = prepareLighting<double>(r.lighting());
     // The ideal: the lighting model in double precision at each pixel's interpolated
     // position and normal, independent of every path under test; with shadows, each light's
@@ -143,7 +144,7 @@ void measureAccuracy(Renderer& r, const Mesh& mesh, const OrbitCamera& base, glm
             }
             visibility[l] = glm::dot(side, vp) > 0.0 && rays->blocked(origin, toModel3 * vp, reach) ? 0.0 : 1.0;
           }
-          if (settings.occlusion) scale = glm::dvec3(1.0 + occlusionStrength * (rays->openness(pm, nm, skyDirections) - 1.0));
+          if (settings.occlusion) scale = glm::dvec3(occlusionFactor(rays->openness(pm, nm, skyDirections), double(settings.occlusionStrength)));
         }
         const glm::dvec3 lit = shade(lighting, pe, ne, back, scale, rays && settings.shadows ? visibility : nullptr);
         if (!std::isfinite(lit.x) || !std::isfinite(lit.y) || !std::isfinite(lit.z)) {
@@ -310,7 +311,7 @@ ConfigResult measureConfiguration(Renderer& r, const Mesh& mesh, const Palette& 
   const double range = mode == MatchMode::Colors ? 1.75 : double(palette.entries.size());
   for (const PathInfo& p : renderPaths())
     if (measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
-  std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), matchModeName(mode));
+  std::fprintf(stderr, "benchmark: %s, %s, match %s: accuracy...\n", c.model.c_str(), c.palette.c_str(), choiceName(mode));
   measureAccuracy(r, mesh, camera, o.size, frames, settings, c);
   for (const PathInfo& p : renderPaths())
     if (!measuredForAccuracy(p)) c.paths.emplace_back(p.id, range);
@@ -350,11 +351,11 @@ int runBenchmark(const Options& o) {
     Result<Mesh> loaded = loadModel(modelName);
     if (!loaded) return reportFailure(loaded.error());
     const Mesh& mesh = *loaded;
-    r.setMesh(&mesh);
+    r.scene().setOnly(&mesh);
     for (const std::string& paletteFile : palettes) {
       auto palette = loadPalette(paletteFile);
       if (!palette) return reportFailure(palette.error());
-      if (Status s = r.setPalette(*palette); !s) return reportFailure(s.error());
+      if (Status s = r.palettes().setMain(*palette); !s) return reportFailure(s.error());
       std::vector<MatchMode> modes = {o.setting("match") ? o.look().render.match : palette->defaultMatch.value_or(MatchMode::Intensity)};
       if (o.allMatchModes) modes = {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order};
       for (const MatchMode mode : modes) {

@@ -11,7 +11,7 @@
 
 #include "renderer/core/camera.h"
 #include "renderer/gl/offscreen_target.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 #include "renderer/renderer.h"
 
 namespace npr {

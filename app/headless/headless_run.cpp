@@ -20,6 +20,7 @@
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
 #include "app/cli.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 
@@ -88,7 +89,7 @@ int runHeadless(const Options& o) {
   std::sort(ms.begin(), ms.end());
   std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
                state.scene.label().c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
-               matchModeName(state.settings.match), ms[ms.size() / 2]);
+               choiceName(state.settings.match), ms[ms.size() / 2]);
   if (!o.svg.empty()) {
     const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};
     const SvgContents what{o.svgRaster ? &frame : nullptr, o.svgFill, state.palette.get()};

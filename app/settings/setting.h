@@ -13,7 +13,7 @@
 
 #include "renderer/core/result.h"
 #include "renderer/lighting/lighting_state.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

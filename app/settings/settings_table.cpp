@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "renderer/core/image_io.h"
+#include "renderer/paths/path_table.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 namespace {
@@ -108,6 +110,14 @@ Setting choiceRow(const char* key, const char* label, const char* section, const
   return s;
 }
 
+// A choice among an enum's values, by the names settings/choice_names.h gives them.
+template <class T>
+Setting choiceRow(const char* key, const char* label, const char* section, const char* help, Ref<T> ref) {
+  std::vector<std::pair<std::string, T>> values;
+  for (const auto& [name, value] : ChoiceNames<T>::values) values.emplace_back(name, value);
+  return choiceRow<T>(key, label, section, help, std::move(values), ref);
+}
+
 Setting vectorRow(const char* key, const char* label, const char* section, const char* help, SettingType type, Ref<glm::vec3> ref) {
   Setting s = base(key, label, section, help, type);
   s.format = [ref](const Look& l) {
@@ -165,7 +175,6 @@ std::vector<Setting> buildTable() {
     t.push_back(p);
   }
   t.push_back(choiceRow<MatchMode>("match", "match (M)", "palette", "How lit colours pick palette entries (default: the palette's)",
-                                   {{"colors", MatchMode::Colors}, {"intensity", MatchMode::Intensity}, {"order", MatchMode::Order}},
                                    [](Look& l) -> MatchMode& { return l.render.match; }));
   t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
@@ -173,12 +182,10 @@ std::vector<Setting> buildTable() {
                                    "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
                                    "frames (the range scale spreads about them; not with band thresholds); per-object: each object fitted "
                                    "to its own tones (a dark object beside a bright one); fixed: the palette's own range",
-                                   {{"fixed", ToneRange::Fixed}, {"auto", ToneRange::Auto}, {"per-object", ToneRange::PerObject}},
                                    [](Look& l) -> ToneRange& { return l.render.toneRange; }));
   t.push_back(choiceRow<ToneBlend>("tone-blend", "between levels", "palette",
                                    "The smooth path between two levels: mix (blend them, greying their strokes) or threshold (whole "
                                    "strokes of one level or the other, per texel: crisp tone for nested palettes such as the drawn ones, with intensity matching)",
-                                   {{"mix", ToneBlend::Mix}, {"threshold", ToneBlend::Threshold}},
                                    [](Look& l) -> ToneBlend& { return l.render.toneBlend; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Smooth; };
   t.push_back(boolRow("palette-axis", "second axis", "palette",
@@ -208,8 +215,6 @@ std::vector<Setting> buildTable() {
     t.push_back(b);
   }
   t.push_back(choiceRow<ToneModel>("tone", "tone", "palette", "The lighting model the palette matches against",
-                                   {{"opengl", ToneModel::OpenGL}, {"gooch", ToneModel::Gooch}, {"splashback", ToneModel::Splashback},
-                                    {"charcoal", ToneModel::Charcoal}},
                                    [](Look& l) -> ToneModel& { return l.tone; }));
   auto goochLike = [](const Look& l) { return l.tone == ToneModel::Gooch || l.tone == ToneModel::Splashback; };
   for (auto [key, label, help, ref] : std::vector<std::tuple<const char*, const char*, const char*, Ref<float>>>{
@@ -239,14 +244,12 @@ std::vector<Setting> buildTable() {
   }
   t.push_back(choiceRow<TriangleLighting>("triangle-lighting", "triangle lighting", "path",
                                           "Where the per-triangle paths (stencil, triangle) light: cpu, gpu (read back), auto (gpu with shadows)",
-                                          {{"auto", TriangleLighting::Auto}, {"cpu", TriangleLighting::Cpu}, {"gpu", TriangleLighting::Gpu}},
                                           [](Look& l) -> TriangleLighting& { return l.render.triangleLighting; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Triangle || l.render.path == RenderPath::Stencil; };
   t.push_back(choiceRow<PosePlacement>("deform", "deform on", "path",
                                        "Where a skinned or morphing mesh is posed: gpu (always, and the CPU too when the frame reads the mesh there: "
                                        "per-triangle paths, object-space lines, strokes, the anchored pattern), cpu (uploaded each pose), "
                                        "auto (gpu, but cpu where a software rasterizer's frame reads the mesh on the CPU)",
-                                       {{"auto", PosePlacement::Auto}, {"cpu", PosePlacement::Cpu}, {"gpu", PosePlacement::Gpu}},
                                        [](Look& l) -> PosePlacement& { return l.render.deform; }));
   t.push_back(boolRow("gouraud", "Gouraud reference", "path", "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting",
                       [](Look& l) -> bool& { return l.render.referenceGouraud; }));
@@ -267,7 +270,6 @@ std::vector<Setting> buildTable() {
   // --- pattern
   t.push_back(choiceRow<PatternSpace>("pattern", "pattern (T)", "pattern",
                                       "Where the palette's pattern lives: screen (the original), anchored (follows the object, stays flat), object (glued to the surface)",
-                                      {{"screen", PatternSpace::Screen}, {"anchored", PatternSpace::Anchored}, {"object", PatternSpace::Object}},
                                       [](Look& l) -> PatternSpace& { return l.render.pattern; }));
   t.push_back(boolRow("pattern-rotation", "follow rotation", "pattern", "Anchored patterns turn with the object (off: they only move and scale)",
                       [](Look& l) -> bool& { return l.render.patternFollowsRotation; }));
@@ -320,7 +322,6 @@ std::vector<Setting> buildTable() {
   t.back().shown = occluded;
   t.push_back(choiceRow<OcclusionMethod>("occlusion-method", "occlusion from", "occlusion",
                                          "baked (per vertex, once per mesh) or screen (per pixel, every frame; pixel, smooth and reference paths)",
-                                         {{"baked", OcclusionMethod::Baked}, {"screen", OcclusionMethod::Screen}},
                                          [](Look& l) -> OcclusionMethod& { return l.render.occlusionMethod; }));
   t.back().shown = occluded;
   t.push_back(floatRow("occlusion-reach", "occlusion reach", "occlusion", "Screen-space occlusion's reach, in model radii", 0.01, 10.0,
@@ -440,7 +441,6 @@ std::vector<Setting> buildTable() {
   t.back().shown = [](const Look& l) { return l.render.lines.imageSpace; };
   t.push_back(choiceRow<OutlineMethod>("outline", "outline method", "lines",
                                        "Hardware outlines from back faces: fatten (even widths), offset or edges",
-                                       {{"fatten", OutlineMethod::Fatten}, {"offset", OutlineMethod::Offset}, {"edges", OutlineMethod::Edges}},
                                        [](Look& l) -> OutlineMethod& { return l.render.lines.outline; }));
   t.back().shown = [](const Look& l) { return l.render.lines.hardware; };
   t.push_back(floatRow("outline-offset", "outline offset", "lines", "Offset outlines: back faces pulled this fraction of their depth towards the eye",
@@ -465,6 +465,19 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("depth-cue-strength", "fade strength", "depth-cue", "How much of the paper covers the farthest surfaces", 0.0, 1.0,
                        [](Look& l) -> float& { return l.render.depthCue.strength; }));
   t.back().shown = cued;
+  // --- vignette
+  t.push_back(boolRow("vignette", "vignette", "vignette", "The picture fades into the paper toward the frame's edges, as a book illustration's",
+                      [](Look& l) -> bool& { return l.render.vignette.on; }));
+  auto vignetted = [](const Look& l) { return l.render.vignette.on; };
+  t.push_back(floatRow("vignette-radius", "fade from", "vignette", "Where the fade starts: 0 the frame's centre, 1 its corners", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.vignette.radius; }));
+  t.back().shown = vignetted;
+  t.push_back(floatRow("vignette-softness", "fade width", "vignette", "How far beyond the radius the fade is whole (0: a hard edge)", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.vignette.softness; }));
+  t.back().shown = vignetted;
+  t.push_back(floatRow("vignette-strength", "fade strength", "vignette", "How much of the paper covers the frame's corners", 0.0, 1.0,
+                       [](Look& l) -> float& { return l.render.vignette.strength; }));
+  t.back().shown = vignetted;
   return t;
 }
 
@@ -505,7 +518,7 @@ const std::vector<SettingSection>& settingSections() {
       {"palette", "Palette and tone", false},   {"path", "Render path", false},         {"pattern", "Pattern", false},
       {"orientation", "Hatching direction", false}, {"light", "Light", false},         {"shadows", "Ground and shadows", false},
       {"occlusion", "Ambient occlusion", false}, {"strokes", "Painterly strokes", true}, {"lines", "Lines", true},
-      {"depth-cue", "Depth cue", false},
+      {"depth-cue", "Depth cue", false},        {"vignette", "Vignette", false},
   };
   return sections;
 }

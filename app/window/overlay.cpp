@@ -115,7 +115,7 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
   ViewerState& s = v.state;
   if (section == "palette") {
     // Cel bands: movable thresholds between the palette's tones (2 to 8 of them).
-    const PaletteMatcher* matcher = v.renderer->matcher();
+    const PaletteMatcher* matcher = v.renderer->palettes().matcher();
     if (matcher && look.render.match != MatchMode::Colors && matcher->levels().size() >= 2 && matcher->levels().size() <= 8) {
       bool bands = !look.render.bands.empty();
       if (ImGui::Checkbox("cel bands (thresholds)", &bands)) {
@@ -167,17 +167,19 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
         ImGui::EndTooltip();
       }
     }
-    if (const DirectionField* field = v.renderer->directionField())
+    const Model* first = v.renderer->scene().first();
+    if (const DirectionField* field = first ? first->directionFieldIfComputed() : nullptr)
       ImGui::Text("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
   } else if (section == "pattern" && look.render.pattern == PatternSpace::Anchored) {
     ImGui::Text("pattern fit: %.3f ms, %d samples", v.renderer->stats().cpuPatternMs, v.renderer->stats().patternSamples);
   } else if (section == "occlusion" && look.render.occlusion && look.render.occlusionMethod == OcclusionMethod::Baked) {
-    if (const OcclusionBake* bake = v.renderer->occlusionBake()) {
+    const Model* first = v.renderer->scene().first();
+    if (const OcclusionBake* bake = first ? first->occlusionBake() : nullptr) {
       if (!bake->done()) ImGui::ProgressBar(float(bake->directionsDone()) / float(bake->directions()), ImVec2(200, 0), "baking occlusion");
       else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
     }
   } else if (section == "strokes" && look.render.strokes.on) {
-    ImGui::Text("%zu strokes (seeded in %.0f ms)", v.renderer->strokeCount(), v.renderer->strokeSeedMs());
+    ImGui::Text("%zu strokes (seeded in %.0f ms)", v.renderer->scene().strokeCount(), v.renderer->scene().strokeSeedMs());
   }
 }
 
@@ -204,7 +206,7 @@ void drawObjectList(Viewer& v) {
     }
     const bool hovered = ImGui::IsItemHovered();
     // A palette whose rows go by detail: each object's own value.
-    if (v.renderer->palette() && v.renderer->palette()->axis().kind == PaletteAxisKind::Detail) {
+    if (v.renderer->palettes().main() && v.renderer->palettes().main()->axis().kind == PaletteAxisKind::Detail) {
       float detail = o.detail;
       ImGui::SetNextItemWidth(120.0f);
       if (ImGui::SliderFloat("detail", &detail, 0.0f, 1.0f, "%.2f")) s.scene.setDetail(i, detail, *v.renderer);
@@ -213,7 +215,7 @@ void drawObjectList(Viewer& v) {
       const glm::mat4& t = o.placed;
       // Its own fitted tone range, under --tone-range per-object.
       std::string tone;
-      if (const Model* m = v.renderer->model(o.id); m && m->toneTarget)
+      if (const Model* m = v.renderer->scene().find(o.id); m && m->toneTarget)
         tone = "; its tone range " + std::to_string(m->toneTarget->x).substr(0, 4) + " to " + std::to_string(m->toneTarget->y).substr(0, 4) +
                " of 3";
       tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "renderer/gl/program_variants.h"
+#include "renderer/programs/program_variants.h"
 
 namespace npr {
 namespace {

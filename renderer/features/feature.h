@@ -6,45 +6,16 @@
 // draws its passes over the surfaces.
 #pragma once
 
-#include <functional>
 #include <memory>
-#include <string>
 #include <vector>
 
-#include "renderer/core/camera.h"
-#include "renderer/core/frame_stats.h"
 #include "renderer/core/result.h"
-#include "renderer/gl/gl_handle.h"
-#include "renderer/gl/program_cache.h"
-#include "renderer/lighting/lighting_state.h"
-#include "renderer/palette/gpu_palette.h"
-#include "renderer/render_settings.h"
-#include "renderer/scene/scene.h"
+#include "renderer/frame/frame_context.h"
+#include "renderer/frame/frame_needs.h"
+#include "renderer/frame/frame_view.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
-
-struct FrameContext;
-
-// What a feature sees of the frame being drawn.
-struct FrameView {
-  const CameraMatrices& camera;  // the scene's
-  const RenderSettings& settings;
-  glm::ivec4 viewport;
-  bool colour;  // a picture (else a selection for tests and the benchmark: no passes over it)
-  Scene& scene;
-  const LightingState& lighting;
-  const GpuPalette* palette;  // the main one; null when none is loaded
-  // How the palettes' textures lie on the model drawn last (patterns/pattern_placement.h): set
-  // per model as each is drawn, so the passes over the frame read the last one's.
-  const PatternPlacement& pattern;
-  gl::ProgramCache& programs;
-  FrameStats& stats;
-  const gl::VertexArray& emptyVao;  // full-screen passes make their vertices in the shader
-  std::function<Model*()> ground;   // the ground plane's model, built on demand (--ground)
-  // Long work in one frame (the occlusion bake) may report how far it got.
-  const std::function<void(const std::string&, double)>& progress;
-  double workBudgetMs;  // how long such work may take per frame (0: to the end now)
-};
 
 class Feature {
  public:
@@ -62,7 +33,18 @@ class Feature {
   [[nodiscard]] virtual Status drawOver(FrameView&) { return okStatus(); }
 };
 
-// The feature table, in the order the frame calls them.
+// A row of the feature table: a feature's folder adds its features (several where they share
+// resources, as the line kinds share stroke textures) and says, from the settings alone, what a
+// frame drawn with them needs before it draws.
+struct FeatureRow {
+  void (*add)(std::vector<std::unique_ptr<Feature>>& features);
+  void (*needs)(const RenderSettings& settings, FrameNeeds& needs);
+};
+// The feature table (feature_table.cpp), in the order the frame calls them.
+const std::vector<FeatureRow>& featureTable();
+// Every feature of the table, made anew (each renderer keeps its own).
 std::vector<std::unique_ptr<Feature>> makeFeatures();
+// What the table's features declare for `settings`.
+void featureNeeds(const RenderSettings& settings, FrameNeeds& needs);
 
 }  // namespace npr

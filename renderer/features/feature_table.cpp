@@ -1,35 +1,41 @@
-// The feature table (see feature.h): one row per feature, in the order the frame calls them.
-// Adding a feature is its folder and a row here.
+// The feature table (see feature.h): one row per feature folder, in the order the frame calls
+// them. Adding a feature is its folder and a row here.
 #include "renderer/features/feature.h"
-
-#include "renderer/lines/stroke_textures.h"
 
 namespace npr {
 
-std::unique_ptr<Feature> makeShadowsFeature();
-std::unique_ptr<Feature> makeBakedOcclusionFeature();
-std::unique_ptr<Feature> makeScreenOcclusionFeature();
-std::unique_ptr<Feature> makeStrokesFeature();
-std::unique_ptr<Feature> makeOutlinesFeature();
-std::unique_ptr<Feature> makeImageEdgesFeature();
-std::unique_ptr<Feature> makeFeatureLinesFeature(std::shared_ptr<StrokeTextures> textures);
-std::unique_ptr<Feature> makeIntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures);
-std::unique_ptr<Feature> makeDepthCueFeature();
+// Each folder's row (its add and needs functions, defined in the folder).
+#define NPR_FEATURE(folder)                                                          \
+  void add##folder##Features(std::vector<std::unique_ptr<Feature>>& features);      \
+  void folder##Needs(const RenderSettings& settings, FrameNeeds& needs);
+NPR_FEATURE(Shadows)
+NPR_FEATURE(Occlusion)
+NPR_FEATURE(Strokes)
+NPR_FEATURE(Lines)
+NPR_FEATURE(DepthCue)
+NPR_FEATURE(Vignette)
+#undef NPR_FEATURE
+
+const std::vector<FeatureRow>& featureTable() {
+  static const std::vector<FeatureRow> table = {
+      {addShadowsFeatures, ShadowsNeeds},      // maps before anything reads them
+      {addOcclusionFeatures, OcclusionNeeds},  // per-vertex bake once per model; per-pixel after the clear
+      {addStrokesFeatures, StrokesNeeds},      // over the surfaces: strokes, then lines
+      {addLinesFeatures, LinesNeeds},
+      {addDepthCueFeatures, DepthCueNeeds},    // fades what is drawn with distance
+      {addVignetteFeatures, VignetteNeeds},    // last: fades the frame's edges into the paper
+  };
+  return table;
+}
 
 std::vector<std::unique_ptr<Feature>> makeFeatures() {
-  std::vector<std::unique_ptr<Feature>> f;
-  f.push_back(makeShadowsFeature());         // maps before anything reads them
-  f.push_back(makeBakedOcclusionFeature());  // per-vertex bake, once per model
-  f.push_back(makeScreenOcclusionFeature()); // per-pixel, after the clear
-  f.push_back(makeStrokesFeature());         // over the surfaces: strokes, then lines
-  f.push_back(makeOutlinesFeature());
-  f.push_back(makeImageEdgesFeature());
-  // Line sets' stroke textures, loaded once for both kinds of line.
-  auto strokeTextures = std::make_shared<StrokeTextures>();
-  f.push_back(makeFeatureLinesFeature(strokeTextures));
-  f.push_back(makeIntersectionLinesFeature(strokeTextures));
-  f.push_back(makeDepthCueFeature());        // last: fades what is drawn
-  return f;
+  std::vector<std::unique_ptr<Feature>> features;
+  for (const FeatureRow& row : featureTable()) row.add(features);
+  return features;
+}
+
+void featureNeeds(const RenderSettings& settings, FrameNeeds& needs) {
+  for (const FeatureRow& row : featureTable()) row.needs(settings, needs);
 }
 
 }  // namespace npr

@@ -3,19 +3,14 @@
 
 namespace npr::gl {
 
-namespace {
-std::string keyOf(const ProgramSource& src) {
+std::string programKey(const ProgramSource& src) {
   std::string key = src.vertexFile + "|" + src.geometryFile + "|" + src.fragmentFile + "|" + src.computeFile;
   for (const std::string& d : src.defines) key += "|" + d;
   return key;
 }
-}  // namespace
 
-std::string programKey(const ProgramVariant& variant) { return keyOf(programSource(variant)); }
-
-Result<ShaderProgram*> ProgramCache::get(const ProgramVariant& variant, int& builds) {
-  const ProgramSource src = programSource(variant);
-  std::string key = keyOf(src);
+Result<ShaderProgram*> ProgramCache::get(const ProgramSource& src, int& builds) {
+  std::string key = programKey(src);
   auto it = programs_.find(key);
   if (it != programs_.end()) {
     it->second.lastUse = frame_;

@@ -1,7 +1,8 @@
 // The renderer's programs, built on first use and kept: toggling features back and forth
-// costs no rebuild. Asked for by typed variants (program_variants.h) and keyed by what each
-// variant turns into (its files and #define lines), so the key can never leave out a field
-// that changes the program: two variants that give the same source are the same program.
+// costs no rebuild. Asked for by typed variants (programs/program_variants.h: anything a
+// `programSource(variant)` found by argument lookup turns into a ProgramSource) and keyed by
+// that source (its files and #define lines), so the key can never leave out a field that
+// changes the program: two variants that give the same source are the same program.
 // Bounded: the combinations of paths, match modes, palettes and features a user walks through
 // are many, and each program holds about a megabyte of compiled code on llvmpipe (a ten-minute
 // soak built 121 and grew by 97 MB), so past `capacity` the least recently used ones go, at the
@@ -13,13 +14,13 @@
 #include <string>
 
 #include "renderer/core/result.h"
-#include "renderer/gl/program_variants.h"
+#include "renderer/gl/program_source.h"
 #include "renderer/gl/shader_program.h"
 
 namespace npr::gl {
 
-// The cache's key for `variant`: its files and #define lines, in order.
-std::string programKey(const ProgramVariant& variant);
+// The cache's key for a program's source: its files and #define lines, in order.
+std::string programKey(const ProgramSource& source);
 
 class ProgramCache {
  public:
@@ -27,7 +28,11 @@ class ProgramCache {
   explicit ProgramCache(std::size_t capacity = kDefaultCapacity) : capacity_(capacity) {}
 
   // The program for `variant`; a build adds one to `builds` (the frame's shader-build counter).
-  [[nodiscard]] Result<ShaderProgram*> get(const ProgramVariant& variant, int& builds);
+  template <class Variant>
+  [[nodiscard]] Result<ShaderProgram*> get(const Variant& variant, int& builds) {
+    return get(programSource(variant), builds);
+  }
+  [[nodiscard]] Result<ShaderProgram*> get(const ProgramSource& source, int& builds);
   // Starts a frame: drops the least recently used programs beyond the capacity. Pointers from
   // get() are valid until the next call.
   void startFrame();

@@ -24,16 +24,6 @@ Status invalid(const std::string& call, const std::string& why) { return Error{c
 
 }  // namespace
 
-const char* toneModelName(ToneModel t) {
-  switch (t) {
-    case ToneModel::OpenGL: return "opengl";
-    case ToneModel::Gooch: return "gooch";
-    case ToneModel::Splashback: return "splashback";
-    case ToneModel::Charcoal: return "charcoal";
-  }
-  return "?";
-}
-
 Status LightingState::setToneModel(ToneModel model, const ToneParameters& p) {
   auto in01 = [](float v) { return v >= 0.0f && v <= 1.0f; };
   if (!in01(p.blue) || !in01(p.yellow) || !in01(p.alpha) || !in01(p.beta) || !in01(p.splashAlpha))

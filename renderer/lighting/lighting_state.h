@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/core/result.h"
+#include "renderer/settings/choices.h"
 
 namespace npr {
 
@@ -46,8 +47,7 @@ struct Material {
 // Gooch by (alpha |cos theta| + 1 - alpha)^p, theta between the normal and that light.
 // Charcoal (the NPR lecture slides) ignores lights and colours: grey (1 + V.N) / 3 with V
 // towards the eye, bright where the surface faces the viewer, 1/3 at the silhouette.
-enum class ToneModel { OpenGL, Gooch, Splashback, Charcoal };
-const char* toneModelName(ToneModel t);
+// (ToneModel is one of the settings' choices: settings/choices.h.)
 
 struct ToneParameters {
   float blue = 0.4f;    // k_blue = (0, 0, blue)

@@ -9,6 +9,8 @@
 // drawn with the boundaries, since a surface there is not a simple sheet.
 #pragma once
 
+#include "renderer/programs/shader_limits.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -21,7 +23,7 @@ namespace npr {
 // Intersections are the scene's, not one mesh's (lines/intersection_lines.h).
 // Suggestive contours are view-dependent curves across faces (lines/suggestive_contours.h).
 enum class EdgeKind : std::uint8_t { Silhouette = 0, Crease = 1, Boundary = 2, Material = 3, Intersection = 4, Suggestive = 5 };
-inline constexpr int kEdgeKinds = 6;
+inline constexpr int kEdgeKinds = gl::kEdgeKinds;
 
 // A line's faces' materials (Mesh::materials) where it has them: line sets select by them.
 inline constexpr std::uint16_t kNoMaterial = 0xFFFF;

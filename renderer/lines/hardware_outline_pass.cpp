@@ -6,18 +6,6 @@
 #include "renderer/gl/pass_state.h"
 
 namespace npr {
-namespace {
-
-gl::OutlineProgram::Method methodOf(OutlineMethod m) {
-  switch (m) {
-    case OutlineMethod::Edges: return gl::OutlineProgram::Method::Edges;
-    case OutlineMethod::Offset: return gl::OutlineProgram::Method::Offset;
-    case OutlineMethod::Fatten: return gl::OutlineProgram::Method::Fatten;
-  }
-  return gl::OutlineProgram::Method::Fatten;
-}
-
-}  // namespace
 
 Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, const LineSettings& ls, const GpuPalette* palette,
                             const PatternPlacement& pattern, MatchMode match, const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats) {
@@ -25,7 +13,7 @@ Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, c
     gl::OutlineProgram variant;
     bool on;
   };
-  gl::OutlineProgram rim{gl::OutlineProgram::Method::Rim, std::nullopt};
+  gl::OutlineProgram rim;
   if (palette) {
     rim.palette = palette->variant(match, pattern);
     rim.palette->orientBins = 0;  // the rim is a smudge along the outline: not turned
@@ -34,23 +22,23 @@ Status drawHardwareOutlines(const GpuMesh& mesh, const CameraMatrices& camera, c
     // pattern scale and, with a linear filter, the sRGB view the palette binds then).
     if (rim.palette->pattern == gl::PatternMapping::Object) rim.palette->pattern = gl::PatternMapping::Scaled;
   }
-  const Draw draws[] = {{gl::OutlineProgram{methodOf(ls.outline), std::nullopt}, ls.hardware}, {rim, ls.rim && palette != nullptr}};
+  const Draw draws[] = {{gl::OutlineProgram{ls.outline, std::nullopt}, ls.hardware}, {rim, ls.rim && palette != nullptr}};
   for (const Draw& d : draws) {
     if (!d.on) continue;
     Result<gl::ShaderProgram*> prog = programs.get(d.variant, stats.shaderBuilds);
     if (!prog) return Error{prog.error()};
     gl::ShaderProgram& p = **prog;
-    gl::apply(d.variant.method == gl::OutlineProgram::Method::Offset ? gl::pass::kOutlineBackFaces : gl::pass::kOutline);
+    gl::apply(!d.variant.rim() && d.variant.method == OutlineMethod::Offset ? gl::pass::kOutlineBackFaces : gl::pass::kOutline);
     p.use();
     p.set("uModelView", camera.view);
     p.set("uProjection", camera.projection);
-    if (d.variant.method == gl::OutlineProgram::Method::Offset) {
+    if (!d.variant.rim() && d.variant.method == OutlineMethod::Offset) {
       p.set("uOffset", std::clamp(ls.outlineOffset, LineSettings::kMinOutlineOffset, LineSettings::kMaxOutlineOffset));
     } else {
       p.set("uViewport", glm::vec2(viewport.z, viewport.w));
       p.set("uWidth", std::max(ls.width, 0.5f));
     }
-    if (d.variant.method == gl::OutlineProgram::Method::Rim) {
+    if (d.variant.rim()) {
       p.set("uRimLimit", std::clamp(ls.rimLimit, 0.0f, 1.0f));
       palette->bind(p, pattern, false);
     } else {

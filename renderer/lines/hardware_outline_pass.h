@@ -12,7 +12,7 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/palette/gpu_palette.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

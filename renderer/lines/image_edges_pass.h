@@ -12,8 +12,8 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/gl/texture_target.h"
 #include "renderer/mesh/gpu_mesh.h"
-#include "renderer/scene/placed_mesh.h"
-#include "renderer/render_settings.h"
+#include "renderer/mesh/placed_mesh.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

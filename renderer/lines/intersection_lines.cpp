@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "renderer/core/parallel.h"
-#include "renderer/scene/scene.h"
 
 namespace npr {
 namespace {
@@ -272,12 +271,6 @@ std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>
   }
   if (counts) *counts = {tris.size(), tasks.size(), pairs, out.size(), stopped};
   return out;
-}
-
-std::vector<FeatureLine> sceneIntersectionLines(const Scene& scene, IntersectionCounts* counts) {
-  std::vector<IntersectionObject> objects;
-  scene.forEach([&](const Model& m) { objects.push_back({&m.mesh(), m.transform()}); });
-  return intersectionLines(objects, counts);
 }
 
 }  // namespace npr

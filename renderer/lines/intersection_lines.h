@@ -42,10 +42,6 @@ inline constexpr std::size_t kMaxIntersectionPairs = 64'000'000;
 std::vector<FeatureLine> intersectionLines(const std::vector<IntersectionObject>& objects, IntersectionCounts* counts = nullptr,
                                            std::size_t maxPairs = kMaxIntersectionPairs);
 
-class Scene;
-// Those of a scene's shown models, as posed and placed.
-std::vector<FeatureLine> sceneIntersectionLines(const Scene& scene, IntersectionCounts* counts = nullptr);
-
 // The segment two triangles share, if they cross (exposed for the tests): false when they miss,
 // touch at a point, share a corner or lie in one plane.
 bool triangleIntersection(const glm::vec3 a[3], const glm::vec3 b[3], glm::vec3& from, glm::vec3& to);

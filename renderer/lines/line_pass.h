@@ -24,7 +24,7 @@
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

@@ -14,7 +14,7 @@
 #include "renderer/core/camera.h"
 #include "renderer/core/image.h"
 #include "renderer/lines/feature_edges.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/animation/node_animation.h"
+#include "renderer/mesh/node_animation.h"
 #include "renderer/mesh/mesh.h"
 
 namespace npr {

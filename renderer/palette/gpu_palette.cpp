@@ -228,9 +228,7 @@ gl::PaletteVariant GpuPalette::variant(MatchMode mode, const PatternPlacement& a
   if (axis_.rows > 1) {
     v.rows = axis_.rows;
     v.columns = columns_;
-    v.axis = axis_.kind == PaletteAxisKind::Depth    ? gl::PaletteAxis::Depth
-             : axis_.kind == PaletteAxisKind::Facing ? gl::PaletteAxis::Facing
-                                                     : gl::PaletteAxis::Detail;
+    v.axis = axis_.kind;
   }
   return v;
 }

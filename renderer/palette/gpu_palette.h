@@ -15,12 +15,12 @@
 #include "renderer/core/frame_stats.h"
 #include "renderer/core/result.h"
 #include "renderer/gl/gl_handle.h"
-#include "renderer/gl/program_variants.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/palette/palette.h"
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/patterns/pattern_placement.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 

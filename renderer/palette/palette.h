@@ -31,13 +31,13 @@
 #include <glm/glm.hpp>
 
 #include "renderer/core/image.h"
+#include "renderer/core/palette_axis_kind.h"
 #include "renderer/core/result.h"
 #include "renderer/palette/palette_orientation.h"
+#include "renderer/settings/choices.h"
 
 namespace npr {
 
-enum class MatchMode { Colors, Intensity, Order };
-const char* matchModeName(MatchMode m);
 std::optional<MatchMode> parseMatchMode(const std::string& s);
 
 constexpr int kMaxPaletteEntries = 256;
@@ -51,7 +51,6 @@ struct PaletteEntry {
   std::vector<ImageRGBA8> mips;    // levels 1, 2, ... the palette file gave (`mip PATH` lines); the rest are reduced
 };
 
-enum class PaletteAxisKind { None, Depth, Facing, Detail };
 const char* paletteAxisName(PaletteAxisKind k);
 
 // The row position for an axis value through the frame's map (GpuPalette::axisMap), in [0, rows - 1].

@@ -9,6 +9,7 @@
 
 #include "renderer/core/colour.h"
 #include "renderer/core/json.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 
@@ -109,7 +110,7 @@ std::string paletteReportJson(const Palette& p) {
     << "],\"intensity_range\":[" << num(a.minIntensity) << "," << num(a.maxIntensity) << "],\"largest_gap\":" << num(a.largestGap)
     << ",\"monotonic\":" << (a.monotonic ? "true" : "false") << ",\"spacing_error\":" << num(a.spacingError)
     << ",\"evenly_spaced\":" << (a.spacingError <= PaletteAnalysis::kEvenSpacing ? "true" : "false");
-  if (p.defaultMatch) o << ",\"match\":\"" << matchModeName(*p.defaultMatch) << "\"";
+  if (p.defaultMatch) o << ",\"match\":\"" << choiceName(*p.defaultMatch) << "\"";
   // Both axes: the tone (columns, matched against the first row, whose figures are above) and
   // the second axis with each row's tone range.
   o << ",\"columns\":" << p.columns() << ",\"rows\":" << std::max(p.axis.rows, 1) << ",\"axis\":{\"kind\":" << str(paletteAxisName(p.axis.kind));

@@ -12,24 +12,15 @@
 #include "renderer/core/printable.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_mipmaps.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 namespace fs = std::filesystem;
 
-const char* matchModeName(MatchMode m) {
-  switch (m) {
-    case MatchMode::Colors: return "colors";
-    case MatchMode::Intensity: return "intensity";
-    case MatchMode::Order: return "order";
-  }
-  return "?";
-}
-
+// A palette file's `match` line: the settings' names, and the British and singular spellings.
 std::optional<MatchMode> parseMatchMode(const std::string& s) {
-  if (s == "colors" || s == "colours" || s == "color") return MatchMode::Colors;
-  if (s == "intensity") return MatchMode::Intensity;
-  if (s == "order") return MatchMode::Order;
-  return std::nullopt;
+  if (s == "colours" || s == "color") return MatchMode::Colors;
+  return parseChoice<MatchMode>(s);
 }
 
 const char* paletteAxisName(PaletteAxisKind k) {

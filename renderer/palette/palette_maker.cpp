@@ -14,6 +14,7 @@
 #include "renderer/core/colour.h"
 #include "renderer/core/image_io.h"
 #include "renderer/palette/tonal_art_map.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 namespace fs = std::filesystem;
@@ -245,7 +246,7 @@ Result<std::string> makePalette(const MakePaletteRequest& r, const std::function
     for (size_t i = 3; i < src->pixels.size(); i += 4) src->pixels[i] = 255;  // ladders work on the opaque image
     Result<std::vector<ImageRGBA8>> images = ladderImages(*src, *r.ladder, r.levels);
     if (!images) return Error{images.error()};
-    w.paletteText = "name " + stem + " (" + ladderName(*r.ladder) + ")\nmatch " + matchModeName(ladderMatchMode(*r.ladder)) + "\n";
+    w.paletteText = "name " + stem + " (" + ladderName(*r.ladder) + ")\nmatch " + choiceName(ladderMatchMode(*r.ladder)) + "\n";
     for (size_t i = 0; i < images->size(); ++i) {
       char name[64];
       std::snprintf(name, sizeof name, "%s%02zu.png", ladderName(*r.ladder), i);

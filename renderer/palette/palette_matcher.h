@@ -21,6 +21,8 @@
 // palette index. Lit colours are in [0,1]; non-finite channels are taken as 0.
 #pragma once
 
+#include "renderer/programs/shader_limits.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -40,8 +42,8 @@ struct PaletteBlend {
 
 class PaletteMatcher {
  public:
-  static constexpr int kLut1DSize = 4096;  // samples of the 1D tone over q in [0, 3]
-  static constexpr int kLut3DSize = 64;    // samples per axis of the colour cube
+  static constexpr int kLut1DSize = gl::kLut1DSize;  // samples of the 1D tone over q in [0, 3]
+  static constexpr int kLut3DSize = gl::kLut3DSize;    // samples per axis of the colour cube
 
   // `bands` (1D modes, optional): cel-style band thresholds on the query axis, ascending, one
   // fewer than the palette's distinct levels. Entry k of the sorted levels then covers

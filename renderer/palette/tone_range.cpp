@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "renderer/lighting/lighting_model.h"
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
 
 namespace npr {
 

@@ -2,7 +2,7 @@
 #include "renderer/passes/control_palette_pass.h"
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/paths/lit_mesh_program.h"
+#include "renderer/passes/lit_mesh_program.h"
 
 namespace npr {
 namespace {

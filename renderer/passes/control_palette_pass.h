@@ -8,8 +8,8 @@
 // lacks (no shadow maps, occlusion off or not baked) costs nothing.
 #pragma once
 
-#include "renderer/paths/path_table.h"
-#include "renderer/paths/render_pass.h"
+#include "renderer/settings/choices.h"
+#include "renderer/frame/frame_context.h"
 
 namespace npr {
 

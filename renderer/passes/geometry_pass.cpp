@@ -2,6 +2,8 @@
 #include "renderer/passes/geometry_pass.h"
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/materials/gpu_materials.h"
+#include "renderer/programs/program_variants.h"
 
 namespace npr {
 

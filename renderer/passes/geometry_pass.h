@@ -7,7 +7,7 @@
 #include "renderer/core/frame_stats.h"
 #include "renderer/core/result.h"
 #include "renderer/gl/program_cache.h"
-#include "renderer/scene/placed_mesh.h"
+#include "renderer/mesh/placed_mesh.h"
 
 namespace npr {
 

@@ -2,6 +2,7 @@
 #include "renderer/passes/marker_pass.h"
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/programs/program_variants.h"
 
 namespace npr {
 

@@ -12,7 +12,7 @@
 
 #include "renderer/core/result.h"
 #include "renderer/gl/texture_target.h"
-#include "renderer/paths/render_pass.h"
+#include "renderer/frame/frame_context.h"
 
 namespace npr {
 

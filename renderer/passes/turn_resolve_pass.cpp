@@ -23,6 +23,11 @@ bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTrian
   return softwareRasterizer && pixelsPerFrontTriangle < kResolveTurnPixels;
 }
 
+bool turnResolveWanted(const RenderSettings& s, bool softwareRasterizer, float pixelsPerFrontTriangle) {
+  const TurnPlacement where = s.tuning.turnPlacement;
+  return where == TurnPlacement::Resolved || (where == TurnPlacement::Auto && resolveTurnAutomatically(softwareRasterizer, pixelsPerFrontTriangle));
+}
+
 bool TurnResolvePass::begin(FrameContext& f, bool blend) {
   const glm::ivec4& vp = f.viewport;
   gl::TextureTarget& buffer = blend ? blend_ : one_;

@@ -11,7 +11,7 @@
 #include "renderer/core/result.h"
 #include "renderer/gl/shared_depth_framebuffer.h"
 #include "renderer/gl/texture_target.h"
-#include "renderer/paths/render_pass.h"
+#include "renderer/frame/frame_context.h"
 
 namespace npr {
 
@@ -19,6 +19,9 @@ namespace npr {
 // rasterizer whose model has fewer than kResolveTurnPixels pixels per front-facing triangle, in
 // the mesh pass everywhere else (the figures are in turn_resolve_pass.cpp).
 bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTriangle);
+// Whether a mesh pass that turns its lookups leaves them to the resolve, by the settings'
+// choice (TurnPlacement) for a model of this density.
+bool turnResolveWanted(const RenderSettings& settings, bool softwareRasterizer, float pixelsPerFrontTriangle);
 
 class TurnResolvePass {
  public:

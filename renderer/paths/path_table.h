@@ -10,17 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "renderer/settings/choices.h"
+
 namespace npr {
 
-enum class RenderPath {
-  Stencil,      // the original: per-triangle CPU lighting, stencil buckets, two quads per bucket
-  Triangle,     // the same per-triangle choice in one pass, one draw per bucket
-  Vertex,       // lit per vertex, matched per pixel
-  Pixel,        // lit and matched per pixel
-  Smooth,       // lit per pixel, two bracketing entries blended
-  Reference,    // plain lit render (Phong or Gouraud), no palette
-  LitTextured,  // benchmark floor: lighting times one screen-space texture fetch
-};
 
 class RenderPass;
 

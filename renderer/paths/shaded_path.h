@@ -16,6 +16,7 @@ class ShadedPath : public RenderPass {
   enum class Kind { Vertex, Pixel, Smooth, Reference, LitTextured };
   explicit ShadedPath(Kind kind) : kind_(kind) {}
   Status draw(FrameContext& frame) override;
+  bool resolvesTurns() const override { return kind_ == Kind::Vertex || kind_ == Kind::Pixel || kind_ == Kind::Smooth; }
 
  private:
   Kind kind_;

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/paths/triangle_lighting_ahead.h"
 
 namespace npr {
 namespace {
@@ -38,6 +39,14 @@ void StencilPath::beginScene() {
   sceneOpen_ = true;
   shared_.clear();
 }
+
+void StencilPath::needs(const NeedsQuery& q, FrameNeeds& needs) const {
+  const OrientSource source = q.settings.orient.source;
+  const bool angleBuffer = q.turned && (source == OrientSource::Curvature || source == OrientSource::Light);
+  needs.sharedDepth = needs.sharedDepth || q.settings.pattern == PatternSpace::Object || angleBuffer;
+}
+
+void StencilPath::prepareScene(FrameView& frame) { lightTrianglesAhead(frame); }
 
 Status StencilPath::draw(FrameContext& f) {
   if (f.output != gl::MeshOutput::Colour) return selection_.draw(f);

@@ -33,6 +33,10 @@ class StencilPath : public RenderPass {
   // object (bench_scene: 256 objects drew 256 times the quads of one mesh).
   void beginScene() override;
   [[nodiscard]] Status endScene() override;
+  // The surface buffers (the stroke angle from the field or the light, the object pattern)
+  // are written by the masks into the framebuffer's shared depth-stencil.
+  void needs(const NeedsQuery& query, FrameNeeds& needs) const override;
+  void prepareScene(FrameView& frame) override;
 
  private:
   // What an object's draw leaves for endScene: its FrameContext's contents, the references

@@ -3,6 +3,7 @@
 
 #include "renderer/gl/pass_state.h"
 #include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/triangle_lighting_ahead.h"
 
 namespace npr {
 
@@ -24,6 +25,8 @@ Status updateTriangleShading(FrameContext& f) {
   f.triangles.applyRows(axis, f.palette->axisMap(), f.palette->columns(), f.camera.view, f.stats, f.axisDetail);
   return okStatus();
 }
+
+void TrianglePath::prepareScene(FrameView& frame) { lightTrianglesAhead(frame); }
 
 Status TrianglePath::draw(FrameContext& f) {
   if (Status st = updateTriangleShading(f); !st) return st;

@@ -17,6 +17,8 @@ namespace npr {
 class TrianglePath : public RenderPass {
  public:
   Status draw(FrameContext& frame) override;
+  bool resolvesTurns() const override { return true; }
+  void prepareScene(FrameView& frame) override;
 };
 
 }  // namespace npr

@@ -10,9 +10,11 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/gl/program_variants.h"
+#include "renderer/core/camera.h"
+#include "renderer/core/frame_stats.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/patterns/pattern_tracker.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr {
 
@@ -48,5 +50,13 @@ struct PatternPlacement {
   gl::PatternMapping mapping() const;
   OctaveSplit octaves() const;
 };
+
+// Places the pattern for one model seen through `placed` (its camera) in `viewport`: its frame
+// (anchored: `tracker` follows the model, which it must then hold; else none), the scale and
+// filter, where the viewport sits in the whole frame (`frameOffset`, a poster's tile), and
+// whether mapped patterns are placed per vertex (by `pixelsPerFrontTriangle`, the model's
+// density on screen; infinite for no model). The orientation fields are left as they are.
+void placePattern(PatternPlacement& into, PatternTracker* tracker, float pixelsPerFrontTriangle, const CameraMatrices& placed,
+                  const RenderSettings& settings, const glm::ivec4& viewport, glm::vec2 frameOffset, FrameStats& stats);
 
 }  // namespace npr

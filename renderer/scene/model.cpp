@@ -43,6 +43,7 @@ Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bo
 void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
   adopt(mesh);
   transform_ = transform;
+  palette_.reset();
   field_.reset();
   occlusion_.reset();
   parts_.clear();

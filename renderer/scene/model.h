@@ -17,11 +17,12 @@
 #include "renderer/core/camera.h"
 #include "renderer/core/frame_stats.h"
 #include "renderer/lines/line_pass.h"
-#include "renderer/mesh/gpu_materials.h"
+#include "renderer/materials/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/mesh/mesh_subset.h"
 #include "renderer/orientation/direction_field.h"
+#include "renderer/palette/gpu_palette.h"
 #include "renderer/palette/tone_range.h"
 #include "renderer/patterns/pattern_tracker.h"
 #include "renderer/shading/triangle_shading_cache.h"
@@ -30,7 +31,6 @@
 
 namespace npr {
 
-class GpuPalette;
 
 class Model {
  public:
@@ -73,6 +73,11 @@ class Model {
   ToneRangeTracker& toneTracker() { return toneTracker_; }
   std::optional<glm::vec2> toneTarget;
   int toneSlot = 0;
+  // The model's own palette, in place of the scene's main one for its surfaces (its
+  // materials' palettes still win); null: none.
+  const GpuPalette* palette() const { return palette_.get(); }
+  GpuPalette* palette() { return palette_.get(); }
+  void setPalette(std::unique_ptr<GpuPalette> palette) { palette_ = std::move(palette); }
   // Its detail, in [0, 1]: the value a palette with `axis detail` picks its row by (palette.h).
   float detail() const { return detail_; }
   void setDetail(float detail) { detail_ = detail; }
@@ -144,6 +149,7 @@ class Model {
   glm::mat4 transform_;
   std::string name_;
   float detail_ = 0.0f;
+  std::unique_ptr<GpuPalette> palette_;
   ToneRangeTracker toneTracker_;
   GpuMesh gpu_;
   GpuMaterials materials_;

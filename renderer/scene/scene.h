@@ -5,10 +5,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "renderer/scene/model.h"
-#include "renderer/scene/placed_mesh.h"
+#include "renderer/mesh/placed_mesh.h"
 
 namespace npr {
 
@@ -16,23 +17,68 @@ using ModelId = std::uint32_t;
 
 class Scene {
  public:
-  ModelId add(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
-    models_.push_back({nextId_, std::make_unique<Model>(mesh, transform, stats)});
+  // Uploads are counted in `stats` (the renderer's).
+  explicit Scene(FrameStats& stats) : stats_(stats) {}
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // A model of `mesh` placed by `transform`, uploaded now. The scene keeps a pointer to the
+  // mesh: remove the model (or clear the scene) before the mesh is destroyed.
+  ModelId add(const Mesh& mesh, const glm::mat4& transform = glm::mat4(1.0f)) {
+    models_.push_back({nextId_, std::make_unique<Model>(mesh, transform, stats_)});
     ++version_;
     ++layoutVersion_;
     return nextId_++;
   }
-  // A scene of one model showing `mesh`: the present model reused when there is exactly one.
-  ModelId setOnly(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats) {
+  // A temporary would be gone before the first frame.
+  ModelId add(Mesh&& mesh, const glm::mat4& transform = glm::mat4(1.0f)) = delete;
+  // A scene of one model showing `mesh`, untransformed: the present model reused when there is
+  // exactly one (its own palette dropped). Null or an empty mesh: an empty scene.
+  void setOnly(const Mesh* mesh) {
+    if (!mesh || mesh->indices.empty()) return clear();
     if (models_.size() != 1) {
       clear();
-      return add(mesh, transform, stats);
+      add(*mesh);
+      return;
     }
-    models_.front().model->reset(mesh, transform, stats);
+    models_.front().model->reset(*mesh, glm::mat4(1.0f), stats_);
+    ground_.reset();
     ++version_;
     ++layoutVersion_;
-    return models_.front().id;
   }
+  // The model's own palette (Model::palette), uploaded now; on failure, or for no such model,
+  // nothing changes.
+  [[nodiscard]] Status setPalette(ModelId id, const Palette& palette);
+  void clearPalette(ModelId id) {
+    if (Model* m = find(id)) m->setPalette(nullptr);
+  }
+  // The object's name, for line sets that select objects. False when there is no such model.
+  bool setName(ModelId id, const std::string& name) {
+    Model* m = find(id);
+    if (m) m->setName(name);
+    return m != nullptr;
+  }
+  // The model's detail in [0, 1] (clamped; not finite: 0), which a palette with `axis detail`
+  // picks its row by. False when there is no such model.
+  bool setDetail(ModelId id, float detail);
+  // Poses a model whose mesh deforms (Mesh::deformation): morph `weights` and skin `joints`
+  // (per joint, the mesh's rest space to its posed space; animation/deformation.h), made by
+  // the next frame where it reads them. False when there is no such model; a mesh that does
+  // not deform ignores it.
+  bool deform(ModelId id, const std::vector<glm::mat4>& joints, const std::vector<float>& weights) {
+    Model* m = find(id);
+    if (!m) return false;
+    m->deform(joints, weights);
+    touch();
+    return true;
+  }
+  // The ground plane under the shown models (--ground), drawn like one more model: built the
+  // first time a frame asks for it, again when the layout changed. Null for an empty scene.
+  Model* ground();
+  // The painterly strokes seeded on the shown models, and the time seeding them took (0 until
+  // a frame draws strokes).
+  std::size_t strokeCount();
+  double strokeSeedMs();
   bool remove(ModelId id) {
     for (auto it = models_.begin(); it != models_.end(); ++it)
       if (it->id == id) {
@@ -45,6 +91,7 @@ class Scene {
   }
   void clear() {
     models_.clear();
+    ground_.reset();
     ++version_;
     ++layoutVersion_;
   }
@@ -153,6 +200,7 @@ class Scene {
   }
 
  private:
+  FrameStats& stats_;
   struct Entry {
     ModelId id;
     std::unique_ptr<Model> model;
@@ -161,6 +209,9 @@ class Scene {
   std::vector<Entry> models_;
   ModelId nextId_ = 1;
   unsigned version_ = 0, layoutVersion_ = 0;
+  Mesh groundMesh_;
+  std::unique_ptr<Model> ground_;
+  unsigned groundVersion_ = 0;  // the layout version it was built for
 };
 
 }  // namespace npr

@@ -6,6 +6,7 @@
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/texture.h"
 #include "renderer/lighting/lighting_uniforms.h"
+#include "renderer/lighting/occlusion_factor.h"
 
 namespace npr {
 
@@ -105,7 +106,7 @@ Status GpuTriangleLighting::shade(const GpuTriangleLightingInputs& in, gl::Progr
   uploadLightingUniforms(p, prepareLighting<float>(in.lighting));
   in.palette.bindMatching(p);
   if (in.shadows) in.shadows->bind(p, in.sceneView);
-  if (occluded) p.set("uOcclusionStrength", std::clamp(in.occlusionStrength, 0.0f, 1.0f));
+  if (occluded) p.set("uOcclusionStrength", occlusionStrength(in.occlusionStrength));
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(nt));
   ++stats.drawCalls;

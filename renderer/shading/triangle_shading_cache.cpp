@@ -7,7 +7,8 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/core/parallel.h"
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
+#include "renderer/lighting/occlusion_factor.h"
 
 namespace npr {
 namespace {
@@ -137,7 +138,7 @@ void TriangleShadingCache::prepare(const LightingState& lighting, const glm::mat
           for (std::size_t f = 0; f < nf; ++f) {
             const std::uint32_t* v = &mesh_->indices[f * 3];
             const float mean = (occ[v[0]] + occ[v[1]] + occ[v[2]]) / 3.0f;
-            const float k = 1.0f + (mean - 1.0f) * occlusionStrength;
+            const float k = occlusionFactor(mean, occlusionStrength);
             const glm::vec4 base = fm.faceScale ? glm::vec4(fm.faceScale[f]) : glm::vec4(255.0f);
             occludedScale_[f] = glm::u8vec4(glm::clamp(glm::round(base * glm::vec4(k, k, k, 1.0f)), 0.0f, 255.0f));
           }

@@ -17,7 +17,7 @@
 #include "renderer/gl/gl_handle.h"
 #include "renderer/gl/program_cache.h"
 #include "renderer/lighting/lighting_state.h"
-#include "renderer/mesh/gpu_materials.h"
+#include "renderer/materials/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 
 namespace npr {

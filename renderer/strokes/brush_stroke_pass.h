@@ -18,7 +18,7 @@
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/gpu_palette.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 #include "renderer/strokes/stroke_seeding.h"
 
 namespace npr {

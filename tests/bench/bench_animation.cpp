@@ -78,11 +78,11 @@ int main(int argc, char** argv) {
     if (!rs || !rk || !rm) return 1;
     for (Renderer* r : {rs->get(), rk->get(), rm->get()}) {
       applyDefaultMaterial(r->lighting());
-      if (!r->setPalette(*palette)) return 1;
+      if (!r->palettes().setMain(*palette)) return 1;
     }
-    (*rs)->addModel(still);
-    const ModelId k = (*rk)->addModel(skin);
-    const ModelId m = (*rm)->addModel(morph);
+    (*rs)->scene().add(still);
+    const ModelId k = (*rk)->scene().add(skin);
+    const ModelId m = (*rm)->scene().add(morph);
     OrbitCamera cam(20.0f, 25.0f, 3.0f);
     cam.frame(1.0f);
     const CameraMatrices matrices = cam.matrices(float(args->width) / float(args->height));
@@ -102,9 +102,9 @@ int main(int argc, char** argv) {
           const float phase = 0.05f * float(call++);
           if (kind == 1 || kind == 2) {
             const std::vector<glm::mat4> joints = {glm::mat4(1.0f), glm::rotate(glm::mat4(1.0f), 0.5f * std::sin(phase), glm::vec3(0, 0, 1))};
-            if (!r->setModelDeformation(k, joints, {})) ++failed;
+            if (!r->scene().deform(k, joints, {})) ++failed;
           } else if (kind >= 3) {
-            if (!r->setModelDeformation(m, {}, {0.5f + 0.5f * std::sin(phase)})) ++failed;
+            if (!r->scene().deform(m, {}, {0.5f + 0.5f * std::sin(phase)})) ++failed;
           }
           drawnLast[r] = long(config);
           lastRound = round;

@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   if (!crosshatch || !bunny) return 1;
   if (control) {
     auto stipple = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/stipple/stipple.palette");
-    if (!stipple || !r.setControlPalette(ControlParameter::Shadow, *stipple) || !r.setControlPalette(ControlParameter::Occlusion, *stipple)) return 1;
+    if (!stipple || !r.palettes().setControl(ControlParameter::Shadow, *stipple) || !r.palettes().setControl(ControlParameter::Occlusion, *stipple)) return 1;
   }
   struct Scene { const char* name; const Mesh* mesh; };
   std::vector<Scene> scenes;
@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
   std::printf("| mesh | entries | path | median ms | p95 ms | CPU ms | CPU shading ms | GPU ms | x reference | x lit-textured |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& sc : scenes) {
-    r.setMesh(sc.mesh);
+    r.scene().setOnly(sc.mesh);
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     for (int n : sizes) {
@@ -298,7 +298,7 @@ int main(int argc, char** argv) {
         palette.entries.insert(palette.entries.end(), first.begin(), first.end());
         palette.axis = PaletteAxis{PaletteAxisKind::Depth, 2.0f, 3.0f, 2};
       }
-      if (!r.setPalette(palette)) return 1;
+      if (!r.palettes().setMain(palette)) return 1;
       // The light moves before every frame, so each per-triangle path redoes its CPU work (as
       // while a user drags the light) rather than reusing what the path before it computed.
       CameraMatrices matrices = cam.matrices(float(w) / float(h));

@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
   applyDefaultMaterial(r.lighting());
   auto hatch = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/hatch/hatch.palette");
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
-  if (!hatch || !bunny || !r.setPalette(*hatch)) return 1;
+  if (!hatch || !bunny || !r.palettes().setMain(*hatch)) return 1;
   const Mesh smallTorus = torus(160, 80);
   struct Scene { const char* name; const Mesh* mesh; };
   std::vector<Scene> scenes = {{"torus", &smallTorus}, {"bunny", &*bunny}};
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
   std::printf("\n## Strokes in the image against the wanted angles (%dx%d, hatch palette, curvature)\n\n", w, h);
   std::printf("| mesh | path | median error (deg) | pixels | with none: error to the field (deg) |\n|---|---|---|---|---|\n");
   for (const Scene& sc : scenes) {
-    r.setMesh(sc.mesh);
+    r.scene().setOnly(sc.mesh);
     OrbitCamera cam(30.0f, 25.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     const CameraMatrices m = cam.matrices(aspect);
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
       s.orient.source = OrientSource::Curvature;
       const ImageRGBA8 img = readInto<ImageRGBA8>(w, h, [&](const glm::ivec4& vp) { return r.render(m, s, vp); });
       const ImageRGBA8 plain = readInto<ImageRGBA8>(w, h, [&](const glm::ivec4& vp) { return r.render(m, none, vp); });
-      const ImageRGBA32F wanted = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.renderStrokeAngles(m, s, vp); });
+      const ImageRGBA32F wanted = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.render(m, s, vp, FrameOutput::StrokeAngles); });
       const test::Alignment a = test::strokeAlignment(img, wanted), b = test::strokeAlignment(plain, wanted);
       std::printf("| %s | %s | %.2f | %zu | %.2f |\n", sc.name, pathInfo(path).name, a.medianDegrees, a.pixels, b.medianDegrees);
       std::fflush(stdout);
@@ -137,21 +137,21 @@ int main(int argc, char** argv) {
   std::printf("\n## Step stability under a 1 degree/frame orbit (%d frames, %d steps)\n\n", frames, OrientSettings{}.bins);
   std::printf("| mesh | mean share of points jumping > 1 step | worst frame | points compared per frame |\n|---|---|---|---|\n");
   for (const Scene& sc : scenes) {
-    r.setMesh(sc.mesh);
+    r.scene().setOnly(sc.mesh);
     OrbitCamera cam(30.0f, 25.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     RenderSettings s;
     s.orient.source = OrientSource::Curvature;
     CameraMatrices prev = cam.matrices(aspect);
-    ImageRGBA32F prevAngles = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.renderStrokeAngles(prev, s, vp); });
-    ImageRGBA32F prevEye = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.renderGeometry(prev, GeometryOutput::EyePosition, vp); });
+    ImageRGBA32F prevAngles = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.render(prev, s, vp, FrameOutput::StrokeAngles); });
+    ImageRGBA32F prevEye = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.render(prev, RenderSettings{}, vp, FrameOutput::EyePosition); });
     double sum = 0.0, worst = 0.0;
     std::size_t compared = 0;
     for (int f = 0; f < frames; ++f) {
       cam.orbit(1.0f, 0.0f);
       const CameraMatrices next = cam.matrices(aspect);
-      ImageRGBA32F angles = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.renderStrokeAngles(next, s, vp); });
-      ImageRGBA32F eye = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.renderGeometry(next, GeometryOutput::EyePosition, vp); });
+      ImageRGBA32F angles = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.render(next, s, vp, FrameOutput::StrokeAngles); });
+      ImageRGBA32F eye = readInto<ImageRGBA32F>(w, h, [&](const glm::ivec4& vp) { return r.render(next, RenderSettings{}, vp, FrameOutput::EyePosition); });
       const double j = test::stepJumpFraction(prevAngles, prevEye, prev, angles, eye, next, s.orient.bins, 0.0f, &compared);
       sum += j;
       worst = std::max(worst, j);

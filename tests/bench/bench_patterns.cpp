@@ -109,7 +109,7 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!r.render(m, s, {0, 0, w, h})) std::abort();
     const ImageRGBA8 img = target.readRGBA8();
-    const PatternFrame frameNow = space == PatternSpace::Anchored ? r.patternTracker().frame() : PatternFrame{};
+    const PatternFrame frameNow = space == PatternSpace::Anchored ? r.scene().first()->patterns().frame() : PatternFrame{};
     if (space == PatternSpace::Anchored && f > 0) {
       fitMs.push_back(r.stats().cpuPatternMs);
       out.samples = r.stats().patternSamples;
@@ -120,11 +120,11 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     ftarget->bind();
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!r.renderGeometry(m, GeometryOutput::EyePosition, {0, 0, w, h})) std::abort();
+    if (!r.render(m, RenderSettings{}, {0, 0, w, h}, FrameOutput::EyePosition)) std::abort();
     const ImageRGBA32F geo = ftarget->readRGBA32F();
     if (space == PatternSpace::Object && f == 0) {
       glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-      if (!r.renderGeometry(m, GeometryOutput::EyeNormal, {0, 0, w, h})) std::abort();
+      if (!r.render(m, RenderSettings{}, {0, 0, w, h}, FrameOutput::EyeNormal)) std::abort();
       objectFlatness(geo, ftarget->readRGBA32F(), m, w, h, out);
     }
     // Tone and contrast over the model.
@@ -149,7 +149,7 @@ Run runScript(Renderer& r, OffscreenTarget& target, const Mesh& mesh, const Scri
     // The pattern's next frame is what the tracker will fit; take it from a render.
     target.bind();
     if (!r.render(next, s, {0, 0, w, h})) std::abort();
-    const PatternFrame frameNext = space == PatternSpace::Anchored ? r.patternTracker().frame() : PatternFrame{};
+    const PatternFrame frameNext = space == PatternSpace::Anchored ? r.scene().first()->patterns().frame() : PatternFrame{};
     // That render advanced the tracker: undo by replaying from a reset is not possible, so the
     // loop below renders `next` again as frame f + 1 (a zero-motion fit, frame unchanged).
     out.slide += test::patternSlide(geo, m, next, space == PatternSpace::Anchored ? &frameNow : nullptr,
@@ -181,7 +181,7 @@ int main(int argc, char** argv) {
   applyDefaultMaterial(r.lighting());
   auto palette = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
-  if (!palette || !bunny || !r.setPalette(*palette)) return 1;
+  if (!palette || !bunny || !r.palettes().setMain(*palette)) return 1;
   // One palette step: the mean luminance difference between neighbouring entries.
   float step = 0.0f;
   for (std::size_t k = 0; k + 1 < palette->entries.size(); ++k)
@@ -197,7 +197,7 @@ int main(int argc, char** argv) {
   std::printf("| mesh | script | pattern | slide px/frame | tone vs screen, worst (steps) | contrast first -> last | fit ms | samples | anisotropy / scale spread |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const Scene& scene : scenes) {
-    r.setMesh(scene.mesh);
+    r.scene().setOnly(scene.mesh);
     for (const Script& sc : scripts) {
       const Run screen = runScript(r, *target, *scene.mesh, sc, PatternSpace::Screen, frames, w, h);
       const Run anchored = runScript(r, *target, *scene.mesh, sc, PatternSpace::Anchored, frames, w, h);

@@ -67,10 +67,10 @@ int main(int argc, char** argv) {
     if (!one || !many) return 1;
     for (Renderer* r : {one->get(), many->get()}) {
       applyDefaultMaterial(r->lighting());
-      if (!r->setPalette(*palette)) return 1;
+      if (!r->palettes().setMain(*palette)) return 1;
     }
-    (*one)->setMesh(&merged);
-    for (const glm::mat4& p : places) (*many)->addModel(sphere, p);
+    (*one)->scene().setOnly(&merged);
+    for (const glm::mat4& p : places) (*many)->scene().add(sphere, p);
     OrbitCamera cam(0.0f, 0.0f, 3.0f);
     cam.frame(1.0f);
     const CameraMatrices matrices = cam.matrices(float(args->width) / float(args->height));

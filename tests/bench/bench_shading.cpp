@@ -14,6 +14,7 @@
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/core/parallel.h"
 #include "renderer/shading/triangle_shading.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr::bench {
 namespace {
@@ -142,7 +143,7 @@ void BM_Match(benchmark::State& state) {
     for (const auto& q : queries) sum += m->match(q);
   benchmark::DoNotOptimize(sum);
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(queries.size()));
-  state.SetLabel(std::string(matchModeName(mode)) + ", " + std::to_string(n) + " entries");
+  state.SetLabel(std::string(choiceName(mode)) + ", " + std::to_string(n) + " entries");
 }
 
 // Silhouettes of the 871K-triangle mesh for a new eye position (what a view change costs).

@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
   auto target = OffscreenTarget::create(64, 64);
   auto palette = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/crosshatch/crosshatch.palette");
   auto bunny = loadMesh(std::string(NPR_SOURCE_DIR) + "/models/bunny.obj");
-  if (!renderer || !target || !palette || !bunny || !(*renderer)->setPalette(*palette)) return 1;
+  if (!renderer || !target || !palette || !bunny || !(*renderer)->palettes().setMain(*palette)) return 1;
   Renderer& r = **renderer;
   applyDefaultMaterial(r.lighting());
   struct Scene { const char* name; const Mesh* mesh; };
@@ -67,13 +67,13 @@ int main(int argc, char** argv) {
   for (const Scene& sc : scenes) {
     std::vector<double> bake;
     for (int k = 0; k < 3; ++k) {
-      r.setMesh(sc.mesh);  // a fresh bake
+      r.scene().setOnly(sc.mesh);  // a fresh bake
       RenderSettings s;
       s.occlusion = true;
       target->bind();
       if (!r.render(m, s, {0, 0, 64, 64})) return 1;
       finishGpuWork();
-      bake.push_back(r.occlusionBake()->ms());
+      bake.push_back(r.scene().first()->occlusionBake()->ms());
     }
     // One redraw of the maps for each light kind: the light moves a little between renders.
     struct Kind { glm::vec4 position; float cutoff; };
@@ -117,9 +117,9 @@ int main(int argc, char** argv) {
       gpu.triangleLighting = TriangleLighting::Gpu;
       target->bind();
       if (!r.render(m, cpu, {0, 0, 64, 64})) return 1;
-      const std::vector<std::uint8_t> a = r.triangleShading().entry;
+      const std::vector<std::uint8_t> a = r.scene().first()->triangles().shading().entry;
       if (!r.render(m, gpu, {0, 0, 64, 64})) return 1;
-      const std::vector<std::uint8_t>& b = r.triangleShading().entry;
+      const std::vector<std::uint8_t>& b = r.scene().first()->triangles().shading().entry;
       for (std::size_t t = 0; t < a.size() && t < b.size(); ++t) {
         differ += a[t] != b[t];
         far += std::abs(int(a[t]) - int(b[t])) > 1;

@@ -99,8 +99,8 @@ int lines(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, 
   std::printf("## Hardware outlines against object-space silhouettes (3 px lines)\n\n");
   std::printf("| mesh | method | object-space px near it | its px near object-space | width median | p10 | p90 |\n|---|---|---|---|---|---|---|\n");
   for (const BenchScene& sc : scenes) {
-    r.setMesh(sc.mesh);
-    if (!r.setPalette(whitePalette())) return 1;
+    r.scene().setOnly(sc.mesh);
+    if (!r.palettes().setMain(whitePalette())) return 1;
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     const CameraMatrices m = cam.matrices(aspect);
@@ -123,8 +123,8 @@ int lines(const std::vector<BenchScene>& scenes, const OffscreenTarget& target, 
   std::printf("\n## Frame cost, crosshatch, pixel path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | lines | median ms | p95 ms | CPU ms | x no lines | x object-space |\n|---|---|---|---|---|---|---|\n");
   for (const BenchScene& sc : scenes) {
-    r.setMesh(sc.mesh);
-    if (!r.setPalette(crosshatch)) return 1;
+    r.scene().setOnly(sc.mesh);
+    if (!r.palettes().setMain(crosshatch)) return 1;
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     int failed = 0;
@@ -195,7 +195,7 @@ int styles(const std::vector<BenchScene>& scenes, const OffscreenTarget& target,
   std::printf("\n## Styles: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | style | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|\n");
   for (const BenchScene& sc : scenes) {
-    for (Entry& e : entries) e.renderer->setMesh(sc.mesh);
+    for (Entry& e : entries) e.renderer->scene().setOnly(sc.mesh);
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(sc.mesh->radius);
     int failed = 0;
@@ -239,7 +239,7 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
   Renderer& r = **created;
   applyDefaultMaterial(r.lighting());
   Result<Palette> wood = loadPalette(std::string(NPR_SOURCE_DIR) + "/palettes/wood/wood.palette");
-  if (!wood || !r.setPalette(*wood)) return 1;
+  if (!wood || !r.palettes().setMain(*wood)) return 1;
   const float aspect = float(target.width()) / float(target.height());
   struct Row {
     std::string label;
@@ -248,7 +248,7 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
   std::printf("\n## Painterly strokes: frame time against the reference path, camera orbiting 0.5 degrees per frame\n\n");
   std::printf("| mesh | row | strokes | seeding ms | median ms | p95 ms | CPU ms | x reference |\n|---|---|---|---|---|---|---|---|\n");
   for (const BenchScene& sc : scenes) {
-    r.setMesh(sc.mesh);
+    r.scene().setOnly(sc.mesh);
     const bool large = sc.mesh->triangleCount() > 500000;
     std::vector<Row> rows(3);
     rows[0].label = "reference";
@@ -267,8 +267,8 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
     cam.frame(sc.mesh->radius);
     // Seeds (and the direction field) before timing: a one-off per mesh.
     frame(r, target, cam.matrices(aspect), rows[2].settings);
-    const std::size_t count = r.strokeCount();
-    const double seedMs = r.strokeSeedMs();
+    const std::size_t count = r.scene().strokeCount();
+    const double seedMs = r.scene().strokeSeedMs();
     int failed = 0;
     const std::vector<FrameTiming> t = timeInterleaved(r, target, rows.size(), frames, 2, [&](std::size_t c, int round) {
       OrbitCamera moving = cam;
@@ -292,7 +292,7 @@ int strokes(const std::vector<BenchScene>& scenes, const OffscreenTarget& target
   std::printf("| mesh | motion | smooth | + strokes (faded) | + strokes (cut) |\n|---|---|---|---|---|\n");
   for (const BenchScene& sc : scenes) {
     if (sc.mesh->triangleCount() > 500000) continue;  // the bunny and the teapot say it
-    r.setMesh(sc.mesh);
+    r.scene().setOnly(sc.mesh);
     RenderSettings base;
     base.path = RenderPath::Smooth;
     base.match = MatchMode::Colors;
@@ -356,9 +356,9 @@ int intersections(const std::vector<BenchScene>& scenes, const OffscreenTarget& 
       if (!created) return 1;
       *r = std::move(*created);
       applyDefaultMaterial((*r)->lighting());
-      if (!(*r)->setPalette(whitePalette())) return 1;
-      (*r)->setMesh(sc.mesh);
-      const ModelId id = (*r)->addModel(*sc.mesh, beside(*sc.mesh, 0.0f));
+      if (!(*r)->palettes().setMain(whitePalette())) return 1;
+      (*r)->scene().setOnly(sc.mesh);
+      const ModelId id = (*r)->scene().add(*sc.mesh, beside(*sc.mesh, 0.0f));
       if (r == &moving) movingCopy = id;
     }
     RenderSettings without;
@@ -373,7 +373,7 @@ int intersections(const std::vector<BenchScene>& scenes, const OffscreenTarget& 
       OrbitCamera turned = cam;
       turned.orbit(0.5f * float(round), 0.0f);
       Renderer* r = c < 2 ? still.get() : moving.get();
-      if (c >= 2) (void)r->setModelTransform(movingCopy, beside(*sc.mesh, 0.002f * sc.mesh->radius * float(round)));
+      if (c >= 2) (void)r->scene().setTransform(movingCopy, beside(*sc.mesh, 0.002f * sc.mesh->radius * float(round)));
       TimedFrame f{c < 2 ? turned.matrices(aspect) : cam.matrices(aspect), c % 2 ? with : without, r};
       setLight(*r, f.camera);
       return f;

@@ -10,7 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/animation/deformation.h"
-#include "renderer/animation/node_animation.h"
+#include "renderer/mesh/node_animation.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "support/skinned_cylinder.h"
 

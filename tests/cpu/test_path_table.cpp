@@ -8,10 +8,11 @@
 #include <string>
 
 #include "renderer/gl/program_cache.h"
-#include "renderer/gl/program_variants.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/paths/path_table.h"
 #include "renderer/paths/render_pass.h"
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 namespace {
@@ -88,15 +89,15 @@ TEST(ProgramVariants, DefinesFollowTheFields) {
 // none for the offset method (the rasterizer culls); the rim reads the palette. The
 // object-space pattern's quads read its coordinates from the stencil path's buffer.
 TEST(ProgramVariants, OutlinesStrokesAndObjectPatterns) {
-  const gl::ProgramSource fatten = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Fatten, std::nullopt});
+  const gl::ProgramSource fatten = gl::programSource(gl::OutlineProgram{OutlineMethod::Fatten, std::nullopt});
   EXPECT_EQ(fatten.geometryFile, "outline.geom");
   EXPECT_TRUE(has(fatten.defines, "OUTLINE_FATTEN"));
-  const gl::ProgramSource offset = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Offset, std::nullopt});
+  const gl::ProgramSource offset = gl::programSource(gl::OutlineProgram{OutlineMethod::Offset, std::nullopt});
   EXPECT_TRUE(offset.geometryFile.empty());
   gl::PaletteVariant pv;
   pv.size = 4;
   pv.pattern = gl::PatternMapping::Object;
-  const gl::ProgramSource rim = gl::programSource(gl::OutlineProgram{gl::OutlineProgram::Method::Rim, pv});
+  const gl::ProgramSource rim = gl::programSource(gl::OutlineProgram{OutlineMethod::Fatten, pv});
   EXPECT_TRUE(has(rim.defines, "OUTLINE_RIM") && has(rim.defines, "PALETTE_SIZE 4"));
   const gl::ProgramSource strokes = gl::programSource(gl::StrokeProgram{LightingFeatures{}, pv});
   EXPECT_EQ(strokes.vertexFile, "strokes.vert");
@@ -118,10 +119,10 @@ TEST(RenderSettingsText, NewKindsMethodsSpacesAndSizes) {
   EXPECT_EQ(unknown, "wobbly");
   EXPECT_TRUE(l.hardware);  // untouched on failure
   for (OutlineMethod m : {OutlineMethod::Edges, OutlineMethod::Offset, OutlineMethod::Fatten})
-    EXPECT_EQ(parseOutlineMethod(outlineMethodName(m)), m);
-  EXPECT_FALSE(parseOutlineMethod("round"));
-  EXPECT_EQ(parsePatternSpace("object"), PatternSpace::Object);
-  EXPECT_EQ(parsePatternSpace(patternSpaceName(PatternSpace::Object)), PatternSpace::Object);
+    EXPECT_EQ(parseChoice<OutlineMethod>(choiceName(m)), m);
+  EXPECT_FALSE(parseChoice<OutlineMethod>("round"));
+  EXPECT_EQ(parseChoice<PatternSpace>("object"), PatternSpace::Object);
+  EXPECT_EQ(parseChoice<PatternSpace>(choiceName(PatternSpace::Object)), PatternSpace::Object);
   EXPECT_EQ(parseStrokeSize("16x6"), glm::vec2(16.0f, 6.0f));
   for (const char* bad : {"16", "16x", "0x6", "16x300", "16x6x2", "nanx6", "16x6px"}) EXPECT_FALSE(parseStrokeSize(bad)) << bad;
 }
@@ -155,14 +156,14 @@ TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   variants.push_back(gl::LineProgram{false, true});
   variants.push_back(gl::EdgeProgram{});
   variants.push_back(gl::MarkerProgram{});
-  for (auto method : {gl::OutlineProgram::Method::Edges, gl::OutlineProgram::Method::Offset, gl::OutlineProgram::Method::Fatten})
+  for (auto method : {OutlineMethod::Edges, OutlineMethod::Offset, OutlineMethod::Fatten})
     variants.push_back(gl::OutlineProgram{method, std::nullopt});
-  variants.push_back(gl::OutlineProgram{gl::OutlineProgram::Method::Rim, gl::PaletteVariant{}});
+  variants.push_back(gl::OutlineProgram{OutlineMethod::Fatten, gl::PaletteVariant{}});
   variants.push_back(gl::StrokeProgram{LightingFeatures{}, gl::PaletteVariant{}});
   with([](gl::MeshProgram& m) { m.palette->pattern = gl::PatternMapping::Object; });
   with([](gl::MeshProgram& m) { m.shading = gl::MeshShading::PatternCoordinate; });
   variants.push_back(gl::QuadProgram{gl::QuadProgram::Kind::Layer, false, gl::PatternMapping::Object});
-  for (size_t i = 0; i < variants.size(); ++i) cache.emplace(gl::programKey(variants[i]), int(i));
+  for (size_t i = 0; i < variants.size(); ++i) cache.emplace(gl::programKey(gl::programSource(variants[i])), int(i));
   EXPECT_EQ(cache.size(), variants.size());
   std::set<std::vector<std::string>> defineSets;
   for (const auto& v : variants) {
@@ -173,7 +174,7 @@ TEST(ProgramVariants, EachFieldMakesADistinctCacheKey) {
   }
   EXPECT_EQ(defineSets.size(), variants.size()) << "two variants compile to the same program";
   gl::MeshProgram same = base;
-  EXPECT_FALSE(cache.emplace(gl::programKey(same), -1).second);
+  EXPECT_FALSE(cache.emplace(gl::programKey(gl::programSource(same)), -1).second);
 }
 
 }  // namespace

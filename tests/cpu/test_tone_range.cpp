@@ -13,6 +13,7 @@
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/palette/palette_matcher.h"
 #include "renderer/palette/tone_range.h"
+#include "renderer/settings/choice_names.h"
 
 namespace npr {
 namespace {
@@ -59,8 +60,8 @@ TEST(ToneRange, TheTargetFitsThePalettesLevelsOntoIt) {
       before.insert(fixed->match(lit));
       after.insert(fitted->match(lit));
     }
-    EXPECT_LE(before.size(), 3u) << matchModeName(mode);
-    EXPECT_EQ(after.size(), 10u) << matchModeName(mode);
+    EXPECT_LE(before.size(), 3u) << choiceName(mode);
+    EXPECT_EQ(after.size(), 10u) << choiceName(mode);
     // The ends of the target are the palette's ends.
     EXPECT_EQ(fitted->match(glm::vec3(0.3f / 3.0f)), fixed->match(glm::vec3(0.0f)));
     EXPECT_EQ(fitted->match(glm::vec3(0.9f / 3.0f)), fixed->match(glm::vec3(1.0f)));

@@ -51,15 +51,15 @@ ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSetti
 }
 
 ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
-  return renderInto<ImageRGBA8>(w, h, true, [&](const glm::ivec4& vp) { return r.renderSelection(cam, s, SelectionOutput::Entry, vp); });
+  return renderInto<ImageRGBA8>(w, h, true, [&](const glm::ivec4& vp) { return r.render(cam, s, vp, FrameOutput::Entry); });
 }
 
-ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h) {
-  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.renderGeometry(cam, output, vp); });
+ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, FrameOutput output, int w, int h) {
+  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.render(cam, RenderSettings{}, vp, output == FrameOutput::EyePosition ? FrameOutput::EyePosition : FrameOutput::EyeNormal); });
 }
 
 ImageRGBA32F renderStrokeAngles(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h) {
-  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.renderStrokeAngles(cam, s, vp); });
+  return renderInto<ImageRGBA32F>(w, h, true, [&](const glm::ivec4& vp) { return r.render(cam, s, vp, FrameOutput::StrokeAngles); });
 }
 
 int countDiffering(const ImageRGBA8& a, const ImageRGBA8& b) {

@@ -22,7 +22,7 @@ ImageRGBA8 renderImage(Renderer& r, const CameraMatrices& cam, const RenderSetti
 // The selection and geometry outputs (Renderer::renderSelection, renderGeometry) into a
 // target cleared to zero: entries from an 8-bit target, geometry as floats.
 ImageRGBA8 renderEntries(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
-ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, GeometryOutput output, int w, int h);
+ImageRGBA32F renderGeometry(Renderer& r, const CameraMatrices& cam, FrameOutput output, int w, int h);
 // Renderer::renderStrokeAngles into a float target: (angle, valid) per pixel.
 ImageRGBA32F renderStrokeAngles(Renderer& r, const CameraMatrices& cam, const RenderSettings& s, int w, int h);
 // Pixels whose colour differs (alpha ignored).

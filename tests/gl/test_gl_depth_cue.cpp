@@ -28,12 +28,12 @@ float meanLuminance(const ImageRGBA8& img, const ImageRGBA32F& geometry, bool ne
 
 TEST_F(DepthCueFixture, TheFarModelFadesTowardThePaperInEveryPath) {
   const Mesh sphere = icosphere(3);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.4f));
-  r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, 0.0f, 0.6f)) * scale);
-  r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.45f, 0.0f, -0.6f)) * scale);
+  r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, 0.0f, 0.6f)) * scale);
+  r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.45f, 0.0f, -0.6f)) * scale);
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 0.0f);
-  const ImageRGBA32F geometry = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F geometry = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   for (RenderPath path : userRenderPaths()) {
     RenderSettings s;
     s.path = path;

@@ -15,9 +15,10 @@
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/immediate_api.h"
 #include "renderer/lighting/lighting_model.h"
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/paths/path_table.h"
+#include "renderer/settings/choice_names.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -57,8 +58,8 @@ struct SurfacePixel {
 };
 std::vector<SurfacePixel> litSurfacePixels(Renderer& r, const CameraMatrices& cam, int w, int h, const std::vector<Material>& materials,
                                            float seam) {
-  const ImageRGBA32F pos = test::renderGeometry(r, cam, GeometryOutput::EyePosition, w, h);
-  const ImageRGBA32F nrm = test::renderGeometry(r, cam, GeometryOutput::EyeNormal, w, h);
+  const ImageRGBA32F pos = test::renderGeometry(r, cam, FrameOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(r, cam, FrameOutput::EyeNormal, w, h);
   const glm::mat4 toObject = glm::inverse(cam.view);
   std::vector<SurfacePixel> out;
   for (std::size_t i = 0; i < std::size_t(w) * h; i += 5) {
@@ -78,8 +79,8 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
   ASSERT_EQ(mesh.materials.size(), 3u);  // the default, red, blue
-  r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  r->scene().setOnly(&mesh);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
   const std::vector<Material> mats = glMaterials(mesh, r->lighting());
@@ -88,7 +89,7 @@ TEST_F(Fixture, PixelPathWithMaterialsAgreesWithTheCpuLightingModel) {
     s.path = RenderPath::Pixel;
     s.match = MatchMode::Colors;
     const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
-    const PaletteMatcher& m = *r->matcher();
+    const PaletteMatcher& m = *r->palettes().matcher();
     int sampled = 0, exact = 0, red = 0, blue = 0;
     for (const SurfacePixel& px : litSurfacePixels(*r, cam, w, h, mats, 0.05f)) {
       (px.side == 0 ? red : blue)++;
@@ -110,7 +111,7 @@ TEST_F(Fixture, ReferenceLightsEachMaterialWithEachOfItsColours) {
                                       "newmtl red\nKa 0.9 0.1 0.1\nKd 0.1 0.7 0.1\nKs 0.4 0.4 0.6\nNs 30\nKe 0.05 0.05 0.3\n"
                                       "newmtl blue\nKa 0.1 0.1 0.9\nKd 0.6 0.2 0.1\nKs 0.5 0.5 0.3\nNs 8\nKe 0.2 0 0\n");
   ASSERT_EQ(mesh.materials.size(), 3u);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   const float ambient[4] = {0.3f, 0.3f, 0.3f, 1.0f};
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_AMBIENT, ambient));
   const int w = 320, h = 240;
@@ -138,8 +139,8 @@ TEST_F(Fixture, ReferenceLightsEachMaterialWithEachOfItsColours) {
 TEST_F(Fixture, StencilEqualsTriangleWithMaterials) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
-  r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  r->scene().setOnly(&mesh);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
   for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity}) {
@@ -149,10 +150,10 @@ TEST_F(Fixture, StencilEqualsTriangleWithMaterials) {
     const ImageRGBA8 stencil = renderImage(*r, cam, s, w, h);
     s.path = RenderPath::Triangle;
     const ImageRGBA8 triangle = renderImage(*r, cam, s, w, h);
-    EXPECT_LE(test::countDiffering(stencil, triangle), w * h / 1000) << matchModeName(mode);
+    EXPECT_LE(test::countDiffering(stencil, triangle), w * h / 1000) << choiceName(mode);
     // And the materials change the picture: off, the sphere is one grey material.
     s.materials = false;
-    EXPECT_GT(test::countDiffering(triangle, renderImage(*r, cam, s, w, h)), w * h / 20) << matchModeName(mode);
+    EXPECT_GT(test::countDiffering(triangle, renderImage(*r, cam, s, w, h)), w * h / 20) << choiceName(mode);
   }
 }
 
@@ -182,9 +183,9 @@ Mesh seeThroughSquare(MeshMaterial::Alpha alpha, float opacity, bool cutLeft, fl
 
 // One frame with `mesh` in the scene for it alone.
 ImageRGBA8 renderWithModel(Renderer& r, const Mesh& mesh, const CameraMatrices& cam, const RenderSettings& s, int side) {
-  const ModelId id = r.addModel(mesh);
+  const ModelId id = r.scene().add(mesh);
   ImageRGBA8 img = renderImage(r, cam, s, side, side);
-  r.removeModel(id);
+  r.scene().remove(id);
   return img;
 }
 
@@ -199,12 +200,12 @@ TEST_F(Fixture, AMaskedMaterialIsCutOutInEveryPath) {
   const Mesh masked = seeThroughSquare(MeshMaterial::Alpha::Mask, 1.0f, true, 0.3f);
   EXPECT_FALSE(opaque.seeThrough);
   EXPECT_TRUE(masked.seeThrough);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   constexpr int kSide = 120;
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);
-  r->addModel(sphere, behind);
+  r->scene().add(sphere, behind);
   for (RenderPath path : userRenderPaths()) {
     RenderSettings s;
     s.path = path;
@@ -236,7 +237,7 @@ TEST_F(Fixture, SeeThroughObjectsMarkedTogetherKeepTheirOwnCuts) {
   Mesh cutRight = cutLeft;  // the same square, its map's other half transparent
   for (std::size_t i = 3; i < cutRight.textures[0].image.pixels.size(); i += 4) cutRight.textures[0].image.pixels[i] = 255 - cutRight.textures[0].image.pixels[i];
   const Palette hatch = test::shippedPalette("hatch");
-  ASSERT_TRUE(r->setPalette(hatch));
+  ASSERT_TRUE(r->palettes().setMain(hatch));
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);
@@ -244,15 +245,15 @@ TEST_F(Fixture, SeeThroughObjectsMarkedTogetherKeepTheirOwnCuts) {
   const float pos[4] = {0.0f, 0.2f, 0.5f, 1.0f};
   r->lighting().setModelView(cam.view);
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, pos));
-  const ModelId a = r->addModel(cutLeft, glm::translate(glm::mat4(1.0f), glm::vec3(-0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
-  const ModelId b = r->addModel(cutRight, glm::translate(glm::mat4(1.0f), glm::vec3(0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
+  const ModelId a = r->scene().add(cutLeft, glm::translate(glm::mat4(1.0f), glm::vec3(-0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
+  const ModelId b = r->scene().add(cutRight, glm::translate(glm::mat4(1.0f), glm::vec3(0.35f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f)));
   RenderSettings s;
   s.path = RenderPath::Stencil;
   constexpr int kSide = 120;
   const ImageRGBA8 together = renderImage(*r, cam, s, kSide, kSide);
   EXPECT_GT(r->stats().drawCalls, 4);
-  ASSERT_TRUE(r->setModelPalette(a, hatch));  // its own palette: drawn alone
-  ASSERT_TRUE(r->setModelPalette(b, hatch));
+  ASSERT_TRUE(r->scene().setPalette(a, hatch));  // its own palette: drawn alone
+  ASSERT_TRUE(r->scene().setPalette(b, hatch));
   const int drawsTogether = r->stats().drawCalls;
   const ImageRGBA8 oneByOne = renderImage(*r, cam, s, kSide, kSide);
   EXPECT_LT(drawsTogether, r->stats().drawCalls);  // the quads drawn once for both
@@ -269,8 +270,8 @@ TEST_F(Fixture, TheGeometryPassLeavesOutWhatAMaskCuts) {
   constexpr int kSide = 96;
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
-  r->addModel(masked);
-  const ImageRGBA32F pos = test::renderGeometry(*r, c.matrices(1.0f), GeometryOutput::EyePosition, kSide, kSide);
+  r->scene().add(masked);
+  const ImageRGBA32F pos = test::renderGeometry(*r, c.matrices(1.0f), FrameOutput::EyePosition, kSide, kSide);
   int half[2] = {0, 0};
   for (int y = 0; y < kSide; ++y)
     for (int x = 0; x < kSide; ++x)
@@ -282,7 +283,7 @@ TEST_F(Fixture, TheGeometryPassLeavesOutWhatAMaskCuts) {
 // glTF's BLEND, drawn as screen-door transparency: a square of opacity 0.25 covers a quarter of
 // its pixels (4 of every 4x4 block) in every path, the same ones every frame; 0.75 three quarters.
 TEST_F(Fixture, ABlendedMaterialCoversItsOpacitysShareOfPixelsInEveryPath) {
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   constexpr int kSide = 96;
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
@@ -296,10 +297,10 @@ TEST_F(Fixture, ABlendedMaterialCoversItsOpacitysShareOfPixelsInEveryPath) {
       s.path = path;
       const ImageRGBA8 empty = renderImage(*r, cam, s, kSide, kSide);
       const ImageRGBA8 full = renderWithModel(*r, opaque, cam, s, kSide);
-      const ModelId b = r->addModel(blended);
+      const ModelId b = r->scene().add(blended);
       const ImageRGBA8 part = renderImage(*r, cam, s, kSide, kSide);
       const ImageRGBA8 again = renderImage(*r, cam, s, kSide, kSide);
-      r->removeModel(b);
+      r->scene().remove(b);
       int square = 0, drawn = 0;
       for (std::size_t i = 0; i < std::size_t(kSide * kSide) * 4; i += 4) {
         if (std::equal(&empty.pixels[i], &empty.pixels[i] + 3, &full.pixels[i])) continue;
@@ -330,17 +331,17 @@ TEST_F(Fixture, AMaskedCasterCastsTheShadowOfWhatIsLeft) {
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, above));
   RenderSettings s;
   s.path = RenderPath::Reference;
-  r->addModel(slab, slabPlace);
-  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSide, kSide);
+  r->scene().add(slab, slabPlace);
+  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSide, kSide);
   const ImageRGBA8 lit = renderImage(*r, cam, s, kSide, kSide);
   int shadowed[2] = {0, 0}, slabPixels = 0;
   for (int k : {0, 1}) {
-    const ModelId id = r->addModel(k == 0 ? opaque : masked, squarePlace);
-    const ImageRGBA32F both = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSide, kSide);
+    const ModelId id = r->scene().add(k == 0 ? opaque : masked, squarePlace);
+    const ImageRGBA32F both = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSide, kSide);
     s.shadows = true;
     const ImageRGBA8 shade = renderImage(*r, cam, s, kSide, kSide);
     s.shadows = false;
-    r->removeModel(id);
+    r->scene().remove(id);
     auto luminance = [](const ImageRGBA8& img, std::size_t i) { return (int(img.pixels[4 * i]) + img.pixels[4 * i + 1] + img.pixels[4 * i + 2]) / 765.0f; };
     for (std::size_t i = 0; i < std::size_t(kSide * kSide); ++i) {
       if (slabAlone.pixels[4 * i + 2] == 0.0f || std::fabs(both.pixels[4 * i + 2] - slabAlone.pixels[4 * i + 2]) > 1e-4f) continue;
@@ -362,8 +363,8 @@ TEST_F(Fixture, TwoMaterialsUnderOneLightPickDifferentEntriesInColorsMode) {
                                  "mtllib m.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
                                  "usemtl red\nf 1 3 4\nusemtl blue\nf 1 2 3\n"));
   ASSERT_TRUE(mesh) << mesh.error();
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);
@@ -399,7 +400,7 @@ TEST_F(Fixture, TextureMapColoursReachTheReferenceRender) {
                                  "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl tex\nf 1/1 2/2 3/3 4/4\n"));
   ASSERT_TRUE(mesh) << mesh.error();
   ASSERT_EQ(mesh->report.textures_loaded.size(), 1u) << mesh->report.toJson();
-  r->setMesh(&*mesh);
+  r->scene().setOnly(&*mesh);
   const float dir4[4] = {0, 0, 1, 0};
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, dir4));
@@ -432,8 +433,8 @@ TEST_F(Fixture, AssimpSpiderRendersWithItsTextures) {
   EXPECT_EQ(mesh->report.materials, 4u);
   EXPECT_EQ(mesh->report.textures_loaded.size(), 4u) << mesh->report.toJson();
   EXPECT_TRUE(mesh->report.textures_missing.empty());
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const CameraMatrices cam = testCamera(4.0f / 3.0f);
   RenderSettings s;
   s.path = RenderPath::Reference;
@@ -475,12 +476,12 @@ Palette solidRamp(int n, glm::vec3 colour, const std::string& name) {
 TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
-  r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(solidRamp(8, glm::vec3(1.0f, 0.2f, 0.1f), "reds")));
-  ASSERT_TRUE(r->setMaterialPalette("red", solidRamp(8, glm::vec3(0.1f, 0.3f, 1.0f), "blues")));
+  r->scene().setOnly(&mesh);
+  ASSERT_TRUE(r->palettes().setMain(solidRamp(8, glm::vec3(1.0f, 0.2f, 0.1f), "reds")));
+  ASSERT_TRUE(r->palettes().setMaterial("red", solidRamp(8, glm::vec3(0.1f, 0.3f, 1.0f), "blues")));
   const int w = 200, h = 160;
   const CameraMatrices cam = testCamera(float(w) / h, 0.0f, 0.0f);  // looking down -z: x < 0 on the left
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, w, h);
   const glm::mat4 toObject = glm::inverse(cam.view);
   for (const PathInfo& info : renderPaths()) {
     if (!info.userSelectable || !info.usesPalette) continue;
@@ -505,7 +506,7 @@ TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
     EXPECT_LE(wrong, (right + wrong) / 100) << info.name << ": " << wrong << " pixels show the other material's palette";
   }
   // Without it, the whole sphere is red.
-  r->clearMaterialPalette("red");
+  r->palettes().clearMaterial("red");
   RenderSettings s;
   s.path = RenderPath::Pixel;
   const ImageRGBA8 img = renderImage(*r, cam, s, w, h);
@@ -520,9 +521,9 @@ TEST_F(Fixture, PerMaterialPalettesDrawEachMaterialsOwnTextures) {
 TEST_F(Fixture, PerMaterialPartsDrawThroughTheModelsVertexStreams) {
   test::TempDir dir;
   const Mesh mesh = twoMaterialSphere(dir);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   const Palette hatch = test::shippedPalette("hatch");
-  ASSERT_TRUE(r->setPalette(hatch));
+  ASSERT_TRUE(r->palettes().setMain(hatch));
   const CameraMatrices cam = testCamera(1.0f);
   for (const PathInfo& info : renderPaths()) {
     if (!info.userSelectable || !info.usesPalette) continue;
@@ -530,19 +531,19 @@ TEST_F(Fixture, PerMaterialPartsDrawThroughTheModelsVertexStreams) {
     s.path = info.id;
     s.orient.source = OrientSource::Curvature;
     s.occlusion = true;
-    r->clearMaterialPalette("red");
+    r->palettes().clearMaterial("red");
     const ImageRGBA8 whole = renderImage(*r, cam, s, 160, 160);
-    ASSERT_TRUE(r->setMaterialPalette("red", hatch));
+    ASSERT_TRUE(r->palettes().setMaterial("red", hatch));
     const ImageRGBA8 split = renderImage(*r, cam, s, 160, 160);
     EXPECT_EQ(test::countDiffering(whole, split), 0) << info.name;
   }
-  r->clearMaterialPalette("red");
+  r->palettes().clearMaterial("red");
 }
 
 // The original interface: a Materialfv between RenderTriangle calls applies to the triangles
 // that follow, as in OpenGL. Two camera-facing triangles, red then blue.
 TEST_F(Fixture, ImmediateMaterialfvAppliesToTheTrianglesThatFollow) {
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
   OrbitCamera c(0.0f, 0.0f, 3.0f);
   c.frame(1.0f);
   const CameraMatrices cam = c.matrices(1.0f);

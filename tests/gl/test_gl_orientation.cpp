@@ -41,8 +41,8 @@ struct Orientation : Fixture {
   Mesh mesh = lyingCylinder();
   void SetUp() override {
     Fixture::SetUp();
-    ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
-    r->setMesh(&mesh);
+    ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
+    r->scene().setOnly(&mesh);
   }
   CameraMatrices camera() const { return test::testCamera(1.0f, 0.0f, 10.0f); }
   // What `path` draws with strokes along the curvature, and the stroke angles it wanted.
@@ -98,7 +98,7 @@ TEST_F(Orientation, FixedAngleTurnsStrokesInEveryPath) {
 
 TEST_F(Orientation, LightStrokesRunAlongTheLightsGradient) {
   const Mesh sphere = icosphere(4);
-  r->setMesh(&sphere);
+  r->scene().setOnly(&sphere);
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
     RenderSettings s;
@@ -110,7 +110,7 @@ TEST_F(Orientation, LightStrokesRunAlongTheLightsGradient) {
     EXPECT_GT(a.pixels, 5000u);
     EXPECT_LE(a.medianDegrees, 10.0);
   }
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
 }
 
 TEST_F(Orientation, AnchoredPatternsStayAlongTheField) {
@@ -124,20 +124,20 @@ TEST_F(Orientation, AnchoredPatternsStayAlongTheField) {
     (void)test::renderImage(*r, cam.matrices(1.0f), s, kSize, kSize);
     cam.orbit(4.0f, 0.0f);
   }
-  ASSERT_GT(std::fabs(r->patternTracker().frame().rotation), 0.3f);
+  ASSERT_GT(std::fabs(r->scene().first()->patterns().frame().rotation), 0.3f);
   const ImageRGBA8 img = test::renderImage(*r, cam.matrices(1.0f), s, kSize, kSize);
   const ImageRGBA32F wanted = test::renderStrokeAngles(*r, cam.matrices(1.0f), s, kSize, kSize);
   EXPECT_LE(test::strokeAlignment(img, wanted).medianDegrees, 10.0);
 }
 
 TEST_F(Orientation, PalettesWithoutStrokeDirectionsAreNotTurned) {
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("stipple")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("stipple")));
   RenderSettings none, curvature;
   curvature.orient.source = OrientSource::Curvature;
   const ImageRGBA8 a = test::renderImage(*r, camera(), none, kSize, kSize);
   const ImageRGBA8 b = test::renderImage(*r, camera(), curvature, kSize, kSize);
   EXPECT_EQ(test::countDiffering(a, b), 0);
-  EXPECT_EQ(r->directionField(), nullptr);  // nothing asked for it
+  EXPECT_EQ(r->scene().first()->directionFieldIfComputed(), nullptr);  // nothing asked for it
 }
 
 TEST_F(Orientation, SelectionIsTheSameTurnedOrNot) {
@@ -185,7 +185,7 @@ TEST_F(Orientation, EntriesWithDifferentStrokeAnglesAreEachTurnedByTheirOwn) {
   std::vector<TextureOrientation> angles;
   for (const PaletteEntry& e : p.entries) angles.push_back(e.orientation);
   ASSERT_FALSE(sharedStrokeDegrees(angles).has_value());  // the per-entry form is the one drawn
-  ASSERT_TRUE(r->setPalette(p));
+  ASSERT_TRUE(r->palettes().setMain(p));
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
     const Turned t = renderTurned(path);
@@ -209,7 +209,7 @@ TEST_F(Orientation, EntriesWithoutAStrokeDirectionStayUnturnedBesideTurnedOnes) 
     if (!p.entries[k].orientation.oriented()) unturned.push_back(int(k));
   }
   ASSERT_TRUE(sharedStrokeDegrees(angles).has_value());
-  ASSERT_TRUE(r->setPalette(p));
+  ASSERT_TRUE(r->palettes().setMain(p));
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth, RenderPath::Triangle}) {
     SCOPED_TRACE(pathInfo(path).name);
     RenderSettings none, curvature;
@@ -240,18 +240,18 @@ TEST_F(Orientation, DirectionFieldIsComputedOncePerMesh) {
   RenderSettings s;
   s.orient.source = OrientSource::Curvature;
   (void)test::renderImage(*r, camera(), s, 64, 64);
-  ASSERT_NE(r->directionField(), nullptr);
+  ASSERT_NE(r->scene().first()->directionFieldIfComputed(), nullptr);
   EXPECT_GT(r->stats().cpuFieldMs, 0.0);
-  EXPECT_EQ(r->directionField()->directions.size(), mesh.positions.size());
+  EXPECT_EQ(r->scene().first()->directionFieldIfComputed()->directions.size(), mesh.positions.size());
   (void)test::renderImage(*r, camera(), s, 64, 64);
   EXPECT_EQ(r->stats().cpuFieldMs, 0.0);
   const Mesh other = icosphere(2);
-  r->setMesh(&other);
-  EXPECT_EQ(r->directionField(), nullptr);
+  r->scene().setOnly(&other);
+  EXPECT_EQ(r->scene().first()->directionFieldIfComputed(), nullptr);
   (void)test::renderImage(*r, camera(), s, 64, 64);
-  ASSERT_NE(r->directionField(), nullptr);
-  EXPECT_EQ(r->directionField()->directions.size(), other.positions.size());
-  r->setMesh(&mesh);
+  ASSERT_NE(r->scene().first()->directionFieldIfComputed(), nullptr);
+  EXPECT_EQ(r->scene().first()->directionFieldIfComputed()->directions.size(), other.positions.size());
+  r->scene().setOnly(&mesh);
 }
 
 TEST_F(Orientation, StencilMasksWriteTheSurfaceBuffersInAFramebufferTheyShare) {
@@ -320,16 +320,16 @@ TEST_F(Orientation, TurnsAreResolvedPerPixelOnlyWhereTrianglesAreSmall) {
   s.path = RenderPath::Triangle;
   s.orient.source = OrientSource::Curvature;
   const Mesh coarse = lying(24, 6);  // 288 triangles, about 150 pixels each at 256 x 256
-  r->setMesh(&coarse);
+  r->scene().setOnly(&coarse);
   (void)test::renderImage(*r, camera(), s, kSize, kSize);
   EXPECT_EQ(r->stats().surfaceBuffers, 0);
   const Mesh dense = lying(384, 192);  // 147,456, under half a pixel
-  r->setMesh(&dense);
+  r->scene().setOnly(&dense);
   const ImageRGBA8 resolved = test::renderImage(*r, camera(), s, kSize, kSize);
   EXPECT_EQ(r->stats().surfaceBuffers, 1);
   s.tuning.turnPlacement = TurnPlacement::InMeshPass;
   EXPECT_EQ(test::countDiffering(resolved, test::renderImage(*r, camera(), s, kSize, kSize)), 0);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
 }
 
 TEST_F(Orientation, StepsAreStableUnderASmallOrbit) {
@@ -343,8 +343,8 @@ TEST_F(Orientation, StepsAreStableUnderASmallOrbit) {
   cam.orbit(1.0f, 0.0f);
   const CameraMatrices b = cam.matrices(1.0f);
   const ImageRGBA32F anglesA = test::renderStrokeAngles(*r, a, s, kSize, kSize), anglesB = test::renderStrokeAngles(*r, b, s, kSize, kSize);
-  const ImageRGBA32F eyeA = test::renderGeometry(*r, a, GeometryOutput::EyePosition, kSize, kSize);
-  const ImageRGBA32F eyeB = test::renderGeometry(*r, b, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F eyeA = test::renderGeometry(*r, a, FrameOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F eyeB = test::renderGeometry(*r, b, FrameOutput::EyePosition, kSize, kSize);
   std::size_t compared = 0;
   EXPECT_LT(test::stepJumpFraction(anglesA, eyeA, a, anglesB, eyeB, b, s.orient.bins, 0.0f, &compared), 0.005);
   EXPECT_GT(compared, 8000u);

@@ -20,6 +20,7 @@
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/settings/choice_names.h"
 #include "support/line_comparison.h"
 
 namespace npr {
@@ -56,13 +57,13 @@ struct OutlineFixture : test::RendererFixture {
   Mesh sphere = icosphere(4), bunny;
   void SetUp() override {
     test::RendererFixture::SetUp();
-    ASSERT_TRUE(r->setPalette(whitePalette()));
+    ASSERT_TRUE(r->palettes().setMain(whitePalette()));
     Result<Mesh> m = loadMesh(test::sourcePath("models/bunny.obj"));
     ASSERT_TRUE(m) << m.error();
     bunny = std::move(*m);
   }
   ImageRGBA8 draw(const Mesh& mesh, const LineSettings& lines) {
-    r->setMesh(&mesh);
+    r->scene().setOnly(&mesh);
     RenderSettings s;
     s.lines = lines;
     return test::renderImage(*r, test::testCamera(1.0f), s, kSize, kSize);
@@ -82,8 +83,8 @@ struct OutlineFixture : test::RendererFixture {
   }
   // The model's own pixels, eroded by `margin`: where no outline may draw.
   LineMask interior(const Mesh& mesh, int margin) {
-    r->setMesh(&mesh);
-    const ImageRGBA32F eye = test::renderGeometry(*r, test::testCamera(1.0f), GeometryOutput::EyePosition, kSize, kSize);
+    r->scene().setOnly(&mesh);
+    const ImageRGBA32F eye = test::renderGeometry(*r, test::testCamera(1.0f), FrameOutput::EyePosition, kSize, kSize);
     LineMask m{kSize, kSize, std::vector<char>(std::size_t(kSize) * kSize)};
     auto covered = [&](int x, int y) {
       return x >= 0 && y >= 0 && x < kSize && y < kSize && eye.pixels[(std::size_t(y) * kSize + std::size_t(x)) * 4 + 3] != 0.0f;
@@ -109,7 +110,7 @@ TEST_F(OutlineFixture, EveryMethodInksOnlyAtTheSilhouette) {
   const LineMask inside = interior(sphere, 3);
   ASSERT_GT(inside.count(), kSize * kSize / 10);
   for (OutlineMethod m : {OutlineMethod::Fatten, OutlineMethod::Edges, OutlineMethod::Offset}) {
-    SCOPED_TRACE(outlineMethodName(m));
+    SCOPED_TRACE(choiceName(m));
     const LineMask ink = lineMask(draw(sphere, hardware(m)));
     if (m != OutlineMethod::Offset) {
       EXPECT_GT(ink.count(), 300);  // a ring around a disc of about 100 pixels' radius
@@ -143,7 +144,7 @@ TEST_F(OutlineFixture, FattenedAndEdgeOutlinesAgreeWithObjectSpaceSilhouettes) {
       const LineMask hw = lineMask(draw(*mesh, hardware(m)));
       const double objectNearHardware = test::nearShare(object, hw, 1), hardwareNearObject = test::nearShare(hw, object, 1);
       std::printf("%s %s: object-space near hardware %.3f, hardware near object-space %.3f\n", mesh == &sphere ? "sphere" : "bunny",
-                  outlineMethodName(m), objectNearHardware, hardwareNearObject);
+                  choiceName(m), objectNearHardware, hardwareNearObject);
       // Measured 0.997-1.000 and (fatten) 0.96, (edges) 0.88-0.92: the edge quads of back faces
       // next to the silhouette reach past it too.
       EXPECT_GT(objectNearHardware, 0.95);
@@ -153,7 +154,7 @@ TEST_F(OutlineFixture, FattenedAndEdgeOutlinesAgreeWithObjectSpaceSilhouettes) {
 }
 
 TEST_F(OutlineFixture, FattenedOutlinesAreAsWideAsAsked) {
-  r->setMesh(&bunny);
+  r->scene().setOnly(&bunny);
   const CameraMatrices cam = test::testCamera(1.0f);
   RenderSettings s;
   s.lines = silhouettes();
@@ -171,7 +172,7 @@ TEST_F(OutlineFixture, FattenedOutlinesAreAsWideAsAsked) {
 }
 
 TEST_F(OutlineFixture, CharcoalRimDrawsTheDarkToneAroundTheSilhouetteOnly) {
-  ASSERT_TRUE(r->setPalette(test::greyRamp(4)));  // white, 2/3, 1/3, black: the rim's tone 1/3..0.37 is 1/3 grey
+  ASSERT_TRUE(r->palettes().setMain(test::greyRamp(4)));  // white, 2/3, 1/3, black: the rim's tone 1/3..0.37 is 1/3 grey
   ASSERT_TRUE(r->lighting().setToneModel(ToneModel::Charcoal, ToneParameters{}));
   LineSettings plain;
   LineSettings rim;
@@ -224,8 +225,8 @@ TEST_F(OutlineFixture, HiddenLinesAreDrawnDashedOnlyWhereTheSurfaceHidesThem) {
 TEST_F(OutlineFixture, IntersectionLinesDrawWhereTwoObjectsCrossOnly) {
   // A box and a bar through its face x = 0.5: they cross along the square x = 0.5, |y|, |z| <= 0.25.
   const Mesh cube = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f)), bar = boxMesh({-0.5f, -0.25f, -0.25f}, {0.5f, 0.25f, 0.25f});
-  r->setMesh(&cube);
-  const ModelId barId = r->addModel(bar, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)));
+  r->scene().setOnly(&cube);
+  const ModelId barId = r->scene().add(bar, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)));
   RenderSettings s;
   s.lines.intersections = true;
   s.lines.intersectionColour = glm::vec3(1.0f, 0.0f, 0.0f);
@@ -268,7 +269,7 @@ TEST_F(OutlineFixture, IntersectionLinesDrawWhereTwoObjectsCrossOnly) {
   // The camera moves: nothing is searched again. The bar moves: its new crossing is drawn.
   (void)test::renderImage(*r, test::testCamera(1.0f, 50.0f, 25.0f), s, kSize, kSize);
   EXPECT_EQ(r->stats().intersectionSearches, 0);
-  ASSERT_TRUE(r->setModelTransform(barId, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.15f, 0.0f))));
+  ASSERT_TRUE(r->scene().setTransform(barId, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.15f, 0.0f))));
   const float moved = redAwayFrom(test::renderImage(*r, cam, s, kSize, kSize), glm::vec3(0.5f, 0.15f, 0), red);
   EXPECT_EQ(r->stats().intersectionSearches, 1);
   EXPECT_GT(red, 150);
@@ -484,7 +485,7 @@ TEST_F(OutlineFixture, ALineSetColouredByToneTakesThePaletteEntryOfTheLitToneAtT
   Palette p = test::greyRamp(2);
   p.entries[0].average = glm::vec3(1.0f, 1.0f, 0.2f);
   p.entries[1].average = glm::vec3(0.0f, 0.0f, 0.3f);
-  ASSERT_TRUE(r->setPalette(p));
+  ASSERT_TRUE(r->palettes().setMain(p));
   const float side[4] = {1, 0, 0, 0};
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, side));
@@ -516,7 +517,7 @@ TEST_F(OutlineFixture, ALineSetColouredByToneTakesThePaletteEntryOfTheLitToneAtT
   EXPECT_LT(toned.navyRight, toned.navyLeft / 10);
   const auto fixed = count("silhouette width=4 colour=0,0,0");
   EXPECT_EQ(fixed.yellowRight + fixed.yellowLeft + fixed.navyRight + fixed.navyLeft, 0);
-  ASSERT_TRUE(r->setPalette(whitePalette()));
+  ASSERT_TRUE(r->palettes().setMain(whitePalette()));
 }
 
 // Width by curvature on a spindle (an ellipsoid 4 times longer than wide, along y): its
@@ -624,11 +625,11 @@ TEST_F(OutlineFixture, ALaterSetLiesOverAnEarlierOneOnEveryObject) {
   // right cube's red, drawn after the left cube's lines, must not cover any of it (as it would
   // if each model drew all its sets before the next model).
   const Mesh cube = boxMesh(glm::vec3(-0.3f), glm::vec3(0.3f));
-  r->setMesh(nullptr);
-  const ModelId left = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(-0.25f, 0.0f, -0.2f)));
-  const ModelId right = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(0.25f, 0.1f, 0.4f)));
-  ASSERT_TRUE(r->setModelName(left, "left"));
-  ASSERT_TRUE(r->setModelName(right, "right"));
+  r->scene().setOnly(nullptr);
+  const ModelId left = r->scene().add(cube, glm::translate(glm::mat4(1.0f), glm::vec3(-0.25f, 0.0f, -0.2f)));
+  const ModelId right = r->scene().add(cube, glm::translate(glm::mat4(1.0f), glm::vec3(0.25f, 0.1f, 0.4f)));
+  ASSERT_TRUE(r->scene().setName(left, "left"));
+  ASSERT_TRUE(r->scene().setName(right, "right"));
   const CameraMatrices cam = test::testCamera(1.0f, 20.0f, 15.0f);
   auto blue = [&](const char* sets) {
     RenderSettings s;
@@ -652,11 +653,11 @@ TEST_F(OutlineFixture, ALineSetNamingAnObjectDrawsOnThatObjectOnly) {
   // Two cubes side by side, "left" and "right": silhouettes in the base style (black), and a
   // set taking the left cube's silhouettes in red.
   const Mesh cube = boxMesh(glm::vec3(-0.3f), glm::vec3(0.3f));
-  r->setMesh(nullptr);
-  const ModelId left = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, 0.0f, 0.0f)));
-  const ModelId right = r->addModel(cube, glm::translate(glm::mat4(1.0f), glm::vec3(0.45f, 0.0f, 0.0f)));
-  ASSERT_TRUE(r->setModelName(left, "left"));
-  ASSERT_TRUE(r->setModelName(right, "right"));
+  r->scene().setOnly(nullptr);
+  const ModelId left = r->scene().add(cube, glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, 0.0f, 0.0f)));
+  const ModelId right = r->scene().add(cube, glm::translate(glm::mat4(1.0f), glm::vec3(0.45f, 0.0f, 0.0f)));
+  ASSERT_TRUE(r->scene().setName(left, "left"));
+  ASSERT_TRUE(r->scene().setName(right, "right"));
   RenderSettings s;
   s.lines.silhouettes = true;
   s.lines.width = 3.0f;

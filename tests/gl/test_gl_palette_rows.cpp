@@ -57,19 +57,19 @@ CameraMatrices lookFrom(const glm::vec3& eye) {
 TEST_F(RowsFixture, TwoObjectsAtDifferentDistancesTakeTheirOwnRows) {
   const Mesh sphere = icosphere(3);
   const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.3f));
-  r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 0.0f)) * scale);
-  r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.9f, 0.0f, 0.0f)) * scale);
+  r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 0.0f)) * scale);
+  r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.9f, 0.0f, 0.0f)) * scale);
   // The scene's bounding sphere: centred at the origin, radius 1.2. Distances from the eye are
   // about 1.6 and 3.2, so 1.34 and 2.7 radii, each sphere +-0.25.
   const float radius = 1.2f;
-  ASSERT_TRUE(r->setPalette(rowsPalette(PaletteAxisKind::Depth, 1.8f, 2.2f, 2)));
+  ASSERT_TRUE(r->palettes().setMain(rowsPalette(PaletteAxisKind::Depth, 1.8f, 2.2f, 2)));
   const CameraMatrices cam = lookFrom(glm::vec3(2.2f, 0.3f, 0.9f));
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel}) {
     RenderSettings s;
     s.path = path;
     const ImageRGBA8 entries = test::renderEntries(*r, cam, s, kSize, kSize);
-    EXPECT_NEAR(r->palette()->axisMap().x, 1.0f / (0.4f * radius), 1e-4f) << "a depth axis counts in scene radii";
+    EXPECT_NEAR(r->palettes().main()->axisMap().x, 1.0f / (0.4f * radius), 1e-4f) << "a depth axis counts in scene radii";
     s.paletteAxis = false;
     const ImageRGBA8 columns = test::renderEntries(*r, cam, s, kSize, kSize);
     int near = 0, far = 0, wrongRow = 0, wrongColumn = 0;
@@ -112,10 +112,10 @@ TEST_F(RowsFixture, EachMaterialsDetailPicksItsRow) {
   sphere.materials[0].name = "west";
   sphere.materials[1].name = "east";
   for (std::size_t t = 0; t < sphere.triangleCount(); ++t) sphere.faceMaterials.push_back(sphere.faceCentroids[t].x < 0.0f ? 0 : 1);
-  const ModelId id = r->addModel(sphere);
-  ASSERT_TRUE(r->setPalette(rowsPalette(PaletteAxisKind::Detail, 0.0f, 1.0f, 3)));
+  const ModelId id = r->scene().add(sphere);
+  ASSERT_TRUE(r->palettes().setMain(rowsPalette(PaletteAxisKind::Detail, 0.0f, 1.0f, 3)));
   const CameraMatrices cam = lookFrom(glm::vec3(0.0f, 0.4f, 3.0f));
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   const glm::mat4 toObject = glm::inverse(cam.view);
   const auto rowsOf = [&](RenderPath path, int& westRow, int& eastRow) {
     RenderSettings s;
@@ -131,16 +131,16 @@ TEST_F(RowsFixture, EachMaterialsDetailPicksItsRow) {
       row = row == -1 || row == got ? got : 99;  // 99: mixed rows on one material
     }
   };
-  r->setMaterialDetail("west", 1.0f);
-  EXPECT_TRUE(r->setModelDetail(id, 0.5f));
+  r->palettes().setMaterialDetail("west", 1.0f);
+  EXPECT_TRUE(r->scene().setDetail(id, 0.5f));
   for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Stencil}) {
     int west = 0, east = 0;
     rowsOf(path, west, east);
     EXPECT_EQ(west, 2) << pathInfo(path).name;
     EXPECT_EQ(east, 1) << pathInfo(path).name;
   }
-  EXPECT_TRUE(r->setModelDetail(id, 0.0f));
-  r->setMaterialDetail("west", 0.5f);
+  EXPECT_TRUE(r->scene().setDetail(id, 0.0f));
+  r->palettes().setMaterialDetail("west", 0.5f);
   for (RenderPath path : {RenderPath::Triangle, RenderPath::Pixel}) {
     int west = 0, east = 0;
     rowsOf(path, west, east);
@@ -154,11 +154,11 @@ TEST_F(RowsFixture, EachMaterialsDetailPicksItsRow) {
 TEST_F(RowsFixture, EachObjectsDetailPicksItsRow) {
   const Mesh sphere = icosphere(3);
   const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.4f));
-  const ModelId left = r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
-  const ModelId right = r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
-  ASSERT_TRUE(r->setPalette(rowsPalette(PaletteAxisKind::Detail, 0.0f, 1.0f, 3)));
+  const ModelId left = r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
+  const ModelId right = r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
+  ASSERT_TRUE(r->palettes().setMain(rowsPalette(PaletteAxisKind::Detail, 0.0f, 1.0f, 3)));
   const CameraMatrices cam = lookFrom(glm::vec3(0.0f, 0.4f, 3.0f));
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   const auto rowsOf = [&](RenderPath path, int& leftRow, int& rightRow) {
     RenderSettings s;
     s.path = path;
@@ -171,9 +171,9 @@ TEST_F(RowsFixture, EachObjectsDetailPicksItsRow) {
       row = row == -1 || row == got ? got : 99;  // 99: mixed rows on one object
     }
   };
-  EXPECT_TRUE(r->setModelDetail(left, 1.0f));
-  EXPECT_TRUE(r->setModelDetail(right, 0.5f));
-  EXPECT_FALSE(r->setModelDetail(right + 100, 0.5f));
+  EXPECT_TRUE(r->scene().setDetail(left, 1.0f));
+  EXPECT_TRUE(r->scene().setDetail(right, 0.5f));
+  EXPECT_FALSE(r->scene().setDetail(right + 100, 0.5f));
   for (RenderPath path : {RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel}) {
     int a = 0, b = 0;
     rowsOf(path, a, b);
@@ -181,7 +181,7 @@ TEST_F(RowsFixture, EachObjectsDetailPicksItsRow) {
     EXPECT_EQ(b, 1) << pathInfo(path).name;
   }
   // Only the changed object moves (the per-triangle rows are worked out again for it).
-  EXPECT_TRUE(r->setModelDetail(left, 0.0f));
+  EXPECT_TRUE(r->scene().setDetail(left, 0.0f));
   for (RenderPath path : {RenderPath::Triangle, RenderPath::Pixel}) {
     int a = 0, b = 0;
     rowsOf(path, a, b);
@@ -189,27 +189,27 @@ TEST_F(RowsFixture, EachObjectsDetailPicksItsRow) {
     EXPECT_EQ(b, 1) << pathInfo(path).name;
   }
   // Out of range and not finite: clamped, and 0.
-  EXPECT_TRUE(r->setModelDetail(left, 7.0f));
-  EXPECT_FLOAT_EQ(r->model(left)->detail(), 1.0f);
-  EXPECT_TRUE(r->setModelDetail(left, std::nanf("")));
-  EXPECT_FLOAT_EQ(r->model(left)->detail(), 0.0f);
+  EXPECT_TRUE(r->scene().setDetail(left, 7.0f));
+  EXPECT_FLOAT_EQ(r->scene().find(left)->detail(), 1.0f);
+  EXPECT_TRUE(r->scene().setDetail(left, std::nanf("")));
+  EXPECT_FLOAT_EQ(r->scene().find(left)->detail(), 0.0f);
 }
 
 // Every pixel of the pixel and vertex paths takes the nearest row to its own axis value, by
 // depth and by facing; the triangle path, choosing per triangle, agrees away from boundaries.
 TEST_F(RowsFixture, EachPixelTakesTheRowItsDistanceOrFacingGives) {
   const Mesh sphere = icosphere(4);
-  r->addModel(sphere);
+  r->scene().add(sphere);
   const CameraMatrices cam = test::testCamera(1.0f);
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
   struct Case {
     PaletteAxisKind kind;
     float from, to;
   };
   // The unit sphere seen from 3 radii: its visible depths 2 to 2.9, its facing 0 to 1.
   for (const Case c : {Case{PaletteAxisKind::Depth, 2.15f, 2.75f}, Case{PaletteAxisKind::Facing, 0.15f, 0.75f}}) {
-    ASSERT_TRUE(r->setPalette(rowsPalette(c.kind, c.from, c.to, 3)));
+    ASSERT_TRUE(r->palettes().setMain(rowsPalette(c.kind, c.from, c.to, 3)));
     for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Triangle}) {
       RenderSettings s;
       s.path = path;
@@ -217,7 +217,7 @@ TEST_F(RowsFixture, EachPixelTakesTheRowItsDistanceOrFacingGives) {
       int checked = 0, wrong = 0, rowCount[3] = {0, 0, 0};
       for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
         if (!covered(pos, i)) continue;
-        const float want = r->palette()->rowPosition(at(pos, i), at(nrm, i));
+        const float want = r->palettes().main()->rowPosition(at(pos, i), at(nrm, i));
         // Per pixel: only where rounding is in doubt (the interpolated values of the two passes
         // agree to float rounding). Per triangle: a centroid's row may differ near a boundary.
         const float margin = path == RenderPath::Triangle ? 0.25f : 0.01f;
@@ -243,11 +243,11 @@ TEST_F(RowsFixture, EachPixelTakesTheRowItsDistanceOrFacingGives) {
 // red last row, green is the grey's share, 1 - position, wherever the pixel is lit.
 TEST_F(RowsFixture, TheSmoothPathBlendsNeighbouringRows) {
   const Mesh sphere = icosphere(4);  // the renderer keeps a pointer to it
-  r->addModel(sphere);
+  r->scene().add(sphere);
   const CameraMatrices cam = test::testCamera(1.0f);
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
-  ASSERT_TRUE(r->setPalette(rowsPalette(PaletteAxisKind::Facing, 0.2f, 0.8f, 2)));
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
+  ASSERT_TRUE(r->palettes().setMain(rowsPalette(PaletteAxisKind::Facing, 0.2f, 0.8f, 2)));
   RenderSettings s;
   s.path = RenderPath::Smooth;
   const ImageRGBA8 img = test::renderImage(*r, cam, s, kSize, kSize);
@@ -255,7 +255,7 @@ TEST_F(RowsFixture, TheSmoothPathBlendsNeighbouringRows) {
   for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
     const float red = img.pixels[4 * i] / 255.0f, green = img.pixels[4 * i + 1] / 255.0f;
     if (!covered(pos, i) || red < 0.25f) continue;
-    const float f = r->palette()->rowPosition(at(pos, i), at(nrm, i));
+    const float f = r->palettes().main()->rowPosition(at(pos, i), at(nrm, i));
     ++checked;
     between += f > 0.1f && f < 0.9f;
     wrong += std::abs(green - (1.0f - f) * red) > 4.0f / 255.0f;

@@ -47,9 +47,9 @@ Palette noisePalette() {
 
 TEST_F(Fixture, HalfScaleShowsTheNextMipLevelTexelForPixel) {
   const Mesh sq = test::square();
-  r->setMesh(&sq);
+  r->scene().setOnly(&sq);
   const Palette p = noisePalette();
-  ASSERT_TRUE(r->setPalette(p));
+  ASSERT_TRUE(r->palettes().setMain(p));
   const int w = 160, h = 120;
   OrbitCamera cam(0.0f, 0.0f, 3.0f);
   cam.frame(0.5f);  // the square fills the frame
@@ -84,9 +84,9 @@ TEST_F(Fixture, HalfScaleShowsTheNextMipLevelTexelForPixel) {
 TEST_F(Fixture, ScaledPatternTilesFromTheWindowCornerInAViewportAwayFromIt) {
   for (int cells : {1, 150}) {
     const Mesh sq = test::square(cells);
-    r->setMesh(&sq);
+    r->scene().setOnly(&sq);
     const Palette p = noisePalette();
-    ASSERT_TRUE(r->setPalette(p));
+    ASSERT_TRUE(r->palettes().setMain(p));
     const int ox = 37, oy = 21, w = 160, h = 120, fw = ox + w + 5, fh = oy + h + 9;
     OrbitCamera cam(0.0f, 0.0f, 3.0f);
     cam.frame(0.5f);
@@ -99,7 +99,7 @@ TEST_F(Fixture, ScaledPatternTilesFromTheWindowCornerInAViewportAwayFromIt) {
         s.patternScale = scale;
         target->bind();
         ASSERT_TRUE(r->render(cam.matrices(float(w) / h), s, {ox, oy, w, h}));
-        EXPECT_EQ(r->palette()->variant(MatchMode::Intensity, r->patternPlacement()).patternPerVertex, cells == 1) << cells << " cells";
+        EXPECT_EQ(r->palettes().main()->variant(MatchMode::Intensity, r->patternPlacement()).patternPerVertex, cells == 1) << cells << " cells";
         const ImageRGBA8 img = target->readRGBA8();
         const ImageRGBA8& level = scale < 1.0f ? p.entries[0].mips[0] : p.entries[0].image;
         const int n = level.width;
@@ -141,7 +141,7 @@ Palette onlyEntry(const Palette& p, size_t i) {
 // levels), for drawn levels and for levels reduced from a plain image.
 TEST_F(Fixture, ToneHoldsFromAQuarterToThreePixelsATexel) {
   const Mesh sq = test::square();
-  r->setMesh(&sq);
+  r->scene().setOnly(&sq);
   const int n = 768;
   OrbitCamera cam(0.0f, 0.0f, 3.0f);
   cam.frame(0.5f);
@@ -149,7 +149,7 @@ TEST_F(Fixture, ToneHoldsFromAQuarterToThreePixelsATexel) {
     const Palette p = shippedPalette(name);
     const float tile = float(p.entries[0].image.width);
     for (size_t i : {size_t(2), p.entries.size() - 2}) {
-      ASSERT_TRUE(r->setPalette(onlyEntry(p, i)));
+      ASSERT_TRUE(r->palettes().setMain(onlyEntry(p, i)));
       RenderSettings s;
       s.path = RenderPath::Pixel;
       const double base = meanLight(renderImage(*r, cam.matrices(1.0f), s, n, n));
@@ -168,8 +168,8 @@ TEST_F(Fixture, ToneHoldsFromAQuarterToThreePixelsATexel) {
 TEST_F(Fixture, StencilQuadsFollowThePatternScale) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
   for (float scale : {0.5f, 1.5f, 3.0f}) {
@@ -190,8 +190,8 @@ TEST_F(Fixture, StencilQuadsFollowThePatternScale) {
 TEST_F(Fixture, EveryPathDrawsScaledAndAnchoredScaledPatterns) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("wood")));  // 128-texel entries on a solid background
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("wood")));  // 128-texel entries on a solid background
   const int w = 200, h = 150;
   const CameraMatrices cam = testCamera(float(w) / h);
   for (RenderPath path : userRenderPaths())

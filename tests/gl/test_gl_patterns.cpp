@@ -15,6 +15,7 @@
 #include "gl/gl_test_env.h"
 #include "renderer/palette/gpu_palette.h"
 #include "renderer/patterns/pattern_tracker.h"
+#include "renderer/settings/choice_names.h"
 #include "support/pattern_motion.h"
 #include "support/phase_correlation.h"
 #include "support/test_util.h"
@@ -45,8 +46,8 @@ double agreement(const ImageRGBA8& a, const ImageRGBA8& b, const ImageRGBA32F& c
 
 TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
   const Mesh sq = test::square();
-  r->setMesh(&sq);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&sq);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const float head[4] = {0, 0, 1, 0};
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, head));
@@ -59,7 +60,7 @@ TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
     s.pattern = space;
     r->resetPattern();
     const ImageRGBA8 first = renderImage(*r, cam.matrices(float(w) / h), s, w, h);
-    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(float(w) / h), GeometryOutput::EyeNormal, w, h);
+    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(float(w) / h), FrameOutput::EyeNormal, w, h);
     // Two frames of panning, each by (dx, dy) pixels (y down).
     ImageRGBA8 last;
     for (int f = 0; f < 2; ++f) {
@@ -86,8 +87,8 @@ TEST_F(Fixture, AnchoredPatternMovesWithAPannedSquareAndScreenPatternStays) {
 // than the screen's (measured from the geometry and the pattern frames, pattern_motion.h).
 TEST_F(Fixture, AnchoredPatternSlidesAThirdOfTheScreensUnderOrbit) {
   const Mesh sphere = test::icosphere(4);
-  r->setMesh(&sphere);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&sphere);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   double screenSlide = 0.0;
   for (PatternSpace space : {PatternSpace::Screen, PatternSpace::Anchored}) {
@@ -101,17 +102,17 @@ TEST_F(Fixture, AnchoredPatternSlidesAThirdOfTheScreensUnderOrbit) {
     for (int f = 0; f < frames; ++f) {
       const CameraMatrices now = cam.matrices(float(w) / h);
       (void)renderImage(*r, now, s, w, h);
-      const PatternFrame frameNow = r->patternTracker().frame();
-      const ImageRGBA32F geo = test::renderGeometry(*r, now, GeometryOutput::EyePosition, w, h);
+      const PatternFrame frameNow = r->scene().first()->patterns().frame();
+      const ImageRGBA32F geo = test::renderGeometry(*r, now, FrameOutput::EyePosition, w, h);
       cam.orbit(1.0f, 0.0f);
       const CameraMatrices next = cam.matrices(float(w) / h);
       (void)renderImage(*r, next, s, w, h);
-      const PatternFrame frameNext = r->patternTracker().frame();
+      const PatternFrame frameNext = r->scene().first()->patterns().frame();
       const bool anchored = space == PatternSpace::Anchored;
       slide += test::patternSlide(geo, now, next, anchored ? &frameNow : nullptr, anchored ? &frameNext : nullptr);
     }
     slide /= frames;
-    std::printf("%s: %.3f px per frame\n", patternSpaceName(space), slide);
+    std::printf("%s: %.3f px per frame\n", choiceName(space), slide);
     // A sphere turning is the similarity's worst case (its middle moves, its rim does not):
     // 0.50 px here, 0.45 on the bunny (bench_patterns).
     if (space == PatternSpace::Screen) {
@@ -156,8 +157,8 @@ TEST(PatternFit, RecoversAKnownSimilarity) {
 // translation, so the rounding never adds up). The screen's pattern does not move.
 TEST_F(Fixture, AnchoredPatternMovesBySubpixelPansPhaseCorrelationTells) {
   const Mesh sq = test::square();
-  r->setMesh(&sq);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&sq);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const float raking[4] = {0, 2, 1, 0};  // a mid-tone hatching, the same over the whole square
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, raking));
@@ -180,10 +181,10 @@ TEST_F(Fixture, AnchoredPatternMovesBySubpixelPansPhaseCorrelationTells) {
         }
         const glm::vec2 moved = test::phaseCorrelationShift(before, after, margin, margin, window);
         const glm::vec2 expected = space == PatternSpace::Screen ? glm::vec2(0.0f) : linear ? pan : glm::round(pan);
-        std::printf("%s, %s texels, pan (%.1f, %.1f) in %d: the pattern moved (%.3f, %.3f)\n", patternSpaceName(space),
+        std::printf("%s, %s texels, pan (%.1f, %.1f) in %d: the pattern moved (%.3f, %.3f)\n", choiceName(space),
                     linear ? "bilinear" : "nearest", double(pan.x), double(pan.y), steps, double(moved.x), double(moved.y));
-        EXPECT_NEAR(moved.x, expected.x, 0.1f) << patternSpaceName(space) << (linear ? " bilinear" : " nearest");
-        EXPECT_NEAR(moved.y, expected.y, 0.1f) << patternSpaceName(space) << (linear ? " bilinear" : " nearest");
+        EXPECT_NEAR(moved.x, expected.x, 0.1f) << choiceName(space) << (linear ? " bilinear" : " nearest");
+        EXPECT_NEAR(moved.y, expected.y, 0.1f) << choiceName(space) << (linear ? " bilinear" : " nearest");
       }
 }
 
@@ -192,17 +193,17 @@ TEST_F(Fixture, AnchoredPatternMovesBySubpixelPansPhaseCorrelationTells) {
 // (the stencil path through its coordinate buffer); the screen's pattern is not.
 TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
   const Mesh sphere = test::icosphere(4);
-  r->setMesh(&sphere);
+  r->scene().setOnly(&sphere);
   // One entry: the tone cannot change under the moving light, only where the pattern sits.
   Palette one = test::shippedPalette("crosshatch");
   one.entries = {one.entries[one.entries.size() / 2]};
-  ASSERT_TRUE(r->setPalette(one));
+  ASSERT_TRUE(r->palettes().setMain(one));
   const int w = 240, h = 240;
   OrbitCamera cam(30.0f, 20.0f, 3.0f);
   const CameraMatrices a = cam.matrices(1.0f);
   cam.orbit(3.0f, 0.0f);
   const CameraMatrices b = cam.matrices(1.0f);
-  const ImageRGBA32F geo = test::renderGeometry(*r, a, GeometryOutput::EyePosition, w, h);
+  const ImageRGBA32F geo = test::renderGeometry(*r, a, FrameOutput::EyePosition, w, h);
   const glm::mat4 aToB = b.projection * b.view * glm::inverse(a.view);
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Smooth}) {
     double screenMisses = 0.0;
@@ -228,7 +229,7 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
           same += found;
         }
       const double misses = n ? 1.0 - double(same) / n : 1.0;
-      std::printf("%s %s: %.4f of surface points changed tone\n", pathInfo(path).name, patternSpaceName(space), misses);
+      std::printf("%s %s: %.4f of surface points changed tone\n", pathInfo(path).name, choiceName(space), misses);
       ASSERT_GT(n, w * h / 4);
       // Measured: screen 0.112 (paper matches paper wherever it lands), object 0.006 (the
       // octave dissolve at the new depth, strokes foreshortened differently).
@@ -253,8 +254,8 @@ TEST_F(Fixture, ObjectPatternStaysOnTheSurfaceInEveryPath) {
 TEST_F(Fixture, ObjectPatternTexelsAreTheSurfacePointsAtItsDepthsOctave) {
   const Palette coded = test::texelIndexPalette();
   const Mesh sq = test::square();
-  r->setMesh(&sq);
-  ASSERT_TRUE(r->setPalette(coded));
+  r->scene().setOnly(&sq);
+  ASSERT_TRUE(r->palettes().setMain(coded));
   const int w = 160, h = 160;
   CameraMatrices cam;
   cam.projection = glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f);
@@ -264,7 +265,7 @@ TEST_F(Fixture, ObjectPatternTexelsAreTheSurfacePointsAtItsDepthsOctave) {
     const float depth = m * std::exp2(-7.0f) / pixelSize;
     cam.view = glm::lookAt(glm::vec3(0.0f, 0.0f, depth), glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     const glm::mat4 toObject = glm::inverse(cam.view);
-    const ImageRGBA32F eye = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+    const ImageRGBA32F eye = test::renderGeometry(*r, cam, FrameOutput::EyePosition, w, h);
     for (RenderPath path : {RenderPath::Pixel, RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Smooth}) {
       RenderSettings s;
       s.path = path;
@@ -305,10 +306,10 @@ TEST_F(Fixture, FaceNormalsPlaceTheObjectPatternAsVertexNormalsDoOnAFlatSquare) 
   const glm::mat3 tilt = glm::mat3(glm::rotate(glm::mat4(1.0f), 0.3f, glm::vec3(1, 0, 0)) * glm::rotate(glm::mat4(1.0f), 0.2f, glm::vec3(0, 1, 0)));
   for (glm::vec3& p : sq.positions) p = tilt * p;
   finalizeMesh(sq);
-  r->setMesh(&sq);
+  r->scene().setOnly(&sq);
   Palette one = test::shippedPalette("crosshatch");
   one.entries = {one.entries[one.entries.size() / 2]};
-  ASSERT_TRUE(r->setPalette(one));
+  ASSERT_TRUE(r->palettes().setMain(one));
   OrbitCamera cam(15.0f, 10.0f, 3.0f);
   cam.frame(1.0f);
   RenderSettings s;
@@ -340,8 +341,8 @@ TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone
   }
 
   const Mesh sq = test::square();
-  r->setMesh(&sq);
-  ASSERT_TRUE(r->setPalette(crosshatch));
+  r->scene().setOnly(&sq);
+  ASSERT_TRUE(r->palettes().setMain(crosshatch));
   const float head[4] = {0, 2, 1, 0};  // a raking light: a mid-tone hatching
   r->lighting().setModelView(glm::mat4(1.0f));
   ASSERT_TRUE(r->lighting().Lightfv(GL_LIGHT0, GL_POSITION, head));
@@ -357,7 +358,7 @@ TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone
     cam.zoom(std::exp2(level - l), glm::vec2(0.0f), 1.0f);
     level = l;
     const ImageRGBA8 img = renderImage(*r, cam.matrices(1.0f), anchored, w, h);
-    EXPECT_NEAR(std::log2(r->patternTracker().frame().scale), l, 0.002f) << r->stats().patternSamples << " samples";
+    EXPECT_NEAR(std::log2(r->scene().first()->patterns().frame().scale), l, 0.002f) << r->stats().patternSamples << " samples";
     return img;
   };
 
@@ -392,7 +393,7 @@ TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone
   double worstTone = 0.0;
   for (float l = 0.0f; l <= 3.0f; l += 1.0f / 16.0f) {
     const ImageRGBA8 img = zoomTo(l), flat = renderImage(*r, cam.matrices(1.0f), screen, w, h);
-    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(1.0f), GeometryOutput::EyeNormal, w, h);
+    const ImageRGBA32F cover = test::renderGeometry(*r, cam.matrices(1.0f), FrameOutput::EyeNormal, w, h);
     double a = 0.0, b = 0.0;
     int n = 0;
     for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
@@ -411,7 +412,7 @@ TEST_F(Fixture, AnchoredZoomDissolvesOctavesOnlyInTheMiddleOfEachAndKeepsTheTone
 
 TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
   const Mesh sphere = test::icosphere(3);
-  r->setMesh(&sphere);
+  r->scene().setOnly(&sphere);
   const Palette crosshatch = test::shippedPalette("crosshatch");
   const Palette* pal = &crosshatch;
   for (int entries : {1, 256}) {
@@ -423,7 +424,7 @@ TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
       e.average = glm::vec3(e.intensity / 3.0f);
       p.entries.push_back(std::move(e));
     }
-    ASSERT_TRUE(r->setPalette(p));
+    ASSERT_TRUE(r->palettes().setMain(p));
     OrbitCamera cam(30.0f, 20.0f, 3.0f);
     cam.frame(1.0f);
     for (const PathInfo& info : renderPaths()) {
@@ -447,8 +448,8 @@ TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
   OrbitCamera cam(30.0f, 20.0f, 3.0f);
   cam.frame(1.0f);
   (void)renderImage(*r, cam.matrices(1.0f), s, 96, 96);
-  EXPECT_EQ(r->patternTracker().frame().scale, 1.0f);
-  EXPECT_TRUE(r->patternTracker().lastFit().reset);
+  EXPECT_EQ(r->scene().first()->patterns().frame().scale, 1.0f);
+  EXPECT_TRUE(r->scene().first()->patterns().lastFit().reset);
 }
 
 // The window's split view draws the plain lit reference left of the chosen path, two renders
@@ -458,8 +459,8 @@ TEST_F(Fixture, EveryPathDrawsAnchoredPatternsWithOneAndManyEntries) {
 // failed-drop checks caught pictures changing with nothing touched).
 TEST_F(Fixture, TheSplitViewsReferenceHalfLeavesTheAnchoredPatternStill) {
   const Mesh sphere = test::icosphere(3);
-  r->setMesh(&sphere);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&sphere);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const int half = 160, h = 180;
   auto target = OffscreenTarget::create(2 * half, h);
   ASSERT_TRUE(target) << target.error();
@@ -487,12 +488,12 @@ TEST_F(Fixture, TheSplitViewsReferenceHalfLeavesTheAnchoredPatternStill) {
     return target->readRGBA8();
   };
   const ImageRGBA8 first = frame();
-  const PatternFrame before = r->patternTracker().frame();
+  const PatternFrame before = r->scene().first()->patterns().frame();
   EXPECT_NE(before.scale, 1.0f);
   for (int f = 0; f < 60; ++f) (void)frame();
   const ImageRGBA8 later = frame();
   EXPECT_EQ(test::countDiffering(first, later), 0) << "the pattern moved over 60 frames of a still view";
-  const PatternFrame& after = r->patternTracker().frame();
+  const PatternFrame& after = r->scene().first()->patterns().frame();
   EXPECT_EQ(after.scale, before.scale);
   EXPECT_EQ(after.rotation, before.rotation);
   EXPECT_EQ(after.translation, before.translation);

@@ -20,6 +20,7 @@
 #include "renderer/lighting/lighting_model.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/settings/choice_names.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -37,7 +38,7 @@ using Fixture = test::RendererFixture;
 using test::countDiffering;
 
 int countCovered(Renderer& r, const CameraMatrices& cam, int w, int h) {
-  const ImageRGBA32F img = test::renderGeometry(r, cam, GeometryOutput::EyeNormal, w, h);
+  const ImageRGBA32F img = test::renderGeometry(r, cam, FrameOutput::EyeNormal, w, h);
   int n = 0;
   for (size_t i = 3; i < img.pixels.size(); i += 4) n += img.pixels[i] > 0.5f;
   return n;
@@ -56,24 +57,24 @@ void expectStencilEqualsTriangle(Renderer& r, const std::string& what) {
     s.path = RenderPath::Triangle;
     const ImageRGBA8 triangle = renderImage(r, cam, s, w, h);
     const int diff = countDiffering(stencil, triangle);
-    EXPECT_LE(diff, covered / 1000) << what << " " << matchModeName(mode) << ": " << diff << " of " << covered << " covered pixels differ";
-    if (diff > covered / 1000) (void)writeImage(test::outputPath("stencil-vs-triangle-" + std::string(matchModeName(mode)) + ".png"), stencil);
+    EXPECT_LE(diff, covered / 1000) << what << " " << choiceName(mode) << ": " << diff << " of " << covered << " covered pixels differ";
+    if (diff > covered / 1000) (void)writeImage(test::outputPath("stencil-vs-triangle-" + std::string(choiceName(mode)) + ".png"), stencil);
   }
 }
 
 TEST_F(Fixture, StencilEqualsTriangleOnTheBunny) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   expectStencilEqualsTriangle(*r, "bunny");
 }
 
 TEST_F(Fixture, StencilEqualsTriangleOnA500KTriangleMesh) {
   const Mesh mesh = test::torus(500, 500);
   ASSERT_EQ(mesh.triangleCount(), 500000u);
-  r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   expectStencilEqualsTriangle(*r, "torus");
 }
 
@@ -84,7 +85,7 @@ TEST_F(Fixture, StencilEqualsTriangleOnA500KTriangleMesh) {
 TEST_F(Fixture, BackFacesAreDroppedOnlyWhereNoneCanShow) {
   const Mesh sphere = test::icosphere(3);
   const Mesh square = test::square(4);
-  ASSERT_TRUE(r->setPalette(greyRamp(8)));
+  ASSERT_TRUE(r->palettes().setMain(greyRamp(8)));
   const int w = 160, h = 120;
   const CameraMatrices outside = OrbitCamera(30.0f, 20.0f, 3.0f).matrices(float(w) / h);
   CameraMatrices inside;
@@ -96,7 +97,7 @@ TEST_F(Fixture, BackFacesAreDroppedOnlyWhereNoneCanShow) {
     bool culled;
   };
   for (const Case& c : {Case{&sphere, &outside, true}, Case{&sphere, &inside, false}, Case{&square, &outside, false}}) {
-    r->setMesh(c.mesh);
+    r->scene().setOnly(c.mesh);
     for (RenderPath path : {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
       RenderSettings s;
       s.path = path;
@@ -113,8 +114,8 @@ TEST_F(Fixture, BackFacesAreDroppedOnlyWhereNoneCanShow) {
 TEST_F(Fixture, NaiveStencilDrawsTheSameImage) {
   auto mesh = loadMesh(sourcePath("models/teapot.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("wood")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("wood")));
   RenderSettings s;
   s.path = RenderPath::Stencil;
   const CameraMatrices cam = testCamera(1.0f);
@@ -176,7 +177,7 @@ ImageRGBA8 renderWithDepthStencil(Renderer& r, const CameraMatrices& cam, const 
 TEST_F(Fixture, StencilMasksFirstWriteTheSurfaceBuffersAndDrawTheSameImage) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
+  r->scene().setOnly(&*mesh);
   const Palette hatch = shippedPalette("hatch");
   Palette many;
   many.name = "hatch256";
@@ -197,7 +198,7 @@ TEST_F(Fixture, StencilMasksFirstWriteTheSurfaceBuffersAndDrawTheSameImage) {
   };
   for (const Case& c : {Case{"object", true, false, false, &hatch}, Case{"curvature", false, true, false, &hatch},
                         Case{"both", true, true, false, &hatch}, Case{"both, 256 buckets", true, true, true, &many}}) {
-    ASSERT_TRUE(r->setPalette(*c.palette));
+    ASSERT_TRUE(r->palettes().setMain(*c.palette));
     RenderSettings s;
     s.path = RenderPath::Stencil;
     if (c.object) s.pattern = PatternSpace::Object;
@@ -229,8 +230,8 @@ TEST_F(Fixture, StencilMasksFirstWriteTheSurfaceBuffersAndDrawTheSameImage) {
 TEST_F(Fixture, StencilBoundsFollowTheLightAndTheView) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   RenderSettings s;
   s.path = RenderPath::Stencil;
@@ -253,18 +254,18 @@ TEST_F(Fixture, StencilBoundsFollowTheLightAndTheView) {
 TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
   auto mesh = loadMesh(sourcePath("models/bunny.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const int w = 320, h = 240;
   const CameraMatrices cam = testCamera(float(w) / h);
-  const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
-  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, w, h);
+  const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, w, h);
+  const ImageRGBA32F nrm = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, w, h);
   for (MatchMode mode : {MatchMode::Intensity, MatchMode::Order, MatchMode::Colors}) {
     RenderSettings s;
     s.path = RenderPath::Pixel;
     s.match = mode;
     const ImageRGBA8 entries = test::renderEntries(*r, cam, s, w, h);
-    const PaletteMatcher& m = *r->matcher();
+    const PaletteMatcher& m = *r->palettes().matcher();
     const auto prepared = prepareLighting<float>(r->lighting());
     int sampled = 0, exact = 0, nearBoundary = 0;
     for (size_t i = 0; i < size_t(w) * h; i += 7) {
@@ -288,7 +289,7 @@ TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
           else q[k] += d;
           reachable = reachable || m.match(q) == gpu;
         }
-      EXPECT_TRUE(reachable) << matchModeName(mode) << " pixel " << i << ": gpu " << gpu << " cpu " << m.match(lit);
+      EXPECT_TRUE(reachable) << choiceName(mode) << " pixel " << i << ": gpu " << gpu << " cpu " << m.match(lit);
       nearBoundary += reachable;
     }
     EXPECT_GT(sampled, 1000);
@@ -296,8 +297,8 @@ TEST_F(Fixture, PixelPathAgreesWithTheCpuLightingModel) {
     // boundary than with the 4096-bin intensity table: with the drawn crosshatch, whose levels
     // are 0.24 apart in intensity against a table cell of 0.016 a channel, 93% are exact
     // (every other one within a nudge of a boundary, checked above).
-    EXPECT_GE(exact, sampled * (mode == MatchMode::Colors ? 90 : 99) / 100) << matchModeName(mode) << ": " << exact << " of " << sampled << " exact";
-    std::printf("%s: %d sampled, %d exact, %d within one step of a boundary\n", matchModeName(mode), sampled, exact, nearBoundary);
+    EXPECT_GE(exact, sampled * (mode == MatchMode::Colors ? 90 : 99) / 100) << choiceName(mode) << ": " << exact << " of " << sampled << " exact";
+    std::printf("%s: %d sampled, %d exact, %d within one step of a boundary\n", choiceName(mode), sampled, exact, nearBoundary);
   }
 }
 
@@ -317,9 +318,9 @@ TEST_F(Fixture, PaletteStaysInScreenSpace) {
     }
   e.average = glm::vec3(0.5f);
   p.entries.push_back(std::move(e));
-  ASSERT_TRUE(r->setPalette(p));
+  ASSERT_TRUE(r->palettes().setMain(p));
   const Mesh mesh = test::icosphere(4);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   const int w = 128, h = 96;
   for (RenderPath path : {RenderPath::Stencil, RenderPath::Triangle, RenderPath::Vertex, RenderPath::Pixel, RenderPath::Smooth}) {
     for (float distance : {2.5f, 6.0f}) {
@@ -345,9 +346,9 @@ TEST_F(Fixture, PaletteStaysInScreenSpace) {
 
 TEST_F(Fixture, OneAndTwoHundredFiftySixEntries) {
   const Mesh mesh = test::icosphere(3);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   for (int n : {1, 256}) {
-    ASSERT_TRUE(r->setPalette(greyRamp(n)));
+    ASSERT_TRUE(r->palettes().setMain(greyRamp(n)));
     for (RenderPath path : userRenderPaths())
       for (MatchMode mode : {MatchMode::Colors, MatchMode::Intensity, MatchMode::Order}) {
         RenderSettings s;
@@ -363,9 +364,9 @@ TEST_F(Fixture, OneAndTwoHundredFiftySixEntries) {
         // One entry: the sphere is its grey (128) on the white background. 256 entries: the
         // shading spreads over many of them.
         if (n == 1) {
-          EXPECT_EQ(greys, (std::set<int>{128, 255})) << renderPathName(path) << " " << matchModeName(mode);
+          EXPECT_EQ(greys, (std::set<int>{128, 255})) << renderPathName(path) << " " << choiceName(mode);
         } else {
-          EXPECT_GT(greys.size(), 20u) << renderPathName(path) << " " << matchModeName(mode);
+          EXPECT_GT(greys.size(), 20u) << renderPathName(path) << " " << choiceName(mode);
         }
       }
   }
@@ -373,8 +374,8 @@ TEST_F(Fixture, OneAndTwoHundredFiftySixEntries) {
 
 TEST_F(Fixture, UnchangedStateIsNotRecomputedOrReuploaded) {
   const Mesh mesh = test::icosphere(4);
-  r->setMesh(&mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const CameraMatrices cam = testCamera(1.0f);
   for (RenderPath path : userRenderPaths()) {
     RenderSettings s;
@@ -418,23 +419,23 @@ TEST_F(Fixture, UnchangedStateIsNotRecomputedOrReuploaded) {
 
 TEST_F(Fixture, ExtremesProduceNoErrorsOrNaN) {
   const Mesh base = test::icosphere(3);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   for (double size : {1e-6, 1.0, 1e6}) {
     Mesh m = test::icosphere(3);
     for (auto& p : m.positions) p *= float(size);
     for (auto& c : m.faceCentroids) c *= float(size);
-    r->setMesh(&m);
+    r->scene().setOnly(&m);
     OrbitCamera c(30.0f, 20.0f, 3.0f);
     c.frame(float(size));
     for (RenderPath path : userRenderPaths()) {
       RenderSettings s;
       s.path = path;
       (void)renderImage(*r, c.matrices(1.0f), s, 32, 32);
-      const ImageRGBA32F n = test::renderGeometry(*r, c.matrices(1.0f), GeometryOutput::EyeNormal, 32, 32);
+      const ImageRGBA32F n = test::renderGeometry(*r, c.matrices(1.0f), FrameOutput::EyeNormal, 32, 32);
       for (float v : n.pixels) ASSERT_TRUE(std::isfinite(v)) << size;
     }
   }
-  r->setMesh(&base);
+  r->scene().setOnly(&base);
   // Near/far ratios from 1e-4 to 1e6, and a camera inside the model.
   for (auto [nearP, farP] : {std::pair{1.0f, 1.0001f}, std::pair{1e-3f, 1e3f}, std::pair{1e-4f, 100.0f}}) {
     CameraMatrices cam;
@@ -467,11 +468,11 @@ TEST_F(Fixture, ExtremesProduceNoErrorsOrNaN) {
 
 TEST_F(Fixture, ImmediateBeginRenderTriangleEndDrawsLikeTheRetainedMesh) {
   const Mesh sphere = test::icosphere(3);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const CameraMatrices cam = testCamera(1.0f);
   RenderSettings s;
   s.path = RenderPath::Stencil;
-  r->setMesh(&sphere);
+  r->scene().setOnly(&sphere);
   const ImageRGBA8 retained = renderImage(*r, cam, s, 160, 160);
 
   PaletteRenderer immediate(*r);
@@ -497,8 +498,8 @@ TEST_F(Fixture, ImmediateBeginRenderTriangleEndDrawsLikeTheRetainedMesh) {
 
 TEST_F(Fixture, CelBandsAreHardWithAntialiasedEdges) {
   const Mesh sphere = test::icosphere(4);
-  r->setMesh(&sphere);
-  ASSERT_TRUE(r->setPalette(shippedPalette("cel")));
+  r->scene().setOnly(&sphere);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("cel")));
   RenderSettings s;
   s.path = RenderPath::Smooth;
   s.bands = {0.9f, 1.6f, 2.3f};
@@ -528,8 +529,8 @@ TEST_F(Fixture, CelBandsAreHardWithAntialiasedEdges) {
 TEST_F(Fixture, GoldenImagesPerPath) {
   auto mesh = loadMesh(sourcePath("models/teapot.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("crosshatch")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("crosshatch")));
   const CameraMatrices cam = testCamera(1.0f);
   for (RenderPath path : userRenderPaths()) {
     RenderSettings s;
@@ -537,7 +538,7 @@ TEST_F(Fixture, GoldenImagesPerPath) {
     // llvmpipe is deterministic; a GPU may differ at edges by a texel here and there.
     expectGolden(std::string("teapot-crosshatch-") + renderPathName(path), renderImage(*r, cam, s, 160, 160), 0.005, 0.004);
   }
-  ASSERT_TRUE(r->setPalette(shippedPalette("gooch")));
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("gooch")));
   RenderSettings s;
   s.path = RenderPath::Smooth;
   s.match = MatchMode::Colors;
@@ -549,8 +550,8 @@ TEST_F(Fixture, GoldenImagesPerPath) {
 TEST_F(Fixture, GoldenImagesOfLinesOverEachPath) {
   auto mesh = loadMesh(sourcePath("models/teapot.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
-  ASSERT_TRUE(r->setPalette(shippedPalette("cel")));
+  r->scene().setOnly(&*mesh);
+  ASSERT_TRUE(r->palettes().setMain(shippedPalette("cel")));
   const CameraMatrices cam = testCamera(1.0f);
   for (RenderPath path : userRenderPaths()) {
     RenderSettings s;
@@ -580,7 +581,7 @@ TEST_F(Fixture, HiddenLinesAreRemovedByDepth) {
   std::vector<Triangle> withPlate = cube;
   withPlate.push_back({{glm::vec3(-0.9f, -0.9f, 0.8f), glm::vec3(0.9f, -0.9f, 0.8f), glm::vec3(0.9f, 0.9f, 0.8f)}});
   withPlate.push_back({{glm::vec3(-0.9f, -0.9f, 0.8f), glm::vec3(0.9f, 0.9f, 0.8f), glm::vec3(-0.9f, 0.9f, 0.8f)}});
-  ASSERT_TRUE(r->setPalette(greyRamp(4)));
+  ASSERT_TRUE(r->palettes().setMain(greyRamp(4)));
   RenderSettings s;
   s.path = RenderPath::Pixel;
   s.lines.creases = true;
@@ -592,9 +593,9 @@ TEST_F(Fixture, HiddenLinesAreRemovedByDepth) {
   };
   const CameraMatrices cam = testCamera(1.0f, 20.0f, 15.0f);
   const Mesh open = meshFromTriangles(cube), hidden = meshFromTriangles(withPlate);
-  r->setMesh(&open);
+  r->scene().setOnly(&open);
   const int visible = red(renderImage(*r, cam, s, 128, 128));
-  r->setMesh(&hidden);
+  r->scene().setOnly(&hidden);
   const int behind = red(renderImage(*r, cam, s, 128, 128));
   EXPECT_GT(visible, 200);
   EXPECT_EQ(behind, 0);

@@ -14,6 +14,7 @@
 #include "gl/gl_test_env.h"
 #include "renderer/animation/deformation.h"
 #include "renderer/mesh/mesh_builder.h"
+#include "renderer/settings/choice_names.h"
 #include "support/analytic_surfaces.h"
 #include "support/skinned_cylinder.h"
 #include "support/test_util.h"
@@ -51,17 +52,17 @@ TEST_F(SceneFixture, AModelIsDrawnWhereItsTransformPutsIt) {
   RenderSettings s;
   s.path = RenderPath::Reference;
   const CameraMatrices cam = test::testCamera(1.0f);
-  r->setMesh(&moved);
+  r->scene().setOnly(&moved);
   const ImageRGBA8 baked = test::renderImage(*r, cam, s, kSize, kSize);
-  r->setMesh(nullptr);
-  const ModelId id = r->addModel(sphere, place);
-  EXPECT_EQ(r->modelCount(), 1u);
+  r->scene().setOnly(nullptr);
+  const ModelId id = r->scene().add(sphere, place);
+  EXPECT_EQ(r->scene().size(), 1u);
   const ImageRGBA8 placed = test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_LE(test::countDiffering(baked, placed), kSize * kSize / 200);
   // Moved back to the origin, it is another picture.
-  ASSERT_TRUE(r->setModelTransform(id, glm::mat4(1.0f)));
+  ASSERT_TRUE(r->scene().setTransform(id, glm::mat4(1.0f)));
   EXPECT_GT(test::countDiffering(baked, test::renderImage(*r, cam, s, kSize, kSize)), kSize * kSize / 20);
-  EXPECT_FALSE(r->setModelTransform(id + 100, glm::mat4(1.0f)));
+  EXPECT_FALSE(r->scene().setTransform(id + 100, glm::mat4(1.0f)));
 }
 
 TEST_F(SceneFixture, TheNearestSurfaceWinsAcrossModels) {
@@ -69,14 +70,14 @@ TEST_F(SceneFixture, TheNearestSurfaceWinsAcrossModels) {
   const glm::mat4 pa = glm::translate(glm::mat4(1.0f), glm::vec3(-0.25f, 0.0f, 0.2f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.5f));
   const glm::mat4 pb = glm::translate(glm::mat4(1.0f), glm::vec3(0.2f, 0.1f, -0.1f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.7f));
   const CameraMatrices cam = test::testCamera(1.0f);
-  const ModelId ia = r->addModel(a, pa);
-  const ImageRGBA32F onlyA = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-  r->removeModel(ia);
-  r->addModel(b, pb);
-  const ImageRGBA32F onlyB = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-  r->addModel(a, pa);
-  EXPECT_EQ(r->modelCount(), 2u);
-  const ImageRGBA32F both = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ModelId ia = r->scene().add(a, pa);
+  const ImageRGBA32F onlyA = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  r->scene().remove(ia);
+  r->scene().add(b, pb);
+  const ImageRGBA32F onlyB = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  r->scene().add(a, pa);
+  EXPECT_EQ(r->scene().size(), 2u);
+  const ImageRGBA32F both = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   int overlap = 0, wrong = 0;
   for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
     const bool inA = covered(onlyA, i), inB = covered(onlyB, i);
@@ -96,10 +97,10 @@ TEST_F(SceneFixture, OneModelShadowsAndOccludesAnother) {
   const Mesh sphere = icosphere(3), ground = slab();
   const CameraMatrices cam = test::testCamera(1.0f, 30.0f, 50.0f);
   lightFromAbove(*r, cam);
-  r->addModel(ground, kSlabPlace);
-  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-  r->addModel(sphere, kSpherePlace);
-  const ImageRGBA32F withSphere = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  r->scene().add(ground, kSlabPlace);
+  const ImageRGBA32F slabAlone = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  r->scene().add(sphere, kSpherePlace);
+  const ImageRGBA32F withSphere = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   RenderSettings s;
   s.path = RenderPath::Reference;
   const ImageRGBA8 lit = test::renderImage(*r, cam, s, kSize, kSize);
@@ -122,8 +123,8 @@ TEST_F(SceneFixture, OneModelShadowsAndOccludesAnother) {
   EXPECT_GT(inShadow, 200) << "the sphere casts no shadow on the slab";
   EXPECT_GT(inCrevice, 50) << "the sphere occludes nothing of the slab";
   // The slab alone: nothing darkens it.
-  r->setMesh(nullptr);
-  r->addModel(ground, kSlabPlace);
+  r->scene().setOnly(nullptr);
+  r->scene().add(ground, kSlabPlace);
   s.occlusion = false;
   const ImageRGBA8 aloneLit = test::renderImage(*r, cam, s, kSize, kSize);
   s.shadows = true;
@@ -135,19 +136,19 @@ TEST_F(SceneFixture, OneModelShadowsAndOccludesAnother) {
 
 TEST_F(SceneFixture, EachModelKeepsItsOwnCaches) {
   const Mesh a = test::rotatedMesh(torus(48, 24), test::obliqueRotation()), b = test::rotatedMesh(icosphere(3), test::obliqueRotation());
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   // Rigid placements: the per-triangle lighting is kept in model space across frames for those
   // (a scaled model is relit every frame, as a scaled modelview always was).
-  const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.9f, 0.0f, 0.0f)));
-  const ModelId ib = r->addModel(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 0.0f)));
+  const ModelId ia = r->scene().add(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.9f, 0.0f, 0.0f)));
+  const ModelId ib = r->scene().add(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.9f, 0.0f, 0.0f)));
   RenderSettings s;
   s.path = RenderPath::Triangle;
   s.orient.source = OrientSource::Curvature;
   s.lines.silhouettes = true;
   const CameraMatrices cam = test::testCamera(1.0f);
   (void)test::renderImage(*r, cam, s, kSize, kSize);
-  const DirectionField* fieldA = r->model(ia)->directionFieldIfComputed();
-  const DirectionField* fieldB = r->model(ib)->directionFieldIfComputed();
+  const DirectionField* fieldA = r->scene().find(ia)->directionFieldIfComputed();
+  const DirectionField* fieldB = r->scene().find(ib)->directionFieldIfComputed();
   ASSERT_NE(fieldA, nullptr);
   ASSERT_NE(fieldB, nullptr);
   EXPECT_EQ(fieldA->directions.size(), a.positions.size());
@@ -156,13 +157,13 @@ TEST_F(SceneFixture, EachModelKeepsItsOwnCaches) {
   (void)test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_EQ(r->stats().bufferUploads, 0);
   EXPECT_EQ(r->stats().lightingRecomputes, 0);
-  r->removeModel(ib);
-  EXPECT_EQ(r->model(ib), nullptr);
-  EXPECT_EQ(r->model(ia)->directionFieldIfComputed(), fieldA);
+  r->scene().remove(ib);
+  EXPECT_EQ(r->scene().find(ib), nullptr);
+  EXPECT_EQ(r->scene().find(ia)->directionFieldIfComputed(), fieldA);
   (void)test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_EQ(r->stats().bufferUploads, 0);
   EXPECT_EQ(r->stats().lightingRecomputes, 0);
-  EXPECT_EQ(r->model(ia)->directionFieldIfComputed(), fieldA);
+  EXPECT_EQ(r->scene().find(ia)->directionFieldIfComputed(), fieldA);
 }
 
 // The per-triangle paths light a scene's models side by side before the frame draws them
@@ -171,7 +172,7 @@ TEST_F(SceneFixture, EachModelKeepsItsOwnCaches) {
 // gives alone in the same place.
 TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
   const Mesh sphere = icosphere(3);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   std::vector<glm::mat4> places;
   for (int i = 0; i < 4; ++i)
     places.push_back(glm::translate(glm::mat4(1.0f), glm::vec3(-0.6f + 0.4f * float(i), 0.1f * float(i % 2), 0.0f)) *
@@ -190,12 +191,12 @@ TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
     const ImageRGBA8 empty = test::renderImage(*r, cam, s, kSize, kSize);
     std::vector<ImageRGBA8> each;
     for (const glm::mat4& place : places) {
-      const ModelId id = r->addModel(sphere, place);
+      const ModelId id = r->scene().add(sphere, place);
       each.push_back(test::renderImage(*r, cam, s, kSize, kSize));
-      r->removeModel(id);
+      r->scene().remove(id);
     }
     std::vector<ModelId> ids;
-    for (const glm::mat4& place : places) ids.push_back(r->addModel(sphere, place));
+    for (const glm::mat4& place : places) ids.push_back(r->scene().add(sphere, place));
     for (int frame = 0; frame < 3; ++frame) {
       ASSERT_TRUE(light(frame));  // the light moves every frame: every model is lit again, once
       const ImageRGBA8 all = test::renderImage(*r, cam, s, kSize, kSize);
@@ -214,7 +215,7 @@ TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
       // (Within 1%: the scene's automatic tone range is fitted to four spheres, not one.)
       EXPECT_LE(differ, counted / 100) << renderPathName(path) << ": " << differ << " of " << counted;
     }
-    for (ModelId id : ids) r->removeModel(id);
+    for (ModelId id : ids) r->scene().remove(id);
   }
 }
 
@@ -223,11 +224,11 @@ TEST_F(SceneFixture, AScenesModelsAreLitSideBySideOncePerFrame) {
 // front of and behind each other), with fewer draws.
 TEST_F(SceneFixture, TheStencilPathDrawsAScenesObjectsTogetherAsItDrawsThemOneByOne) {
   const Palette hatch = test::shippedPalette("hatch");
-  ASSERT_TRUE(r->setPalette(hatch));
+  ASSERT_TRUE(r->palettes().setMain(hatch));
   const Mesh sphere = icosphere(3);
   std::vector<ModelId> ids;
   for (int i = 0; i < 6; ++i)
-    ids.push_back(r->addModel(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f + 0.2f * float(i), 0.08f * float(i % 3), 0.15f * float(i % 2))) *
+    ids.push_back(r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f + 0.2f * float(i), 0.08f * float(i % 3), 0.15f * float(i % 2))) *
                                           glm::scale(glm::mat4(1.0f), glm::vec3(0.3f))));
   const CameraMatrices cam = test::testCamera(1.0f);
   lightFromAbove(*r, cam);
@@ -240,15 +241,15 @@ TEST_F(SceneFixture, TheStencilPathDrawsAScenesObjectsTogetherAsItDrawsThemOneBy
     const int drawsTogether = r->stats().drawCalls;
     // The same palette given to each object as its own: objects of different palettes are
     // drawn one by one.
-    for (ModelId id : ids) ASSERT_TRUE(r->setModelPalette(id, hatch));
+    for (ModelId id : ids) ASSERT_TRUE(r->scene().setPalette(id, hatch));
     const ImageRGBA8 oneByOne = test::renderImage(*r, cam, s, kSize, kSize);
     const int drawsOneByOne = r->stats().drawCalls;
-    for (ModelId id : ids) r->clearModelPalette(id);
+    for (ModelId id : ids) r->scene().clearPalette(id);
     std::size_t differ = 0, covered = 0;
     const ImageRGBA8 empty = [&] {
-      for (ModelId id : ids) r->setModelVisible(id, false);
+      for (ModelId id : ids) r->scene().setVisible(id, false);
       ImageRGBA8 e = test::renderImage(*r, cam, s, kSize, kSize);
-      for (ModelId id : ids) r->setModelVisible(id, true);
+      for (ModelId id : ids) r->scene().setVisible(id, true);
       return e;
     }();
     for (std::size_t i = 0; i < together.pixels.size(); i += 4) {
@@ -264,19 +265,19 @@ TEST_F(SceneFixture, TheStencilPathDrawsAScenesObjectsTogetherAsItDrawsThemOneBy
 
 TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
   const Mesh a = icosphere(3), b = torus(48, 24);
-  const ModelId ia = r->addModel(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
-  const ModelId ib = r->addModel(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  const ModelId ia = r->scene().add(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
+  const ModelId ib = r->scene().add(b, glm::translate(glm::mat4(1.0f), glm::vec3(0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   RenderSettings s;
   s.pattern = PatternSpace::Anchored;
   const CameraMatrices cam = test::testCamera(1.0f);
   (void)test::renderImage(*r, cam, s, kSize, kSize);
   (void)test::renderImage(*r, cam, s, kSize, kSize);
-  const PatternFrame a0 = r->model(ia)->patterns().frame(), b0 = r->model(ib)->patterns().frame();
+  const PatternFrame a0 = r->scene().find(ia)->patterns().frame(), b0 = r->scene().find(ib)->patterns().frame();
   // B moves 0.1 to the right: its pattern moves with it, A's stays.
-  ASSERT_TRUE(r->setModelTransform(ib, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f))));
+  ASSERT_TRUE(r->scene().setTransform(ib, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f))));
   (void)test::renderImage(*r, cam, s, kSize, kSize);
-  const PatternFrame a1 = r->model(ia)->patterns().frame(), b1 = r->model(ib)->patterns().frame();
+  const PatternFrame a1 = r->scene().find(ia)->patterns().frame(), b1 = r->scene().find(ib)->patterns().frame();
   EXPECT_NEAR(glm::length(a1.translation - a0.translation), 0.0f, 0.05f);
   EXPECT_GT(b1.translation.x - b0.translation.x, 3.0f) << "B's pattern did not move right with it";
 }
@@ -285,12 +286,12 @@ TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
 // says so before the frame, and what it says is what the frame then does, for every path,
 // orientation and pattern, on a sparse and a dense mesh.
 TEST_F(SceneFixture, TheFramebufferIsAskedForBeforeTheFrame) {
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   const Mesh sparse = icosphere(2), dense = icosphere(5);
   const CameraMatrices cam = test::testCamera(1.0f);
   int shared = 0, checked = 0;
   for (const Mesh* mesh : {&sparse, &dense}) {
-    r->setMesh(mesh);
+    r->scene().setOnly(mesh);
     for (RenderPath path : userRenderPaths())
       for (OrientSource orient : {OrientSource::None, OrientSource::Curvature, OrientSource::Light, OrientSource::Fixed})
         for (PatternSpace pattern : {PatternSpace::Screen, PatternSpace::Object}) {
@@ -317,9 +318,9 @@ TEST_F(SceneFixture, EachModelIsDrawnWithItsOwnPaletteAndCanBeHidden) {
   const Mesh sphere = icosphere(3);
   const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
   const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
-  ASSERT_TRUE(r->setPalette(test::greyRamp(8)));
+  ASSERT_TRUE(r->palettes().setMain(test::greyRamp(8)));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 0.0f);
-  const ModelId a = r->addModel(sphere, left);
+  const ModelId a = r->scene().add(sphere, left);
   // Saturated pixels: the wood palette's; the grey ramp has none.
   auto colourful = [](const ImageRGBA8& img, bool rightHalf) {
     int n = 0;
@@ -342,30 +343,30 @@ TEST_F(SceneFixture, EachModelIsDrawnWithItsOwnPaletteAndCanBeHidden) {
     RenderSettings s;
     s.path = path;
     const ImageRGBA8 onlyLeft = test::renderImage(*r, cam, s, kSize, kSize);
-    const ModelId b = r->addModel(sphere, right);
+    const ModelId b = r->scene().add(sphere, right);
     const ImageRGBA8 shared = test::renderImage(*r, cam, s, kSize, kSize);
-    ASSERT_TRUE(r->setModelPalette(b, test::shippedPalette("wood")));
+    ASSERT_TRUE(r->scene().setPalette(b, test::shippedPalette("wood")));
     const ImageRGBA8 own = test::renderImage(*r, cam, s, kSize, kSize);
     EXPECT_EQ(colourful(shared, true), 0);
     EXPECT_GT(colourful(own, true), kSize * kSize / 20) << "the right sphere is not in wood";
     EXPECT_EQ(colourful(own, false), 0) << "the left sphere took the wood palette";
     EXPECT_EQ(leftHalfDiffers(own, shared), 0);
-    ASSERT_TRUE(r->setModelVisible(b, false));
+    ASSERT_TRUE(r->scene().setVisible(b, false));
     const ImageRGBA8 hidden = test::renderImage(*r, cam, s, kSize, kSize);
     EXPECT_EQ(test::countDiffering(hidden, onlyLeft), 0) << "a hidden model still shows";
-    ASSERT_TRUE(r->setModelVisible(b, true));
+    ASSERT_TRUE(r->scene().setVisible(b, true));
     EXPECT_EQ(test::countDiffering(test::renderImage(*r, cam, s, kSize, kSize), own), 0) << "shown again, it is not as it was";
-    r->clearModelPalette(b);
+    r->scene().clearPalette(b);
     EXPECT_EQ(test::countDiffering(test::renderImage(*r, cam, s, kSize, kSize), shared), 0);
-    r->removeModel(b);
+    r->scene().remove(b);
   }
-  EXPECT_FALSE(r->setModelPalette(a + 100, test::greyRamp(4)));
-  EXPECT_FALSE(r->setModelVisible(a + 100, false));
+  EXPECT_FALSE(r->scene().setPalette(a + 100, test::greyRamp(4)));
+  EXPECT_FALSE(r->scene().setVisible(a + 100, false));
 }
 
 TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
   const Mesh rest = test::skinnedCylinder(48, 40);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   Mesh copy = rest;  // the bent pose as a mesh that does not deform
   deformMesh(rest, test::bendJoints(60.0f), {}, copy);
@@ -378,32 +379,32 @@ TEST_F(SceneFixture, EveryPathDrawsADeformedModelAsAStaticCopyOfItsPose) {
     s.lines.silhouettes = true;
     s.lines.creases = true;
     s.orient.source = OrientSource::Light;
-    r->clearModels();
-    const ModelId id = r->addModel(rest);
+    r->scene().clear();
+    const ModelId id = r->scene().add(rest);
     (void)test::renderImage(*r, cam, s, kSize, kSize);  // at rest: every cache is built
     // Bent 60 degrees: drawn exactly as the static copy of that pose is.
-    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(60.0f), {}));
+    ASSERT_TRUE(r->scene().deform(id, test::bendJoints(60.0f), {}));
     const ImageRGBA8 bent = test::renderImage(*r, cam, s, kSize, kSize);
     EXPECT_EQ(r->stats().meshCachesBuilt, 0);
     EXPECT_GT(r->stats().bufferUploads, 0) << "the pose's uploads are not in the frame's figures";
-    r->clearModels();
-    (void)r->addModel(copy);
+    r->scene().clear();
+    (void)r->scene().add(copy);
     EXPECT_EQ(test::countDiffering(bent, test::renderImage(*r, cam, s, kSize, kSize)), 0) << "the posed model is not drawn as its pose";
     // Strokes along the curvature: the field is computed once, on the rest pose, and carried by
     // the skin; the painterly strokes are put back where they were seeded; posing computes no
     // per-mesh cache again.
     s.orient.source = OrientSource::Curvature;
     s.strokes.on = true;
-    r->clearModels();
-    const ModelId curved = r->addModel(rest);
+    r->scene().clear();
+    const ModelId curved = r->scene().add(rest);
     (void)test::renderImage(*r, cam, s, kSize, kSize);
-    const DirectionField* field = r->model(curved)->directionFieldIfComputed();
+    const DirectionField* field = r->scene().find(curved)->directionFieldIfComputed();
     ASSERT_NE(field, nullptr);
     for (float degrees : {30.0f, 60.0f, 90.0f}) {
-      ASSERT_TRUE(r->setModelDeformation(curved, test::bendJoints(degrees), {}));
+      ASSERT_TRUE(r->scene().deform(curved, test::bendJoints(degrees), {}));
       (void)test::renderImage(*r, cam, s, kSize, kSize);
       EXPECT_EQ(r->stats().meshCachesBuilt, 0);
-      EXPECT_EQ(r->model(curved)->directionFieldIfComputed(), field);
+      EXPECT_EQ(r->scene().find(curved)->directionFieldIfComputed(), field);
     }
   }
 }
@@ -420,7 +421,7 @@ TEST_F(SceneFixture, ABendingModelsPartsFollowItsPose) {
   rest.faceMaterials.resize(rest.triangleCount());
   for (std::size_t f = 0; f < rest.triangleCount(); ++f) rest.faceMaterials[f] = rest.faceCentroids[f].y > 0.0f ? 1 : 0;
   const Palette hatch = test::shippedPalette("hatch");
-  ASSERT_TRUE(r->setPalette(hatch));
+  ASSERT_TRUE(r->palettes().setMain(hatch));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   for (const PathInfo& path : renderPaths()) {
     if (!path.userSelectable || !path.usesPalette) continue;
@@ -428,21 +429,21 @@ TEST_F(SceneFixture, ABendingModelsPartsFollowItsPose) {
     RenderSettings s;
     s.path = path.id;
     s.materials = true;
-    r->clearModels();
-    r->clearMaterialPalette("head");
-    const ModelId id = r->addModel(rest);
+    r->scene().clear();
+    r->palettes().clearMaterial("head");
+    const ModelId id = r->scene().add(rest);
     (void)test::renderImage(*r, cam, s, kSize, kSize);  // at rest
-    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {}));
+    ASSERT_TRUE(r->scene().deform(id, test::bendJoints(70.0f), {}));
     const ImageRGBA8 whole = test::renderImage(*r, cam, s, kSize, kSize);
-    ASSERT_TRUE(r->setMaterialPalette("head", hatch));
-    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(0.0f), {}));
+    ASSERT_TRUE(r->palettes().setMaterial("head", hatch));
+    ASSERT_TRUE(r->scene().deform(id, test::bendJoints(0.0f), {}));
     (void)test::renderImage(*r, cam, s, kSize, kSize);  // the parts made, at rest
-    ASSERT_EQ(r->model(id)->parts().size(), 2u);
-    ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {}));
+    ASSERT_EQ(r->scene().find(id)->parts().size(), 2u);
+    ASSERT_TRUE(r->scene().deform(id, test::bendJoints(70.0f), {}));
     const ImageRGBA8 split = test::renderImage(*r, cam, s, kSize, kSize);
     EXPECT_EQ(test::countDiffering(whole, split), 0) << "the parts do not follow the pose";
   }
-  r->clearMaterialPalette("head");
+  r->palettes().clearMaterial("head");
 }
 
 // A pose made on the GPU (animation/gpu_deformation.h) draws what the CPU's pose draws: skin and
@@ -456,7 +457,7 @@ TEST_F(SceneFixture, APoseMadeOnTheGpuDrawsWhatTheCpuPoseDraws) {
   rest.deformation.targetNormals.assign(1, std::vector<glm::vec3>(rest.positions.size(), glm::vec3(0.0f)));
   for (std::size_t i = 0; i < rest.positions.size(); ++i)
     rest.deformation.targetPositions[0][i] = 0.15f * (rest.positions[i].y + 0.75f) * rest.normals[i];
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   Mesh copy = rest;  // the pose as a mesh that does not deform
   deformMesh(rest, test::bendJoints(70.0f), {0.8f}, copy);
@@ -469,20 +470,20 @@ TEST_F(SceneFixture, APoseMadeOnTheGpuDrawsWhatTheCpuPoseDraws) {
       s.shadows = field;
       s.ground = field;
       if (field) s.orient.source = OrientSource::Curvature;
-      r->clearModels();
-      const ModelId id = r->addModel(rest);
+      r->scene().clear();
+      const ModelId id = r->scene().add(rest);
       (void)test::renderImage(*r, cam, s, kSize, kSize);
-      ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {0.8f}));
+      ASSERT_TRUE(r->scene().deform(id, test::bendJoints(70.0f), {0.8f}));
       const ImageRGBA8 gpu = test::renderImage(*r, cam, s, kSize, kSize);
       EXPECT_EQ(r->stats().gpuPoses, 1);
       EXPECT_EQ(r->stats().cpuPoses, 0) << "the CPU posed a mesh nothing read there";
-      EXPECT_TRUE(r->model(id)->cpuPoseStale());
+      EXPECT_TRUE(r->scene().find(id)->cpuPoseStale());
       EXPECT_EQ(r->stats().meshCachesBuilt, 0);
       // --deform cpu: the CPU poses and uploads, as before.
-      r->clearModels();
-      const ModelId cpuId = r->addModel(rest);
+      r->scene().clear();
+      const ModelId cpuId = r->scene().add(rest);
       (void)test::renderImage(*r, cam, s, kSize, kSize);
-      ASSERT_TRUE(r->setModelDeformation(cpuId, test::bendJoints(70.0f), {0.8f}));
+      ASSERT_TRUE(r->scene().deform(cpuId, test::bendJoints(70.0f), {0.8f}));
       s.deform = PosePlacement::Cpu;
       const ImageRGBA8 cpu = test::renderImage(*r, cam, s, kSize, kSize);
       EXPECT_EQ(r->stats().gpuPoses, 0);
@@ -490,25 +491,25 @@ TEST_F(SceneFixture, APoseMadeOnTheGpuDrawsWhatTheCpuPoseDraws) {
       // The GPU's float arithmetic is not the CPU's: an edge pixel may round the other way.
       EXPECT_LE(test::countDiffering(gpu, cpu), kSize * kSize / 400) << "the GPU's pose is not drawn as the CPU's";
       if (field) continue;  // a static copy's field is the posed surface's own, not the rest one carried
-      r->clearModels();
-      (void)r->addModel(copy);
+      r->scene().clear();
+      (void)r->scene().add(copy);
       EXPECT_EQ(test::countDiffering(cpu, test::renderImage(*r, cam, s, kSize, kSize)), 0);
     }
   }
   // A per-triangle path reads the faces on the CPU: the pose the GPU alone made is made there.
   RenderSettings s;
   s.path = RenderPath::Pixel;
-  r->clearModels();
-  const ModelId id = r->addModel(rest);
-  ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(70.0f), {0.8f}));
+  r->scene().clear();
+  const ModelId id = r->scene().add(rest);
+  ASSERT_TRUE(r->scene().deform(id, test::bendJoints(70.0f), {0.8f}));
   (void)test::renderImage(*r, cam, s, kSize, kSize);
-  ASSERT_TRUE(r->model(id)->cpuPoseStale());
+  ASSERT_TRUE(r->scene().find(id)->cpuPoseStale());
   s.path = RenderPath::Triangle;
   const ImageRGBA8 triangles = test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_EQ(r->stats().cpuPoses, 1);
-  EXPECT_FALSE(r->model(id)->cpuPoseStale());
-  r->clearModels();
-  (void)r->addModel(copy);
+  EXPECT_FALSE(r->scene().find(id)->cpuPoseStale());
+  r->scene().clear();
+  (void)r->scene().add(copy);
   EXPECT_EQ(test::countDiffering(triangles, test::renderImage(*r, cam, s, kSize, kSize)), 0);
 }
 
@@ -516,27 +517,27 @@ TEST_F(SceneFixture, APoseMadeOnTheGpuDrawsWhatTheCpuPoseDraws) {
 // follow the pose). How wrong that is: against a bake of the bent pose itself, per vertex.
 TEST_F(SceneFixture, TheOcclusionBakeIsKeptFromTheRestPoseAndThisIsHowWrongItIsBent) {
   const Mesh rest = test::skinnedCylinder(48, 40);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("hatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   RenderSettings s;
   s.occlusion = true;
-  const ModelId id = r->addModel(rest);
+  const ModelId id = r->scene().add(rest);
   (void)test::renderImage(*r, cam, s, 64, 64);
-  ASSERT_TRUE(r->occlusionBake() && r->occlusionBake()->done());
-  const std::vector<float> atRest = r->occlusionBake()->values();
+  ASSERT_TRUE(r->scene().first()->occlusionBake() && r->scene().first()->occlusionBake()->done());
+  const std::vector<float> atRest = r->scene().first()->occlusionBake()->values();
   Mesh bent = rest;
   deformMesh(rest, test::bendJoints(90.0f), {}, bent);
   bent.deformation = MeshDeformation{};
-  ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(90.0f), {}));
+  ASSERT_TRUE(r->scene().deform(id, test::bendJoints(90.0f), {}));
   (void)test::renderImage(*r, cam, s, 64, 64);
   EXPECT_EQ(r->stats().meshCachesBuilt, 0);
-  ASSERT_TRUE(r->occlusionBake() && r->occlusionBake()->done());
-  EXPECT_EQ(r->occlusionBake()->values(), atRest) << "the bake followed the pose";
-  r->clearModels();
-  (void)r->addModel(bent);
+  ASSERT_TRUE(r->scene().first()->occlusionBake() && r->scene().first()->occlusionBake()->done());
+  EXPECT_EQ(r->scene().first()->occlusionBake()->values(), atRest) << "the bake followed the pose";
+  r->scene().clear();
+  (void)r->scene().add(bent);
   (void)test::renderImage(*r, cam, s, 64, 64);
-  ASSERT_TRUE(r->occlusionBake() && r->occlusionBake()->done());
-  const std::vector<float>& rebaked = r->occlusionBake()->values();
+  ASSERT_TRUE(r->scene().first()->occlusionBake() && r->scene().first()->occlusionBake()->done());
+  const std::vector<float>& rebaked = r->scene().first()->occlusionBake()->values();
   ASSERT_EQ(rebaked.size(), atRest.size());
   // All vertices, and those of the bend (the middle fifth, where the two joints blend).
   double sum = 0.0, sumBend = 0.0, worst = 0.0;
@@ -566,9 +567,9 @@ TEST_F(SceneFixture, TheOcclusionBakeIsKeptFromTheRestPoseAndThisIsHowWrongItIsB
 // to frame within one octave of the pattern. Screen-space hatching, for scale.
 TEST_F(SceneFixture, TheObjectPatternStaysOnABendingSurface) {
   const Palette coded = test::texelIndexPalette();
-  ASSERT_TRUE(r->setPalette(coded));
+  ASSERT_TRUE(r->palettes().setMain(coded));
   const Mesh rest = test::skinnedCylinder(64, 60);
-  const ModelId id = r->addModel(rest);
+  const ModelId id = r->scene().add(rest);
   const int w = 200, h = 200, frames = 16;
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
   const float pixelSize = 2.0f / (cam.projection[1][1] * float(h));  // object units per pixel at depth 1
@@ -585,10 +586,10 @@ TEST_F(SceneFixture, TheObjectPatternStaysOnABendingSurface) {
       double slidTexels = 0.0;
       for (int f = 0; f <= frames; ++f) {
         const float degrees = 90.0f * float(f) / float(frames);
-        ASSERT_TRUE(r->setModelDeformation(id, test::bendJoints(degrees), {}));
+        ASSERT_TRUE(r->scene().deform(id, test::bendJoints(degrees), {}));
         deformMesh(rest, test::bendJoints(degrees), {}, posed);
         const ImageRGBA8 img = test::renderImage(*r, cam, s, w, h);
-        const ImageRGBA32F eye = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, w, h);
+        const ImageRGBA32F eye = test::renderGeometry(*r, cam, FrameOutput::EyePosition, w, h);
         for (std::size_t v = 0; v < rest.positions.size(); ++v) {
           const glm::vec4 pe = cam.view * glm::vec4(posed.positions[v], 1.0f);
           const glm::vec4 c = cam.projection * pe;
@@ -637,7 +638,7 @@ TEST_F(SceneFixture, TheObjectPatternStaysOnABendingSurface) {
       // Texels are 1 to 2 pixels wide: 1.5 on average.
       std::printf("bending 90 degrees over %d frames, %s, %s pattern: %.4f of the visible surface points changed texel per frame, "
                   "slide %.3f px per point per frame (%d compared)\n",
-                  frames, pathInfo(path).name, patternSpaceName(space), share[space == PatternSpace::Object],
+                  frames, pathInfo(path).name, choiceName(space), share[space == PatternSpace::Object],
                   compared ? 1.5 * slidTexels / compared : 0.0, compared);
       ASSERT_GT(compared, 1000);
     }

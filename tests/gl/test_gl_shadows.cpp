@@ -104,8 +104,8 @@ struct Shadows : Fixture {
   CameraMatrices cam = sceneCamera();
   void SetUp() override {
     Fixture::SetUp();
-    ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
-    r->setMesh(&cube);
+    ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
+    r->scene().setOnly(&cube);
   }
   // Light 0 at `position` (model space, w = 0: a direction), set through the camera's view as
   // the viewer does.
@@ -217,7 +217,7 @@ TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
   plate[0].v = {glm::vec3(-1, 0, -1), glm::vec3(-1, 0, 1), glm::vec3(1, 0, 1)};
   plate[1].v = {glm::vec3(-1, 0, -1), glm::vec3(1, 0, 1), glm::vec3(1, 0, -1)};
   const Mesh m = meshFromTriangles(plate);
-  r->setMesh(&m);
+  r->scene().setOnly(&m);
   for (float elevation : {3.0f, 10.0f, 30.0f})
     for (float distance : {1.5f, 3.0f, 8.0f}) {
       OrbitCamera c(20.0f, 40.0f, distance);
@@ -229,7 +229,7 @@ TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
       const ImageRGBA8 plain = test::renderEntries(*r, cam, s, kSize, kSize);
       s.shadows = true;
       const ImageRGBA8 shadowed = test::renderEntries(*r, cam, s, kSize, kSize);
-      const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+      const ImageRGBA32F cover = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
       int covered = 0, differ = 0;
       for (std::size_t i = 0; i < cover.pixels.size() / 4; ++i) {
         if (cover.pixels[i * 4 + 3] == 0.0f) continue;  // the plate only
@@ -239,7 +239,7 @@ TEST_F(Shadows, NoAcneOnAPlateAtGrazingLight) {
       EXPECT_GT(covered, 500) << elevation << " deg, distance " << distance;
       EXPECT_EQ(differ, 0) << elevation << " deg, distance " << distance << ": acne on " << differ << " of " << covered;
     }
-  r->setMesh(&cube);
+  r->scene().setOnly(&cube);
 }
 
 TEST_F(Shadows, AgreeWithARayCastReference) {
@@ -249,7 +249,7 @@ TEST_F(Shadows, AgreeWithARayCastReference) {
   // the shadows' edges).
   const std::pair<const char*, Mesh> scenes[] = {{"cube over a plate", floatingCubeOverPlate()}, {"tilted torus over a plate", tiltedTorusOverPlate()}};
   for (const auto& [name, m] : scenes) {
-    r->setMesh(&m);
+    r->scene().setOnly(&m);
     for (const glm::vec3 dir : {glm::vec3(1.0f, 1.5f, 0.4f), glm::vec3(-0.6f, 1.0f, -0.8f), glm::vec3(0.2f, 1.0f, 0.1f), glm::vec3(1.0f, 0.35f, 0.2f)}) {
       const glm::vec3 toLight = glm::normalize(dir);
       light(glm::vec4(toLight, 0.0f));
@@ -258,8 +258,8 @@ TEST_F(Shadows, AgreeWithARayCastReference) {
       const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
       s.shadows = true;
       const ImageRGBA8 shadowed = test::renderImage(*r, cam, s, kSize, kSize);
-      const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-      const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+      const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+      const ImageRGBA32F nrm = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
       const test::ShadowAgreement a = test::compareShadows(m, toLight, cam, pos, nrm, plain, shadowed);
       EXPECT_GT(a.compared, 8000u);
       EXPECT_GT(a.shadowed, 200u) << "the scene must have shadows to compare";
@@ -269,7 +269,7 @@ TEST_F(Shadows, AgreeWithARayCastReference) {
                   dir.z, 100.0 * a.agreement, std::size_t(a.compared), std::size_t(a.shadowed));
     }
   }
-  r->setMesh(&cube);
+  r->scene().setOnly(&cube);
 }
 
 TEST_F(Shadows, GpuAndCpuPerTriangleEntriesAgree) {
@@ -277,7 +277,7 @@ TEST_F(Shadows, GpuAndCpuPerTriangleEntriesAgree) {
   // where a triangle's tone sits on a boundary between two entries.
   auto bunny = loadMesh(test::sourcePath("models/bunny.obj"));
   ASSERT_TRUE(bunny) << bunny.error();
-  r->setMesh(&*bunny);
+  r->scene().setOnly(&*bunny);
   const CameraMatrices view = test::testCamera(1.0f);
   for (bool twoSided : {false, true}) {
     ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, twoSided ? 1 : 0));
@@ -286,9 +286,9 @@ TEST_F(Shadows, GpuAndCpuPerTriangleEntriesAgree) {
     cpu.triangleLighting = TriangleLighting::Cpu;
     gpu.triangleLighting = TriangleLighting::Gpu;
     (void)test::renderImage(*r, view, cpu, 64, 64);
-    const std::vector<std::uint8_t> onCpu = r->triangleShading().entry;
+    const std::vector<std::uint8_t> onCpu = r->scene().first()->triangles().shading().entry;
     (void)test::renderImage(*r, view, gpu, 64, 64);
-    const std::vector<std::uint8_t> onGpu = r->triangleShading().entry;
+    const std::vector<std::uint8_t> onGpu = r->scene().first()->triangles().shading().entry;
     ASSERT_EQ(onCpu.size(), bunny->triangleCount());
     ASSERT_EQ(onGpu.size(), onCpu.size());
     std::size_t differ = 0, far = 0;
@@ -299,7 +299,7 @@ TEST_F(Shadows, GpuAndCpuPerTriangleEntriesAgree) {
     EXPECT_LE(double(differ), 0.005 * double(onCpu.size())) << (twoSided ? "two-sided" : "one-sided");
     EXPECT_EQ(far, 0u);  // never more than the neighbouring entry
   }
-  r->setMesh(&cube);
+  r->scene().setOnly(&cube);
 }
 
 TEST_F(Shadows, MapsAreRedrawnOnlyWhenTheLightMovesRelativeToTheModel) {
@@ -345,13 +345,13 @@ Mesh innerCorner() {
 
 TEST_F(Shadows, OcclusionIsLowerInAConcaveCornerThanOnAConvexOne) {
   const Mesh corner = innerCorner();
-  r->setMesh(&corner);
+  r->scene().setOnly(&corner);
   RenderSettings s;
   s.occlusion = true;
   (void)test::renderImage(*r, cam, s, 64, 64);
-  ASSERT_NE(r->occlusionBake(), nullptr);
-  ASSERT_TRUE(r->occlusionBake()->done());
-  const std::vector<float>& ao = r->occlusionBake()->values();
+  ASSERT_NE(r->scene().first()->occlusionBake(), nullptr);
+  ASSERT_TRUE(r->scene().first()->occlusionBake()->done());
+  const std::vector<float>& ao = r->scene().first()->occlusionBake()->values();
   ASSERT_EQ(ao.size(), corner.positions.size());
   float inCorner = 1.0f, open = 0.0f;
   for (std::size_t i = 0; i < ao.size(); ++i) {
@@ -363,15 +363,15 @@ TEST_F(Shadows, OcclusionIsLowerInAConcaveCornerThanOnAConvexOne) {
   EXPECT_LT(inCorner, 0.75f);
   EXPECT_GT(open, inCorner + 0.1f);
   // A cube's corners and faces are convex: open to their whole hemisphere.
-  r->setMesh(&cube);
+  r->scene().setOnly(&cube);
   (void)test::renderImage(*r, cam, s, 64, 64);
-  ASSERT_TRUE(r->occlusionBake() && r->occlusionBake()->done());
-  for (float a : r->occlusionBake()->values()) EXPECT_GT(a, 0.95f);
+  ASSERT_TRUE(r->scene().first()->occlusionBake() && r->scene().first()->occlusionBake()->done());
+  for (float a : r->scene().first()->occlusionBake()->values()) EXPECT_GT(a, 0.95f);
   // And the frame gets darker where it is occluded, in every path (the per-triangle paths scale
   // each face by its vertices' mean occlusion).
   // (Measured in tone alone: a grey ramp, no pattern to add noise to the sums.)
-  r->setMesh(&corner);
-  ASSERT_TRUE(r->setPalette(test::greyRamp(16)));
+  r->scene().setOnly(&corner);
+  ASSERT_TRUE(r->palettes().setMain(test::greyRamp(16)));
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Vertex, RenderPath::Smooth, RenderPath::Triangle, RenderPath::Stencil}) {
     RenderSettings off, on = s;
     off.path = on.path = path;
@@ -384,7 +384,7 @@ TEST_F(Shadows, OcclusionIsLowerInAConcaveCornerThanOnAConvexOne) {
     }
     EXPECT_GT(inkDark, (path == RenderPath::Smooth ? 1.003 : 1.03) * inkPlain) << pathInfo(path).name;  // smooth: the blend softens it
   }
-  r->setMesh(&cube);
+  r->scene().setOnly(&cube);
 }
 
 TEST_F(Shadows, ControlPalettesFallWhereRaysAreBlocked) {
@@ -392,26 +392,26 @@ TEST_F(Shadows, ControlPalettesFallWhereRaysAreBlocked) {
   // palette, black shadow palette: the frame darkens exactly where a ray toward the light from
   // the surface hits the scene (the ray-cast reference of AgreeWithARayCastReference).
   const Mesh m = floatingCubeOverPlate();
-  r->setMesh(&m);
-  ASSERT_TRUE(r->setPalette(solidPalette("white", {255, 255, 255})));
+  r->scene().setOnly(&m);
+  ASSERT_TRUE(r->palettes().setMain(solidPalette("white", {255, 255, 255})));
   for (const glm::vec3 dir : {glm::vec3(1.0f, 1.5f, 0.4f), glm::vec3(-0.6f, 1.0f, -0.8f)}) {
     const glm::vec3 toLight = glm::normalize(dir);
     light(glm::vec4(toLight, 0.0f));
     RenderSettings s;
     s.shadows = true;
-    r->clearControlPalette(ControlParameter::Shadow);
+    r->palettes().clearControl(ControlParameter::Shadow);
     const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
-    ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, solidPalette("black", {0, 0, 0})));
+    ASSERT_TRUE(r->palettes().setControl(ControlParameter::Shadow, solidPalette("black", {0, 0, 0})));
     const ImageRGBA8 drawn = test::renderImage(*r, cam, s, kSize, kSize);
-    const ImageRGBA32F pos = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
-    const ImageRGBA32F nrm = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+    const ImageRGBA32F pos = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+    const ImageRGBA32F nrm = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
     const test::ShadowAgreement a = test::compareShadows(m, toLight, cam, pos, nrm, plain, drawn);
     EXPECT_GT(a.shadowed, 200u);
     EXPECT_GE(a.agreement, 0.99) << "light " << dir.x << ", " << dir.y << ", " << dir.z;
   }
-  r->clearControlPalette(ControlParameter::Shadow);
-  r->setMesh(&cube);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->palettes().clearControl(ControlParameter::Shadow);
+  r->scene().setOnly(&cube);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
 }
 
 TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
@@ -419,12 +419,12 @@ TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
   // channels are the three weights, which must sum to 1 (within the 8-bit blends' rounding),
   // in every palette path. The per-pixel paths show both parameters.
   const Mesh m = floatingCubeOverPlate();
-  r->setMesh(&m);
-  ASSERT_TRUE(r->setPalette(solidPalette("blue", {0, 0, 255})));
-  ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, solidPalette("red", {255, 0, 0})));
-  ASSERT_TRUE(r->setControlPalette(ControlParameter::Occlusion, solidPalette("green", {0, 255, 0})));
+  r->scene().setOnly(&m);
+  ASSERT_TRUE(r->palettes().setMain(solidPalette("blue", {0, 0, 255})));
+  ASSERT_TRUE(r->palettes().setControl(ControlParameter::Shadow, solidPalette("red", {255, 0, 0})));
+  ASSERT_TRUE(r->palettes().setControl(ControlParameter::Occlusion, solidPalette("green", {0, 255, 0})));
   light(glm::vec4(glm::normalize(glm::vec3(1.0f, 1.5f, 0.4f)), 0.0f));
-  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyeNormal, kSize, kSize);
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, FrameOutput::EyeNormal, kSize, kSize);
   for (RenderPath path : {RenderPath::Pixel, RenderPath::Smooth, RenderPath::Vertex, RenderPath::Triangle, RenderPath::Stencil}) {
     SCOPED_TRACE(pathInfo(path).name);
     RenderSettings s;
@@ -447,10 +447,10 @@ TEST_F(Shadows, ControlPalettesWeighAsAPartitionOfUnityInEveryPath) {
       EXPECT_GT(occluded, 100);
     }
   }
-  r->clearControlPalette(ControlParameter::Shadow);
-  r->clearControlPalette(ControlParameter::Occlusion);
-  r->setMesh(&cube);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->palettes().clearControl(ControlParameter::Shadow);
+  r->palettes().clearControl(ControlParameter::Occlusion);
+  r->scene().setOnly(&cube);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
 }
 
 TEST_F(Shadows, AControlPaletteLikeTheMainOneChangesNothing) {
@@ -458,7 +458,7 @@ TEST_F(Shadows, AControlPaletteLikeTheMainOneChangesNothing) {
   // one, blended over it, leaves the frame as it was (within the blend's rounding), two-sided
   // lighting included (the per-vertex path lights both sides). The ground's grid gives the
   // per-vertex path vertices in the shadow.
-  ASSERT_TRUE(r->setPalette(test::greyRamp(16)));
+  ASSERT_TRUE(r->palettes().setMain(test::greyRamp(16)));
   light({1.0f, 1.0f, 0.3f, 0.0f});  // the cube's shadow across the ground's grid
   for (int twoSided : {0, 1}) {
     ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, twoSided));
@@ -467,9 +467,9 @@ TEST_F(Shadows, AControlPaletteLikeTheMainOneChangesNothing) {
       RenderSettings s;
       s.path = path;
       s.shadows = s.ground = true;
-      r->clearControlPalette(ControlParameter::Shadow);
+      r->palettes().clearControl(ControlParameter::Shadow);
       const ImageRGBA8 plain = test::renderImage(*r, cam, s, kSize, kSize);
-      ASSERT_TRUE(r->setControlPalette(ControlParameter::Shadow, test::greyRamp(16)));
+      ASSERT_TRUE(r->palettes().setControl(ControlParameter::Shadow, test::greyRamp(16)));
       const ImageRGBA8 layered = test::renderImage(*r, cam, s, kSize, kSize);
       int off = 0;
       for (std::size_t i = 0; i < plain.pixels.size(); ++i) off += std::abs(int(plain.pixels[i]) - int(layered.pixels[i])) > 2;
@@ -477,8 +477,8 @@ TEST_F(Shadows, AControlPaletteLikeTheMainOneChangesNothing) {
     }
   }
   ASSERT_TRUE(r->lighting().LightModeli(GL_LIGHT_MODEL_TWO_SIDE, 0));
-  r->clearControlPalette(ControlParameter::Shadow);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->palettes().clearControl(ControlParameter::Shadow);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
 }
 
 TEST_F(Shadows, ScreenOcclusionDarkensConcaveCornersAndLeavesConvexShapesAlone) {
@@ -486,7 +486,7 @@ TEST_F(Shadows, ScreenOcclusionDarkensConcaveCornersAndLeavesConvexShapesAlone) 
   // per-pixel paths the inner corner's floor next to the wall gets a darker entry than its far
   // edge, which it does not without occlusion; a cube, convex everywhere, is left as it was;
   // and the ground just in front of a cube standing on it darkens.
-  ASSERT_TRUE(r->setPalette(test::greyRamp(16)));
+  ASSERT_TRUE(r->palettes().setMain(test::greyRamp(16)));
   const Mesh corner = innerCorner();
   RenderSettings on;
   on.occlusion = true;
@@ -501,13 +501,13 @@ TEST_F(Shadows, ScreenOcclusionDarkensConcaveCornersAndLeavesConvexShapesAlone) 
     RenderSettings off;
     off.path = on.path = path;
     if (path == RenderPath::Pixel) {  // entries (the smooth path's selection is a blend)
-      r->setMesh(&corner);
+      r->scene().setOnly(&corner);
       const auto [plainNear, plainFar] = nearAndFar(off, {0.0f, 0.0f, 0.04f}, {0.0f, 0.0f, 0.9f});
       EXPECT_EQ(plainNear, plainFar);
       const auto [near, far] = nearAndFar(on, {0.0f, 0.0f, 0.04f}, {0.0f, 0.0f, 0.9f});
       EXPECT_GE(near, far + 2) << "floor by the wall " << near << ", at its far edge " << far;
     }
-    r->setMesh(&cube);
+    r->scene().setOnly(&cube);
     const ImageRGBA8 plain = test::renderImage(*r, cam, off, 128, 128), screen = test::renderImage(*r, cam, on, 128, 128);
     EXPECT_LT(test::countDiffering(plain, screen), 128 * 128 / 100) << "a convex cube is occluded";
   }
@@ -519,7 +519,7 @@ TEST_F(Shadows, ScreenOcclusionDarkensConcaveCornersAndLeavesConvexShapesAlone) 
   s.occlusion = false;
   const auto [flatNear, flatFar] = nearAndFar(s, {0.0f, -0.5f, 0.6f}, {0.0f, -0.5f, 1.6f});
   EXPECT_EQ(flatNear, flatFar);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
 }
 
 TEST_F(Shadows, OcclusionBakesInStepsWithABudget) {
@@ -527,12 +527,12 @@ TEST_F(Shadows, OcclusionBakesInStepsWithABudget) {
   RenderSettings s;
   s.occlusion = true;
   (void)test::renderImage(*r, cam, s, 32, 32);
-  ASSERT_NE(r->occlusionBake(), nullptr);
-  EXPECT_EQ(r->occlusionBake()->directionsDone(), 1);
-  EXPECT_TRUE(r->occlusionBake()->values().empty());
-  for (int f = 1; f < r->occlusionBake()->directions(); ++f) (void)test::renderImage(*r, cam, s, 32, 32);
-  EXPECT_TRUE(r->occlusionBake()->done());
-  EXPECT_EQ(r->occlusionBake()->values().size(), cube.positions.size());
+  ASSERT_NE(r->scene().first()->occlusionBake(), nullptr);
+  EXPECT_EQ(r->scene().first()->occlusionBake()->directionsDone(), 1);
+  EXPECT_TRUE(r->scene().first()->occlusionBake()->values().empty());
+  for (int f = 1; f < r->scene().first()->occlusionBake()->directions(); ++f) (void)test::renderImage(*r, cam, s, 32, 32);
+  EXPECT_TRUE(r->scene().first()->occlusionBake()->done());
+  EXPECT_EQ(r->scene().first()->occlusionBake()->values().size(), cube.positions.size());
   r->setOcclusionBudget(0.0);
 }
 

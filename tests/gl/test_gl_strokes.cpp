@@ -26,8 +26,8 @@ struct StrokeFixture : test::RendererFixture {
   Mesh sphere = icosphere(4);
   void SetUp() override {
     test::RendererFixture::SetUp();
-    ASSERT_TRUE(r->setPalette(blackPalette()));
-    r->setMesh(&sphere);
+    ASSERT_TRUE(r->palettes().setMain(blackPalette()));
+    r->scene().setOnly(&sphere);
   }
   static RenderSettings strokes() {
     RenderSettings s;
@@ -67,7 +67,7 @@ TEST_F(StrokeFixture, SameFrameTwiceIsTheSameImage) {
   const ImageRGBA8 plain = test::renderImage(*r, at(3.0f), off, kSize, kSize);
   EXPECT_EQ(test::countDiffering(a, b), 0);
   EXPECT_GT(test::countDiffering(a, plain), kSize * kSize / 20);
-  EXPECT_GT(r->strokeCount(), 4000u);
+  EXPECT_GT(r->scene().strokeCount(), 4000u);
 }
 
 TEST_F(StrokeFixture, ZoomingOutKeepsTheCoveredShare) {

@@ -26,7 +26,7 @@ constexpr int kSize = 256;
 // Palette entries covering at least 0.5% of the model's pixels.
 int levelsUsed(Renderer& r, const CameraMatrices& cam, const RenderSettings& s) {
   const ImageRGBA8 entries = test::renderEntries(r, cam, s, kSize, kSize);
-  const ImageRGBA32F cover = test::renderGeometry(r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F cover = test::renderGeometry(r, cam, FrameOutput::EyePosition, kSize, kSize);
   std::map<int, int> count;
   int model = 0;
   for (std::size_t i = 0; i < std::size_t(kSize * kSize); ++i) {
@@ -42,8 +42,8 @@ int levelsUsed(Renderer& r, const CameraMatrices& cam, const RenderSettings& s) 
 TEST_F(ToneFixture, TheSpiderUsesFiveLevelsOrMoreAndTheFitNeverPumps) {
   auto spider = loadMesh("/usr/share/assimp/models/OBJ/spider.obj");
   ASSERT_TRUE(spider) << spider.error();
-  r->setMesh(&*spider);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().setOnly(&*spider);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   RenderSettings s;
   s.path = RenderPath::Triangle;
   const CameraMatrices cam = test::testCamera(1.0f);
@@ -79,11 +79,11 @@ TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
   Mesh dark = icosphere(4);
   dark.colours.assign(dark.positions.size(), glm::vec3(0.12f));  // albedo 0.12: a dark object
   const glm::mat4 scale = glm::scale(glm::mat4(1.0f), glm::vec3(0.45f));
-  r->addModel(bright, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
-  const ModelId darkId = r->addModel(dark, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
+  r->scene().add(bright, glm::translate(glm::mat4(1.0f), glm::vec3(-0.5f, 0.0f, 0.0f)) * scale);
+  const ModelId darkId = r->scene().add(dark, glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, 0.0f, 0.0f)) * scale);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
   const CameraMatrices cam = test::testCamera(1.0f, 0.0f, 10.0f);
-  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   // Levels covering at least 2% of each object's pixels (left: the bright one, right: the dark).
   const auto levels = [&](const RenderSettings& s, int& left, int& right) {
     ImageRGBA8 entries;
@@ -117,12 +117,12 @@ TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
   EXPECT_GT(ownDark, sceneDark);
   EXPECT_GE(ownBright, sceneBright - 1);
   // Orbiting 40 frames at 3 degrees, the dark object's own range moves little per frame.
-  ASSERT_TRUE(r->model(darkId)->toneTarget);
-  glm::vec2 last = *r->model(darkId)->toneTarget;
+  ASSERT_TRUE(r->scene().find(darkId)->toneTarget);
+  glm::vec2 last = *r->scene().find(darkId)->toneTarget;
   float worst = 0.0f;
   for (int f = 0; f < 40; ++f) {
     (void)test::renderImage(*r, test::testCamera(1.0f, 3.0f * float(f), 10.0f), s, 64, 64);
-    const glm::vec2 now = *r->model(darkId)->toneTarget;
+    const glm::vec2 now = *r->scene().find(darkId)->toneTarget;
     worst = std::max(worst, std::max(std::abs(now.x - last.x), std::abs(now.y - last.y)));
     last = now;
   }
@@ -141,13 +141,13 @@ TEST_F(ToneFixture, PerObjectFitsEachObjectToItsOwnTones) {
 TEST_F(ToneFixture, ThresholdKeepsStrokesWholeAtTheSameToneAndRampsAreBlended) {
   auto bunny = loadMesh(test::sourcePath("models/bunny.obj"));
   ASSERT_TRUE(bunny) << bunny.error();
-  r->setMesh(&*bunny);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("crosshatch")));
-  ASSERT_TRUE(r->palette()->hasToneThresholds()) << r->palette()->toneThresholdNote();
+  r->scene().setOnly(&*bunny);
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("crosshatch")));
+  ASSERT_TRUE(r->palettes().main()->hasToneThresholds()) << r->palettes().main()->toneThresholdNote();
   RenderSettings s;
   s.path = RenderPath::Smooth;
   const CameraMatrices cam = test::testCamera(1.0f);
-  const ImageRGBA32F cover = test::renderGeometry(*r, cam, GeometryOutput::EyePosition, kSize, kSize);
+  const ImageRGBA32F cover = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
   const ImageRGBA8 mixed = test::renderImage(*r, cam, s, kSize, kSize);
   s.toneBlend = ToneBlend::Threshold;
   const ImageRGBA8 crisp = test::renderImage(*r, cam, s, kSize, kSize);
@@ -179,8 +179,8 @@ TEST_F(ToneFixture, ThresholdKeepsStrokesWholeAtTheSameToneAndRampsAreBlended) {
   EXPECT_LT(crispGrey, levelGrey * 1.05);
   EXPECT_GT(mixGrey, levelGrey * 1.05);
   EXPECT_NEAR(crispLight, mixLight, 0.02);
-  ASSERT_TRUE(r->setPalette(test::shippedPalette("gooch")));
-  EXPECT_FALSE(r->palette()->hasToneThresholds());
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("gooch")));
+  EXPECT_FALSE(r->palettes().main()->hasToneThresholds());
   s.match = MatchMode::Intensity;
   const ImageRGBA8 rampCrisp = test::renderImage(*r, cam, s, kSize, kSize);
   s.toneBlend = ToneBlend::Mix;

@@ -25,7 +25,7 @@ using test::countDiffering;
 TEST_F(Fixture, FailedPaletteLoadKeepsTheCurrentOne) {
   ViewerState state;
   const Mesh mesh = test::icosphere(3);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   ASSERT_TRUE(state.loadPalette(sourcePath("palettes/cel/cel.palette"), *r));
   RenderSettings s;
   s.path = RenderPath::Pixel;
@@ -54,7 +54,7 @@ TEST_F(StyleFixture, EveryShippedStyleAppliesAndMatchesItsGolden) {
   ASSERT_GE(styles.size(), 7u);
   auto mesh = loadMesh(test::sourcePath("models/teapot.obj"));
   ASSERT_TRUE(mesh);
-  r->setMesh(&*mesh);
+  r->scene().setOnly(&*mesh);
   for (const std::string& file : styles) {
     ViewerState state;
     ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
@@ -65,14 +65,14 @@ TEST_F(StyleFixture, EveryShippedStyleAppliesAndMatchesItsGolden) {
     const std::string name = std::filesystem::path(file).stem().string();
     test::expectGolden("style-" + name, test::renderImage(*r, test::testCamera(1.0f), state.settings, 160, 160), 0.005, 0.004);
     ASSERT_TRUE(r->lighting().setToneModel(ToneModel::OpenGL, r->lighting().toneParameters()));
-    r->clearControlPalette(ControlParameter::Shadow);
-    r->clearControlPalette(ControlParameter::Occlusion);
+    r->palettes().clearControl(ControlParameter::Shadow);
+    r->palettes().clearControl(ControlParameter::Occlusion);
   }
 }
 
 TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   const Mesh mesh = test::icosphere(3);
-  r->setMesh(&mesh);
+  r->scene().setOnly(&mesh);
   ViewerState state;
   ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
   Result<Style> technical = loadStyle(resolveStyle("technical"));
@@ -105,7 +105,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   EXPECT_FALSE(other.settings.occlusion);
   EXPECT_EQ(std::filesystem::path(other.shadowPalette).filename(), "stipple.palette");
   EXPECT_TRUE(other.occlusionPalette.empty());
-  EXPECT_TRUE(r->hasControlPalette(ControlParameter::Shadow));
+  EXPECT_TRUE(r->palettes().hasControl(ControlParameter::Shadow));
   // Bad styles: the reason with file and line, and the look as it was.
   const std::string before = styleText(other, *r, "x");
   for (const auto& [text, line] : std::vector<std::pair<std::string, int>>{{"name A\nfrobnicate 3\n", 2},
@@ -129,7 +129,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   ASSERT_TRUE(brokenControl);
   EXPECT_FALSE(applyStyle(*brokenControl, other, *r));
   EXPECT_EQ(styleText(other, *r, "x"), before);
-  r->clearControlPalette(ControlParameter::Shadow);
+  r->palettes().clearControl(ControlParameter::Shadow);
 }
 
 }  // namespace
@@ -163,7 +163,7 @@ TEST_F(SceneStateFixture, SeveralFilesAreOneSceneFittedToTheUnitSphere) {
   const std::vector<std::string> files = {sourcePath("models/bunny.obj"), sourcePath("models/teapot.obj")};
   ASSERT_TRUE(state.loadModels(files, false, *r));
   ASSERT_EQ(state.scene.objects().size(), 2u);
-  EXPECT_EQ(r->modelCount(), 2u);
+  EXPECT_EQ(r->scene().size(), 2u);
   EXPECT_NEAR(sceneRadius(state), 1.0f, 0.02f);
   // In a row the two stand apart: the bunny left of the teapot, neither overlapping the other.
   state.scene.setLayout(Layout::Row, *r);
@@ -180,7 +180,7 @@ TEST_F(SceneStateFixture, SeveralFilesAreOneSceneFittedToTheUnitSphere) {
   EXPECT_FALSE(state.loadModels({sourcePath("models/teapot.obj"), d.write("broken.obj", "v 0 0 0\n")}, true, *r));
   EXPECT_FALSE(state.loadModels({d.write("broken.glb", "glTF nothing")}, false, *r));
   ASSERT_EQ(state.scene.objects().size(), 2u);
-  EXPECT_EQ(r->modelCount(), 2u);
+  EXPECT_EQ(r->scene().size(), 2u);
   EXPECT_EQ(countDiffering(before, renderImage(*r, testCamera(1.0f), s, 96, 96)), 0);
   // Picking: the ray through the teapot's centre on screen meets the teapot; the corner of
   // the view meets nothing; framing the picked object looks at its centre.

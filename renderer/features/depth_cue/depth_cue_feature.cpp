@@ -48,13 +48,14 @@ class DepthCueFeature final : public Feature {
     };
     f.scene.forEach([&](Model& m) { draw(m.gpu(), f.camera.view * m.transform()); });
     if (f.settings.ground)
-      if (Model* g = f.ground()) draw(g->gpu(), f.camera.view);
+      if (Model* g = f.scene.ground()) draw(g->gpu(), f.camera.view);
     return okStatus();
   }
 };
 
 }  // namespace
 
-std::unique_ptr<Feature> makeDepthCueFeature() { return std::make_unique<DepthCueFeature>(); }
+void addDepthCueFeatures(std::vector<std::unique_ptr<Feature>>& features) { features.push_back(std::make_unique<DepthCueFeature>()); }
+void DepthCueNeeds(const RenderSettings&, FrameNeeds&) {}
 
 }  // namespace npr

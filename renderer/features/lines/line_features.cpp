@@ -9,7 +9,7 @@
 #include "renderer/features/feature.h"
 #include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/lines/image_edges_pass.h"
-#include "renderer/lines/intersection_lines.h"
+#include "renderer/scene/scene_lines.h"
 #include "renderer/lines/line_pass.h"
 #include "renderer/lines/stroke_textures.h"
 
@@ -125,13 +125,16 @@ class IntersectionLinesFeature final : public Feature {
 
 }  // namespace
 
-std::unique_ptr<Feature> makeIntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures) {
-  return std::make_unique<IntersectionLinesFeature>(std::move(textures));
+void addLinesFeatures(std::vector<std::unique_ptr<Feature>>& features) {
+  features.push_back(std::make_unique<OutlinesFeature>());
+  features.push_back(std::make_unique<ImageEdgesFeature>());
+  // Line sets' stroke textures, loaded once for both kinds of line.
+  auto strokeTextures = std::make_shared<StrokeTextures>();
+  features.push_back(std::make_unique<FeatureLinesFeature>(strokeTextures));
+  features.push_back(std::make_unique<IntersectionLinesFeature>(strokeTextures));
 }
-std::unique_ptr<Feature> makeOutlinesFeature() { return std::make_unique<OutlinesFeature>(); }
-std::unique_ptr<Feature> makeImageEdgesFeature() { return std::make_unique<ImageEdgesFeature>(); }
-std::unique_ptr<Feature> makeFeatureLinesFeature(std::shared_ptr<StrokeTextures> textures) {
-  return std::make_unique<FeatureLinesFeature>(std::move(textures));
-}
+
+// Object-space lines are found on the CPU's pose.
+void LinesNeeds(const RenderSettings& s, FrameNeeds& needs) { needs.cpuPose = needs.cpuPose || s.lines.drawnKinds() != 0; }
 
 }  // namespace npr

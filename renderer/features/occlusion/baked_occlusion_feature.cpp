@@ -5,7 +5,8 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
-#include "renderer/paths/render_pass.h"
+#include "renderer/frame/frame_context.h"
+#include "renderer/lighting/occlusion_factor.h"
 
 namespace npr {
 namespace {
@@ -45,7 +46,7 @@ class BakedOcclusionFeature final : public Feature, SurfaceInput {
     variant.occlusion = variant.shading != gl::MeshShading::LitTextured && frame.gpuMesh.hasOcclusion();
   }
   void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
-    if (variant.occlusion) program.set("uOcclusionStrength", std::clamp(frame.settings.occlusionStrength, 0.0f, 1.0f));
+    if (variant.occlusion) program.set("uOcclusionStrength", occlusionStrength(frame.settings.occlusionStrength));
   }
 };
 

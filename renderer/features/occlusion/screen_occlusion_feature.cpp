@@ -5,9 +5,10 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
-#include "renderer/paths/lit_mesh_program.h"
-#include "renderer/paths/render_pass.h"
-#include "renderer/shadows/screen_occlusion_pass.h"
+#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/frame/frame_context.h"
+#include "renderer/features/occlusion/screen_occlusion_pass.h"
+#include "renderer/lighting/occlusion_factor.h"
 
 namespace npr {
 namespace {
@@ -22,7 +23,7 @@ class ScreenOcclusionFeature final : public Feature, SurfaceInput {
     ready_ = false;
     std::vector<PlacedMesh> meshes = f.scene.placed(f.camera);
     if (f.settings.ground)
-      if (Model* g = f.ground()) meshes.push_back({&g->gpu(), f.camera});
+      if (Model* g = f.scene.ground()) meshes.push_back({&g->gpu(), f.camera});
     const float sceneRadius = f.scene.bounds().w;
     const float radius = std::clamp(f.settings.screenOcclusionRadius, 0.01f, 10.0f) * (sceneRadius > 0.0f ? sceneRadius : 1.0f);
     if (Status st = pass_.draw(meshes, f.camera, radius, f.viewport, f.programs, f.emptyVao, f.stats); !st) return st;
@@ -41,7 +42,7 @@ class ScreenOcclusionFeature final : public Feature, SurfaceInput {
   void bind(gl::ShaderProgram& program, const gl::MeshProgram& variant, const FrameContext& frame) const override {
     if (!variant.screenOcclusion) return;
     pass_.bind(program, frame.viewport);
-    program.set("uOcclusionStrength", std::clamp(frame.settings.occlusionStrength, 0.0f, 1.0f));
+    program.set("uOcclusionStrength", occlusionStrength(frame.settings.occlusionStrength));
   }
 
  private:

@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
-#include "renderer/paths/lit_mesh_program.h"
-#include "renderer/paths/render_pass.h"
+#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/frame/frame_context.h"
 #include "renderer/shadows/ground_shadow_pass.h"
 #include "renderer/shadows/shadow_maps.h"
 
@@ -18,7 +18,7 @@ class ShadowsFeature final : public Feature, SurfaceInput {
   bool active(const FrameView& f) const override { return f.settings.shadows && !f.scene.empty(); }
   Status prepare(FrameView& f) override {
     ready_ = false;
-    const Model* ground = f.settings.ground ? f.ground() : nullptr;
+    const Model* ground = f.settings.ground ? f.scene.ground() : nullptr;
     ShadowScene scene;
     f.scene.forEach(
         [&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform(), m.materials().coverage() ? &m.materials() : nullptr}); });
@@ -67,6 +67,7 @@ class ShadowsFeature final : public Feature, SurfaceInput {
 
 }  // namespace
 
-std::unique_ptr<Feature> makeShadowsFeature() { return std::make_unique<ShadowsFeature>(); }
+void addShadowsFeatures(std::vector<std::unique_ptr<Feature>>& features) { features.push_back(std::make_unique<ShadowsFeature>()); }
+void ShadowsNeeds(const RenderSettings&, FrameNeeds&) {}
 
 }  // namespace npr

@@ -25,6 +25,8 @@ class StrokesFeature final : public Feature {
 
 }  // namespace
 
-std::unique_ptr<Feature> makeStrokesFeature() { return std::make_unique<StrokesFeature>(); }
+void addStrokesFeatures(std::vector<std::unique_ptr<Feature>>& features) { features.push_back(std::make_unique<StrokesFeature>()); }
+// Strokes are seeded on the CPU's pose.
+void StrokesNeeds(const RenderSettings& s, FrameNeeds& needs) { needs.cpuPose = needs.cpuPose || s.strokes.on; }
 
 }  // namespace npr

@@ -1,5 +1,5 @@
 // Node animation: sampling and posing (see node_animation.h).
-#include "renderer/animation/node_animation.h"
+#include "renderer/mesh/node_animation.h"
 
 #include <algorithm>
 #include <cmath>

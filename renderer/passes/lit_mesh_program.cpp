@@ -1,9 +1,9 @@
 // GPU-lit mesh programs (see lit_mesh_program.h).
-#include "renderer/paths/lit_mesh_program.h"
+#include "renderer/passes/lit_mesh_program.h"
 
 
 #include "renderer/lighting/lighting_uniforms.h"
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
 
 namespace npr {
 

@@ -1,12 +1,12 @@
 // The mesh's appearance on the GPU (see gpu_materials.h).
-#include "renderer/mesh/gpu_materials.h"
+#include "renderer/materials/gpu_materials.h"
 
 #include <algorithm>
 #include <cstring>
 
 #include "renderer/core/image_io.h"
 #include "renderer/gl/texture_units.h"
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
 
 namespace npr {
 namespace {

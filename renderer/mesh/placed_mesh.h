@@ -4,10 +4,11 @@
 #pragma once
 
 #include "renderer/core/camera.h"
-#include "renderer/mesh/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
 
 namespace npr {
+
+class GpuMaterials;
 
 struct PlacedMesh {
   const GpuMesh* mesh;

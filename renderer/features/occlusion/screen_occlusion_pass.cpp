@@ -1,5 +1,5 @@
 // Screen-space ambient occlusion (see screen_occlusion_pass.h).
-#include "renderer/shadows/screen_occlusion_pass.h"
+#include "renderer/features/occlusion/screen_occlusion_pass.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +10,8 @@
 
 namespace npr {
 namespace {
+
+constexpr int kKernelSize = 16;  // samples per pixel (screen_occlusion.frag's KERNEL_SIZE)
 
 // Points in the unit hemisphere around +z: directions cosine-weighted (a disc sampled evenly,
 // lifted onto the hemisphere: Malley's method, so the estimate weighs directions as the bake
@@ -38,7 +40,7 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
   if (geometry_.resize(size, GL_RGBA16F)) ++stats.bufferUploads;
   if (raw_.resize(size, GL_R16F)) ++stats.bufferUploads;
   if (blurred_.resize(size, GL_RG32F)) ++stats.bufferUploads;  // occlusion, linear depth
-  if (kernel_.empty()) kernel_ = hemisphereKernel(gl::ScreenOcclusionProgram::kKernelSize);
+  if (kernel_.empty()) kernel_ = hemisphereKernel(kKernelSize);
   Status status = okStatus();
   auto restore = [&] {
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
@@ -48,8 +50,9 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
   geometry_.bindAndClear();
   for (const PlacedMesh& m : meshes)
     if (status) status = drawGeometry(m, GeometryOutput::EyeNormal, programs, stats);
-  Result<gl::ShaderProgram*> estimate = programs.get(gl::ScreenOcclusionProgram{false}, stats.shaderBuilds);
-  Result<gl::ShaderProgram*> blur = programs.get(gl::ScreenOcclusionProgram{true}, stats.shaderBuilds);
+  const std::string kernel = "KERNEL_SIZE " + std::to_string(kKernelSize);
+  Result<gl::ShaderProgram*> estimate = programs.get(gl::FeatureProgram{"fullscreen.vert", "screen_occlusion.frag", {kernel}}, stats.shaderBuilds);
+  Result<gl::ShaderProgram*> blur = programs.get(gl::FeatureProgram{"fullscreen.vert", "screen_occlusion.frag", {kernel, "BLUR"}}, stats.shaderBuilds);
   if (status && !estimate) status = Error{estimate.error()};
   if (status && !blur) status = Error{blur.error()};
   if (!status) {

@@ -11,8 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/palette/palette.h"
-#include "renderer/paths/path_table.h"
+#include "renderer/settings/choices.h"
 
 namespace npr {
 
@@ -20,8 +19,6 @@ namespace npr {
 // edges as wide quads, the faces pulled towards the eye in proportion to depth, or the faces
 // fattened on screen (Raskar and Cohen; even widths, the default).
 enum class OutlineMethod { Edges, Offset, Fatten };
-const char* outlineMethodName(OutlineMethod m);
-std::optional<OutlineMethod> parseOutlineMethod(const std::string& s);
 
 // Float text that parses back to the same float, as short as it can be (style files, the
 // settings reference, line sets).
@@ -169,15 +166,6 @@ inline std::uint8_t LineSettings::namedKinds() const {
 // object's motion while staying flat (patterns/pattern_tracker.h), or glued to the surface in
 // object space (triplanar, octaves by screen scale: shaders/pattern.glsl).
 enum class PatternSpace { Screen, Anchored, Object };
-inline const char* patternSpaceName(PatternSpace p) {
-  return p == PatternSpace::Anchored ? "anchored" : p == PatternSpace::Object ? "object" : "screen";
-}
-inline std::optional<PatternSpace> parsePatternSpace(const std::string& s) {
-  if (s == "screen") return PatternSpace::Screen;
-  if (s == "anchored") return PatternSpace::Anchored;
-  if (s == "object") return PatternSpace::Object;
-  return std::nullopt;
-}
 
 // Where hatching strokes point (`--orient`): the texture's own angle (the original), along the
 // surface's curvature (orientation/direction_field.h), across the light's gradient on the
@@ -236,7 +224,7 @@ enum class TriangleLighting { Auto, Cpu, Gpu };
 enum class PosePlacement { Auto, Cpu, Gpu };
 
 // Where ambient occlusion comes from: baked per vertex once per mesh (shadows/occlusion_bake.h)
-// or estimated per pixel every frame from what the frame shows (shadows/screen_occlusion_pass.h;
+// or estimated per pixel every frame from what the frame shows (features/occlusion/screen_occlusion_pass.h;
 // the per-pixel shadings only: pixel, smooth, reference's Phong, and the control palettes).
 enum class OcclusionMethod { Baked, Screen };
 
@@ -250,6 +238,14 @@ struct DepthCueSettings {
   bool on = false;
   float start = 0.2f, end = 1.0f;
   float strength = 0.8f;
+};
+
+// The vignette (features/vignette): the picture fades into the paper toward the frame's edges.
+// Radius and softness in units of the half-diagonal (0 the centre, 1 the corners).
+struct VignetteSettings {
+  bool on = false;
+  float radius = 0.6f, softness = 0.4f;
+  float strength = 1.0f;
 };
 
 // Not user settings: the renderer's own choices, which tests and benchmarks turn to compare
@@ -329,6 +325,7 @@ struct RenderSettings {
   LineSettings lines;
   StrokeSettings strokes;
   DepthCueSettings depthCue;
+  VignetteSettings vignette;
   RenderTuning tuning;
 };
 

@@ -12,8 +12,11 @@
 #include <variant>
 #include <vector>
 
+#include "renderer/core/palette_axis_kind.h"
+#include "renderer/gl/program_source.h"
 #include "renderer/lighting/lighting_state.h"
-#include "renderer/palette/palette.h"
+#include "renderer/programs/shader_limits.h"
+#include "renderer/settings/render_settings.h"
 
 namespace npr::gl {
 
@@ -25,8 +28,6 @@ enum class PatternMapping : std::uint8_t { Screen, Scaled, Anchored, Object };
 inline bool mapsScreenPosition(PatternMapping m) { return m == PatternMapping::Scaled || m == PatternMapping::Anchored; }
 
 // What palette.glsl is compiled for: the palette's layout and the match mode.
-// What picks a two-dimensional palette's row (palette.h's axis).
-enum class PaletteAxis : std::uint8_t { None, Depth, Facing, Detail };
 
 struct PaletteVariant {
   int size = 0;
@@ -42,7 +43,7 @@ struct PaletteVariant {
   bool patternRest = false;       // the object pattern read on a deforming mesh's rest pose (attributes 8-9)
   int rows = 1;                   // a two-dimensional palette: rows of `columns` entries, the row picked by `axis`
   int columns = 0;
-  PaletteAxis axis = PaletteAxis::None;
+  PaletteAxisKind axis = PaletteAxisKind::None;
   bool toneThreshold = false;     // the smooth path picks one of two levels per texel by its threshold (palette.glsl;
                                   // precomposited layers, intensity matching: FrameContext::paletteVariant)
 };
@@ -130,8 +131,9 @@ struct LineProgram {
 // outline.vert + outline.geom + outline.frag: hardware outlines from back faces, or the
 // charcoal rim (which reads the palette).
 struct OutlineProgram {
-  enum class Method : std::uint8_t { Edges, Offset, Fatten, Rim } method = Method::Fatten;
-  std::optional<PaletteVariant> palette;  // Rim only
+  OutlineMethod method = OutlineMethod::Fatten;  // the user's choice (--outline)
+  std::optional<PaletteVariant> palette;         // set: the charcoal rim instead, which reads the palette
+  bool rim() const { return palette.has_value(); }
 };
 
 // strokes.vert + strokes.frag: painterly brush strokes, lit with the scene's lighting and
@@ -144,11 +146,6 @@ struct StrokeProgram {
 // fullscreen.vert + edges.frag: Sobel on the frame's depth and normals.
 struct EdgeProgram {};
 
-// fullscreen.vert + screen_occlusion.frag: screen-space ambient occlusion, then its blur.
-struct ScreenOcclusionProgram {
-  bool blur = false;
-  static constexpr int kKernelSize = 16;
-};
 
 // marker.vert + marker.frag: the light marker.
 struct MarkerProgram {};
@@ -194,16 +191,8 @@ struct FeatureProgram {
 };
 
 using ProgramVariant = std::variant<FeatureProgram, MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, ScreenOcclusionProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram>;
+                                    TriangleLightProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram>;
 
-struct ProgramSource {
-  ProgramSource(std::string vertex, std::string fragment, std::vector<std::string> defs = {}, std::string geometry = {})
-      : vertexFile(std::move(vertex)), fragmentFile(std::move(fragment)), defines(std::move(defs)), geometryFile(std::move(geometry)) {}
-  std::string vertexFile, fragmentFile;
-  std::vector<std::string> defines;
-  std::string geometryFile;  // empty: none
-  std::string computeFile;   // a compute program: this alone (the others empty)
-};
 ProgramSource programSource(const ProgramVariant& variant);
 
 }  // namespace npr::gl

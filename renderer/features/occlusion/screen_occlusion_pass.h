@@ -19,7 +19,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/gl/texture_target.h"
 #include "renderer/mesh/gpu_mesh.h"
-#include "renderer/scene/placed_mesh.h"
+#include "renderer/mesh/placed_mesh.h"
 
 namespace npr {
 

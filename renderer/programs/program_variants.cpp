@@ -1,9 +1,6 @@
 // Variants to files and #define lines (see program_variants.h). The define names are the
 // ones the GLSL files test; the lighting defines come from LightingFeatures::glslDefines.
-#include "renderer/gl/program_variants.h"
-
-#include "renderer/lines/feature_edges.h"
-#include "renderer/palette/palette_matcher.h"
+#include "renderer/programs/program_variants.h"
 
 namespace npr::gl {
 namespace {
@@ -17,9 +14,9 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
   d.push_back("PALETTE_SIZE " + std::to_string(p.size));
   if (p.layerSizesDiffer) d.push_back("LAYER_SIZES_DIFFER");
   if (p.precomposited) d.push_back("PALETTE_PRECOMPOSITED");
-  if (p.rows > 1 && p.axis != PaletteAxis::None) {
+  if (p.rows > 1 && p.axis != PaletteAxisKind::None) {
     d.push_back("PALETTE_AXIS");
-    d.push_back(p.axis == PaletteAxis::Depth ? "AXIS_DEPTH" : p.axis == PaletteAxis::Facing ? "AXIS_FACING" : "AXIS_DETAIL");
+    d.push_back(p.axis == PaletteAxisKind::Depth ? "AXIS_DEPTH" : p.axis == PaletteAxisKind::Facing ? "AXIS_FACING" : "AXIS_DETAIL");
     d.push_back("PALETTE_ROWS " + std::to_string(p.rows));
     d.push_back("PALETTE_COLUMNS " + std::to_string(p.columns));
   }
@@ -35,8 +32,8 @@ std::vector<std::string> paletteDefines(const PaletteVariant& p) {
     d.push_back("ORIENT_BINS " + std::to_string(p.orientBins));
     if (p.entryAngleShared) d.push_back("ENTRY_ANGLE_SHARED");
   }
-  d.push_back("LUT1D_SIZE " + std::to_string(PaletteMatcher::kLut1DSize));
-  d.push_back("LUT3D_SIZE " + std::to_string(PaletteMatcher::kLut3DSize));
+  d.push_back("LUT1D_SIZE " + std::to_string(kLut1DSize));
+  d.push_back("LUT3D_SIZE " + std::to_string(kLut3DSize));
   return d;
 }
 
@@ -134,14 +131,18 @@ struct SourceOf {
   }
   ProgramSource operator()(const OutlineProgram& o) const {
     // The offset method needs no geometry stage: the rasterizer culls the front faces.
-    ProgramSource s{"outline.vert", "outline.frag", {}, o.method == OutlineProgram::Method::Offset ? "" : "outline.geom"};
-    switch (o.method) {
-      case OutlineProgram::Method::Edges: s.defines.push_back("OUTLINE_EDGES"); break;
-      case OutlineProgram::Method::Offset: s.defines.push_back("OUTLINE_OFFSET"); break;
-      case OutlineProgram::Method::Fatten: s.defines.push_back("OUTLINE_FATTEN"); break;
-      case OutlineProgram::Method::Rim: s.defines.push_back("OUTLINE_RIM"); break;
+    const bool offset = !o.rim() && o.method == OutlineMethod::Offset;
+    ProgramSource s{"outline.vert", "outline.frag", {}, offset ? "" : "outline.geom"};
+    if (o.rim()) {
+      s.defines.push_back("OUTLINE_RIM");
+      for (auto& d : paletteDefines(*o.palette)) s.defines.push_back(d);
+      return s;
     }
-    if (o.palette) for (auto& d : paletteDefines(*o.palette)) s.defines.push_back(d);
+    switch (o.method) {
+      case OutlineMethod::Edges: s.defines.push_back("OUTLINE_EDGES"); break;
+      case OutlineMethod::Offset: s.defines.push_back("OUTLINE_OFFSET"); break;
+      case OutlineMethod::Fatten: s.defines.push_back("OUTLINE_FATTEN"); break;
+    }
     return s;
   }
   ProgramSource operator()(const StrokeProgram& st) const {
@@ -150,11 +151,6 @@ struct SourceOf {
     return s;
   }
   ProgramSource operator()(const EdgeProgram&) const { return {"fullscreen.vert", "edges.frag", {}}; }
-  ProgramSource operator()(const ScreenOcclusionProgram& o) const {
-    ProgramSource s{"fullscreen.vert", "screen_occlusion.frag", {"KERNEL_SIZE " + std::to_string(ScreenOcclusionProgram::kKernelSize)}};
-    if (o.blur) s.defines.push_back("BLUR");
-    return s;
-  }
   ProgramSource operator()(const GroundShadowProgram& g) const {
     return {"fullscreen.vert", "ground_shadow.frag",
             {"NUM_LIGHTS " + std::to_string(g.lights), "SHADOWS", "SHADOW_LAYERS " + std::to_string(g.shadowLayers)}};

@@ -20,7 +20,7 @@
 
 #include "renderer/core/frame_stats.h"
 #include "renderer/gl/gl_handle.h"
-#include "renderer/gl/program_variants.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/gl/shader_program.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/mesh/mesh.h"

@@ -1,5 +1,5 @@
 // Names of the settings on the command line and in the overlay (see render_settings.h).
-#include "renderer/render_settings.h"
+#include "renderer/settings/render_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,21 +50,6 @@ std::optional<glm::vec2> parseStrokeSize(const std::string& s) {
   if (std::sscanf(s.c_str(), "%fx%f%c", &l, &w, &extra) != 2) return std::nullopt;
   if (!(l >= 1.0f && l <= StrokeSettings::kMaxSize && w >= 1.0f && w <= StrokeSettings::kMaxSize)) return std::nullopt;
   return glm::vec2(l, w);
-}
-
-const char* outlineMethodName(OutlineMethod m) {
-  switch (m) {
-    case OutlineMethod::Edges: return "edges";
-    case OutlineMethod::Offset: return "offset";
-    case OutlineMethod::Fatten: return "fatten";
-  }
-  return "fatten";
-}
-
-std::optional<OutlineMethod> parseOutlineMethod(const std::string& s) {
-  for (OutlineMethod m : {OutlineMethod::Edges, OutlineMethod::Offset, OutlineMethod::Fatten})
-    if (s == outlineMethodName(m)) return m;
-  return std::nullopt;
 }
 
 int lineKindIndex(const std::string& name) {

@@ -5,7 +5,7 @@
 // (passes/control_palette_pass.h), so both light a pixel the same way.
 #pragma once
 
-#include "renderer/paths/render_pass.h"
+#include "renderer/frame/frame_context.h"
 
 namespace npr {
 

@@ -1,5 +1,5 @@
 // Mesh materials as GL materials (see mesh_materials.h).
-#include "renderer/lighting/mesh_materials.h"
+#include "renderer/materials/mesh_materials.h"
 
 namespace npr {
 
