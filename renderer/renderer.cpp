@@ -15,7 +15,7 @@
 #include "renderer/passes/background_pass.h"
 #include "renderer/passes/geometry_pass.h"
 #include "renderer/passes/marker_pass.h"
-#include "renderer/passes/surface_buffer_pass.h"
+#include "renderer/paths/surface_buffer_pass.h"
 #include "renderer/paths/path_table.h"
 
 namespace npr {

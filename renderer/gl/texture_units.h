@@ -1,38 +1,30 @@
-// Texture units by name: each sampler a pass uses has its own unit, so no pass rebinds a unit
-// another pass's program still samples (the image-space edges used to take units 0 and 1,
-// the palette's and the background's).
+// Texture units, handed out: each sampler a pass uses claims a unit of its own once, at
+// start-up, beside the code that binds it (`const gl::TextureUnit kFooUnit =
+// gl::claimTextureUnit();`), so no pass rebinds a unit another pass's program still samples
+// (the image-space edges used to take units 0 and 1, the palette's and the background's) and
+// no list here names the passes. Unit 0 is never handed out: uploads bind there.
 #pragma once
 
 #include <epoxy/gl.h>
 
 namespace npr::gl {
 
-enum class TextureUnit : GLint {
-  Palette = 0,     // palette layers (GL_TEXTURE_2D_ARRAY)
-  Background,      // palette background image
-  LutIndex,        // matcher: nearest entry per tone bin
-  LutBlend,        // matcher: bracketing entries and weight per tone bin
-  Lut3D,           // matcher: colours mode grid
-  EdgeNormals,     // image-space edges: the frame's normals
-  EdgeDepth,       // image-space edges: the frame's depth
-  MaterialTable,   // the mesh's materials (GL_TEXTURE_BUFFER)
-  MaterialMaps,    // their diffuse maps (GL_TEXTURE_2D_ARRAY)
-  StrokeAngles,    // the stencil path's per-pixel hatching angles
-  PatternCoordinates,  // the stencil path's per-pixel object-space pattern coordinates
-  ShadowMaps,      // every light's shadow maps (GL_TEXTURE_2D_ARRAY, depth compare)
-  Brush,           // painterly strokes' brush coverage
-  ScreenOcclusion,  // screen-space ambient occlusion: the frame's (blurred) result, and its passes' inputs
-  ScreenOcclusionDepth,
-  ScreenOcclusionNormals,
-  GroundShadows,   // the ground plane's visibility per light
-  TurnBuffer,      // a mesh pass's stroke angle and entry per pixel, for the turn resolve
-  LineTexture,     // a line set's stroke texture (lines/stroke_textures.h)
+struct TextureUnit {
+  GLint index;
 };
 
-inline GLint unitIndex(TextureUnit u) { return static_cast<GLint>(u); }
+// Fewer than GL's least GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS (48 in OpenGL 3.3): a unit's index
+// may go up to that, while each program stage samples at most 16 of them at once.
+inline constexpr GLint kMaxTextureUnits = 48;
+
+// The next unit no one has claimed (from 1). Claiming more than kMaxTextureUnits - 1 is a
+// programmer error: it aborts with a message.
+TextureUnit claimTextureUnit();
+
+inline GLint unitIndex(TextureUnit u) { return u.index; }
 // Binds `texture` to `target` on unit `u` and leaves unit 0 active, as every pass expects.
 inline void bindTexture(TextureUnit u, GLenum target, GLuint texture) {
-  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u));
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(u.index));
   glBindTexture(target, texture);
   glActiveTexture(GL_TEXTURE0);
 }

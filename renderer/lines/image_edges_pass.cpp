@@ -6,8 +6,14 @@
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/texture_units.h"
 #include "renderer/passes/geometry_pass.h"
+#include "renderer/programs/program_variants.h"
 
 namespace npr {
+namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kEdgeDepthUnit = gl::claimTextureUnit();  // the frame's depth
+const gl::TextureUnit kEdgeNormalsUnit = gl::claimTextureUnit();  // the frame's normals
+}  // namespace
 
 Status ImageEdgesPass::draw(const std::vector<PlacedMesh>& meshes, const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport,
                             gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats) {
@@ -29,10 +35,10 @@ Status ImageEdgesPass::draw(const std::vector<PlacedMesh>& meshes, const CameraM
   gl::apply(gl::pass::kScreenOverlay);
   gl::ShaderProgram& p = **sobel;
   p.use();
-  gl::bindTexture(gl::TextureUnit::EdgeNormals, GL_TEXTURE_2D, target_.colour());
-  gl::bindTexture(gl::TextureUnit::EdgeDepth, GL_TEXTURE_2D, target_.depth());
-  p.set("uNormals", gl::unitIndex(gl::TextureUnit::EdgeNormals));
-  p.set("uDepth", gl::unitIndex(gl::TextureUnit::EdgeDepth));
+  gl::bindTexture(kEdgeNormalsUnit, GL_TEXTURE_2D, target_.colour());
+  gl::bindTexture(kEdgeDepthUnit, GL_TEXTURE_2D, target_.depth());
+  p.set("uNormals", gl::unitIndex(kEdgeNormalsUnit));
+  p.set("uDepth", gl::unitIndex(kEdgeDepthUnit));
   p.set("uOrigin", glm::ivec2(viewport.x, viewport.y));
   p.set("uProjection", glm::vec2(camera.projection[2][2], camera.projection[3][2]));
   p.set("uThreshold", std::max(ls.imageThreshold, 1e-3f));

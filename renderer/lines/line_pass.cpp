@@ -255,8 +255,8 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       p.set("uCurvatureReference", style.curvatureReference);
     }
     if (textured) {
-      gl::bindTexture(gl::TextureUnit::LineTexture, GL_TEXTURE_2D, style.textureBound.id);
-      p.set("uStrokeTexture", gl::unitIndex(gl::TextureUnit::LineTexture));
+      gl::bindTexture(kLineTextureUnit, GL_TEXTURE_2D, style.textureBound.id);
+      p.set("uStrokeTexture", gl::unitIndex(kLineTextureUnit));
     }
     if (style.byMaterial())
       p.setArray("uMaterialMask", style.materialMask.data(), int(style.materialMask.size()));

@@ -44,8 +44,8 @@ Result<StrokeTexture> StrokeTextures::find(const std::string& name) {
   Result<StrokeCoverage> c = strokeCoverage(name);
   if (!c) return Error{c.error()};
   texture = gl::createTexture();
-  gl::bindTexture(gl::TextureUnit::LineTexture, GL_TEXTURE_2D, texture.id());
-  glActiveTexture(GL_TEXTURE0 + GLenum(gl::TextureUnit::LineTexture));
+  gl::bindTexture(kLineTextureUnit, GL_TEXTURE_2D, texture.id());
+  glActiveTexture(GL_TEXTURE0 + GLenum(kLineTextureUnit.index));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   // Rows from the bottom, as GL counts them: the image's top row is the stroke's left side.
   std::vector<std::uint8_t> flipped(c->texels.size());

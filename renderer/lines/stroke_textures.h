@@ -12,8 +12,12 @@
 
 #include "renderer/core/result.h"
 #include "renderer/gl/gl_handle.h"
+#include "renderer/gl/texture_units.h"
 
 namespace npr {
+
+// The texture unit the line sets' stroke textures are bound on (gl/texture_units.h).
+inline const gl::TextureUnit kLineTextureUnit = gl::claimTextureUnit();
 
 // A stroke texture before upload: coverage 0..255, row 0 at the top.
 struct StrokeCoverage {

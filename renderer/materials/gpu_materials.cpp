@@ -10,6 +10,11 @@
 
 namespace npr {
 namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kMaterialMapsUnit = gl::claimTextureUnit();  // their diffuse maps (GL_TEXTURE_2D_ARRAY)
+const gl::TextureUnit kMaterialTableUnit = gl::claimTextureUnit();  // the mesh's materials (GL_TEXTURE_BUFFER)
+}  // namespace
+namespace {
 
 // Maps share one array: each is resized to the largest map's size, at most this a side.
 constexpr int kMaxMapSide = 1024;
@@ -62,7 +67,7 @@ void GpuMaterials::upload(const Mesh& mesh) {
   tableBuffer_ = gl::createBuffer();
   const std::size_t rows = std::max<std::size_t>(mesh.materials.size(), 1);
   gl::uploadBuffer(tableBuffer_, nullptr, rows * sizeof(glm::uvec4), GL_DYNAMIC_DRAW);
-  table_ = bufferTexture(tableBuffer_, GL_RGBA32UI, gl::TextureUnit::MaterialTable);
+  table_ = bufferTexture(tableBuffer_, GL_RGBA32UI, kMaterialTableUnit);
   if (!mesh.textures.empty() && !mesh.texcoords.empty()) uploadMaps(mesh);
   // A see-through mesh's coverage is read by passes that may run before the frame's update()
   // (the shadow maps, the geometry pass): its rows are written now, with the default lighting
@@ -78,7 +83,7 @@ void GpuMaterials::uploadMaps(const Mesh& mesh) {
   for (const MeshTexture& t : mesh.textures) side = std::max({side, t.image.width, t.image.height});
   mapSide_ = std::min(side, kMaxMapSide);
   maps_ = gl::createTexture();
-  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(gl::unitIndex(gl::TextureUnit::MaterialMaps)));
+  glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(gl::unitIndex(kMaterialMapsUnit)));
   glBindTexture(GL_TEXTURE_2D_ARRAY, maps_.id());
   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, mapSide_, mapSide_, static_cast<GLsizei>(mesh.textures.size()), 0, GL_RGBA,
                GL_UNSIGNED_BYTE, nullptr);
@@ -153,11 +158,11 @@ void GpuMaterials::setMaterial(gl::ShaderProgram& p, std::size_t material) const
 }
 
 void GpuMaterials::bind(gl::ShaderProgram& p) const {
-  gl::bindTexture(gl::TextureUnit::MaterialTable, GL_TEXTURE_BUFFER, table_.id());
-  p.set("uMaterialTable", gl::unitIndex(gl::TextureUnit::MaterialTable));
+  gl::bindTexture(kMaterialTableUnit, GL_TEXTURE_BUFFER, table_.id());
+  p.set("uMaterialTable", gl::unitIndex(kMaterialTableUnit));
   if (!hasMaps()) return;
-  gl::bindTexture(gl::TextureUnit::MaterialMaps, GL_TEXTURE_2D_ARRAY, maps_.id());
-  p.set("uMaterialMaps", gl::unitIndex(gl::TextureUnit::MaterialMaps));
+  gl::bindTexture(kMaterialMapsUnit, GL_TEXTURE_2D_ARRAY, maps_.id());
+  p.set("uMaterialMaps", gl::unitIndex(kMaterialMapsUnit));
 }
 
 }  // namespace npr

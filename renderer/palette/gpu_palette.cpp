@@ -16,6 +16,14 @@
 
 namespace npr {
 namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kBackgroundUnit = gl::claimTextureUnit();  // the palette's background image
+const gl::TextureUnit kLut3DUnit = gl::claimTextureUnit();  // matcher: colours mode grid
+const gl::TextureUnit kLutBlendUnit = gl::claimTextureUnit();  // matcher: bracketing entries and weight per tone bin
+const gl::TextureUnit kLutIndexUnit = gl::claimTextureUnit();  // matcher: nearest entry per tone bin
+const gl::TextureUnit kPaletteUnit = gl::claimTextureUnit();  // palette layers (GL_TEXTURE_2D_ARRAY)
+}  // namespace
+namespace {
 
 using gl::TextureUnit;
 
@@ -78,7 +86,7 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
   const int levels = gp->mipLevels_;
   const std::vector<ImageRGBA8> bgChain = gp->precomposited_ && bg ? mipChain(*bg, levels) : std::vector<ImageRGBA8>{};
   gp->layers_ = gl::createTexture();
-  glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Palette));
+  glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kPaletteUnit));
   glBindTexture(GL_TEXTURE_2D_ARRAY, gp->layers_.id());
   // Immutable storage, so a second view can read the same texels as sRGB (below).
   glTexStorage3D(GL_TEXTURE_2D_ARRAY, levels, GL_RGBA8, w, h, n);
@@ -111,7 +119,7 @@ Result<std::unique_ptr<GpuPalette>> GpuPalette::upload(const Palette& p) {
     gp->backgroundImage_ = true;
     gp->backgroundSize_ = {bg->width, bg->height};
     gp->background_ = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Background));
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kBackgroundUnit));
     glBindTexture(GL_TEXTURE_2D, gp->background_.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, bg->width, bg->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, flipRows(*bg, flipped));
     gl::setNearestSingleLevel(GL_TEXTURE_2D);
@@ -179,7 +187,7 @@ Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<
     const int G = PaletteMatcher::kLut3DSize;
     const std::vector<std::uint8_t> lut = m.matcher->buildLut3D();
     m.lut3D = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::Lut3D));
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kLut3DUnit));
     glBindTexture(GL_TEXTURE_3D, m.lut3D.id());
     glTexImage3D(GL_TEXTURE_3D, 0, GL_RG8UI, G, G, G, 0, GL_RG_INTEGER, GL_UNSIGNED_BYTE, lut.data());
     gl::setNearestSingleLevel(GL_TEXTURE_3D);
@@ -188,12 +196,12 @@ Status GpuPalette::updateMatcher(MatchMode mode, float scale, const std::vector<
     const std::vector<std::uint8_t> index = m.matcher->buildLutIndex1D();
     const std::vector<float> blend = m.matcher->buildLutBlend1D();
     m.lutIndex = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutIndex));
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kLutIndexUnit));
     glBindTexture(GL_TEXTURE_2D, m.lutIndex.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8UI, L, 1, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, index.data());
     gl::setNearestSingleLevel(GL_TEXTURE_2D);
     m.lutBlend = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(TextureUnit::LutBlend));
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kLutBlendUnit));
     glBindTexture(GL_TEXTURE_2D, m.lutBlend.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, L, 1, 0, GL_RGBA, GL_FLOAT, blend.data());
     gl::setNearestSingleLevel(GL_TEXTURE_2D);
@@ -319,15 +327,15 @@ void GpuPalette::bindPattern(gl::ShaderProgram& prog, const PatternPlacement& at
 void GpuPalette::bindLayers(gl::ShaderProgram& prog, const PatternPlacement& at) const {
   prog.set("uFrameOffset", at.frameOffset);
   // Filtered lookups (pattern.glsl's mappedTexel) read the sRGB view.
-  gl::bindTexture(TextureUnit::Palette, GL_TEXTURE_2D_ARRAY, filtered(at) ? layersSrgb_.id() : layers_.id());
-  prog.set("uPalette", gl::unitIndex(TextureUnit::Palette));
+  gl::bindTexture(kPaletteUnit, GL_TEXTURE_2D_ARRAY, filtered(at) ? layersSrgb_.id() : layers_.id());
+  prog.set("uPalette", gl::unitIndex(kPaletteUnit));
 }
 
 void GpuPalette::bindBackground(gl::ShaderProgram& prog, const PatternPlacement& at) const {
   prog.set("uFrameOffset", at.frameOffset);
   if (backgroundImage_) {
-    gl::bindTexture(TextureUnit::Background, GL_TEXTURE_2D, background_.id());
-    prog.set("uBackground", gl::unitIndex(TextureUnit::Background));
+    gl::bindTexture(kBackgroundUnit, GL_TEXTURE_2D, background_.id());
+    prog.set("uBackground", gl::unitIndex(kBackgroundUnit));
     prog.set("uBackgroundSize", backgroundSize_);
     prog.set("uBackgroundScale", 1.0f / at.scale);
   } else {
@@ -354,14 +362,14 @@ void GpuPalette::bind(gl::ShaderProgram& prog, const PatternPlacement& at, bool 
   }
   const MatcherSlot& m = current();
   if (m.matcher && m.matcher->mode() == MatchMode::Colors) {
-    gl::bindTexture(TextureUnit::Lut3D, GL_TEXTURE_3D, m.lut3D.id());
-    prog.set("uLut3D", gl::unitIndex(TextureUnit::Lut3D));
+    gl::bindTexture(kLut3DUnit, GL_TEXTURE_3D, m.lut3D.id());
+    prog.set("uLut3D", gl::unitIndex(kLut3DUnit));
     prog.setArray("uAverages", m.matcher->scaledAverages().data(), m.matcher->size());
   } else {
-    gl::bindTexture(TextureUnit::LutIndex, GL_TEXTURE_2D, m.lutIndex.id());
-    prog.set("uLutIndex", gl::unitIndex(TextureUnit::LutIndex));
-    gl::bindTexture(TextureUnit::LutBlend, GL_TEXTURE_2D, m.lutBlend.id());
-    prog.set("uLutBlend", gl::unitIndex(TextureUnit::LutBlend));
+    gl::bindTexture(kLutIndexUnit, GL_TEXTURE_2D, m.lutIndex.id());
+    prog.set("uLutIndex", gl::unitIndex(kLutIndexUnit));
+    gl::bindTexture(kLutBlendUnit, GL_TEXTURE_2D, m.lutBlend.id());
+    prog.set("uLutBlend", gl::unitIndex(kLutBlendUnit));
   }
 }
 

@@ -2,8 +2,8 @@
 #include "renderer/paths/shaded_path.h"
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/passes/lit_mesh_program.h"
-#include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/lit_mesh_program.h"
+#include "renderer/paths/turn_resolve_pass.h"
 
 namespace npr {
 

@@ -20,7 +20,7 @@
 
 #include "renderer/gl/shared_depth_framebuffer.h"
 #include "renderer/paths/render_pass.h"
-#include "renderer/passes/surface_buffer_pass.h"
+#include "renderer/paths/surface_buffer_pass.h"
 #include "renderer/paths/triangle_path.h"
 
 namespace npr {

@@ -2,7 +2,7 @@
 #include "renderer/paths/triangle_path.h"
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/turn_resolve_pass.h"
 #include "renderer/paths/triangle_lighting_ahead.h"
 
 namespace npr {

@@ -7,6 +7,10 @@
 #include "renderer/gl/texture_units.h"
 
 namespace npr {
+namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kGroundShadowsUnit = gl::claimTextureUnit();  // the ground plane's visibility per light
+}  // namespace
 
 Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsigned groundVersion, gl::ProgramCache& programs,
                                 const gl::VertexArray& emptyVao, FrameStats& stats) {
@@ -65,8 +69,8 @@ Status GroundShadowPass::update(const ShadowMaps& maps, const Mesh& ground, unsi
 }
 
 void GroundShadowPass::bind(gl::ShaderProgram& p) const {
-  gl::bindTexture(gl::TextureUnit::GroundShadows, GL_TEXTURE_2D, sampled_.id());
-  p.set("uGroundShadows", gl::unitIndex(gl::TextureUnit::GroundShadows));
+  gl::bindTexture(kGroundShadowsUnit, GL_TEXTURE_2D, sampled_.id());
+  p.set("uGroundShadows", gl::unitIndex(kGroundShadowsUnit));
   // Model x, z -> the texture's coordinates: (xz - origin) * scale.
   const glm::vec2 extent = glm::max(glm::vec2(rect_.z - rect_.x, rect_.w - rect_.y), glm::vec2(1e-12f));
   p.set("uGroundShadowFrame", glm::vec4(rect_.x, rect_.y, 1.0f / extent.x, 1.0f / extent.y));

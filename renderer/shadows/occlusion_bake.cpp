@@ -15,6 +15,10 @@
 
 namespace npr {
 namespace {
+// The texture unit the bake samples its directions' depth maps on (gl/texture_units.h).
+const gl::TextureUnit kBakeDepthUnit = gl::claimTextureUnit();
+}  // namespace
+namespace {
 
 // Bit-reversed order of 0..n-1 (n rounded up to a power of two, out-of-range skipped): every
 // prefix of the Fibonacci sphere taken in this order spreads from pole to pole.
@@ -120,8 +124,8 @@ Status OcclusionBake::step(double budgetMs, gl::ProgramCache& programs, FrameSta
     glViewport(0, 0, targetSize_.x, targetSize_.y);
     gl::apply(gl::pass::kAccumulate);
     (*bakeProg)->use();
-    gl::bindTexture(gl::TextureUnit::ShadowMaps, GL_TEXTURE_2D, depth_.id());
-    (*bakeProg)->set("uDepth", gl::unitIndex(gl::TextureUnit::ShadowMaps));
+    gl::bindTexture(kBakeDepthUnit, GL_TEXTURE_2D, depth_.id());
+    (*bakeProg)->set("uDepth", gl::unitIndex(kBakeDepthUnit));
     (*bakeProg)->set("uDirectionViewProjection", viewProj);
     (*bakeProg)->set("uDirection", d);
     (*bakeProg)->set("uOffset", offset);

@@ -103,7 +103,7 @@ Status ShadowMaps::update(const LightingState& lighting, const glm::mat4& view, 
 
   if (layers > 0 && (size != size_ || layers > allocatedLayers_ || !depth_.id())) {
     depth_ = gl::createTexture();
-    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(gl::TextureUnit::ShadowMaps));
+    glActiveTexture(GL_TEXTURE0 + gl::unitIndex(kShadowMapsUnit));
     glBindTexture(GL_TEXTURE_2D_ARRAY, depth_.id());
     glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_DEPTH_COMPONENT24, size, size, layers, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, nullptr);
     gl::setDepthCompare(GL_TEXTURE_2D_ARRAY);
@@ -184,8 +184,8 @@ void ShadowMaps::bind(gl::ShaderProgram& p, const glm::mat4& view) const {
     if (m.firstLayer < 0) continue;
     for (int f = 0; f < (m.point ? 6 : 1); ++f) matrices[size_t(m.firstLayer + f)] = m.viewProjection[size_t(f)] * toModel;
   }
-  gl::bindTexture(gl::TextureUnit::ShadowMaps, GL_TEXTURE_2D_ARRAY, depth_.id());
-  p.set("uShadowMaps", gl::unitIndex(gl::TextureUnit::ShadowMaps));
+  gl::bindTexture(kShadowMapsUnit, GL_TEXTURE_2D_ARRAY, depth_.id());
+  p.set("uShadowMaps", gl::unitIndex(kShadowMapsUnit));
   p.setArray("uShadowMatrix", matrices.data(), layerCount_);
   p.setArray("uShadowLayer", first.data(), n);
   p.setArray("uShadowPoint", point.data(), n);

@@ -19,8 +19,12 @@
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/materials/gpu_materials.h"
 #include "renderer/mesh/gpu_mesh.h"
+#include "renderer/gl/texture_units.h"
 
 namespace npr {
+
+// The texture unit every light's shadow maps are bound on (gl/texture_units.h).
+inline const gl::TextureUnit kShadowMapsUnit = gl::claimTextureUnit();
 
 // A mesh that casts shadows, placed by its model's transform (model to scene space).
 struct ShadowCaster {

@@ -11,6 +11,10 @@
 #include "renderer/strokes/brush_shapes.h"
 
 namespace npr {
+namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kBrushUnit = gl::claimTextureUnit();  // painterly strokes' brush coverage
+}  // namespace
 
 void BrushStrokePass::setMesh(const Mesh* mesh) {
   mesh_ = mesh;
@@ -31,8 +35,8 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
     instances_ = gl::createBuffer();
     brush_ = gl::createTexture();
     const std::vector<std::uint8_t> coverage = brushCoverage();
-    gl::bindTexture(gl::TextureUnit::Brush, GL_TEXTURE_2D, brush_.id());
-    glActiveTexture(GL_TEXTURE0 + GLenum(gl::TextureUnit::Brush));
+    gl::bindTexture(kBrushUnit, GL_TEXTURE_2D, brush_.id());
+    glActiveTexture(GL_TEXTURE0 + GLenum(kBrushUnit.index));
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, kBrushLength * kBrushes, kBrushWidth, 0, GL_RED, GL_UNSIGNED_BYTE, coverage.data());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -105,8 +109,8 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   palette.bindMatching(p);
   const std::vector<glm::vec3>& averages = palette.averages();
   p.setArray("uEntryColour", averages.data(), int(averages.size()));
-  gl::bindTexture(gl::TextureUnit::Brush, GL_TEXTURE_2D, brush_.id());
-  p.set("uBrush", gl::unitIndex(gl::TextureUnit::Brush));
+  gl::bindTexture(kBrushUnit, GL_TEXTURE_2D, brush_.id());
+  p.set("uBrush", gl::unitIndex(kBrushUnit));
   glBindVertexArray(vao_.id());
   glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(count_));
   ++stats.drawCalls;

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "renderer/frame/scene_palettes.h"
-#include "renderer/passes/control_palette_pass.h"
+#include "renderer/paths/control_palette_pass.h"
 #include "renderer/paths/path_table.h"
 
 namespace npr {

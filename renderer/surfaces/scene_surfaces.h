@@ -13,7 +13,7 @@
 #include "renderer/core/result.h"
 #include "renderer/features/feature.h"
 #include "renderer/frame/frame_view.h"
-#include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/turn_resolve_pass.h"
 #include "renderer/paths/render_pass.h"
 #include "renderer/patterns/pattern_placement.h"
 

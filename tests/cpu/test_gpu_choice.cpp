@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "renderer/gl/gpu_choice.h"
-#include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/turn_resolve_pass.h"
 #include "renderer/renderer.h"
 
 namespace npr {

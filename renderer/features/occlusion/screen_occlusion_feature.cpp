@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
-#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/paths/lit_mesh_program.h"
 #include "renderer/frame/frame_context.h"
 #include "renderer/features/occlusion/screen_occlusion_pass.h"
 #include "renderer/lighting/occlusion_factor.h"

@@ -10,6 +10,12 @@
 
 namespace npr {
 namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kScreenOcclusionUnit = gl::claimTextureUnit();  // the frame's (blurred) estimate, and its passes' inputs
+const gl::TextureUnit kScreenOcclusionDepthUnit = gl::claimTextureUnit();  // the frame's depth
+const gl::TextureUnit kScreenOcclusionNormalsUnit = gl::claimTextureUnit();  // the frame's normals
+}  // namespace
+namespace {
 
 constexpr int kKernelSize = 16;  // samples per pixel (screen_occlusion.frag's KERNEL_SIZE)
 
@@ -61,14 +67,14 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
   }
   gl::apply(gl::pass::kBackground);
   glBindVertexArray(emptyVao.id());
-  gl::bindTexture(gl::TextureUnit::ScreenOcclusionDepth, GL_TEXTURE_2D, geometry_.depth());
+  gl::bindTexture(kScreenOcclusionDepthUnit, GL_TEXTURE_2D, geometry_.depth());
   // (2) the estimate
   raw_.bindAndClear();
   gl::ShaderProgram& e = **estimate;
   e.use();
-  gl::bindTexture(gl::TextureUnit::ScreenOcclusionNormals, GL_TEXTURE_2D, geometry_.colour());
-  e.set("uNormals", gl::unitIndex(gl::TextureUnit::ScreenOcclusionNormals));
-  e.set("uDepth", gl::unitIndex(gl::TextureUnit::ScreenOcclusionDepth));
+  gl::bindTexture(kScreenOcclusionNormalsUnit, GL_TEXTURE_2D, geometry_.colour());
+  e.set("uNormals", gl::unitIndex(kScreenOcclusionNormalsUnit));
+  e.set("uDepth", gl::unitIndex(kScreenOcclusionDepthUnit));
   e.set("uOrigin", glm::ivec2(0));
   const glm::mat4& P = camera.projection;
   e.set("uProjectionXY", glm::vec4(P[0][0], P[1][1], P[2][0], P[2][1]));
@@ -81,9 +87,9 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
   blurred_.bindAndClear();
   gl::ShaderProgram& b = **blur;
   b.use();
-  gl::bindTexture(gl::TextureUnit::ScreenOcclusion, GL_TEXTURE_2D, raw_.colour());
-  b.set("uOcclusion", gl::unitIndex(gl::TextureUnit::ScreenOcclusion));
-  b.set("uDepth", gl::unitIndex(gl::TextureUnit::ScreenOcclusionDepth));
+  gl::bindTexture(kScreenOcclusionUnit, GL_TEXTURE_2D, raw_.colour());
+  b.set("uOcclusion", gl::unitIndex(kScreenOcclusionUnit));
+  b.set("uDepth", gl::unitIndex(kScreenOcclusionDepthUnit));
   b.set("uOrigin", glm::ivec2(0));
   b.set("uProjection", glm::vec2(camera.projection[2][2], camera.projection[3][2]));
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -93,8 +99,8 @@ Status ScreenOcclusionPass::draw(const std::vector<PlacedMesh>& meshes, const Ca
 }
 
 void ScreenOcclusionPass::bind(gl::ShaderProgram& p, const glm::ivec4& viewport) const {
-  gl::bindTexture(gl::TextureUnit::ScreenOcclusion, GL_TEXTURE_2D, blurred_.colour());
-  p.set("uScreenOcclusion", gl::unitIndex(gl::TextureUnit::ScreenOcclusion));
+  gl::bindTexture(kScreenOcclusionUnit, GL_TEXTURE_2D, blurred_.colour());
+  p.set("uScreenOcclusion", gl::unitIndex(kScreenOcclusionUnit));
   // Window pixel -> the half-resolution texture's texels.
   const glm::vec2 scale = glm::vec2(blurred_.size()) / glm::vec2(std::max(viewport.z, 1), std::max(viewport.w, 1));
   p.set("uScreenOcclusionFrame", glm::vec4(viewport.x, viewport.y, scale.x, scale.y));

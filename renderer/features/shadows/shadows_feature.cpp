@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "renderer/features/feature.h"
-#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/paths/lit_mesh_program.h"
 #include "renderer/frame/frame_context.h"
 #include "renderer/shadows/ground_shadow_pass.h"
 #include "renderer/shadows/shadow_maps.h"

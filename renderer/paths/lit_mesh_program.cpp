@@ -1,5 +1,5 @@
 // GPU-lit mesh programs (see lit_mesh_program.h).
-#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/paths/lit_mesh_program.h"
 
 
 #include "renderer/lighting/lighting_uniforms.h"

@@ -1,10 +1,14 @@
 // The turn resolve (see turn_resolve_pass.h).
-#include "renderer/passes/turn_resolve_pass.h"
+#include "renderer/paths/turn_resolve_pass.h"
 
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/texture_units.h"
 
 namespace npr {
+namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kTurnBufferUnit = gl::claimTextureUnit();  // a mesh pass's stroke angle and entry per pixel
+}  // namespace
 
 namespace {
 // Below this many pixels per front-facing triangle, on a software rasterizer, the triangle,
@@ -51,8 +55,8 @@ Status TurnResolvePass::resolve(FrameContext& f) {
   glScissor(vp.x, vp.y, vp.z, vp.w);
   p.use();
   f.bindPalette(p);
-  gl::bindTexture(gl::TextureUnit::TurnBuffer, GL_TEXTURE_2D, (blending_ ? blend_ : one_).colour());
-  p.set("uTurnBuffer", gl::unitIndex(gl::TextureUnit::TurnBuffer));
+  gl::bindTexture(kTurnBufferUnit, GL_TEXTURE_2D, (blending_ ? blend_ : one_).colour());
+  p.set("uTurnBuffer", gl::unitIndex(kTurnBufferUnit));
   p.set("uBufferOrigin", glm::ivec2(0));
   glBindVertexArray(f.emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -1,8 +1,8 @@
 // Control-image palette layers over a path's surface (see control_palette_pass.h).
-#include "renderer/passes/control_palette_pass.h"
+#include "renderer/paths/control_palette_pass.h"
 
 #include "renderer/gl/pass_state.h"
-#include "renderer/passes/lit_mesh_program.h"
+#include "renderer/paths/lit_mesh_program.h"
 
 namespace npr {
 namespace {

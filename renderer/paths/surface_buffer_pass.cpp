@@ -1,10 +1,15 @@
 // The stencil path's per-pixel buffers (see surface_buffer_pass.h).
-#include "renderer/passes/surface_buffer_pass.h"
+#include "renderer/paths/surface_buffer_pass.h"
 
 #include "renderer/gl/pass_state.h"
 #include "renderer/gl/texture_units.h"
 
 namespace npr {
+namespace {
+// This file's samplers' texture units (gl/texture_units.h).
+const gl::TextureUnit kPatternCoordinatesUnit = gl::claimTextureUnit();  // the stencil path's per-pixel object-space pattern coordinates
+const gl::TextureUnit kStrokeAnglesUnit = gl::claimTextureUnit();  // the stencil path's per-pixel hatching angles
+}  // namespace
 namespace {
 
 Status drawMesh(FrameContext& f, const gl::MeshProgram& variant, bool pattern) {
@@ -79,7 +84,7 @@ Status SurfaceBufferPass::draw(FrameContext& f, const glm::ivec4& meshRect) {
 
 void SurfaceBufferPass::bind(gl::ShaderProgram& p, const glm::ivec2& origin) const {
   const bool angles = content_ == Content::StrokeAngles;
-  const gl::TextureUnit unit = angles ? gl::TextureUnit::StrokeAngles : gl::TextureUnit::PatternCoordinates;
+  const gl::TextureUnit unit = angles ? kStrokeAnglesUnit : kPatternCoordinatesUnit;
   gl::bindTexture(unit, GL_TEXTURE_2D, target_.colour());
   p.set(angles ? "uStrokeAngles" : "uPatternCoordinates", gl::unitIndex(unit));
   p.set("uViewportOrigin", origin);
