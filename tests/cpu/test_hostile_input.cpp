@@ -154,6 +154,41 @@ TEST(HostileInput, OmHeaderCountsBeyondTheFileAreRefusedBeforeOpenMeshReadsIt) {
   EXPECT_TRUE(contains(kind.error(), "kind byte is 88")) << kind.error();
 }
 
+TEST(HostileInput, OmConnectivityThatNeverClosesIsRefusedAtOnce) {
+  // Two 118-byte files (issue 62) with honest counts and chunks whose sizes add up, but whose
+  // halfedges point into loops that never close: walking a face's vertices went on until the
+  // child's 4 GB ran out (5 s, 2.1 GB). The child now checks the connectivity first.
+  for (const char* name : {"broken-connectivity-1.om", "broken-connectivity-2.om"}) {
+    auto m = loadMesh(std::string(NPR_SOURCE_DIR) + "/tests/fuzz/regressions/om/" + name);
+    ASSERT_FALSE(m) << name;
+    EXPECT_TRUE(contains(m.error(), "connectivity is corrupt")) << name << ": " << m.error();
+  }
+}
+
+TEST(HostileInput, OmChunksBeyondTheFileAreRefusedBeforeOpenMeshReadsIt) {
+  // A valid file cut short: its last chunks declare more than the bytes left. Each chunk's size
+  // is checked against the file before a child is started, and the message names the chunk.
+  TempDir d;
+  std::ifstream in(std::string(NPR_SOURCE_DIR) + "/tests/fuzz/corpus/om/cube.om", std::ios::binary);
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_EQ(whole.size(), 250u);
+  auto cut = loadMesh(d.write("cut.om", whole.substr(0, 200)));  // inside the halfedge topology
+  ASSERT_FALSE(cut);
+  EXPECT_TRUE(contains(cut.error(), "chunk 2 (halfedge topology) declares 108 bytes where the file has 84 left")) << cut.error();
+  EXPECT_FALSE(contains(cut.error(), "OM reader")) << "the child was started: " << cut.error();
+  // A custom property whose byte count runs past the end.
+  std::string custom = whole.substr(0, 248);  // up to the sentinel
+  custom += std::string("\xc2\x00\x04" "mass" "\x05" "float", 13);  // named, vertex, custom
+  custom += std::string("\xff\xff\xff\x7f", 4);
+  auto big = loadMesh(d.write("custom.om", custom));
+  ASSERT_FALSE(big);
+  EXPECT_TRUE(contains(big.error(), "chunk 5 (vertex custom property) declares 2147483647 bytes")) << big.error();
+  // The whole file still reads.
+  auto m = loadMesh(d.write("whole.om", whole));
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 12u);
+}
+
 TEST(HostileInput, CoordinatesNearTheDoubleRangeStayFiniteAndKeepTheShape) {
   TempDir d;
   // Centring (lo + hi) / 2 and the radius overflowed to inf, and every position became NaN.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +52,69 @@ TEST(MeshFormats, EveryWriterVariantReadsBackAsTheObjMesh) {
     if (!v.sameOrder) continue;
     for (std::size_t i = 0; i < m->positions.size(); ++i)
       ASSERT_LT(glm::length(m->positions[i] - reference->positions[i]), 1e-5f) << v.name << " vertex " << i;
+  }
+}
+
+// OM files are checked chunk by chunk against their size before OpenMesh reads them
+// (om_reader.cpp): every kind of chunk OpenMesh's writer writes must pass that check, in
+// single and double precision, with byte and float colours and custom properties.
+struct DoubleTraits : OpenMesh::DefaultTraits {
+  using Point = OpenMesh::Vec3d;
+  using Normal = OpenMesh::Vec3d;
+  using Color = OpenMesh::Vec4f;
+};
+template <class M>
+void tetrahedron(M& m) {
+  using P = typename M::Point;
+  const auto a = m.add_vertex(P(0, 0, 0)), b = m.add_vertex(P(1, 0, 0)), c = m.add_vertex(P(0, 1, 0)), e = m.add_vertex(P(0, 0, 1));
+  m.add_face(a, b, c);
+  m.add_face(a, e, b);
+  m.add_face(a, c, e);
+  m.add_face(b, e, c);
+}
+
+TEST(MeshFormats, OmFilesWithEveryKindOfChunkPassTheSizeCheckAndRead) {
+  TempDir d;
+  using O = OpenMesh::IO::Options;
+  {
+    TriMesh m;
+    m.request_vertex_normals();
+    m.request_vertex_colors();
+    m.request_vertex_texcoords2D();
+    m.request_face_normals();
+    m.request_face_colors();
+    m.request_vertex_status();
+    m.request_face_status();
+    m.request_edge_status();
+    m.request_halfedge_status();
+    tetrahedron(m);
+    OpenMesh::VPropHandleT<float> weight;
+    m.add_property(weight, "weight");
+    m.property(weight).set_persistent(true);
+    OpenMesh::FPropHandleT<int> label;
+    m.add_property(label, "label");
+    m.property(label).set_persistent(true);
+    OpenMesh::MPropHandleT<std::string> note;
+    m.add_property(note, "note");
+    m.mproperty(note).set_persistent(true);
+    m.property(note) = "a note";
+    const O every(O::Binary | O::VertexNormal | O::VertexColor | O::VertexTexCoord | O::FaceNormal | O::FaceColor | O::Status | O::Custom);
+    ASSERT_TRUE(OpenMesh::IO::write_mesh(m, (d.path() / "every.om").string(), every));
+  }
+  {
+    OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits> m;
+    m.request_vertex_normals();
+    m.request_vertex_colors();
+    m.request_face_colors();
+    tetrahedron(m);
+    ASSERT_TRUE(OpenMesh::IO::write_mesh(m, (d.path() / "double.om").string(),
+                                         O(O::Binary | O::VertexNormal | O::VertexColor | O::FaceColor | O::ColorAlpha | O::ColorFloat)));
+  }
+  for (const char* name : {"every.om", "double.om"}) {
+    auto m = loadMesh((d.path() / name).string());
+    ASSERT_TRUE(m) << name << ": " << m.error();
+    EXPECT_EQ(m->triangleCount(), 4u) << name;
+    EXPECT_EQ(m->positions.size(), 4u) << name;
   }
 }
 
