@@ -245,6 +245,23 @@ std::size_t SceneObjects::triangles() const {
   return n;
 }
 
+std::vector<glm::vec3> SceneObjects::framingPoints(std::size_t budget) const {
+  std::size_t total = 0;
+  for (const ViewerObject& o : objects_)
+    if (o.visible) total += o.mesh->positions.size();
+  const std::size_t stride = std::max<std::size_t>(1, total / std::max<std::size_t>(budget, 1));
+  std::vector<glm::vec3> points;
+  points.reserve(total / stride + objects_.size());
+  for (const ViewerObject& o : objects_) {
+    if (!o.visible) continue;
+    // One object is drawn as loaded (place()): its rest placement is the identity.
+    const glm::mat4 rest = objects_.size() == 1 ? glm::mat4(1.0f) : toViewer(o.file) * o.inFile;
+    const std::vector<glm::vec3>& p = o.mesh->positions;
+    for (std::size_t i = 0; i < p.size(); i += stride) points.push_back(glm::vec3(rest * glm::vec4(p[i], 1.0f)));
+  }
+  return points;
+}
+
 std::optional<std::size_t> SceneObjects::pick(const CameraMatrices& camera, const glm::vec2& ndc) const {
   const glm::mat4 inv = glm::inverse(camera.projection * camera.view);
   const glm::vec4 a = inv * glm::vec4(ndc, -1.0f, 1.0f), b = inv * glm::vec4(ndc, 1.0f, 1.0f);

@@ -78,6 +78,11 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.poseScene(renderer);
   if (o.cameraFromFile > 0)
     if (Status s = state.useFileCamera(o.cameraFromFile); !s) return Error{"--camera-from-file: " + s.error()};
+  // Framed for the frame's shape, from every yaw where the camera turns about the scene; a
+  // camera given on the command line orbits the scene's centre at the distance it says.
+  if (o.size.x > 0 && o.size.y > 0) state.viewAspect = float(o.size.x) / float(o.size.y);
+  if (o.camera) state.camera.frame(1.0f);
+  else state.frameScene(o.turntable > 0 || o.animation.orbitDegrees != 0.0f);
   if (o.camera) state.camera.setYawPitchDistance(o.camera->x, o.camera->y, o.camera->z * state.camera.modelRadius());
   state.noteIdleControlPalettes();
   if (!o.saveStyle.empty())

@@ -57,11 +57,16 @@ Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, 
   playback.choice = {};
   playback.time = 0.0;
   poseScene(renderer);
-  camera.frame(1.0f);  // the scene is fitted into the unit sphere
+  frameScene();
   renderer.resetPattern();
   for (const auto& [material, file] : materialPalettes) noteMissingMaterial(material);
   for (const auto& [material, detail] : materialDetails) noteMissingMaterial(material, "its detail");
   return okStatus();
+}
+
+void ViewerState::frameScene(bool everyYaw) {
+  camera.frame(1.0f);  // the scene is fitted into the unit sphere: near and far planes, and the fallback
+  camera.framePoints(scene.framingPoints(), viewAspect, 0.9f, everyYaw);
 }
 
 void ViewerState::noteMissingMaterial(const std::string& material, const char* forWhat) {

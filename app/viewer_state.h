@@ -28,6 +28,8 @@ struct ViewerState {
   int paletteIndex = -1;
   RenderSettings settings;
   OrbitCamera camera{30.0f, 20.0f, 3.0f};
+  // The frame's width over its height (the window's, or the headless size): what framing fits.
+  float viewAspect = 16.0f / 9.0f;
   // A scene file's camera in the viewer's space, looked through instead of the orbit camera
   // until the view is moved (--camera-from-file, the overlay).
   std::optional<SceneCamera> fileCamera;
@@ -43,6 +45,9 @@ struct ViewerState {
   // Shows the files' objects in place of the scene (or beside it, `add`); the camera frames
   // the new scene. A file that fails leaves the scene as it was.
   Status loadModels(const std::vector<std::string>& paths, bool add, Renderer& renderer);
+  // The camera frames the shown objects from its direction: their larger screen extent fills
+  // 90% of a frame of viewAspect (from every yaw of a turntable, `everyYaw`).
+  void frameScene(bool everyYaw = false);
   Status loadModel(const std::string& path, Renderer& renderer) { return loadModels({path}, false, renderer); }
   // Loads and selects a palette; the palette's own defaults (match mode, range scale) apply.
   Status loadPalette(const std::string& path, Renderer& renderer);

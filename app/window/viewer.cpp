@@ -68,9 +68,10 @@ void applyAction(Viewer& v, const KeyAction& a) {
       break;
     }
     case Action::ToggleSplit: s.splitView = !s.splitView; break;
-    case Action::FrameModel:  // the scene fits the unit sphere
+    case Action::FrameModel:
       s.fileCamera.reset();
-      s.camera.frame(1.0f);
+      s.viewAspect = v.aspect();
+      s.frameScene();
       r.resetPattern();
       break;
     case Action::CyclePattern:
@@ -107,6 +108,7 @@ void applyAction(Viewer& v, const KeyAction& a) {
 
 bool loadDropped(Viewer& v, const std::string& path, bool add) {
   const bool palette = isPaletteFile(path);
+  v.state.viewAspect = v.aspect();  // a new scene is framed for the window's shape
   const Status st = palette ? v.state.loadPalette(path, *v.renderer) : v.state.loadModels({path}, add, *v.renderer);
   releaseFreedHeapMemory();  // the load's transient memory, and the scene it replaced
   if (st) v.state.note((add && !palette ? "added " : "loaded ") + path);

@@ -44,6 +44,9 @@ int runWindowViewer(const Options& o) {
   installInputCallbacks(v);
   ImGuiSession imgui(v.window->handle());
   v.overlay = !o.noPanel;
+  // Framed again for the view beside the panel once the panel has its width (startScene
+  // framed it for the window's whole size).
+  bool framePending = !o.camera && o.cameraFromFile <= 0;
 
   GLFWwindow* w = v.window->handle();
   std::optional<OffscreenTarget> scene;  // what the views draw into, the window's size
@@ -55,6 +58,11 @@ int runWindowViewer(const Options& o) {
     imgui.newFrame();
     if (v.overlay) drawOverlay(v);
     imgui.endFrame();
+    if (framePending) {
+      framePending = false;
+      v.state.viewAspect = v.aspect();
+      v.state.frameScene(o.animation.orbitDegrees != 0.0f);
+    }
 
     const glm::ivec2 fb = v.window->framebufferSize();
     const glm::ivec4 sceneView = v.sceneViewport();

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -52,7 +53,7 @@ void OrbitCamera::zoom(float factor, const glm::vec2& cursorNdc, float aspect) {
 
 void OrbitCamera::frame(float radius) {
   radius_ = std::isfinite(radius) && radius > 0.0f ? radius : 1.0f;
-  target_ = glm::vec3(0.0f);
+  target_ = homeTarget_ = glm::vec3(0.0f);
   // Fit the bounding sphere in the vertical field of view with a little margin.
   const float d = radius_ / std::sin(glm::radians(fovYDeg_) * 0.5f) * 1.05f;
   distance_ = std::clamp(d, minDistance(), maxDistance());
@@ -65,8 +66,75 @@ void OrbitCamera::frameSphere(const glm::vec3& centre, float radius) {
   distance_ = std::clamp(radius / std::sin(glm::radians(fovYDeg_) * 0.5f) * 1.05f, minDistance(), maxDistance());
 }
 
+void OrbitCamera::framePoints(const std::vector<glm::vec3>& points, float aspect, float fill, bool everyYaw) {
+  if (points.empty() || !(aspect > 0.0f) || !std::isfinite(aspect) || !(fill > 0.0f) || fill > 1.0f) return;
+  const float tanY = std::tan(glm::radians(fovYDeg_) * 0.5f) * fill, tanX = tanY * aspect;
+  const glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
+  // The eye's frame for a yaw at the current pitch: right, up and back (from the target to the eye).
+  struct Basis {
+    glm::vec3 right, up, back;
+  };
+  auto basis = [&](float yawDeg) {
+    const float y = glm::radians(yawDeg), p = glm::radians(pitch_);
+    Basis b;
+    b.back = glm::vec3(std::cos(p) * std::sin(y), std::sin(p), std::cos(p) * std::cos(y));
+    b.right = glm::normalize(glm::cross(worldUp, b.back));
+    b.up = glm::cross(b.back, b.right);
+    return b;
+  };
+  // The distance at which every point lies within the fill of the frame, seen from `target`.
+  auto distanceFor = [&](const Basis& b, const glm::vec3& target) {
+    float d = 0.0f, nearest = -std::numeric_limits<float>::infinity();
+    for (const glm::vec3& q : points) {
+      const glm::vec3 v = q - target;
+      const float x = glm::dot(v, b.right), y = glm::dot(v, b.up), z = glm::dot(v, b.back);
+      d = std::max(d, z + std::max(std::abs(x) / tanX, std::abs(y) / tanY));
+      nearest = std::max(nearest, z);
+    }
+    // Never inside the model: a little beyond its nearest point.
+    return std::max(d, nearest + 0.05f * radius_);
+  };
+  glm::vec3 target(0.0f);
+  float d = 0.0f;
+  if (everyYaw) {
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (const glm::vec3& q : points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    target = (lo + hi) * 0.5f;
+    for (int k = 0; k < 24; ++k) d = std::max(d, distanceFor(basis(yaw_ + 15.0f * float(k)), target));
+  } else {
+    const Basis b = basis(yaw_);
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    for (const glm::vec3& q : points) {
+      const glm::vec3 e(glm::dot(q, b.right), glm::dot(q, b.up), glm::dot(q, b.back));
+      lo = glm::min(lo, e), hi = glm::max(hi, e);
+    }
+    const glm::vec3 c = (lo + hi) * 0.5f;
+    target = b.right * c.x + b.up * c.y + b.back * c.z;
+    d = distanceFor(b, target);
+    // Perspective draws the near side larger: centre the projected bounds on the screen (the
+    // target moved across the view by their offset at its depth), then fit again; three rounds
+    // bring a long model seen obliquely within a pixel or two of centred.
+    for (int round = 0; round < 3 && std::isfinite(d); ++round) {
+      glm::vec2 nlo(std::numeric_limits<float>::infinity()), nhi(-std::numeric_limits<float>::infinity());
+      for (const glm::vec3& q : points) {
+        const glm::vec3 v = q - target;
+        const float depth = std::max(d - glm::dot(v, b.back), 1e-6f);
+        const glm::vec2 ndc(glm::dot(v, b.right) / (depth * tanX), glm::dot(v, b.up) / (depth * tanY));
+        nlo = glm::min(nlo, ndc), nhi = glm::max(nhi, ndc);
+      }
+      const glm::vec2 mid = (nlo + nhi) * 0.5f;
+      target += b.right * (mid.x * d * tanX) + b.up * (mid.y * d * tanY);
+      d = distanceFor(b, target);
+    }
+  }
+  if (!std::isfinite(d) || !std::isfinite(target.x + target.y + target.z)) return;
+  target_ = homeTarget_ = target;
+  distance_ = std::clamp(d, minDistance(), maxDistance());
+  homeDistance_ = distance_;
+}
+
 void OrbitCamera::reset() {
-  target_ = glm::vec3(0.0f);
+  target_ = homeTarget_;
   setYawPitchDistance(homeYaw_, homePitch_, homeDistance_);
 }
 

@@ -3,6 +3,8 @@
 // the view never flips. Pure maths: the app maps input to these calls, tests check them.
 #pragma once
 
+#include <vector>
+
 #include <glm/glm.hpp>
 
 namespace npr {
@@ -28,6 +30,13 @@ class OrbitCamera {
   // Looks at a sphere of the scene (a picked object) from the current direction, filling the
   // view with it; the scene's radius (near and far planes) stays.
   void frameSphere(const glm::vec3& centre, float radius);
+  // Frames `points` (the scene's vertices, or a sample of them) from the current yaw and pitch,
+  // or from every yaw of a turntable (`everyYaw`: the target then stays at their bounds' centre
+  // whatever the yaw): the target at the centre of their projected bounds and the distance at
+  // which their larger screen extent fills `fill` of a frame of `aspect` (width / height). A
+  // long model fills the frame instead of its bounding sphere's disc. Nothing changes for no
+  // points or a degenerate aspect.
+  void framePoints(const std::vector<glm::vec3>& points, float aspect, float fill = 0.9f, bool everyYaw = false);
   void reset();
 
   void setYawPitchDistance(float yawDeg, float pitchDeg, float distance);
@@ -52,6 +61,7 @@ class OrbitCamera {
   float radius_ = 1.0f;
   float fovYDeg_ = 40.0f;
   float homeYaw_ = 0.0f, homePitch_ = 0.0f, homeDistance_ = 3.0f;
+  glm::vec3 homeTarget_{0.0f};
 };
 
 // Pixels of `viewport` the disc of a sphere of `radius` about the model's origin covers on

@@ -5,6 +5,8 @@
 #include <GLFW/glfw3.h>
 
 #include <cmath>
+#include <vector>
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 #include <filesystem>
 
@@ -21,6 +23,65 @@ bool finiteMatrix(const glm::mat4& m) {
     for (int r = 0; r < 4; ++r)
       if (!std::isfinite(m[c][r])) return false;
   return true;
+}
+
+// The larger of the points' projected extents, as a fraction of the frame (x over its width,
+// y over its height), and whether every point is in front of the eye.
+float screenExtent(const OrbitCamera& c, const std::vector<glm::vec3>& points, float aspect, float* outermost = nullptr) {
+  const CameraMatrices m = c.matrices(aspect);
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  float most = 0.0f;
+  for (const glm::vec3& p : points) {
+    const glm::vec4 clip = m.projection * m.view * glm::vec4(p, 1.0f);
+    EXPECT_GT(clip.w, 0.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    lo = glm::min(lo, ndc), hi = glm::max(hi, ndc);
+    most = std::max({most, std::abs(ndc.x), std::abs(ndc.y)});
+  }
+  if (outermost) *outermost = most;
+  return std::max(hi.x - lo.x, hi.y - lo.y) / 2.0f;
+}
+
+TEST(Camera, FramingFitsALongModelsProjectedBoundsNotItsSphere) {
+  // A stick four units long and a fifth thick, off the origin: framed by its bounding sphere
+  // it fills under half the frame's width; framed by its points, 90% of it.
+  std::vector<glm::vec3> stick;
+  for (int i = 0; i <= 40; ++i)
+    for (glm::vec2 yz : {glm::vec2(-0.1f, -0.1f), glm::vec2(0.1f, 0.1f)}) stick.push_back(glm::vec3(0.5f + 0.1f * float(i) - 2.0f, yz.x + 0.3f, yz.y));
+  const float aspect = 16.0f / 9.0f;
+  OrbitCamera sphere(0.0f, 10.0f, 3.0f);
+  sphere.frame(2.05f);
+  EXPECT_LT(screenExtent(sphere, stick, aspect), 0.55f);
+  // (The scene's radius, 2.05, sets the near and far planes.)
+  OrbitCamera c(0.0f, 10.0f, 3.0f);
+  c.frame(2.05f);
+  c.framePoints(stick, aspect, 0.9f);
+  float outermost = 0.0f;
+  EXPECT_NEAR(screenExtent(c, stick, aspect, &outermost), 0.9f, 0.02f);
+  EXPECT_LE(outermost, 0.9f + 1e-4f);
+  // Seen end on (yaw 90), the stick is small on screen: the frame closes in on it, the eye staying
+  // outside it.
+  OrbitCamera end(90.0f, 0.0f, 3.0f);
+  end.frame(2.05f);
+  end.framePoints(stick, aspect, 0.9f);
+  EXPECT_GT(screenExtent(end, stick, aspect), 0.6f);
+  // A turntable: every yaw keeps the whole stick inside the frame, and the widest fills it.
+  OrbitCamera turn(0.0f, 20.0f, 3.0f);
+  turn.frame(2.05f);
+  turn.framePoints(stick, aspect, 0.9f, true);
+  float widest = 0.0f;
+  for (int k = 0; k < 24; ++k) {
+    float most = 0.0f;
+    widest = std::max(widest, screenExtent(turn, stick, aspect, &most));
+    EXPECT_LE(most, 0.9f + 1e-4f) << "yaw " << turn.yaw();
+    turn.orbit(15.0f, 0.0f);
+  }
+  EXPECT_GT(widest, 0.6f);
+  // Nothing to frame, or a degenerate frame: nothing changes.
+  const float before = c.distance();
+  c.framePoints({}, aspect);
+  c.framePoints(stick, 0.0f);
+  EXPECT_EQ(c.distance(), before);
 }
 
 TEST(Camera, OrbitNeverFlipsAtThePoles) {
