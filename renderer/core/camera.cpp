@@ -100,7 +100,27 @@ void OrbitCamera::framePoints(const std::vector<glm::vec3>& points, float aspect
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
     for (const glm::vec3& q : points) lo = glm::min(lo, q), hi = glm::max(hi, q);
     target = (lo + hi) * 0.5f;
-    for (int k = 0; k < 24; ++k) d = std::max(d, distanceFor(basis(yaw_ + 15.0f * float(k)), target));
+    auto fitAll = [&] {
+      float most = 0.0f;
+      for (int k = 0; k < 24; ++k) most = std::max(most, distanceFor(basis(yaw_ + 15.0f * float(k)), target));
+      return most;
+    };
+    d = fitAll();
+    // The turning axis stays through the bounds' centre; its height moves to centre what every
+    // yaw shows on screen (legs below a body, seen from above, sit low), then the fit again.
+    for (int round = 0; round < 3 && std::isfinite(d); ++round) {
+      float ylo = std::numeric_limits<float>::infinity(), yhi = -std::numeric_limits<float>::infinity();
+      for (int k = 0; k < 24; ++k) {
+        const Basis b = basis(yaw_ + 15.0f * float(k));
+        for (const glm::vec3& q : points) {
+          const glm::vec3 v = q - target;
+          const float ndc = glm::dot(v, b.up) / (std::max(d - glm::dot(v, b.back), 1e-6f) * tanY);
+          ylo = std::min(ylo, ndc), yhi = std::max(yhi, ndc);
+        }
+      }
+      target.y += 0.5f * (ylo + yhi) * d * tanY / std::max(std::cos(glm::radians(pitch_)), 0.1f);
+      d = fitAll();
+    }
   } else {
     const Basis b = basis(yaw_);
     glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
