@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/gl/texture_units.h"
 
 namespace npr {

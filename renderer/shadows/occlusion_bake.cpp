@@ -9,6 +9,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/gl/pass_state.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/gl/texture.h"
 #include "renderer/gl/texture_target.h"
 #include "renderer/gl/texture_units.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "renderer/gl/pass_state.h"
+#include "renderer/programs/program_variants.h"
 #include "renderer/gl/texture_units.h"
 #include "renderer/passes/geometry_pass.h"
 
