@@ -60,9 +60,8 @@ bool Renderer::sharesFramebufferDepth(const CameraMatrices& camera, const Render
   FrameNeeds needs = frameNeeds(s);
   const RenderPass& path = surfaces_.path(s.path);
   path.needs(q, needs);
-  // The object pattern's coordinate comes from the surface, which the turn resolve cannot see.
-  if (path.resolvesTurns() && q.turned && s.pattern != PatternSpace::Object &&
-      turnResolveWanted(s, q.softwareRasterizer, q.fewestPixelsPerTriangle))
+  if (path.resolvesTurns() &&
+      turnResolveWanted(s, q.turned, s.pattern == PatternSpace::Object, q.softwareRasterizer, q.fewestPixelsPerTriangle))
     needs.sharedDepth = true;
   return needs.sharedDepth;
 }

@@ -27,7 +27,8 @@ bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTrian
   return softwareRasterizer && pixelsPerFrontTriangle < kResolveTurnPixels;
 }
 
-bool turnResolveWanted(const RenderSettings& s, bool softwareRasterizer, float pixelsPerFrontTriangle) {
+bool turnResolveWanted(const RenderSettings& s, bool turned, bool objectPattern, bool softwareRasterizer, float pixelsPerFrontTriangle) {
+  if (!turned || objectPattern) return false;
   const TurnPlacement where = s.tuning.turnPlacement;
   return where == TurnPlacement::Resolved || (where == TurnPlacement::Auto && resolveTurnAutomatically(softwareRasterizer, pixelsPerFrontTriangle));
 }

@@ -19,9 +19,11 @@ namespace npr {
 // rasterizer whose model has fewer than kResolveTurnPixels pixels per front-facing triangle, in
 // the mesh pass everywhere else (the figures are in turn_resolve_pass.cpp).
 bool resolveTurnAutomatically(bool softwareRasterizer, float pixelsPerFrontTriangle);
-// Whether a mesh pass that turns its lookups leaves them to the resolve, by the settings'
-// choice (TurnPlacement) for a model of this density.
-bool turnResolveWanted(const RenderSettings& settings, bool softwareRasterizer, float pixelsPerFrontTriangle);
+// Whether a mesh pass (of a path that resolvesTurns) leaves its turned lookups to the resolve:
+// where it turns them (`turned`), not for the object pattern (its coordinate comes from the
+// surface, which the resolve cannot see), by the settings' choice (TurnPlacement) for a model
+// of this density. The frame asks it per model, and the window ahead of the frame.
+bool turnResolveWanted(const RenderSettings& settings, bool turned, bool objectPattern, bool softwareRasterizer, float pixelsPerFrontTriangle);
 
 class TurnResolvePass {
  public:

@@ -97,9 +97,9 @@ void SceneSurfaces::placeFor(const FrameView& view, Model* model) {
 
 TurnResolvePass* SceneSurfaces::turnResolveFor(const FrameView& view, const GpuPalette* palette, gl::MeshOutput output) {
   const RenderSettings& s = view.settings;
-  // The object pattern's coordinate comes from the surface, which the resolve cannot see.
-  if (!path(s.path).resolvesTurns() || output != gl::MeshOutput::Colour || !palette || !palette->oriented(pattern_) ||
-      pattern_.mapping() == gl::PatternMapping::Object || !turnResolveWanted(s, view.softwareRasterizer, pixelsPerFrontTriangle_))
+  if (!path(s.path).resolvesTurns() || output != gl::MeshOutput::Colour || !palette ||
+      !turnResolveWanted(s, palette->oriented(pattern_), pattern_.mapping() == gl::PatternMapping::Object, view.softwareRasterizer,
+                         pixelsPerFrontTriangle_))
     return nullptr;
   ++view.stats.surfaceBuffers;
   return &turnResolve_;
