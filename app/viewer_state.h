@@ -11,6 +11,7 @@
 
 #include "app/data_directory.h"
 #include "app/scene_objects.h"
+#include "app/viewer_defaults.h"
 #include "renderer/core/camera.h"
 #include "renderer/mesh/mesh.h"
 #include "renderer/palette/palette.h"
@@ -26,7 +27,7 @@ struct ViewerState {
   std::unique_ptr<Palette> palette;
   std::vector<std::string> palettes;  // what 1-9 and [ ] cycle through
   int paletteIndex = -1;
-  RenderSettings settings;
+  RenderSettings settings = viewerDefaultSettings();
   OrbitCamera camera{30.0f, 20.0f, 3.0f};
   // The frame's width over its height (the window's, or the headless size): what framing fits.
   float viewAspect = 16.0f / 9.0f;

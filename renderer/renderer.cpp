@@ -77,10 +77,13 @@ Status Renderer::prepare(const CameraMatrices& camera, const RenderSettings& s, 
     if (status) status = m.applyPose(on.gpu, on.cpu, gpu_.programs, stats_);
   });
   if (!status) return status;
-  // The reference path draws no palette: in the split view it must not smooth the tone range a
+  // The reference path draws no palette: in the split view it need not fit the tone range a
   // second time each frame. Stroke angles read no tone.
-  if (output == FrameOutput::Colour ? s.path != RenderPath::Reference : output != FrameOutput::StrokeAngles)
-    toneFit_.update(scene_, lighting_, camera, s, stats_);
+  if (output == FrameOutput::Colour ? s.path != RenderPath::Reference : output != FrameOutput::StrokeAngles) {
+    CameraMatrices whole = camera;
+    if (work_.tile) whole.projection = work_.tile->wholeProjection;
+    toneFit_.update(scene_, lighting_, whole, s, stats_);
+  }
   if (!palettes_.main() && (pathInfo(s.path).usesPalette || output == FrameOutput::StrokeAngles)) return Error{"no palette loaded"};
   return preparePalettes(scene_, palettes_, s, toneFit_.target(), stats_);
 }
@@ -88,7 +91,7 @@ Status Renderer::prepare(const CameraMatrices& camera, const RenderSettings& s, 
 FrameView Renderer::frameView(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, bool colour) {
   return FrameView{camera,        s,      viewport,      colour,         scene_,         lighting_,         palettes_,
                    palettes_.main(), surfaces_.pattern(), gpu_.programs, stats_, gpu_.emptyVao, work_.progress, work_.budgetMs,
-                   work_.frameOffset, gpu_.softwareRasterizer};
+                   work_.tile ? work_.tile->offset : glm::ivec2(0), gpu_.softwareRasterizer};
 }
 
 // The frame's hatching orientation, and the direction field of each model where a palette

@@ -94,9 +94,14 @@ class Renderer {
   void resetPattern() {
     scene_.forEach([](Model& m) { m.patterns().reset(); });
   }
-  // Where the viewport's pixels sit in the whole frame, for a poster drawn in tiles: palette
-  // patterns continue across the tiles' seams. (0, 0) for an ordinary frame.
-  void setFrameOffset(const glm::ivec2& offset) { work_.frameOffset = offset; }
+  // A poster drawn in tiles: where the viewport's pixels sit in the whole frame (palette
+  // patterns continue across the tiles' seams) and the whole frame's projection (the tone range
+  // is fitted to what the whole frame shows, not the tile). None: an ordinary frame.
+  struct Tile {
+    glm::ivec2 offset{0};
+    glm::mat4 wholeProjection{1.0f};
+  };
+  void setTile(const std::optional<Tile>& tile) { work_.tile = tile; }
   // Long work inside a frame (the occlusion bake) runs for at most `ms` per frame (0: to the
   // end in one frame, as headless runs and tests want).
   void setOcclusionBudget(double ms) { work_.budgetMs = ms; }
@@ -137,7 +142,7 @@ class Renderer {
   struct WorkOptions {
     double budgetMs = 0.0;
     std::function<void(const std::string&, double)> progress;
-    glm::ivec2 frameOffset{0};
+    std::optional<Tile> tile;
   };
 
   FrameStats stats_;

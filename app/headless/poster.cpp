@@ -55,10 +55,10 @@ int renderPoster(const Options& o, ViewerState& state, Renderer& renderer) {
       const int gx0 = x0 - kGutter, gy0 = y0 - kGutter, gw = w + 2 * kGutter, gh = h + 2 * kGutter;
       CameraMatrices cam = whole;
       cam.projection = tileProjection(whole.projection, W, H, gx0, gy0, gx0 + gw, gy0 + gh);
-      renderer.setFrameOffset({gx0, gy0});
+      renderer.setTile(Renderer::Tile{{gx0, gy0}, whole.projection});
       target->bind();
       const Status s = renderer.render(cam, settings, {0, 0, gw, gh});
-      renderer.setFrameOffset({0, 0});
+      renderer.setTile(std::nullopt);
       if (!s) return reportFailure("poster tile " + std::to_string(r * columns + c + 1) + ": " + s.error());
       const ImageRGBA8 img = target->readRGBA8();  // rows top first; the target may be larger than this tile
       const int targetTop = img.height - gh;       // GL's row 0 is the target's bottom row

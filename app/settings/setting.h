@@ -13,6 +13,7 @@
 
 #include "renderer/core/result.h"
 #include "renderer/lighting/lighting_state.h"
+#include "app/viewer_defaults.h"
 #include "renderer/settings/render_settings.h"
 
 namespace npr {
@@ -20,7 +21,7 @@ namespace npr {
 // Everything a style describes: the renderer's settings plus the parts of the look that live
 // beside them (the light, the tone model of the lighting state, the palettes' files).
 struct Look {
-  RenderSettings render;
+  RenderSettings render = viewerDefaultSettings();
   glm::vec3 light{2.0f, 2.5f, 3.0f};  // scene space (model radius 1)
   ToneModel tone = ToneModel::OpenGL;
   ToneParameters toneParameters;

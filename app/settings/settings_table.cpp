@@ -179,8 +179,8 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
   t.push_back(choiceRow<ToneRange>("tone-range", "tone range", "palette",
-                                   "auto: the palette's levels fitted onto the 2nd to 98th percentile of the lit tones on screen, smoothed over "
-                                   "frames (the range scale spreads about them; not with band thresholds); per-object: each object fitted "
+                                   "auto: the palette's levels fitted onto the 2nd to 95th percentile of the lit tones on screen, each frame from "
+                                   "its own view (the range scale spreads about them; not with band thresholds); per-object: each object fitted "
                                    "to its own tones (a dark object beside a bright one); fixed: the palette's own range",
                                    [](Look& l) -> ToneRange& { return l.render.toneRange; }));
   t.push_back(choiceRow<ToneBlend>("tone-blend", "between levels", "palette",

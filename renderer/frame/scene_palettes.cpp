@@ -25,6 +25,9 @@ Status preparePalettes(Scene& scene, PaletteSet& palettes, const RenderSettings&
     if (!status || m.toneSlot == 0) return;
     status = palettes.updateSlot(m.palette() ? m.palette() : palettes.main(), s, m.toneTarget, m.toneSlot);
   });
+  // The ground's, set apart from the objects' (frame/tone_fit.cpp).
+  if (Model* ground = s.ground ? scene.ground() : nullptr; status && ground && ground->toneSlot != 0)
+    status = palettes.updateSlot(palettes.main(), s, ground->toneTarget, ground->toneSlot);
   return status;
 }
 

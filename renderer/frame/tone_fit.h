@@ -1,5 +1,5 @@
 // The automatic tone range (--tone-range auto|per-object): the palettes' levels fitted onto the
-// lit tones the view shows, smoothed over frames, for the whole scene and, per object, for each
+// lit tones the view shows, each frame from its own view and pose, for the whole scene and, per object, for each
 // model (its tracker, target and matcher slot live on the model: scene/model.h).
 #pragma once
 
@@ -26,6 +26,8 @@ class ToneFit {
   std::optional<glm::vec2> target() const { return target_; }
 
  private:
+  static void fitGround(Model& ground, const LightingState& lighting, const CameraMatrices& camera, const RenderSettings& s, int slot);
+
   ToneRangeTracker tracker_;
   std::optional<glm::vec2> target_;
   std::vector<ToneSample> samples_;

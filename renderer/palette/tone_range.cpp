@@ -60,15 +60,25 @@ std::optional<glm::vec2> percentileRange(std::vector<ToneSample>& samples, float
   for (const ToneSample& s : samples) total += s.weight > 0.0f && std::isfinite(s.weight) && std::isfinite(s.query) ? s.weight : 0.0;
   if (!(total > 0.0)) return std::nullopt;
   std::sort(samples.begin(), samples.end(), [](const ToneSample& a, const ToneSample& b) { return a.query < b.query; });
+  // Interpolated between neighbouring samples by where the wanted weight falls inside the
+  // sample that crosses it: the percentile then moves continuously as areas change with the
+  // view, instead of jumping from one sample's tone to the next (without smoothing over frames,
+  // the dark object of test_gl_tone_range orbiting moved 8 quanta a frame, stepwise).
   auto at = [&](float percent) {
     const double want = total * std::clamp(percent, 0.0f, 100.0f) / 100.0;
     double sum = 0.0;
+    std::optional<float> previous;
     for (const ToneSample& s : samples) {
       if (!(s.weight > 0.0f) || !std::isfinite(s.weight) || !std::isfinite(s.query)) continue;
+      if (sum + s.weight >= want) {
+        if (!previous) return s.query;
+        const float t = float(std::clamp((want - sum) / s.weight, 0.0, 1.0));
+        return *previous + (s.query - *previous) * t;
+      }
       sum += s.weight;
-      if (sum >= want) return s.query;
+      previous = s.query;
     }
-    return samples.back().query;
+    return previous ? *previous : samples.back().query;
   };
   glm::vec2 r(at(low), at(high));
   if (r.y - r.x < minSpan) {

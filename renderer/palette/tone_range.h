@@ -8,9 +8,9 @@
 // materials, vertex colours and texture averages), keeps the front-facing ones inside the
 // view, and weights each by its area on screen: a histogram of the picture's tones without
 // reading anything back from the GPU. Occlusion between surfaces is not seen (a hidden front
-// face counts); the percentiles make that matter little. The tracker then smooths the range
-// over frames so it never pumps while orbiting, and quantises it so the matcher's lookup
-// tables are rebuilt only when it moves.
+// face counts); the percentiles make that matter little. The tracker quantises the range so
+// the matcher's lookup tables are rebuilt only when it moves (and can smooth it over frames;
+// the frame's fit does not, so any frame renders alike alone or in a sequence).
 #pragma once
 
 #include <algorithm>

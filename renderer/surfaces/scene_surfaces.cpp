@@ -73,6 +73,7 @@ Status SceneSurfaces::drawGround(FrameView& view, gl::MeshOutput output, const P
   FrameContext frame{view.camera, view.viewport,  plain,       view.lighting,       ground->gpu(), ground->mesh(), ground->materials(),
                      view.palette, pattern_,      ground->triangles(), view.programs, view.stats,    view.emptyVao,  output};
   frame.sceneView = view.camera.view;
+  const ToneSlotScope toneSlot(*ground, view.palettes);  // its tones set apart from the objects'
   return draw ? (*draw)(view, nullptr, frame) : drawPart(view, nullptr, frame);
 }
 

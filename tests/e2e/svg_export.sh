@@ -76,7 +76,7 @@ fi
 # With the frame embedded underneath, and a refusal without lines.
 "$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
 grep -q 'data:image/png;base64,' "$tmp/raster.svg" || { echo "FAIL: --svg-raster embeds no image"; fail=1; }
-"$viewer" --headless --size 96x72 --svg "$tmp/none.svg" 2>"$tmp/err" && { echo "FAIL: --svg without lines succeeded"; fail=1; }
+"$viewer" --headless --size 96x72 --lines none --svg "$tmp/none.svg" 2>"$tmp/err" && { echo "FAIL: --svg without lines succeeded"; fail=1; }
 grep -q "lines" "$tmp/err" || { echo "FAIL: --svg without lines gives no reason"; fail=1; }
 [ $fail = 0 ] && echo "svg: all checks passed"
 exit $fail
