@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/version.h"
+#include "app/window/input_map.h"
 
 namespace npr {
 namespace {
@@ -35,7 +36,7 @@ std::string manPage(const CLI::App& app) {
   out += ".SH SYNOPSIS\n.B npr-viewer\n[\\fIOPTIONS\\fR] [\\fIMODEL\\fR...]\n";
   out += ".SH DESCRIPTION\n" + roff(app.get_description()) + "\n";
   out += ".PP\nWithout options it opens a window on the default model and palette. Models are OBJ (with "
-         "MTL materials and textures), PLY, OFF, STL or OM files; palettes are .palette files or folders "
+         "MTL materials and textures), glTF 2.0 (.gltf, .glb; scenes, materials, animation), PLY, OFF, STL or OM files; palettes are .palette files or folders "
          "holding one.\n";
   // Options by group, in the order the command line declares them.
   std::vector<std::string> groups;
@@ -53,6 +54,9 @@ std::string manPage(const CLI::App& app) {
       out += ".TP\n.B " + roff(names) + "\n" + roff(opt->get_description()) + "\n";
     }
   }
+  // The window's keys, from the table the help panel lists.
+  out += ".SH KEYS\nIn the window:\n";
+  for (const Binding& b : keyBindings()) out += ".TP\n.B " + roff(b.keys) + "\n" + roff(b.what) + "\n";
   out += ".SH ENVIRONMENT\n"
          ".TP\n.B NPR_GPU\nThe EGL device headless runs use, as \\-\\-gpu takes it.\n"
          ".TP\n.B NPR_DATA_DIR\nA folder holding palettes/ and models/ to use instead of the installed data.\n"

@@ -41,6 +41,9 @@ glm::vec4 boundsOf(const std::vector<const ViewerObject*>& objects, Placement&& 
   return glm::vec4(centre, std::sqrt(r2));
 }
 
+// Where the file layout puts a file: where the file places it, or beside the scene it was added to.
+glm::mat4 filePlacement(const SceneFile& file) { return file.beside ? *file.beside : glm::mat4(1.0f); }
+
 }  // namespace
 
 Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings) {
@@ -55,6 +58,11 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
     objects_.clear();
     files_.clear();
   }
+  // What the scene holds before the added files, as the file layout places it.
+  std::vector<const ViewerObject*> before;
+  for (const ViewerObject& o : objects_) before.push_back(&o);
+  glm::vec4 existing = before.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f)
+                                      : boundsOf(before, [&](const ViewerObject& o) { return filePlacement(files_[o.file]) * o.inFile; });
   for (LoadedScene& s : loaded) {
     for (const std::string& w : s.warnings) warnings.push_back(w);
     std::vector<const SceneAnimation*> every;
@@ -63,7 +71,7 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
     const auto movedNode = [&](int n) { return n >= 0 && n < static_cast<int>(moved.size()) && moved[static_cast<std::size_t>(n)]; };
     const std::size_t file = files_.size();
     files_.push_back({s.file, std::move(s.cameras), std::move(s.lights), std::move(s.nodes), std::move(s.animations), std::move(s.skins), false,
-                      glm::mat4(1.0f)});
+                      glm::mat4(1.0f), std::nullopt});
     for (SceneObject& o : s.objects) {
       ViewerObject v;
       v.name = o.name;
@@ -81,6 +89,23 @@ Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Rende
       renderer.scene().setName(v.id, v.name);  // line sets select objects by it
       if (!v.mesh->deformation.empty()) files_.back().deforms = true;
       objects_.push_back(std::move(v));
+    }
+    // Beside the scene, to its right, scaled to its radius, a fifth of that apart.
+    if (add && existing.w > 0.0f && std::isfinite(existing.w)) {
+      std::vector<const ViewerObject*> mine;
+      for (const ViewerObject& o : objects_)
+        if (o.file == file) mine.push_back(&o);
+      const glm::vec4 b = boundsOf(mine, [](const ViewerObject& o) { return o.inFile; });
+      if (b.w > 0.0f && std::isfinite(b.w)) {
+        const float r = existing.w;
+        const glm::vec3 at = glm::vec3(existing) + glm::vec3(existing.w + 1.2f * r, 0.0f, 0.0f);
+        files_.back().beside = glm::translate(glm::mat4(1.0f), at) * glm::scale(glm::mat4(1.0f), glm::vec3(r / b.w)) *
+                               glm::translate(glm::mat4(1.0f), -glm::vec3(b));
+        // The next file added goes beside this one too.
+        std::vector<const ViewerObject*> all;
+        for (const ViewerObject& o : objects_) all.push_back(&o);
+        existing = boundsOf(all, [&](const ViewerObject& o) { return filePlacement(files_[o.file]) * o.inFile; });
+      }
     }
   }
   place(renderer);
@@ -113,7 +138,7 @@ void SceneObjects::place(Renderer& renderer) {
     glm::mat4& l = files_[f].layout;
     const glm::vec4 b = fileBounds[f];
     if (layout_ == Layout::File || n < 2 || !(b.w > 0.0f)) {
-      l = glm::mat4(1.0f);
+      l = layout_ == Layout::File ? filePlacement(files_[f]) : glm::mat4(1.0f);
       continue;
     }
     const float spacing = 2.5f;

@@ -12,6 +12,7 @@
 
 #include "app/animation_playback.h"
 #include "app/scene_layout.h"
+#include <optional>
 #include "renderer/mesh/node_animation.h"
 #include "renderer/mesh/scene_description.h"
 #include "renderer/renderer.h"
@@ -44,6 +45,10 @@ struct SceneFile {
   std::vector<SceneSkin> skins;
   bool deforms = false;  // an object of it is skinned or has morph targets
   glm::mat4 layout{1.0f};  // the file's space to the scene's (before the fit)
+  // Added to a scene (Shift-drop, Ctrl+Shift+O) laid out as the files place them: set beside
+  // what was there at its size, not at its own units (a teapot in centimetres beside a spider
+  // in metres would be a speck or hide it).
+  std::optional<glm::mat4> beside;
 };
 
 class SceneObjects {

@@ -41,10 +41,16 @@ void ViewerState::note(const std::string& raw) {
   if (messages.size() > 20) messages.erase(messages.begin());
 }
 
+void ViewerState::problem(const std::string& raw) {
+  note(raw);
+  problems.push_back(printableMessage(raw));
+  if (problems.size() > 8) problems.erase(problems.begin());
+}
+
 Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, Renderer& renderer) {
   std::vector<std::string> warnings;
   if (Status s = scene.load(paths, add, renderer, warnings); !s) {
-    note("model not loaded: " + s.error());
+    problem("model not loaded: " + s.error());
     return s;
   }
   for (const auto& w : warnings) note(w);
@@ -92,11 +98,11 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
   }
   Result<Palette> p = npr::loadPalette(path);
   if (!p) {
-    note("palette for material '" + material + "' not loaded: " + p.error());
+    problem("palette for material '" + material + "' not loaded: " + p.error());
     return Error{p.error()};
   }
   if (Status s = renderer.palettes().setMaterial(material, *p); !s) {
-    note("palette for material '" + material + "' not loaded: " + s.error());
+    problem("palette for material '" + material + "' not loaded: " + s.error());
     return s;
   }
   for (const auto& w : p->warnings) note(w);
@@ -121,11 +127,11 @@ Status ViewerState::setControlPalette(ControlParameter parameter, const std::str
   }
   Result<Palette> p = npr::loadPalette(path);
   if (!p) {
-    note(std::string(what) + " not loaded: " + p.error());
+    problem(std::string(what) + " not loaded: " + p.error());
     return Error{p.error()};
   }
   if (Status s = renderer.palettes().setControl(parameter, *p); !s) {
-    note(std::string(what) + " not loaded: " + s.error());
+    problem(std::string(what) + " not loaded: " + s.error());
     return s;
   }
   for (const auto& w : p->warnings) note(w);
@@ -145,11 +151,11 @@ void ViewerState::noteIdleControlPalettes() {
 Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
   Result<Palette> p = npr::loadPalette(path);
   if (!p) {
-    note("palette not loaded: " + p.error());
+    problem("palette not loaded: " + p.error());
     return Error{p.error()};
   }
   if (Status s = renderer.palettes().setMain(*p); !s) {
-    note("palette not loaded: " + s.error());
+    problem("palette not loaded: " + s.error());
     return s;
   }
   palette = std::make_unique<Palette>(std::move(*p));

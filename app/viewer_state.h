@@ -42,6 +42,10 @@ struct ViewerState {
   // The scene's clock: which animations play and when (--animation, --time, --play, space).
   Playback playback;
   std::vector<std::string> messages;  // load errors and warnings, newest last, shown in the overlay
+  // Failures the user must see (a failed open, a refused palette or style, a failed export):
+  // the window's message bar shows them until dismissed. Also in `messages` and on stderr.
+  std::vector<std::string> problems;
+  std::string styleName;  // the style applied last (what Ctrl+S offers to save as); empty: none
 
   // Shows the files' objects in place of the scene (or beside it, `add`); the camera frames
   // the new scene. A file that fails leaves the scene as it was.
@@ -69,6 +73,7 @@ struct ViewerState {
   // Says when a control palette is loaded but this frame's settings give it nothing to show.
   void noteIdleControlPalettes();
   void note(const std::string& message);
+  void problem(const std::string& message);
   void noteMissingMaterial(const std::string& material, const char* forWhat = "its palette");
 
   // The view this frame is drawn from: the file's camera when one is chosen, else the orbit's.

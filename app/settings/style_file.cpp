@@ -100,6 +100,7 @@ Status applyStyle(const Style& st, ViewerState& state, Renderer& renderer) {
   values.insert(values.end(), st.values.begin(), st.values.end());
   if (Status s = applySettings(values, true, state, renderer); !s) return Error{st.file + ": " + s.error()};
   state.note("style " + st.name + " applied");
+  state.styleName = st.name;
   return okStatus();
 }
 

@@ -15,12 +15,20 @@ Viewer* viewerOf(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserP
 
 void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
   if (action == GLFW_RELEASE) return;
+  // Esc in a file dialog closes the dialog, not the viewer; Enter confirms it.
+  if (viewerOf(w)->dialog != Viewer::Dialog::None) {
+    if (key == GLFW_KEY_ESCAPE) {
+      viewerOf(w)->dialog = Viewer::Dialog::None;
+      return;
+    }
+    if (key == GLFW_KEY_ENTER || key == GLFW_KEY_KP_ENTER) viewerOf(w)->dialogEnter = true;
+  }
   const auto a = actionForKey(key, mods);
   if (!a) return;
   // While an overlay widget has the keyboard (a slider being typed into) keys go to it, except
-  // F1 and Esc: otherwise the overlay could not be hidden, nor the viewer closed, until the
+  // F1, Esc and F12: otherwise the overlay could not be hidden, nor the viewer closed, until the
   // user clicked elsewhere (found by the soak test).
-  const bool always = key == GLFW_KEY_F1 || key == GLFW_KEY_ESCAPE;
+  const bool always = key == GLFW_KEY_F1 || key == GLFW_KEY_ESCAPE || key == GLFW_KEY_F12;
   if (ImGui::GetIO().WantCaptureKeyboard && !always) return;
   // Only light movement repeats while a key is held; toggles fire once per press.
   if (action == GLFW_REPEAT && a->action != Action::MoveLight) return;
@@ -112,7 +120,7 @@ void onScroll(GLFWwindow* w, double /*dx*/, double dy) {
 void onDrop(GLFWwindow* w, int count, const char** paths) {
   const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
   bool replaced = false;
-  for (int i = 0; i < count; ++i) replaced = loadDropped(*viewerOf(w), paths[i], shift || replaced) || replaced;
+  for (int i = 0; i < count; ++i) replaced = openFile(*viewerOf(w), paths[i], shift || replaced) || replaced;
 }
 
 }  // namespace

@@ -7,14 +7,19 @@
 namespace npr {
 
 std::optional<KeyAction> actionForKey(int key, int mods) {
-  (void)mods;
+  if (mods & GLFW_MOD_CONTROL) {
+    // Ctrl chords are the file commands only (Ctrl+S must not move the light as S does).
+    if (key == GLFW_KEY_O) return KeyAction{Action::Open, (mods & GLFW_MOD_SHIFT) ? 1 : 0};
+    if (key == GLFW_KEY_S) return KeyAction{Action::SaveStyle};
+    return std::nullopt;
+  }
   if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) return KeyAction{Action::SelectPalette, key - GLFW_KEY_1};
   switch (key) {
     case GLFW_KEY_ESCAPE: return KeyAction{Action::Quit};
     case GLFW_KEY_F1:
     case GLFW_KEY_TAB: return KeyAction{Action::ToggleOverlay};
     case GLFW_KEY_H: return KeyAction{Action::ToggleHelp};
-    case GLFW_KEY_F12: return KeyAction{Action::Screenshot};
+    case GLFW_KEY_F12: return KeyAction{Action::Screenshot, (mods & GLFW_MOD_SHIFT) ? 1 : 0};
     case GLFW_KEY_RIGHT_BRACKET: return KeyAction{Action::NextPalette};
     case GLFW_KEY_LEFT_BRACKET: return KeyAction{Action::PreviousPalette};
     case GLFW_KEY_M: return KeyAction{Action::CycleMatch};
@@ -59,7 +64,9 @@ const std::vector<Binding>& keyBindings() {
       {"Space", "play / pause the scene's animations"},
       {"F1 or Tab", "overlay"},
       {"H", "this help"},
-      {"F12", "screenshot (PNG in the current folder)"},
+      {"Ctrl+O / Ctrl+Shift+O", "open a model, scene, palette or style (type its path, Enter) / add a model to the scene"},
+      {"Ctrl+S", "save the look as a style file (a name is asked; an existing file is replaced only when confirmed)"},
+      {"F12 / Shift+F12", "screenshot of the scene at the window's size / of the whole window (npr-screenshot-NNNN.png, never overwriting)"},
       {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette); with Shift, add the model to the scene"},
       {"Double-click", "frame the object under the cursor (F: the whole scene)"},
       {"Esc", "quit"},

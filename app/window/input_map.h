@@ -8,11 +8,14 @@
 namespace npr {
 
 enum class Action {
-  Quit, ToggleOverlay, ToggleHelp, Screenshot,
+  Quit, ToggleOverlay, ToggleHelp,
+  Screenshot,     // param: 1 the whole window with the panel (Shift+F12), 0 the scene at the window's size
   SelectPalette,  // param: palette number, 0-based
   NextPalette, PreviousPalette, CycleMatch, RangeScaleUp, RangeScaleDown, CyclePath, ToggleSplit,
   FrameModel, ResetView, ToggleLightFollow, ToggleVsync, CyclePattern, TogglePlay,
   MoveLight,      // param: axis * 2 + (positive ? 1 : 0); axis 0 = x, 1 = y, 2 = z
+  Open,           // param: 1 adds to the scene (Ctrl+Shift+O), 0 replaces it (Ctrl+O)
+  SaveStyle,      // Ctrl+S: the look under a typed name
 };
 
 struct KeyAction {

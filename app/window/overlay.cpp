@@ -201,7 +201,7 @@ void drawObjectList(Viewer& v) {
       if (ImGui::Selectable("(main palette)", o.palette.empty())) (void)s.scene.setPalette(i, "", *v.renderer);
       for (const std::string& p : s.palettes)
         if (ImGui::Selectable(fs::path(p).stem().string().c_str(), o.palette == p))
-          if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.note("palette of '" + o.name + "' not loaded: " + st.error());
+          if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.problem("palette of '" + o.name + "' not loaded: " + st.error());
       ImGui::EndCombo();
     }
     const bool hovered = ImGui::IsItemHovered();
@@ -324,17 +324,16 @@ void drawOverlay(Viewer& v) {
     for (const std::string& file : discoverStyles())
       if (ImGui::Selectable(fs::path(file).stem().c_str())) {
         Result<Style> style = loadStyle(file);
-        if (!style) s.note("style not applied: " + style.error());
-        else if (Status applied = applyStyle(*style, s, *v.renderer); !applied) s.note("style not applied: " + applied.error());
+        if (!style) s.problem("style not applied: " + style.error());
+        else if (Status applied = applyStyle(*style, s, *v.renderer); !applied) s.problem("style not applied: " + applied.error());
       }
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  if (ImGui::Button("save style")) {
-    const fs::path file = v.screenshotDir / ("npr-style-" + std::to_string(++v.styleCount) + ".style");
-    const Status saved = saveStyle(s, *v.renderer, "Saved style " + std::to_string(v.styleCount), file.string());
-    s.note(saved ? "style written to " + file.string() : saved.error());
-  }
+  if (ImGui::Button("save style (Ctrl+S)")) applyAction(v, {Action::SaveStyle});
+  if (ImGui::Button("open (Ctrl+O)")) applyAction(v, {Action::Open, 0});
+  ImGui::SameLine();
+  if (ImGui::Button("add to scene (Ctrl+Shift+O)")) applyAction(v, {Action::Open, 1});
   // Palette list: the number keys and [ ] choose among these.
   const std::string current = s.palette ? s.palette->name : "-";
   if (ImGui::BeginCombo("palette", current.c_str())) {
@@ -371,7 +370,7 @@ void drawOverlay(Viewer& v) {
   if (look.render.match != before.render.match && look.render.bands == before.render.bands)
     changes.push_back({findSetting("bands"), "none", "overlay"});
   if (!changes.empty()) {
-    if (Status applied = applySettings(changes, false, s, *v.renderer); !applied) s.note(applied.error());
+    if (Status applied = applySettings(changes, false, s, *v.renderer); !applied) s.problem(applied.error());
     if (look.render.pattern != before.render.pattern) v.renderer->resetPattern();
   }
 
@@ -385,7 +384,7 @@ void drawOverlay(Viewer& v) {
     ImGui::SameLine();
     if (ImGui::Button("reset view (R)")) applyAction(v, {Action::ResetView});
     ImGui::SameLine();
-    if (ImGui::Button("screenshot (F12)")) applyAction(v, {Action::Screenshot});
+    if (ImGui::Button("screenshot (F12)")) applyAction(v, {Action::Screenshot, 0});
     if (ImGui::Button("export lines (SVG)")) v.svgRequested = true;
     ImGui::SameLine();
     bool vsync = v.vsync;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 
+#include "app/settings/style_file.h"
 #include "renderer/core/heap_policy.h"
 #include "renderer/core/image_io.h"
 #include "renderer/gl/offscreen_target.h"
@@ -46,7 +47,16 @@ void applyAction(Viewer& v, const KeyAction& a) {
     case Action::Quit: v.quit = true; break;
     case Action::ToggleOverlay: v.overlay = !v.overlay; break;
     case Action::ToggleHelp: v.help = !v.help; v.overlay = v.overlay || v.help; break;
-    case Action::Screenshot: v.screenshotRequested = true; break;
+    case Action::Screenshot: v.screenshotRequested = a.param; break;
+    case Action::Open:
+      v.dialog = Viewer::Dialog::Open;
+      v.dialogAdds = a.param == 1;
+      v.dialogJustOpened = true;
+      break;
+    case Action::SaveStyle:
+      v.dialog = Viewer::Dialog::SaveStyle;
+      v.dialogJustOpened = true;
+      break;
     // A palette that fails to load is noted for the overlay by ViewerState and the current one
     // stays: the statuses below are already reported.
     case Action::SelectPalette: (void)s.selectPalette(a.param, r); break;
@@ -106,7 +116,13 @@ void applyAction(Viewer& v, const KeyAction& a) {
   }
 }
 
-bool loadDropped(Viewer& v, const std::string& path, bool add) {
+bool openFile(Viewer& v, const std::string& path, bool add) {
+  if (fs::path(path).extension() == ".style") {
+    Result<Style> style = loadStyle(path);
+    Status st = style ? applyStyle(*style, v.state, *v.renderer) : Status(Error{style.error()});
+    if (!st) v.state.problem("style not applied: " + st.error());
+    return false;
+  }
   const bool palette = isPaletteFile(path);
   v.state.viewAspect = v.aspect();  // a new scene is framed for the window's shape
   const Status st = palette ? v.state.loadPalette(path, *v.renderer) : v.state.loadModels({path}, add, *v.renderer);
@@ -118,7 +134,8 @@ bool loadDropped(Viewer& v, const std::string& path, bool add) {
 void takeScreenshot(Viewer& v, const fs::path& file) {
   const glm::ivec2 fb = v.window->framebufferSize();
   const Status s = writeImage(file.string(), readFramebufferRGBA8(0, 0, fb.x, fb.y));
-  v.state.note(s ? "screenshot written to " + file.string() : s.error());
+  if (s) v.state.note("screenshot written to " + file.string());
+  else v.state.problem("screenshot not written: " + s.error());
 }
 
 }  // namespace npr

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -22,11 +23,16 @@ struct Viewer {
   ViewerState state;
   FrameTimer timer;
   bool overlay = true, help = false, vsync = true, quit = false;
-  bool screenshotRequested = false;
+  int screenshotRequested = -1;  // the Screenshot action's param this frame; -1: none
+  // The file dialogs (file_dialogs.h): which is open, and what it was opened for.
+  enum class Dialog { None, Open, SaveStyle } dialog = Dialog::None;
+  bool dialogAdds = false;           // the open dialog adds to the scene
+  bool dialogJustOpened = false;     // give its path field the keyboard on its first frame
+  // Enter pressed while a dialog is open, seen by our key callback: Dear ImGui 1.86 polls keys
+  // once a frame and misses a press and release within one (xdotool's, a fast typist's).
+  bool dialogEnter = false;
+  std::vector<std::string> recent;   // files opened, newest first (the open dialog lists them)
   bool svgRequested = false;  // the overlay's "export lines (SVG)"
-  int svgCount = 0;
-  int styleCount = 0;  // "save style" files written
-  int screenshotCount = 0;
   std::filesystem::path screenshotDir = ".";
   glm::dvec2 lastCursor{0.0};
   glm::dvec2 lastClick{0.0};   // the last left press (double-click framing)
@@ -44,9 +50,10 @@ struct Viewer {
 };
 
 void applyAction(Viewer& viewer, const KeyAction& action);
-// A dropped .palette (or palette folder) or model (in place of the scene, or beside it with
-// `add`); a failure keeps the current one and is noted. True when a model was loaded.
-bool loadDropped(Viewer& viewer, const std::string& path, bool add);
+// A dropped or opened file by its kind: a .style is applied, a .palette (or palette folder)
+// loaded, anything else loaded as a model (in place of the scene, or beside it with `add`). A
+// failure keeps what was shown and is said in the message bar. True when a model was loaded.
+bool openFile(Viewer& viewer, const std::string& path, bool add);
 void takeScreenshot(Viewer& viewer, const std::filesystem::path& file);
 
 }  // namespace npr

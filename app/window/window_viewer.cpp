@@ -16,12 +16,45 @@
 #include "app/startup.h"
 #include "renderer/core/image_io.h"
 #include "app/window/input_callbacks.h"
+#include "app/next_free_name.h"
+#include "app/window/file_dialogs.h"
+#include "app/window/message_bar.h"
 #include "app/window/overlay.h"
 #include "app/window/viewer.h"
 #include "renderer/gl/gl_debug.h"
 #include "renderer/gl/offscreen_target.h"
 
 namespace npr {
+
+namespace {
+
+// The scene as the window shows it (both halves of the split view), at the window's whole
+// size without the panel, into a target of its own.
+void writeSceneScreenshot(Viewer& v, const glm::ivec2& size, const std::filesystem::path& file) {
+  Result<OffscreenTarget> target = OffscreenTarget::create(size.x, size.y);
+  Status st = target ? okStatus() : Status(Error{target.error()});
+  if (st) {
+    target->bind();
+    const int half = size.x / 2;
+    const float aspect = float(v.state.splitView ? half : size.x) / float(std::max(size.y, 1));
+    const CameraMatrices cam = v.state.view(aspect);
+    st = v.state.applyLight(*v.renderer, cam);
+    if (st && v.state.splitView) {
+      RenderSettings reference = v.state.settings;
+      reference.path = RenderPath::Reference;
+      st = v.renderer->render(cam, reference, {0, 0, half, size.y});
+      if (st) st = v.renderer->render(cam, v.state.settings, {half, 0, size.x - half, size.y});
+    } else if (st) {
+      st = v.renderer->render(cam, v.state.settings, {0, 0, size.x, size.y});
+    }
+    if (st) st = writeImage(file.string(), target->readRGBA8());
+  }
+  bindWindowFramebuffer();
+  if (st) v.state.note("screenshot written to " + file.string());
+  else v.state.problem("screenshot not written: " + st.error());
+}
+
+}  // namespace
 
 int runWindowViewer(const Options& o) {
   Viewer v;
@@ -38,7 +71,18 @@ int runWindowViewer(const Options& o) {
   // Hatching keeps its physical size on a high-DPI screen unless a style or the command line
   // sets a scale (startScene applies those over this default).
   v.state.settings.patternScale = std::clamp(v.window->contentScale(), RenderSettings::kMinPatternScale, RenderSettings::kMaxPatternScale);
-  if (Status s = startScene(o, v.state, *v.renderer); !s) return reportFailure(s.error());
+  if (Status s = startScene(o, v.state, *v.renderer); !s) {
+    // Opened from a file manager there is no terminal: a file that fails opens the default
+    // model instead, with the reason in the window's message bar (and on stderr). A failure
+    // that is not the file's (an option, a style) fails again and ends the run as before.
+    if (o.models.empty()) return reportFailure(s.error());
+    // (Loads are all or nothing: the failed model left the state as it was.)
+    Options plain = o;
+    plain.models.clear();
+    if (Status again = startScene(plain, v.state, *v.renderer); !again) return reportFailure(s.error());
+    if (v.state.problems.empty()) v.state.problem(s.error());  // a failed load has said it already
+  }
+  for (const std::string& m : o.models) v.recent.push_back(m);
   if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
   if (v.screenshotDir.empty()) v.screenshotDir = ".";
   installInputCallbacks(v);
@@ -57,6 +101,8 @@ int runWindowViewer(const Options& o) {
     glfwPollEvents();
     imgui.newFrame();
     if (v.overlay) drawOverlay(v);
+    drawMessageBar(v);
+    drawFileDialogs(v);
     imgui.endFrame();
     if (framePending) {
       framePending = false;
@@ -107,15 +153,21 @@ int runWindowViewer(const Options& o) {
       drawView(v.state.settings, sceneView);
     }
     if (scene) scene->copyToWindow();
+    // F12: the scene alone at the window's size, drawn again without the panel's strip.
+    if (v.screenshotRequested == 0) {
+      v.screenshotRequested = -1;
+      writeSceneScreenshot(v, fb, nextFreeName(v.screenshotDir, "npr-screenshot", ".png"));
+    }
     // Vector export of what this frame shows (the lines of the full view, even when split).
     const bool lastFrame = o.frames > 0 && frame + 1 >= o.frames;
     if (v.svgRequested || (lastFrame && !o.svg.empty())) {
       const std::filesystem::path file =
-          v.svgRequested ? v.screenshotDir / ("npr-lines-" + std::to_string(++v.svgCount) + ".svg") : std::filesystem::path(o.svg);
+          v.svgRequested ? nextFreeName(v.screenshotDir, "npr-lines", ".svg") : std::filesystem::path(o.svg);
       v.svgRequested = false;
       const Status st = exportSvg(*v.renderer, cam, v.state.settings, {sceneView.z, sceneView.w}, SvgContents{nullptr, o.svgFill, v.state.palette.get()},
                                   file.string());
-      v.state.note(st ? "lines written to " + file.string() : st.error());
+      if (st) v.state.note("lines written to " + file.string());
+      else v.state.problem("lines not written: " + st.error());
       bindWindowFramebuffer();
     }
     // The frames written are the scene alone, without the overlay.
@@ -125,9 +177,9 @@ int runWindowViewer(const Options& o) {
     }
     imgui.draw();
 
-    if (v.screenshotRequested) {
-      v.screenshotRequested = false;
-      takeScreenshot(v, v.screenshotDir / ("npr-screenshot-" + std::to_string(++v.screenshotCount) + ".png"));
+    if (v.screenshotRequested == 1) {  // Shift+F12: the whole window, panel included
+      v.screenshotRequested = -1;
+      takeScreenshot(v, nextFreeName(v.screenshotDir, "npr-screenshot", ".png"));
     }
     if (lastFrame && !o.screenshot.empty()) takeScreenshot(v, o.screenshot);
     stepCameraAnimation(v.state.camera, o.animation, fb);

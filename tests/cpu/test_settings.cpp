@@ -412,3 +412,19 @@ TEST(SettingsTable, RandomCommandLinesAreParsedOrRefused) {
 
 }  // namespace
 }  // namespace npr
+
+// Files the window writes take the next number in their folder: a second run's F12 never
+// replaces the first run's picture.
+#include "app/next_free_name.h"
+TEST(OutputNames, NextFreeNameNeverReusesANameInTheFolder) {
+  npr::test::TempDir d;
+  const auto first = npr::nextFreeName(d.path(), "npr-screenshot", ".png");
+  EXPECT_EQ(first.filename(), "npr-screenshot-0001.png");
+  d.write("npr-screenshot-0001.png", "x");
+  d.write("npr-screenshot-0007.png", "x");
+  d.write("npr-screenshot-old.png", "x");   // not numbered: ignored
+  d.write("npr-lines-0042.svg", "x");       // another kind: ignored
+  EXPECT_EQ(npr::nextFreeName(d.path(), "npr-screenshot", ".png").filename(), "npr-screenshot-0008.png");
+  EXPECT_EQ(npr::nextFreeName(d.path(), "npr-lines", ".svg").filename(), "npr-lines-0043.svg");
+  EXPECT_EQ(npr::nextFreeName(d.path(), "npr-style", ".style").filename(), "npr-style-0001.style");
+}

@@ -39,7 +39,7 @@ sleep 1
 fail=0
 shots=0
 shot() {  # F12, then wait for the numbered screenshot; sets $last to its name
-  shots=$((shots + 1)); last="npr-screenshot-$shots.png"
+  shots=$((shots + 1)); last=$(printf "npr-screenshot-%04d.png" "$shots")
   xdotool key --clearmodifiers F12
   for _ in $(seq 150); do [ -s "$last" ] && sleep 0.3 && return 0; sleep 0.1; done
   echo "FAIL: screenshot $shots was not written" >&2; return 1

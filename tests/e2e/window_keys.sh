@@ -3,7 +3,10 @@
 # (F1), takes screenshots (F12) and checks that each action changes the image as it should:
 # palette switch, match mode, path, light movement; that an unchanged scene gives the same
 # image twice; that Esc closes the viewer with exit status 0; and that space plays and pauses
-# an animated scene.
+# an animated scene. Then the file commands: F12 numbers its files after those already in the
+# folder (a second run overwrites nothing), Ctrl+O opens a typed path (a broken file keeps the
+# scene and says why), Ctrl+S saves the look under a typed name and never replaces a file
+# without a confirmation.
 set -u
 viewer="$1"
 src=$(cd "$(dirname "$0")/../.." && pwd)
@@ -16,25 +19,26 @@ wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
 [ -n "$wid" ] || { echo "FAIL: no viewer window"; cat "$tmp/log"; exit 1; }
 xdotool windowfocus --sync "$wid" 2>/dev/null || true
 n=0
+pic() { printf "npr-screenshot-%04d.png" "$1"; }
 shot() {  # presses F12 and waits for the next numbered screenshot
   n=$((n + 1))
   xdotool key --clearmodifiers F12
-  for _ in $(seq 100); do [ -s "npr-screenshot-$n.png" ] && sleep 0.3 && return 0; sleep 0.1; done
+  for _ in $(seq 100); do [ -s "$(pic $n)" ] && sleep 0.3 && return 0; sleep 0.1; done
   echo "FAIL: screenshot $n was not written"; cat "$tmp/log"; exit 1
 }
 same() { idiff -q -fail 0 "$1" "$2" >/dev/null 2>&1; }
 fail=0
 check_changed() {  # check_changed WHAT: the newest screenshot differs from the previous one
-  if same "npr-screenshot-$((n - 1)).png" "npr-screenshot-$n.png"; then echo "FAIL: $1 did not change the image"; fail=1; fi
+  if same "$(pic $((n - 1)))" "$(pic $n)"; then echo "FAIL: $1 did not change the image"; fail=1; fi
 }
 sleep 1
 xdotool key --clearmodifiers F1   # hide the overlay: its timings change every frame
 sleep 0.5
 shot; shot
-same npr-screenshot-1.png npr-screenshot-2.png || { echo "FAIL: an unchanged scene rendered differently"; fail=1; }
+same "$(pic 1)" "$(pic 2)" || { echo "FAIL: an unchanged scene rendered differently"; fail=1; }
 xdotool key --clearmodifiers 2; sleep 0.5; shot; check_changed "palette 2"
 xdotool key --clearmodifiers 1; sleep 0.5; shot
-same npr-screenshot-2.png "npr-screenshot-$n.png" || { echo "FAIL: palette 1 did not restore the first image"; fail=1; }
+same "$(pic 2)" "$(pic $n)" || { echo "FAIL: palette 1 did not restore the first image"; fail=1; }
 xdotool key --clearmodifiers m; sleep 0.5; shot; check_changed "match mode"
 xdotool key --clearmodifiers p; sleep 0.5; shot; check_changed "render path"
 xdotool key --clearmodifiers a a a a a; sleep 0.5; shot; check_changed "moving the light"
@@ -57,15 +61,52 @@ xdotool windowfocus --sync "$wid" 2>/dev/null || true
 sleep 1
 xdotool key --clearmodifiers F1; sleep 0.5
 shot; shot
-same "npr-screenshot-$((n - 1)).png" "npr-screenshot-$n.png" || { echo "FAIL: a paused animation moved"; fail=1; }
+same "$(pic $((n - 1)))" "$(pic $n)" || { echo "FAIL: a paused animation moved"; fail=1; }
 xdotool key --clearmodifiers space; sleep 0.3
 shot; shot; check_changed "playing (space)"
 xdotool key --clearmodifiers space; sleep 0.3
 shot; shot
-same "npr-screenshot-$((n - 1)).png" "npr-screenshot-$n.png" || { echo "FAIL: space did not pause the animation"; fail=1; }
+same "$(pic $((n - 1)))" "$(pic $n)" || { echo "FAIL: space did not pause the animation"; fail=1; }
 xdotool key --clearmodifiers Escape
 for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 kill -0 $pid 2>/dev/null && { echo "FAIL: Esc did not close the animated viewer"; fail=1; }
 grep -q "OpenGL error" "$tmp/log2" && { echo "FAIL: GL errors (animated)"; cat "$tmp/log2"; fail=1; }
+
+# The file commands, in the first run's folder (its screenshots are there).
+cd "$tmp"
+first=$(md5sum "$(pic 1)")
+n=$(ls npr-screenshot-*.png | wc -l)
+"$viewer" --size 480x360 >"$tmp/log3" 2>&1 &
+pid=$!
+wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
+[ -n "$wid" ] || { echo "FAIL: no viewer window (file commands)"; cat "$tmp/log3"; exit 1; }
+xdotool windowfocus --sync "$wid" 2>/dev/null || true
+sleep 1
+xdotool key --clearmodifiers F1; sleep 0.5
+shot
+[ "$(md5sum "$(pic 1)")" = "$first" ] || { echo "FAIL: a second run's F12 replaced the first run's picture"; fail=1; }
+printf 'v 0 0 0\nf 1 2 3\n' > broken.obj
+xdotool key --clearmodifiers ctrl+o; sleep 0.5
+xdotool type --delay 20 "$tmp/broken.obj"; xdotool key --clearmodifiers Return; sleep 1
+grep -q "broken.obj" "$tmp/log3" || { echo "FAIL: a broken file opened with Ctrl+O gave no reason"; cat "$tmp/log3"; fail=1; }
+xdotool key --clearmodifiers F1; sleep 0.3; xdotool key --clearmodifiers F1; sleep 0.3   # the bar stays: only the scene is compared
+shot
+same "$(pic $((n - 1)))" "$(pic $n)" || { echo "FAIL: a failed open changed the scene"; fail=1; }
+xdotool key --clearmodifiers ctrl+o; sleep 0.5
+xdotool type --delay 20 "$src/palettes/stipple"; xdotool key --clearmodifiers Return; sleep 1
+shot; check_changed "opening a palette with Ctrl+O"
+xdotool key --clearmodifiers ctrl+s; sleep 0.5
+xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "Kept look"; xdotool key --clearmodifiers Return; sleep 1
+[ -s kept-look.style ] || { echo "FAIL: Ctrl+S did not write kept-look.style"; cat "$tmp/log3"; fail=1; }
+saved=$(md5sum kept-look.style 2>/dev/null)
+xdotool key --clearmodifiers m; sleep 0.3
+xdotool key --clearmodifiers ctrl+s; sleep 0.5
+xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "Kept look"; xdotool key --clearmodifiers Return; sleep 1
+[ "$(md5sum kept-look.style 2>/dev/null)" = "$saved" ] || { echo "FAIL: Ctrl+S replaced an existing style without a confirmation"; fail=1; }
+xdotool key --clearmodifiers Escape; sleep 0.3   # closes the dialog, not the viewer
+kill -0 $pid 2>/dev/null || { echo "FAIL: Esc in a dialog closed the viewer"; fail=1; }
+xdotool key --clearmodifiers Escape
+for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+grep -q "OpenGL error" "$tmp/log3" && { echo "FAIL: GL errors (file commands)"; cat "$tmp/log3"; fail=1; }
 [ $fail = 0 ] && echo "window: all checks passed ($n screenshots)"
 exit $fail

@@ -311,3 +311,38 @@ TEST_F(SceneStateFixture, AnimationPosesWhatItMovesCarriesChildrenAndLeavesTheRe
 
 }  // namespace
 }  // namespace npr
+
+namespace npr {
+namespace {
+
+// A model added to a scene laid out as its files place it (Shift-drop, Ctrl+Shift+O) is set
+// beside the scene at the scene's size, whatever its units: a teapot a thousand times larger
+// than the bunny neither swallows it nor, the other way round, shrinks to a speck.
+using AddFixture = test::RendererFixture;
+TEST_F(AddFixture, AnAddedModelStandsBesideTheSceneAtItsSize) {
+  test::TempDir d;
+  std::string big;
+  {
+    auto teapot = loadMesh(test::sourcePath("models/teapot.obj"));
+    ASSERT_TRUE(teapot);
+    Mesh m = *teapot;
+    for (glm::vec3& p : m.positions) p *= 1000.0f;
+    test::writeObj(m, (d.path() / "big-teapot.obj").string());
+    big = (d.path() / "big-teapot.obj").string();
+  }
+  for (const bool tinyFirst : {true, false}) {
+    ViewerState state;
+    ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
+    ASSERT_TRUE(state.loadModel(tinyFirst ? test::sourcePath("models/bunny.obj") : big, *r));
+    ASSERT_TRUE(state.loadModels({tinyFirst ? big : test::sourcePath("models/bunny.obj")}, true, *r));
+    ASSERT_EQ(state.scene.objects().size(), 2u);
+    const glm::vec4 a = state.scene.sphere(0), b = state.scene.sphere(1);
+    const float ratio = b.w / a.w;
+    EXPECT_GT(ratio, 0.5f) << "the added model is a speck beside the scene";
+    EXPECT_LT(ratio, 2.0f) << "the added model swallows the scene";
+    EXPECT_GT(glm::distance(glm::vec3(a), glm::vec3(b)), 0.9f * (a.w + b.w)) << "the added model overlaps the scene";
+  }
+}
+
+}  // namespace
+}  // namespace npr
