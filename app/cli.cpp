@@ -109,6 +109,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "or FILE; options given beside it win");
   app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file");
   app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit");
+  app.add_option("--style-sheet", o.styleSheet,
+                 "Write FILE (PNG): the model in every shipped style, one labelled cell each, to pick a style by looking "
+                 "(--size is the whole sheet's; the other options apply to every cell)");
   app.add_option("--palette-sheet", o.paletteSheet,
                  "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
   app.add_option("--material-detail", materialDetail,

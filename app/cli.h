@@ -52,6 +52,7 @@ struct Options {
   bool tam = false;
   int levels = 10;
   std::string paletteSheet;  // --palette-sheet DIR
+  std::string styleSheet;    // --style-sheet FILE
   std::string style;         // --style NAME|FILE (palettes/styles/NAME.style)
   std::string saveStyle;     // --save-style FILE: the look as a style file, after start-up
   bool settingsReference = false;  // --settings-reference: the settings table as Markdown

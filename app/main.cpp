@@ -9,6 +9,7 @@
 #include "app/data_directory.h"
 #include "app/headless/headless_session.h"
 #include "app/headless/headless_run.h"
+#include "app/headless/style_sheet.h"
 #include "app/palette_tools.h"
 #include "app/settings/settings_reference.h"
 #include "app/window/window_viewer.h"
@@ -74,6 +75,7 @@ int main(int argc, char** argv) {
   }
   if (!o.makePalette.empty()) return npr::runPaletteMaker(o);
   if (!o.paletteSheet.empty()) return npr::runPaletteSheets(o);
+  if (!o.styleSheet.empty()) return npr::runStyleSheet(o);
   if (o.benchmark) return npr::runBenchmark(o);
   if (o.headless) return npr::runHeadless(o);
   return npr::runWindowViewer(o);

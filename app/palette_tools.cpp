@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "app/contact_sheet.h"
 #include "app/headless/headless_session.h"
 #include "app/progress_line.h"
 #include "app/startup.h"
@@ -43,19 +44,6 @@ namespace {
 
 constexpr int kSphere = 256, kTile = 96, kSwatch = 14, kLabel = 18, kGap = 6, kColumns = 8, kTitle = 24;
 
-OIIO::ImageBuf toBuf(const ImageRGBA8& img) {
-  OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, 4, OIIO::TypeDesc::UINT8));
-  buf.set_pixels(buf.roi(), OIIO::TypeDesc::UINT8, img.pixels.data());
-  return buf;
-}
-
-ImageRGBA8 fromBuf(const OIIO::ImageBuf& buf) {
-  const OIIO::ImageSpec& s = buf.spec();
-  ImageRGBA8 img{s.width, s.height, std::vector<std::uint8_t>(size_t(s.width) * size_t(s.height) * 4)};
-  buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::UINT8, img.pixels.data());
-  return img;
-}
-
 // A lit sphere drawn with the palette through the pixel path, as the viewer shows it.
 Result<ImageRGBA8> litSphere(HeadlessSession& session, const std::string& palette) {
   Options o;
@@ -72,14 +60,6 @@ Result<ImageRGBA8> litSphere(HeadlessSession& session, const std::string& palett
   if (Status s = session.renderer->render(cam, state.settings, {0, 0, kSphere, kSphere}); !s) return Error{s.error()};
   finishGpuWork();
   return target->readRGBA8();
-}
-
-bool drawText(OIIO::ImageBuf& sheet, int x, int y, const std::string& text, int size, bool& fontMissing) {
-  if (fontMissing) return false;
-  const float ink[4] = {0.1f, 0.1f, 0.12f, 1.0f};
-  if (OIIO::ImageBufAlgo::render_text(sheet, x, y, text, size, "DejaVuSans", ink)) return true;
-  fontMissing = true;
-  return false;
 }
 
 // Sheets are named after the palette's folder (the shipped palettes' and the maker's layout),

@@ -134,6 +134,19 @@ expect 0 "--palette-sheet" -- "$viewer" --palette-sheet "$tmp/sheets" --palette 
 [ -s "$tmp/sheets/made.png" ] && [ -s "$tmp/sheets/stipple.png" ] || { echo "FAIL: --palette-sheet wrote $(ls "$tmp/sheets")"; fail=1; }
 ls -a "$tmp" | grep -q partial && { echo "FAIL: --make-palette left a partial folder"; fail=1; }
 
+# The style sheet: every shipped style in one picture of the asked size, each cell its own look.
+expect 0 "--style-sheet" -- "$viewer" "$src/models/bunny.obj" --style-sheet "$tmp/styles.png" --size 640x352
+styles=$(ls "$src/palettes/styles/"*.style | wc -l)
+info=$(oiiotool --info "$tmp/styles.png" 2>/dev/null)
+echo "$info" | grep -Eq "640 x +3(4[0-9]|5[0-2])," || { echo "FAIL: --style-sheet size: $info"; fail=1; }
+# Columns: round(sqrt(n * 640/352 * 0.75)); the first two cells (charcoal's paper and cel's) differ.
+columns=$(python3 -c "import math; print(max(1, min($styles, round(math.sqrt($styles * 640 / 352 * 0.75)))))")
+cw=$((640 / columns))
+oiiotool "$tmp/styles.png" --cut "${cw}x60+0+20" -o "$tmp/c1.png" && oiiotool "$tmp/styles.png" --cut "${cw}x60+${cw}+20" -o "$tmp/c2.png"
+idiff -q "$tmp/c1.png" "$tmp/c2.png" >/dev/null 2>&1 && { echo "FAIL: --style-sheet's first two cells are equal"; fail=1; }
+expect 1 "--style-sheet too small" -- "$viewer" --style-sheet "$tmp/tiny.png" --size 64x48
+grep -q "cells of" "$tmp/err" || { echo "FAIL: --style-sheet too small gives no reason: $(cat "$tmp/err")"; fail=1; }
+
 # Turntables: N frames of one orbit and an animated GIF of N subimages; progress redrawn on a
 # terminal, plain lines in a pipe.
 expect 0 "--turntable 36" -- "$viewer" --turntable 36 --size 64x48 --save-frames "$tmp/turn"
