@@ -129,6 +129,19 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // the paper, the surfaces with the path, then the features' passes over them. Frames of the
 // other outputs take the steps their output reads.
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, FrameOutput output) {
+  if (output == FrameOutput::Colour && s.supersample > 1 && viewport.z > 0 && viewport.w > 0) {
+    const int k = std::min(s.supersample, RenderSettings::kMaxSupersample);
+    return supersampler_.run(k, viewport, gpu_.programs, gpu_.emptyVao, stats_, [&](int factor, const glm::ivec4& big) {
+      RenderSettings scaled = pixelSizesScaled(s, float(factor));
+      scaled.supersample = 1;
+      // A poster's tile sits at k times its offset in the supersampled whole.
+      const std::optional<Tile> tile = work_.tile;
+      if (work_.tile) work_.tile->offset *= factor;
+      const Status st = render(camera, scaled, big, output);
+      work_.tile = tile;
+      return st;
+    });
+  }
   const auto frameStart = std::chrono::steady_clock::now();
   stats_.startFrame();
   gpu_.programs.startFrame();

@@ -22,6 +22,7 @@
 #include "renderer/core/result.h"
 #include "renderer/features/feature.h"
 #include "renderer/frame/frame_needs.h"
+#include "renderer/frame/supersample.h"
 #include "renderer/frame/tone_fit.h"
 #include "renderer/gl/gpu_timer.h"
 #include "renderer/gl/program_cache.h"
@@ -154,6 +155,7 @@ class Renderer {
   std::vector<std::unique_ptr<Feature>> features_;  // the feature table's (features/feature.h)
   std::vector<Feature*> active_;                    // this frame's
   ToneFit toneFit_;
+  Supersampler supersampler_;
   WorkOptions work_;
 };
 

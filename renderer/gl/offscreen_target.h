@@ -20,6 +20,7 @@ class OffscreenTarget {
   void clear(const glm::vec4& colour) const;  // binds, then clears colour (for float read-backs)
   int width() const { return width_; }
   int height() const { return height_; }
+  GLuint colourTexture() const { return color_.id(); }
   ImageRGBA8 readRGBA8() const;
   ImageRGBA32F readRGBA32F() const;
   // Copies the colour to the window's framebuffer at its corner, pixel for pixel, and leaves

@@ -150,6 +150,9 @@ struct EdgeProgram {};
 // marker.vert + marker.frag: the light marker.
 struct MarkerProgram {};
 
+// fullscreen.vert + supersample_resolve.frag: a supersampled frame box-filtered down.
+struct SupersampleProgram {};
+
 // shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
 struct ShadowDepthProgram {
   bool alphaCoverage = false;  // a see-through caster (mesh.frag's ALPHA_COVERAGE)
@@ -191,7 +194,7 @@ struct FeatureProgram {
 };
 
 using ProgramVariant = std::variant<FeatureProgram, MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram>;
+                                    TriangleLightProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram, SupersampleProgram>;
 
 ProgramSource programSource(const ProgramVariant& variant);
 

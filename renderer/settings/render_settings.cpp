@@ -275,4 +275,18 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
   return out;
 }
 
+RenderSettings pixelSizesScaled(const RenderSettings& s, float k) {
+  RenderSettings out = s;
+  out.lines.width *= k;
+  for (LineSet& set : out.lines.sets) {
+    set.width *= k;
+    set.dash *= k;
+    set.taper *= k;
+  }
+  out.strokes.length *= k;
+  out.strokes.width *= k;
+  out.patternScale *= k;
+  return out;
+}
+
 }  // namespace npr

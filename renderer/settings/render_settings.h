@@ -268,6 +268,11 @@ struct RenderTuning {
 // Whether and how the palette is fitted onto the tones on screen (RenderSettings::toneRange).
 enum class ToneRange : std::uint8_t { Fixed, Auto, PerObject };
 
+struct RenderSettings;
+// `s` with every size given in pixels (line widths, dashes and tapers, stroke sizes, the
+// pattern's texel) times `k`: the same picture drawn at k times the resolution.
+RenderSettings pixelSizesScaled(const RenderSettings& s, float k);
+
 struct RenderSettings {
   RenderPath path = RenderPath::Pixel;
   MatchMode match = MatchMode::Intensity;
@@ -298,6 +303,12 @@ struct RenderSettings {
   // scaled patterns; about 15% of a bunny frame on llvmpipe).
   bool patternLinearFilter = false;
   static constexpr float kMinPatternScale = 0.125f, kMaxPatternScale = 16.0f;
+  // Anti-aliasing by supersampling (frame/supersample.h): the frame drawn at this many times
+  // the viewport's width and height, every size in pixels (lines, dashes, strokes, the
+  // pattern's texel) times as much, then box-filtered down. 1: off. A palette's pattern is
+  // unchanged (each texel covers whole blocks); tone edges, silhouettes and lines are smoothed.
+  int supersample = 1;
+  static constexpr int kMaxSupersample = 4;
   OrientSettings orient;
   // A ground plane under the model, drawn with the same palette and path (mesh/ground_plane.h).
   bool ground = false;
