@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/data_directory.h"
 #include "app/settings/style_file.h"
 #include "app/man_page.h"
 #include "renderer/core/printable.h"
@@ -187,10 +188,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       continue;
     }
     if (row.type == SettingType::File) {
-      value = resolvePalette(value, ".");
-      std::error_code ec;
-      if (value != "none" && !std::filesystem::exists(value, ec))
-        return {std::nullopt, fail("--" + row.key + ": palette file '" + printable(value) + "' does not exist")};
+      Result<std::string> found = findPalette(value, ".");
+      if (!found) return {std::nullopt, fail("--" + row.key + ": " + found.error())};
+      value = *found;
     }
     if (Status s = row.parse(value, scratch); !s) return {std::nullopt, fail("--" + row.key + " '" + printable(value) + "': " + s.error())};
     o.settings.push_back({&row, value, "--" + row.key});
@@ -216,6 +216,8 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     o.animation = *a;
   }
   if (o.tile != 0 && (o.tile < 64 || o.tile > 16384)) return {std::nullopt, fail("--tile must be 64..16384 pixels, got " + std::to_string(o.tile))};
+  if (app.count("--turntable") && o.turntable < 2)
+    return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
   if (o.turntable != 0) {
     if (o.turntable < 2 || o.turntable > 3600) return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
     if (!animate.empty()) return {std::nullopt, fail("--turntable is its own camera motion: leave out --animate")};
@@ -242,10 +244,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     const std::size_t eq = op.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == op.size())
       return {std::nullopt, fail("--object-palette must be OBJECT=FILE, got '" + printable(op) + "'")};
-    const std::string file = resolvePalette(op.substr(eq + 1), ".");
-    if (!std::filesystem::exists(file))
-      return {std::nullopt, fail("--object-palette " + printable(op.substr(0, eq)) + ": palette file '" + printable(file) + "' does not exist")};
-    o.objectPalettes.emplace_back(op.substr(0, eq), file);
+    Result<std::string> file = findPalette(op.substr(eq + 1), ".");
+    if (!file) return {std::nullopt, fail("--object-palette " + printable(op.substr(0, eq)) + ": " + file.error())};
+    o.objectPalettes.emplace_back(op.substr(0, eq), *file);
   }
   // NAME=VALUE with VALUE in [0, 1], for --object-detail and --material-detail.
   auto details = [&](const char* flag, const char* what, const std::vector<std::string>& given,
@@ -269,9 +270,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     const std::size_t eq = pf.rfind('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == pf.size())
       return {std::nullopt, fail("--palette-for must be MATERIAL=FILE, got '" + pf + "'")};
-    const std::string file = pf.substr(eq + 1);
-    if (!std::filesystem::exists(file)) return {std::nullopt, fail("--palette-for " + pf.substr(0, eq) + ": palette file '" + file + "' does not exist")};
-    o.materialPalettes.emplace_back(pf.substr(0, eq), file);
+    Result<std::string> file = findPalette(pf.substr(eq + 1), ".");
+    if (!file) return {std::nullopt, fail("--palette-for " + printable(pf.substr(0, eq)) + ": " + file.error())};
+    o.materialPalettes.emplace_back(pf.substr(0, eq), *file);
   }
   if (!size.empty()) {
     int w = 0, h = 0;
@@ -286,14 +287,24 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       return {std::nullopt, fail("--camera must be YAW,PITCH,DISTANCE with DISTANCE > 0, got '" + camera + "'")};
     o.camera = glm::vec3(v[0], v[1], v[2]);
   }
-  if (o.frames < 0) return {std::nullopt, fail("--frames must be >= 0")};
+  if (o.frames < 0 || (app.count("--frames") && o.frames < 1))
+    return {std::nullopt, fail("--frames must be at least 1, got " + std::to_string(o.frames))};
+  if (const std::string problem = dataDirectoryProblem(); !problem.empty()) return {std::nullopt, fail(problem)};
+  if (!o.style.empty()) {
+    Result<std::string> style = findStyle(o.style);
+    if (!style) return {std::nullopt, fail("--style: " + style.error())};
+    o.style = *style;
+  }
   if (!std::isfinite(o.time) || o.time < 0.0 || o.time > 1e6) return {std::nullopt, fail("--time must be 0..1000000 seconds")};
   if (!std::isfinite(o.fps) || o.fps < 1.0 || o.fps > 1000.0) return {std::nullopt, fail("--fps must be 1..1000 frames per second")};
   // --info reports a missing model as a failed load (exit 1), like any other load failure.
   for (const auto& m : o.models)
     if (!o.info && m.rfind("generated:", 0) != 0 && !std::filesystem::exists(m)) return {std::nullopt, fail("model file '" + m + "' does not exist")};
-  for (const auto& p : o.palettes)
-    if (!std::filesystem::exists(p)) return {std::nullopt, fail("palette file '" + p + "' does not exist")};
+  for (std::string& p : o.palettes) {
+    Result<std::string> found = findPalette(p, ".");
+    if (!found) return {std::nullopt, fail("--palette: " + found.error())};
+    p = *found;
+  }
   if (!o.paletteInfo.empty() && !std::filesystem::exists(o.paletteInfo))
     return {std::nullopt, fail("palette file '" + o.paletteInfo + "' does not exist")};
   return {o, 0};

@@ -15,5 +15,14 @@ std::string dataDirectory();
 std::vector<std::string> dataDirectoryCandidates();
 std::string defaultModelPath();
 std::string defaultPalettePath();
+// The shipped palettes' folder names (palettes/NAME/ holding a .palette) and styles' names
+// (palettes/styles/NAME.style), sorted: what a name given for either may be.
+std::vector<std::string> shippedPaletteNames();
+std::vector<std::string> shippedStyleNames();
+// NAME when `paletteFile` is a shipped palette's (palettes/NAME/...), else the file's absolute
+// path: how a saved style names it, so the style travels to another machine.
+std::string paletteNameOrPath(const std::string& paletteFile);
+// Empty when NPR_DATA_DIR is unset or holds the data; else why it does not.
+std::string dataDirectoryProblem();
 
 }  // namespace npr

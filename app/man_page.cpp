@@ -66,7 +66,7 @@ std::string manPage(const CLI::App& app) {
          "and default models (models/), found beside the executable.\n";
   out += ".SH EXIT STATUS\n0 on success, 1 when a file fails to load or a render fails, 2 for bad arguments.\n";
   out += ".SH EXAMPLES\n.TP\nnpr\\-viewer model.obj \\-\\-style pencil\nOpen a window on model.obj in the pencil style.\n"
-         ".TP\nnpr\\-viewer \\-\\-headless model.obj \\-\\-palette palettes/wood \\-\\-screenshot out.png\n"
+         ".TP\nnpr\\-viewer \\-\\-headless model.obj \\-\\-palette wood \\-\\-screenshot out.png\n"
          "Render one frame without a window.\n"
          ".TP\nnpr\\-viewer \\-\\-turntable 72 model.obj\nSeventy\\-two frames of one orbit and a GIF in turntable/.\n";
   out += ".SH SEE ALSO\nThe README.md shipped with the sources: tasks, the settings reference, measured figures.\n";

@@ -58,7 +58,9 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   if (Status s = state.loadPalette(first, renderer); !s) return s;
   // A style sets the look; what the command line names beside it wins.
   if (!o.style.empty()) {
-    Result<Style> style = loadStyle(resolveStyle(o.style));
+    Result<std::string> file = findStyle(o.style);
+    if (!file) return Error{"--style: " + file.error()};
+    Result<Style> style = loadStyle(*file);
     if (!style) return Error{style.error()};
     if (!o.palettes.empty()) style->palette.reset();
     if (Status s = applyStyle(*style, state, renderer); !s) return s;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <set>
+
+#include "app/data_directory.h"
 #include <tuple>
 
 #include "renderer/core/printable.h"
@@ -81,6 +83,8 @@ std::string lookText(const Look& look) {
   for (const Setting& row : settingsTable())
     if (row.saved && !(row.key == "palette" && look.palette.empty())) {
       std::string value = row.format(look);
+      // A shipped palette by its name: the saved style travels to another machine.
+      if (row.type == SettingType::File && value != "none") value = paletteNameOrPath(value);
       if (row.repeated)  // one line per item
         for (std::size_t at; (at = value.find('\n')) != std::string::npos; value.erase(0, at + 1)) out += row.key + " " + value.substr(0, at) + "\n";
       out += row.key + " " + value + "\n";

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/data_directory.h"
+#include "app/name_suggestions.h"
 #include "renderer/core/input_file.h"
 #include "renderer/core/printable.h"
 
@@ -21,19 +23,40 @@ std::vector<std::string> discoverStyles() {
   return out;
 }
 
-std::string resolveStyle(const std::string& nameOrFile) {
-  std::error_code ec;
-  if (fs::exists(nameOrFile, ec)) return nameOrFile;
-  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / "styles" / (nameOrFile + ".style");
-  return fs::exists(shipped, ec) ? shipped.string() : nameOrFile;
+namespace {
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
 }
 
-std::string resolvePalette(const std::string& name, const std::string& baseDirectory) {
-  if (name == "none" || name.empty()) return name;
+}  // namespace
+
+Result<std::string> findStyle(const std::string& nameOrFile) {
   std::error_code ec;
-  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / name;
+  if (fs::is_regular_file(nameOrFile, ec)) return nameOrFile;
+  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / "styles" / (nameOrFile + ".style");
+  if (nameOrFile.find('/') == std::string::npos && fs::is_regular_file(shipped, ec)) return shipped.string();
+  const std::vector<std::string> names = shippedStyleNames();
+  return Error{"no style named '" + printable(nameOrFile) + "'" + didYouMean(nameOrFile, names) + "; the shipped styles are " + listed(names) +
+               ", or give a .style file"};
+}
+
+Result<std::string> findPalette(const std::string& name, const std::string& baseDirectory) {
+  if (name == "none") return name;
+  std::error_code ec;
   const fs::path relative = fs::path(baseDirectory) / name;
-  return fs::exists(relative, ec) ? relative.string() : fs::is_directory(shipped, ec) ? shipped.string() : relative.string();
+  if (!name.empty() && fs::exists(relative, ec)) return relative.string();
+  const fs::path shipped = fs::path(dataDirectory()) / "palettes" / name;
+  if (!name.empty() && name.find('/') == std::string::npos && fs::is_directory(shipped, ec)) {
+    // Its own NAME.palette, as the shipped ones are laid out: the same file a path to it names.
+    const fs::path own = shipped / (name + ".palette");
+    return fs::is_regular_file(own, ec) ? own.string() : shipped.string();
+  }
+  const std::vector<std::string> names = shippedPaletteNames();
+  return Error{"no palette named '" + printable(name) + "'" + didYouMean(name, names) + "; the shipped palettes are " + listed(names) +
+               ", or give a .palette file or a folder holding one"};
 }
 
 namespace {
@@ -80,7 +103,8 @@ Result<Style> loadStyle(const std::string& path) {
     }
     const Setting* row = findSetting(key);
     if (!row) return Error{where + ": unknown key '" + printable(key) + "' (the README's settings reference lists the keys a style may set)"};
-    const std::string value = row->type == SettingType::File ? resolvePalette(arg, dir) : key == "line-set" ? resolveLineSetFiles(arg, dir) : arg;
+    // A palette that is not found is kept as written: the style reads, and applying it says why.
+    const std::string value = row->type == SettingType::File ? findPalette(arg, dir).value_or(arg) : key == "line-set" ? resolveLineSetFiles(arg, dir) : arg;
     if (Status s = row->parse(value, scratch); !s) return Error{where + ": " + key + " '" + printable(arg) + "': " + s.error()};
     if (key == "palette") {
       st.palette = value;

@@ -24,10 +24,13 @@ struct Style {
 
 // The shipped styles (palettes/styles/*.style), sorted.
 std::vector<std::string> discoverStyles();
-// NAME (a shipped style) or a path to a style file.
-std::string resolveStyle(const std::string& nameOrFile);
-// A shipped palette's folder name, or a path relative to `baseDirectory`, or `name` as given.
-std::string resolvePalette(const std::string& name, const std::string& baseDirectory);
+// The one resolver of what names a style: a style file, or NAME (palettes/styles/NAME.style).
+// Else the reason, with the closest shipped names and the list of them.
+[[nodiscard]] Result<std::string> findStyle(const std::string& nameOrFile);
+// The one resolver of what names a palette: a .palette file or a folder holding one (relative
+// to `baseDirectory`), or a shipped palette's NAME; "none" as given. Else the reason, with the
+// closest shipped names and the list of them.
+[[nodiscard]] Result<std::string> findPalette(const std::string& nameOrPath, const std::string& baseDirectory);
 [[nodiscard]] Result<Style> loadStyle(const std::string& path);
 // Applies a style: its palette first (a palette that fails leaves everything as it was), then
 // the settings it names; what it does not name stays, except within the sections that reset

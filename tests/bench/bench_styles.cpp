@@ -157,7 +157,7 @@ int styles(const std::vector<BenchScene>& scenes, const OffscreenTarget& target,
   for (const std::string& f : discoverStyles()) files.push_back(f);
   // The technical style's line sets priced: the same style with its lines in one style
   // (silhouettes and creases, hidden lines dashed) and with no lines.
-  const std::string technical = resolveStyle("technical");
+  const std::string technical = *findStyle("technical");
   files.push_back(technical);
   files.push_back(technical);
   for (std::size_t i = 0; i < files.size(); ++i) {

@@ -142,8 +142,10 @@ TEST(SettingsTable, RandomLooksRoundTripThroughStyleText) {
       const std::string key = line.substr(0, line.find(' ')), value = line.substr(line.find(' ') + 1);
       const Setting* row = findSetting(key);
       ASSERT_NE(row, nullptr) << line;
-      if (row->repeated) lists[row] += (lists[row].empty() ? "" : "\n") + value;
-      else ASSERT_TRUE(row->parse(value, back)) << line;
+      // Palettes are saved by a shipped name where they have one, read back through the resolver.
+      const std::string read = row->type == SettingType::File ? findPalette(value, ".").value_or(value) : value;
+      if (row->repeated) lists[row] += (lists[row].empty() ? "" : "\n") + read;
+      else ASSERT_TRUE(row->parse(read, back)) << line;
       seen.insert(key);
     }
     for (const auto& [row, value] : lists) ASSERT_TRUE(row->parse(value, back)) << row->key << " " << value;
@@ -427,4 +429,33 @@ TEST(OutputNames, NextFreeNameNeverReusesANameInTheFolder) {
   EXPECT_EQ(npr::nextFreeName(d.path(), "npr-screenshot", ".png").filename(), "npr-screenshot-0008.png");
   EXPECT_EQ(npr::nextFreeName(d.path(), "npr-lines", ".svg").filename(), "npr-lines-0043.svg");
   EXPECT_EQ(npr::nextFreeName(d.path(), "npr-style", ".style").filename(), "npr-style-0001.style");
+}
+
+// One resolver for what names a palette or a style: shipped names, folders and files; a typo
+// answered with the closest names and the list of what exists.
+#include "app/data_directory.h"
+#include "app/name_suggestions.h"
+TEST(Names, PalettesAndStylesResolveByNameAndTyposGetTheClosestNames) {
+  EXPECT_EQ(npr::closestNames("pencl", {"pencil", "charcoal", "stipple"}), std::vector<std::string>{"pencil"});
+  EXPECT_EQ(npr::closestNames("cross", {"crosshatch", "cel"}), std::vector<std::string>{"crosshatch"});
+  EXPECT_TRUE(npr::closestNames("zzzzzz", {"pencil", "wood"}).empty());
+  EXPECT_EQ(npr::didYouMean("wod", {"wood", "gooch"}), " (did you mean wood?)");
+
+  npr::Result<std::string> wood = npr::findPalette("wood", "/nonexistent");
+  ASSERT_TRUE(wood) << wood.error();
+  EXPECT_EQ(std::filesystem::path(*wood).filename(), "wood.palette");
+  EXPECT_EQ(*npr::findPalette("none", "."), "none");
+  npr::Result<std::string> typo = npr::findPalette("crosshach", "/nonexistent");
+  ASSERT_FALSE(typo);
+  EXPECT_NE(typo.error().find("did you mean crosshatch"), std::string::npos) << typo.error();
+  EXPECT_NE(typo.error().find("the shipped palettes are"), std::string::npos) << typo.error();
+  npr::Result<std::string> pencil = npr::findStyle("pencil");
+  ASSERT_TRUE(pencil) << pencil.error();
+  EXPECT_EQ(std::filesystem::path(*pencil).filename(), "pencil.style");
+  npr::Result<std::string> pencl = npr::findStyle("pencl");
+  ASSERT_FALSE(pencl);
+  EXPECT_NE(pencl.error().find("did you mean pencil"), std::string::npos) << pencl.error();
+  // A saved style names a shipped palette by its name, any other by its path.
+  EXPECT_EQ(npr::paletteNameOrPath(npr::defaultPalettePath()), "crosshatch");
+  EXPECT_EQ(npr::paletteNameOrPath("/tmp/mine/mine.palette"), "/tmp/mine/mine.palette");
 }

@@ -100,7 +100,7 @@ expect 0 "--shadow-palette" -- "$viewer" --headless --size 96x96 --light 1,3,1 -
   --shadow-palette "$src/palettes/stipple/stipple.palette" --screenshot "$tmp/shadow-palette.png"
 cmp -s "$tmp/shadows.png" "$tmp/shadow-palette.png" && { echo "FAIL: --shadow-palette changes nothing"; fail=1; }
 expect 2 "--shadow-palette missing file" -- "$viewer" --headless --shadow-palette "$tmp/nope.palette"
-grep -q -- "--shadow-palette: palette file '.*nope.palette' does not exist" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
+grep -q -- "--shadow-palette: no palette named '.*nope.palette'" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
 expect 1 "--occlusion-palette broken" -- "$viewer" --headless --occlusion --occlusion-palette "$tmp/bad.palette"
 grep -q "occlusion palette not loaded.*line 1" "$tmp/err" || { echo "FAIL: message: $(cat "$tmp/err")"; fail=1; }
 expect 0 "--occlusion-palette without --occlusion" -- "$viewer" --headless --size 32x32 --occlusion-palette "$src/palettes/stipple/stipple.palette"
@@ -190,7 +190,29 @@ glow 3
 ' > "$tmp/bad.style"
 expect 1 "a bad style file" -- "$viewer" --headless --style "$tmp/bad.style"
 grep -q "bad.style line 2" "$tmp/err" || { echo "FAIL: the bad style's line is not named: $(cat "$tmp/err")"; fail=1; }
-expect 1 "a style that does not exist" -- "$viewer" --headless --style nosuchstyle
+expect 2 "a style that does not exist" -- "$viewer" --headless --style nosuchstyle
+grep -q "the shipped styles are .*pencil" "$tmp/err" || { echo "FAIL: an unknown style does not list the shipped ones: $(cat "$tmp/err")"; fail=1; }
+
+# Names everywhere, through one resolver: a shipped palette or style by name, a typo answered
+# with the closest names (exit 2), counts out of range refused, a saved style naming shipped
+# palettes by name.
+expect 0 "--palette NAME" -- "$viewer" --headless --size 64x48 --palette wood --screenshot "$tmp/wood.png"
+expect 2 "--style with a typo" -- "$viewer" --headless --style pencl
+grep -q "did you mean pencil" "$tmp/err" || { echo "FAIL: --style pencl: $(cat "$tmp/err")"; fail=1; }
+[ "$(wc -l < "$tmp/err")" = 1 ] || { echo "FAIL: --style pencl says more than one line: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--palette with a typo" -- "$viewer" --headless --palette crosshach
+grep -q "did you mean crosshatch" "$tmp/err" || { echo "FAIL: --palette crosshach: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--object-palette with a typo" -- "$viewer" --headless "$src/models/bunny.obj" --object-palette bunny=wod
+grep -q "did you mean wood" "$tmp/err" || { echo "FAIL: --object-palette bunny=wod: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--turntable 0" -- "$viewer" --turntable 0
+grep -q "2..3600" "$tmp/err" || { echo "FAIL: --turntable 0 does not name the range: $(cat "$tmp/err")"; fail=1; }
+expect 2 "--frames 0" -- "$viewer" --headless --frames 0
+grep -q "at least 1" "$tmp/err" || { echo "FAIL: --frames 0 does not name the range: $(cat "$tmp/err")"; fail=1; }
+NPR_DATA_DIR="$tmp/no-such-folder" "$viewer" --headless --size 32x32 >"$tmp/out" 2>"$tmp/err"; status=$?
+[ $status = 2 ] && grep -q "NPR_DATA_DIR" "$tmp/err" || { echo "FAIL: NPR_DATA_DIR naming a missing folder: exit $status, $(cat "$tmp/err")"; fail=1; }
+expect 0 "--save-style of shipped palettes" -- "$viewer" --headless --size 32x32 --style illustrated --save-style "$tmp/saved.style"
+grep -qx "palette stipple" "$tmp/saved.style" && grep -qx "shadow-palette crosshatch" "$tmp/saved.style" ||
+  { echo "FAIL: a saved style names shipped palettes by path: $(grep palette "$tmp/saved.style")"; fail=1; }
 
 # The seeds' styles: hardware outlines, the charcoal rim and tone, painterly strokes; bad
 # values are refused with the option named.

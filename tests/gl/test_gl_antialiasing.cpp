@@ -60,7 +60,7 @@ using AaFixture = test::RendererFixture;
 TEST_F(AaFixture, SupersamplingBringsEdgesCloseToTheFourTimesReference) {
   for (const char* style : {"cel", "crosshatch", "technical"}) {
     ViewerState state;
-    Result<Style> loaded = loadStyle(resolveStyle(style));
+    Result<Style> loaded = loadStyle(*findStyle(style));
     ASSERT_TRUE(loaded) << loaded.error();
     ASSERT_TRUE(applyStyle(*loaded, state, *r));
     ASSERT_TRUE(state.loadModel(test::sourcePath("models/teapot.obj"), *r));

@@ -68,17 +68,26 @@ struct Legibility {
 Legibility measure(const ImageRGBA8& img, const std::vector<bool>& cover, float paper) {
   Legibility out;
   auto covered = [&](int x, int y) { return x >= 0 && y >= 0 && x < kW && y < kH && cover[std::size_t(y * kW + x)]; };
-  // Distance in pixels (Chebyshev, up to 8) to the nearest pixel of the other kind.
-  auto distanceToOther = [&](int x, int y) {
-    const bool in = covered(x, y);
-    for (int r = 1; r <= 8; ++r)
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx)
-          if ((std::abs(dx) == r || std::abs(dy) == r) && x + dx >= 0 && y + dy >= 0 && x + dx < kW && y + dy < kH &&
-              covered(x + dx, y + dy) != in)
-            return r;
-    return 9;
-  };
+  // Distance in pixels (Chebyshev) to the nearest pixel of the other kind: the two-pass
+  // chessboard distance transform, once for each kind.
+  std::vector<int> toOther(std::size_t(kW * kH));
+  for (const bool kind : {true, false}) {
+    std::vector<int> d(std::size_t(kW * kH));
+    auto at = [&](int x, int y) -> int& { return d[std::size_t(y * kW + x)]; };
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) at(x, y) = covered(x, y) == kind ? 1 << 20 : 0;
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x)
+        for (const auto& [dx, dy] : {std::pair{-1, 0}, {-1, -1}, {0, -1}, {1, -1}})
+          if (x + dx >= 0 && x + dx < kW && y + dy >= 0) at(x, y) = std::min(at(x, y), at(x + dx, y + dy) + 1);
+    for (int y = kH - 1; y >= 0; --y)
+      for (int x = kW - 1; x >= 0; --x)
+        for (const auto& [dx, dy] : {std::pair{1, 0}, {1, 1}, {0, 1}, {-1, 1}})
+          if (x + dx >= 0 && x + dx < kW && y + dy < kH) at(x, y) = std::min(at(x, y), at(x + dx, y + dy) + 1);
+    for (std::size_t i = 0; i < d.size(); ++i)
+      if (cover[i] == kind) toOther[i] = d[i];
+  }
+  auto distanceToOther = [&](int x, int y) { return toOther[std::size_t(y * kW + x)]; };
   double sum = 0, inner = 0, outer = 0;
   int n = 0, nInner = 0, nOuter = 0, x0 = kW, x1 = -1, y0 = kH, y1 = -1;
   for (int y = 0; y < kH; ++y)

@@ -75,7 +75,7 @@ TEST_F(StyleFixture, SavedStyleLoadsBackAndBadStylesChangeNothing) {
   r->scene().setOnly(&mesh);
   ViewerState state;
   ASSERT_TRUE(state.loadPalette(defaultPalettePath(), *r));
-  Result<Style> technical = loadStyle(resolveStyle("technical"));
+  Result<Style> technical = loadStyle(*findStyle("technical"));
   ASSERT_TRUE(technical) << technical.error();
   ASSERT_TRUE(applyStyle(*technical, state, *r));
   ASSERT_EQ(state.settings.lines.sets.size(), 3u);  // its line sets, one per line of the file
