@@ -63,11 +63,11 @@ const std::vector<Binding>& keyBindings() {
       {"V", "vsync on/off"},
       {"Space", "play / pause the scene's animations"},
       {"F1 or Tab", "overlay"},
-      {"H", "this help"},
+      {"H", "these keys, over the scene"},
       {"Ctrl+O / Ctrl+Shift+O", "open a model, scene, palette or style (type its path, Enter) / add a model to the scene"},
       {"Ctrl+S", "save the look as a style file (a name is asked; an existing file is replaced only when confirmed)"},
       {"F12 / Shift+F12", "screenshot of the scene at the window's size / of the whole window (npr-screenshot-NNNN.png, never overwriting)"},
-      {"Drop a file", "load a model (.obj .gltf .glb .ply .off .stl .om) or palette (.palette); with Shift, add the model to the scene"},
+      {"Drop a file", "as Ctrl+O: a model (.obj .gltf .glb .ply .off .stl .om), palette (.palette) or style (.style); with Shift, add the model to the scene"},
       {"Double-click", "frame the object under the cursor (F: the whole scene)"},
       {"Esc", "quit"},
   };

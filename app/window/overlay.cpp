@@ -150,36 +150,36 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
         }
         ImGui::PopID();
       }
-      if (shown < materials.size()) ImGui::Text("... and more materials");
+      if (shown < materials.size()) ImGui::TextWrapped("... and more materials");
       ImGui::TreePop();
     }
   } else if (section == "orientation" && look.render.orient.source != OrientSource::None) {
     if (s.palette) {
       int oriented = 0;
       for (const PaletteEntry& e : s.palette->entries) oriented += e.orientation.oriented() ? 1 : 0;
-      ImGui::Text("%d of %zu entries have a stroke direction", oriented, s.palette->entries.size());
+      ImGui::TextWrapped("%d of %zu entries have a stroke direction", oriented, s.palette->entries.size());
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         for (std::size_t i = 0; i < s.palette->entries.size(); ++i) {
           const TextureOrientation& o = s.palette->entries[i].orientation;
-          ImGui::Text("%2zu: %5.1f deg, strength %.2f%s", i, o.degrees, o.strength, o.oriented() ? "" : " (left unrotated)");
+          ImGui::TextWrapped("%2zu: %5.1f deg, strength %.2f%s", i, o.degrees, o.strength, o.oriented() ? "" : " (left unrotated)");
         }
         ImGui::EndTooltip();
       }
     }
     const Model* first = v.renderer->scene().first();
     if (const DirectionField* field = first ? first->directionFieldIfComputed() : nullptr)
-      ImGui::Text("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
+      ImGui::TextWrapped("direction field: %zu vertices, %.0f ms", field->weldedVertices, field->ms);
   } else if (section == "pattern" && look.render.pattern == PatternSpace::Anchored) {
-    ImGui::Text("pattern fit: %.3f ms, %d samples", v.renderer->stats().cpuPatternMs, v.renderer->stats().patternSamples);
+    ImGui::TextWrapped("pattern fit: %.3f ms, %d samples", v.renderer->stats().cpuPatternMs, v.renderer->stats().patternSamples);
   } else if (section == "occlusion" && look.render.occlusion && look.render.occlusionMethod == OcclusionMethod::Baked) {
     const Model* first = v.renderer->scene().first();
     if (const OcclusionBake* bake = first ? first->occlusionBake() : nullptr) {
       if (!bake->done()) ImGui::ProgressBar(float(bake->directionsDone()) / float(bake->directions()), ImVec2(200, 0), "baking occlusion");
-      else ImGui::Text("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
+      else ImGui::TextWrapped("occlusion baked: %d directions, %.0f ms", bake->directions(), bake->ms());
     }
   } else if (section == "strokes" && look.render.strokes.on) {
-    ImGui::Text("%zu strokes (seeded in %.0f ms)", v.renderer->scene().strokeCount(), v.renderer->scene().strokeSeedMs());
+    ImGui::TextWrapped("%zu strokes (seeded in %.0f ms)", v.renderer->scene().strokeCount(), v.renderer->scene().strokeSeedMs());
   }
 }
 
@@ -223,7 +223,7 @@ void drawObjectList(Viewer& v) {
     }
     ImGui::PopID();
   }
-  if (shown < objects.size()) ImGui::Text("... and %zu more objects", objects.size() - shown);
+  if (shown < objects.size()) ImGui::TextWrapped("... and %zu more objects", objects.size() - shown);
   int layout = static_cast<int>(s.scene.layout());
   if (s.scene.files().size() > 1 && ImGui::Combo("layout", &layout, "file\0row\0grid\0")) {
     s.scene.setLayout(static_cast<Layout>(layout), *v.renderer);
@@ -299,23 +299,26 @@ void drawOverlay(Viewer& v) {
   }
   v.panelWidth = ImGui::GetWindowWidth();
   ImGui::PushItemWidth(v.panelWidth * 0.5f);  // room for the labels beside the widgets
-  ImGui::Text("%.2f ms mean, %.2f ms 1%% worst, %.0f fps", v.timer.meanMs(), v.timer.worst1PercentMs(), v.timer.fps());
+  ImGui::TextWrapped("%.2f ms mean, %.2f ms 1%% worst, %.0f fps", v.timer.meanMs(), v.timer.worst1PercentMs(), v.timer.fps());
   const auto& h = v.timer.history();
-  if (!h.empty()) ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms", 0.0f, 50.0f, ImVec2(-1, 40));
-  ImGui::Text("CPU: shading %.2f ms, frame %.2f ms   GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
-              st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
-  ImGui::Text("%zu triangles, %d non-empty buckets%s", s.scene.triangles(), st.nonEmptyBuckets,
-              st.backFacesCulled ? ", closed: back faces dropped" : "");
-  ImGui::Text("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  // The panel's whole width (Dear ImGui 1.86 draws a plot given -1 one pixel wide).
+  if (!h.empty())
+    ImGui::PlotLines("##frametimes", h.data(), int(h.size()), 0, "frame ms (0-50)", 0.0f, 50.0f, ImVec2(ImGui::GetContentRegionAvail().x, 40));
+  // Wrapped, not cut at the panel's edge, whatever its width.
+  ImGui::TextWrapped("CPU: shading %.2f ms, frame %.2f ms; GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
+                     st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
+  ImGui::TextWrapped("%zu triangles, %d non-empty buckets%s", s.scene.triangles(), st.nonEmptyBuckets,
+                     st.backFacesCulled ? ", closed: back faces dropped" : "");
+  ImGui::TextWrapped("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
   if (const std::optional<glm::vec2> tone = v.renderer->toneRange())
-    ImGui::Text("tone range: lit tones %.2f..%.2f of 0..3 fill the palette (%.2f ms)", tone->x, tone->y, st.cpuToneMs);
-  if (st.lines) ImGui::Text("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
-  if (st.surfaceBuffers) ImGui::Text("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
+    ImGui::TextWrapped("tone range: lit tones %.2f..%.2f of 0..3 fill the palette (%.2f ms)", tone->x, tone->y, st.cpuToneMs);
+  if (st.lines) ImGui::TextWrapped("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
+  if (st.surfaceBuffers) ImGui::TextWrapped("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
   // What renders (the window's context never changes, so it is asked once).
   static const GlInfo gl = currentGlInfo();
   ImGui::TextWrapped("GL: %s, %s%s", gl.renderer.c_str(), gl.version.c_str(), gl.software ? " (software rasterizer)" : "");
   ImGui::Separator();
-  ImGui::Text("model: %s", s.scene.label().c_str());
+  ImGui::TextWrapped("model: %s", s.scene.label().c_str());
   drawObjectList(v);
   drawFileViews(v);
   drawTimeline(v);
@@ -397,10 +400,6 @@ void drawOverlay(Viewer& v) {
     ImGui::Separator();
     for (const auto& m : s.messages) ImGui::TextWrapped("%s", m.c_str());
     if (ImGui::Button("clear messages")) s.messages.clear();
-  }
-  if (v.help) {
-    ImGui::Separator();
-    for (const Binding& b : keyBindings()) ImGui::BulletText("%s: %s", b.keys, b.what);
   }
   ImGui::PopItemWidth();
   ImGui::End();

@@ -46,7 +46,7 @@ void applyAction(Viewer& v, const KeyAction& a) {
   switch (a.action) {
     case Action::Quit: v.quit = true; break;
     case Action::ToggleOverlay: v.overlay = !v.overlay; break;
-    case Action::ToggleHelp: v.help = !v.help; v.overlay = v.overlay || v.help; break;
+    case Action::ToggleHelp: v.help = !v.help; break;
     case Action::Screenshot: v.screenshotRequested = a.param; break;
     case Action::Open:
       v.dialog = Viewer::Dialog::Open;

@@ -18,6 +18,7 @@
 #include "app/window/input_callbacks.h"
 #include "app/next_free_name.h"
 #include "app/window/file_dialogs.h"
+#include "app/window/help_overlay.h"
 #include "app/window/message_bar.h"
 #include "app/window/overlay.h"
 #include "app/window/viewer.h"
@@ -102,6 +103,7 @@ int runWindowViewer(const Options& o) {
     imgui.newFrame();
     if (v.overlay) drawOverlay(v);
     drawMessageBar(v);
+    drawHelpOverlay(v);
     drawFileDialogs(v);
     imgui.endFrame();
     if (framePending) {
