@@ -49,10 +49,7 @@ void ViewerState::problem(const std::string& raw) {
 
 Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, Renderer& renderer) {
   std::vector<std::string> warnings;
-  if (Status s = scene.load(paths, add, renderer, warnings); !s) {
-    problem("model not loaded: " + s.error());
-    return s;
-  }
+  if (Status s = scene.load(paths, add, renderer, warnings); !s) return Error{"model not loaded: " + s.error()};
   for (const auto& w : warnings) note(w);
   const std::size_t lights = scene.lights().size();
   if (lights > 0 && fileLights)
@@ -97,14 +94,8 @@ Status ViewerState::setMaterialPalette(const std::string& material, const std::s
     return okStatus();
   }
   Result<Palette> p = npr::loadPalette(path);
-  if (!p) {
-    problem("palette for material '" + material + "' not loaded: " + p.error());
-    return Error{p.error()};
-  }
-  if (Status s = renderer.palettes().setMaterial(material, *p); !s) {
-    problem("palette for material '" + material + "' not loaded: " + s.error());
-    return s;
-  }
+  if (!p) return Error{"palette for material '" + material + "' not loaded: " + p.error()};
+  if (Status s = renderer.palettes().setMaterial(material, *p); !s) return Error{"palette for material '" + material + "' not loaded: " + s.error()};
   for (const auto& w : p->warnings) note(w);
   materialPalettes[material] = path;
   noteMissingMaterial(material);
@@ -126,13 +117,9 @@ Status ViewerState::setControlPalette(ControlParameter parameter, const std::str
     return okStatus();
   }
   Result<Palette> p = npr::loadPalette(path);
-  if (!p) {
-    problem(std::string(what) + " not loaded: " + p.error());
-    return Error{p.error()};
-  }
+  if (!p) return Error{std::string(what) + " not loaded: " + p.error()};
   if (Status s = renderer.palettes().setControl(parameter, *p); !s) {
-    problem(std::string(what) + " not loaded: " + s.error());
-    return s;
+    return Error{std::string(what) + " not loaded: " + s.error()};
   }
   for (const auto& w : p->warnings) note(w);
   current = path;
@@ -150,14 +137,8 @@ void ViewerState::noteIdleControlPalettes() {
 
 Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
   Result<Palette> p = npr::loadPalette(path);
-  if (!p) {
-    problem("palette not loaded: " + p.error());
-    return Error{p.error()};
-  }
-  if (Status s = renderer.palettes().setMain(*p); !s) {
-    problem("palette not loaded: " + s.error());
-    return s;
-  }
+  if (!p) return Error{"palette not loaded: " + p.error()};
+  if (Status s = renderer.palettes().setMain(*p); !s) return Error{"palette not loaded: " + s.error()};
   palette = std::make_unique<Palette>(std::move(*p));
   if (palette->defaultMatch) settings.match = *palette->defaultMatch;
   settings.rangeScale = palette->defaultRangeScale.value_or(1.0f);

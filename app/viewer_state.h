@@ -1,6 +1,8 @@
 // What the viewer is showing: objects, palette list, render settings, camera and light. Shared
 // by the window, --headless and --benchmark, so all three render a scene the same way.
-// Loads are all-or-nothing: a file that fails to load leaves the current one in place.
+// Loads are all-or-nothing: a file that fails to load leaves the current one in place, and the
+// failure comes back as the Status, with what did not load, for the caller to report once
+// (the command line exits with it, the window shows it in its message bar).
 #pragma once
 
 #include <map>

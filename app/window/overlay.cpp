@@ -142,10 +142,10 @@ void sectionDetails(const std::string& section, Viewer& v, Look& look) {
         const auto it = s.materialPalettes.find(name);
         const std::string current = it == s.materialPalettes.end() ? "(main palette)" : fs::path(it->second).stem().string();
         if (ImGui::BeginCombo(name.c_str(), current.c_str())) {
-          if (ImGui::Selectable("(main palette)", it == s.materialPalettes.end())) (void)s.setMaterialPalette(name, "", *v.renderer);
+          if (ImGui::Selectable("(main palette)", it == s.materialPalettes.end())) (void)s.setMaterialPalette(name, "", *v.renderer);  // clearing cannot fail
           for (const std::string& p : s.palettes)
             if (ImGui::Selectable(fs::path(p).stem().string().c_str(), it != s.materialPalettes.end() && it->second == p))
-              (void)s.setMaterialPalette(name, p, *v.renderer);
+              if (Status st = s.setMaterialPalette(name, p, *v.renderer); !st) s.problem(st.error());
           ImGui::EndCombo();
         }
         ImGui::PopID();

@@ -24,6 +24,10 @@ bool isPaletteFile(const std::string& path) {
   return fs::path(path).extension() == ".palette" || fs::is_directory(path, ec);
 }
 
+void reportIfFailed(ViewerState& s, const Status& st) {
+  if (!st) s.problem(st.error());
+}
+
 }  // namespace
 
 glm::ivec4 Viewer::sceneViewport() const {
@@ -57,11 +61,10 @@ void applyAction(Viewer& v, const KeyAction& a) {
       v.dialog = Viewer::Dialog::SaveStyle;
       v.dialogJustOpened = true;
       break;
-    // A palette that fails to load is noted for the overlay by ViewerState and the current one
-    // stays: the statuses below are already reported.
-    case Action::SelectPalette: (void)s.selectPalette(a.param, r); break;
-    case Action::NextPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + 1) % paletteCount, r); break;
-    case Action::PreviousPalette: if (paletteCount) (void)s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r); break;
+    // A palette that fails to load leaves the current one; the bar says why.
+    case Action::SelectPalette: reportIfFailed(s, s.selectPalette(a.param, r)); break;
+    case Action::NextPalette: if (paletteCount) reportIfFailed(s, s.selectPalette((s.paletteIndex + 1) % paletteCount, r)); break;
+    case Action::PreviousPalette: if (paletteCount) reportIfFailed(s, s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r)); break;
     case Action::CycleMatch:
       s.settings.bands.clear();
       s.settings.match = s.settings.match == MatchMode::Colors ? MatchMode::Intensity
@@ -128,6 +131,7 @@ bool openFile(Viewer& v, const std::string& path, bool add) {
   const Status st = palette ? v.state.loadPalette(path, *v.renderer) : v.state.loadModels({path}, add, *v.renderer);
   releaseFreedHeapMemory();  // the load's transient memory, and the scene it replaced
   if (st) v.state.note((add && !palette ? "added " : "loaded ") + path);
+  else v.state.problem(st.error());
   return st && !palette;
 }
 

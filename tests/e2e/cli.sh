@@ -20,6 +20,9 @@ printf 'v 0 0 0\nv 1 0 0\n' > "$tmp/points.obj"
 expect 1 "--info on a file with no faces" -- "$viewer" --info "$tmp/points.obj"
 grep -q "no faces" "$tmp/err" || { echo "FAIL: reason missing: $(cat "$tmp/err")"; fail=1; }
 expect 1 "--info on a missing file" -- "$viewer" --info "$tmp/none.obj"
+# A failed load is said once, with what did not load.
+expect 1 "a model with no faces" -- "$viewer" --headless --size 32x32 "$tmp/points.obj"
+[ "$(grep -c "no faces" "$tmp/err")" = 1 ] && grep -q "model not loaded" "$tmp/err" || { echo "FAIL: a failed load is not said once: $(cat "$tmp/err")"; fail=1; }
 
 expect 0 "--palette-info" -- "$viewer" --palette-info "$src/palettes/crosshatch/crosshatch.palette"
 grep -q '"monotonic":true' "$tmp/out" || { echo "FAIL: --palette-info output"; fail=1; }
