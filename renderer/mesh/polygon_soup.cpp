@@ -12,6 +12,7 @@
 namespace npr {
 namespace {
 constexpr std::size_t kMaxWarnings = 50;
+constexpr std::size_t kShownPerKind = 3;
 
 struct CornerKey {
   std::uint32_t vertex;
@@ -77,13 +78,25 @@ bool PolygonSoup::addVertex(const glm::dvec3& v) {
 }
 
 void Warnings::add(std::string w) {
+  // The kind: what follows the place ("line 12: ", "mesh 3 primitive 0 face 12: ").
+  const std::size_t colon = w.rfind(": ");
+  std::string kind = colon == std::string::npos ? w : w.substr(colon + 2);
+  auto it = std::find_if(kinds_.begin(), kinds_.end(), [&](const auto& k) { return k.first == kind; });
+  if (it == kinds_.end()) {
+    kinds_.emplace_back(std::move(kind), 0);
+    it = kinds_.end() - 1;
+  }
   // Warnings quote files (names, statements): escaped here, once, for every reader.
-  if (out_.size() < kMaxWarnings) out_.push_back(printableMessage(w));
-  else ++dropped_;
+  if (++it->second <= kShownPerKind && out_.size() < kMaxWarnings) out_.push_back(printableMessage(w));
+  else if (it->second <= kShownPerKind) ++dropped_;
 }
 
 void Warnings::finish() {
+  for (const auto& [kind, count] : kinds_)
+    if (count > kShownPerKind)
+      out_.push_back(printableMessage("... and " + std::to_string(count - kShownPerKind) + " more like this (" + std::to_string(count) + " in all): " + kind));
   if (dropped_) out_.push_back("... and " + std::to_string(dropped_) + " more warnings");
+  kinds_.clear();
   dropped_ = 0;
 }
 

@@ -47,15 +47,18 @@ struct PolygonSoup {
   bool addVertex(const glm::dvec3& v);
 };
 
-// Collects warnings up to a limit, so a file with a million bad lines cannot flood the report.
+// Collects warnings so a file with a million bad faces cannot flood the report: each kind (the
+// text after the warning's place, "face names fewer than 3 different vertices; skipped") is
+// shown for its first few places, then counted; at most a limit in all.
 class Warnings {
  public:
   explicit Warnings(std::vector<std::string>& out) : out_(out) {}
   void add(std::string w);
-  void finish();  // appends "... and N more warnings"
+  void finish();  // appends "... and N more like this (M in all): KIND" per kind, "... and N more warnings"
 
  private:
   std::vector<std::string>& out_;
+  std::vector<std::pair<std::string, std::size_t>> kinds_;  // kind, how many in all
   std::size_t dropped_ = 0;
 };
 
