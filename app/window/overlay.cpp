@@ -325,11 +325,7 @@ void drawOverlay(Viewer& v) {
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
   if (ImGui::BeginCombo("style", "choose a style")) {
     for (const std::string& file : discoverStyles())
-      if (ImGui::Selectable(fs::path(file).stem().c_str())) {
-        Result<Style> style = loadStyle(file);
-        if (!style) s.problem("style not applied: " + style.error());
-        else if (Status applied = applyStyle(*style, s, *v.renderer); !applied) s.problem("style not applied: " + applied.error());
-      }
+      if (ImGui::Selectable(fs::path(file).stem().c_str())) (void)openFile(v, file, false);  // as Ctrl+O opens a style
     ImGui::EndCombo();
   }
   ImGui::SameLine();

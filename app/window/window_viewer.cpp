@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstdio>
 #include <optional>
 
@@ -29,6 +30,23 @@ namespace npr {
 
 namespace {
 
+// The scene over `width` x `height` from the corner: the chosen path, or in the split view the
+// plain lit render the original showed beside its NPR images (left) and the chosen path
+// (right). `each` draws over each view once it is drawn (the window's light marker).
+Status drawViews(Viewer& v, const CameraMatrices& cam, int width, int height, const std::function<Status(const glm::ivec4&)>& each) {
+  auto one = [&](const RenderSettings& settings, const glm::ivec4& viewport) {
+    Status st = v.renderer->render(cam, settings, viewport);
+    return st && each ? each(viewport) : st;
+  };
+  if (!v.state.splitView) return one(v.state.settings, {0, 0, width, height});
+  const int half = width / 2;
+  RenderSettings reference = v.state.settings;
+  reference.path = RenderPath::Reference;
+  const Status left = one(reference, {0, 0, half, height});
+  const Status right = one(v.state.settings, {half, 0, width - half, height});
+  return left ? right : left;
+}
+
 // The scene as the window shows it (both halves of the split view), at the window's whole
 // size without the panel, into a target of its own.
 void writeSceneScreenshot(Viewer& v, const glm::ivec2& size, const std::filesystem::path& file) {
@@ -40,14 +58,7 @@ void writeSceneScreenshot(Viewer& v, const glm::ivec2& size, const std::filesyst
     const float aspect = float(v.state.splitView ? half : size.x) / float(std::max(size.y, 1));
     const CameraMatrices cam = v.state.view(aspect);
     st = v.state.applyLight(*v.renderer, cam);
-    if (st && v.state.splitView) {
-      RenderSettings reference = v.state.settings;
-      reference.path = RenderPath::Reference;
-      st = v.renderer->render(cam, reference, {0, 0, half, size.y});
-      if (st) st = v.renderer->render(cam, v.state.settings, {half, 0, size.x - half, size.y});
-    } else if (st) {
-      st = v.renderer->render(cam, v.state.settings, {0, 0, size.x, size.y});
-    }
+    if (st) st = drawViews(v, cam, size.x, size.y, nullptr);
     if (st) st = writeImage(file.string(), target->readRGBA8());
   }
   bindWindowFramebuffer();
@@ -137,23 +148,12 @@ int runWindowViewer(const Options& o) {
     else bindWindowFramebuffer();
     if (Status st = v.state.applyLight(*v.renderer, cam); !st) v.state.note("light not moved: " + st.error());
     const glm::vec3 lightWorld = v.state.lightWorldPosition(cam);
-    auto drawView = [&](const RenderSettings& settings, const glm::ivec4& viewport) {
-      Status st = v.renderer->render(cam, settings, viewport);
-      if (st) st = v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, viewport);
-      if (!st) v.state.note(st.error());
-    };
     // The scene left of the docked panel, which is drawn over a cleared strip.
     clearRightOf(sceneView.z, fb.x, fb.y);
-    if (v.state.splitView) {
-      // Left: the plain lit render the original showed beside its NPR images; right: the chosen path.
-      const int half = sceneView.z / 2;
-      RenderSettings ref = v.state.settings;
-      ref.path = RenderPath::Reference;
-      drawView(ref, {0, 0, half, fb.y});
-      drawView(v.state.settings, {half, 0, sceneView.z - half, fb.y});
-    } else {
-      drawView(v.state.settings, sceneView);
-    }
+    const Status drawn = drawViews(v, cam, sceneView.z, sceneView.w, [&](const glm::ivec4& viewport) {
+      return v.renderer->drawMarker(cam, lightWorld, {1.0f, 0.85f, 0.2f}, 14.0f, viewport);
+    });
+    if (!drawn) v.state.note(drawn.error());
     if (scene) scene->copyToWindow();
     // F12: the scene alone at the window's size, drawn again without the panel's strip.
     if (v.screenshotRequested == 0) {

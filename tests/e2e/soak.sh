@@ -25,15 +25,12 @@ printf '/dev/zero\n' > device.palette
 good_palettes=("$src"/palettes/*/*.palette)
 broken=(nofaces.obj broken.ply broken.off fifo.obj missing.palette device.palette)
 keys=(1 2 3 4 5 6 bracketleft bracketright m plus minus p b t f r l w a s d q e)
-# The overlay must be hidden whenever a check shoots: F1 (which always toggles) is pressed in
-# pairs, and H (help, which also shows the overlay) twice and then F1. Tab is left out: while
-# an overlay widget has the keyboard, Tab moves between widgets instead, as in every ImGui tool.
+# The overlay must be hidden whenever a check shoots: F1 (which always toggles) and H (the
+# keys over the scene) are pressed in pairs. Tab is left out: while an overlay widget has the
+# keyboard, Tab moves between widgets instead, as in every ImGui tool.
 
-"$viewer" --size 480x360 >"$tmp/log" 2>&1 &
-pid=$!
-wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
-[ -n "$wid" ] || { echo "FAIL: no viewer window"; cat "$tmp/log"; exit 1; }
-xdotool windowfocus --sync "$wid" 2>/dev/null || true
+. "$src/tests/e2e/window_session.sh"
+start_viewer "$tmp/log" --size 480x360
 sleep 1
 
 fail=0
@@ -114,7 +111,7 @@ while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   case $((RANDOM % 20)) in
     0|1|2|3|4)    xdotool key --clearmodifiers "${keys[$((RANDOM % ${#keys[@]}))]}" ;;
     5)            if [ $((RANDOM % 2)) = 0 ]; then xdotool key --clearmodifiers F1; sleep 0.3; xdotool key --clearmodifiers F1
-                  else xdotool key --clearmodifiers h; sleep 0.3; xdotool key --clearmodifiers h; sleep 0.2; xdotool key --clearmodifiers F1; fi ;;
+                  else xdotool key --clearmodifiers h; sleep 0.3; xdotool key --clearmodifiers h; fi ;;
     6|7|8|9)      b=$((RANDOM % 3 + 1)); mod=""; [ $((RANDOM % 4)) = 0 ] && mod=ctrl
                   xdotool mousemove --window "$wid" $((RANDOM % w)) $((RANDOM % h)) mousedown $b
                   [ -n "$mod" ] && xdotool keydown $mod

@@ -13,11 +13,8 @@ src=$(cd "$(dirname "$0")/../.." && pwd)
 if [ -z "${DISPLAY:-}" ]; then exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$@"; fi
 tmp=$(mktemp -d); trap 'kill $pid 2>/dev/null; rm -rf "$tmp"' EXIT
 cd "$tmp"
-"$viewer" --size 480x360 >"$tmp/log" 2>&1 &
-pid=$!
-wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
-[ -n "$wid" ] || { echo "FAIL: no viewer window"; cat "$tmp/log"; exit 1; }
-xdotool windowfocus --sync "$wid" 2>/dev/null || true
+. "$src/tests/e2e/window_session.sh"
+start_viewer "$tmp/log" --size 480x360
 n=0
 pic() { printf "npr-screenshot-%04d.png" "$1"; }
 shot() {  # presses F12 and waits for the next numbered screenshot
@@ -53,11 +50,7 @@ grep -q "OpenGL error" "$tmp/log" && { echo "FAIL: GL errors"; cat "$tmp/log"; f
 
 # Space plays and pauses an animated scene: still while paused, moving while it plays.
 mkdir "$tmp/animated" && cd "$tmp/animated" && n=0
-"$viewer" --size 480x360 "$src/models/pendulum.gltf" >"$tmp/log2" 2>&1 &
-pid=$!
-wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
-[ -n "$wid" ] || { echo "FAIL: no viewer window for the animated scene"; cat "$tmp/log2"; exit 1; }
-xdotool windowfocus --sync "$wid" 2>/dev/null || true
+start_viewer "$tmp/log2" --size 480x360 "$src/models/pendulum.gltf"
 sleep 1
 xdotool key --clearmodifiers F1; sleep 0.5
 shot; shot
@@ -76,11 +69,7 @@ grep -q "OpenGL error" "$tmp/log2" && { echo "FAIL: GL errors (animated)"; cat "
 cd "$tmp"
 first=$(md5sum "$(pic 1)")
 n=$(ls npr-screenshot-*.png | wc -l)
-"$viewer" --size 480x360 >"$tmp/log3" 2>&1 &
-pid=$!
-wid=$(timeout 30 xdotool search --sync --name '^npr-viewer$' | head -1)
-[ -n "$wid" ] || { echo "FAIL: no viewer window (file commands)"; cat "$tmp/log3"; exit 1; }
-xdotool windowfocus --sync "$wid" 2>/dev/null || true
+start_viewer "$tmp/log3" --size 480x360
 sleep 1
 xdotool key --clearmodifiers F1; sleep 0.5
 shot
