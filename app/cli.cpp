@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -130,6 +131,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)");
   app.add_option("--turntable", o.turntable,
                  "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
+  app.add_option("--video", o.video,
+                 "Write the sequence (--turntable, or --frames with --animate or an animated scene) to FILE: .mp4 (H.264), .webm (VP9) "
+                 "or .gif, at --fps frames a second");
+  CLI::Option* videoQuality = app.add_option("--video-quality", o.videoQuality,
+                 "--video: constant quality, 0 (lossless) to 51, lower is better and larger (default 16: hatching without visible loss)");
+  std::string frameRange;
+  app.add_option("--frame-range", frameRange,
+                 "Render only frames FIRST-LAST of the sequence (numbered from 0 as --save-frames names them), the same pixels as in "
+                 "the whole run: split a sequence over machines (docs/render-farm.md)");
   bool naiveStencil = false;
   app.add_flag("--naive-stencil", naiveStencil,
                "Stencil path: mask and full-screen quads bucket by bucket, for every bucket (the original's cost; "
@@ -218,13 +228,36 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
   if (o.tile != 0 && (o.tile < 64 || o.tile > 16384)) return {std::nullopt, fail("--tile must be 64..16384 pixels, got " + std::to_string(o.tile))};
   if (app.count("--turntable") && o.turntable < 2)
     return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
+  if (!o.video.empty()) {
+    Result<VideoFormat> format = videoFormatOf(o.video);
+    if (!format) return {std::nullopt, fail(format.error())};
+    if (o.turntable == 0 && o.frames < 1)
+      return {std::nullopt, fail("--video needs a sequence: --turntable N, or --frames N with --animate or an animated scene")};
+    const std::filesystem::path folder = std::filesystem::path(o.video).parent_path();
+    std::error_code ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+      return {std::nullopt, fail("--video: the folder '" + printable(folder.string()) + "' does not exist")};
+    if (std::filesystem::is_directory(o.video, ec)) return {std::nullopt, fail("--video: '" + printable(o.video) + "' is a folder")};
+    o.headless = true;
+  }
+  if (videoQuality->count() && o.video.empty()) return {std::nullopt, fail("--video-quality goes with --video FILE")};
+  if (o.videoQuality < 0 || o.videoQuality > VideoSpec::kMaxQuality)
+    return {std::nullopt, fail("--video-quality must be 0..51 (lower is better), got " + std::to_string(o.videoQuality))};
   if (o.turntable != 0) {
     if (o.turntable < 2 || o.turntable > 3600) return {std::nullopt, fail("--turntable must be 2..3600 frames, got " + std::to_string(o.turntable))};
     if (!animate.empty()) return {std::nullopt, fail("--turntable is its own camera motion: leave out --animate")};
     o.headless = true;
     o.frames = o.turntable;
     o.animation.orbitDegrees = 360.0f / float(o.turntable);
-    if (o.saveFrames.empty()) o.saveFrames = "turntable";
+    if (o.saveFrames.empty() && o.video.empty()) o.saveFrames = "turntable";
+  }
+  if (!frameRange.empty()) {
+    const int frames = std::max(o.frames, 1);
+    if (frames < 2) return {std::nullopt, fail("--frame-range needs a sequence: --turntable N, or --frames N")};
+    Result<FrameRange> range = parseFrameRange(frameRange, frames);
+    if (!range) return {std::nullopt, fail(range.error())};
+    o.frameRange = *range;
+    o.headless = true;
   }
   if (!o.saveFrames.empty()) {
     std::error_code ec;

@@ -9,8 +9,10 @@
 #include <glm/glm.hpp>
 
 #include "app/camera_animation.h"
+#include "app/headless/frame_sequence.h"
 #include "app/scene_layout.h"
 #include "app/settings/look.h"
+#include "app/video/video_encoder.h"
 #include "renderer/gl/gpu_choice.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/palette.h"
@@ -69,6 +71,9 @@ struct Options {
   bool svgRaster = false;     // --svg-raster: with the frame embedded underneath
   bool svgFill = false;       // --svg-fill: the shaded picture as regions filled with the palette's textures
   int turntable = 0;          // --turntable N: N frames of one full orbit, headless, frames and a GIF
+  std::string video;          // --video FILE: the sequence as .mp4 (H.264), .webm (VP9) or .gif
+  int videoQuality = VideoSpec::kDefaultQuality;  // --video-quality: CRF, 0 (lossless) to 51
+  std::optional<FrameRange> frameRange;  // --frame-range FIRST-LAST: only those frames of the sequence
   int tile = 0;               // --tile N: render the still in N x N tiles (a poster); automatic beyond the GL limit
 
   // The value the command line gives the setting `key`, or null.

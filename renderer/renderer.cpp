@@ -3,6 +3,7 @@
 // model (scene/model.h).
 #include "renderer/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <utility>
@@ -191,6 +192,35 @@ Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, c
   gl::restoreDefaults();
   if (colour) stats_.cpuFrameMs = msSince(frameStart);
   return result;
+}
+
+Status Renderer::follow(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport) {
+  // What render() would see: nothing in an empty viewport, the supersampled frame's viewport
+  // when the frame is supersampled. The pattern follows where render() places it: not on the
+  // reference path.
+  if (viewport.z < 1 || viewport.w < 1) return okStatus();
+  if (s.supersample > 1) {
+    const int k = Supersampler::factorFor(std::min(s.supersample, RenderSettings::kMaxSupersample), viewport);
+    RenderSettings scaled = pixelSizesScaled(s, float(k));
+    scaled.supersample = 1;
+    return follow(camera, scaled, k > 1 ? glm::ivec4(0, 0, viewport.z * k, viewport.w * k) : viewport);
+  }
+  const glm::ivec4& v = viewport;
+  // Posed as render() poses: the close-up samples are drawn from the posed surface.
+  const PoseTargets on = poseTargets(s, gpu_.softwareRasterizer);
+  Status status = okStatus();
+  scene_.forEachIncludingHidden([&](Model& m) {
+    if (status) status = m.applyPose(on.gpu, on.cpu, gpu_.programs, stats_);
+  });
+  if (!status) return status;
+  if (s.pattern == PatternSpace::Anchored && s.path != RenderPath::Reference)
+    scene_.forEach([&](Model& m) { (void)m.patterns().update(m.placed(camera), v, s.patternFollowsRotation); });
+  // The ground is built from the pose of the first frame that draws it.
+  if (s.ground) (void)scene_.ground();
+  FrameView frame = frameView(camera, s, v, true);
+  for (const auto& f : features_)
+    if (status && f->active(frame)) status = f->follow(frame);
+  return status;
 }
 
 // ---------------------------------------------------------------------------------------

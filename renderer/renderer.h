@@ -77,6 +77,11 @@ class Renderer {
   [[nodiscard]] Status render(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport,
                               FrameOutput output = FrameOutput::Colour);
 
+  // What one frame hands the next, carried through a frame without drawing it, as render()
+  // would: the poses, and the anchored pattern's frame following each model. A frame range's
+  // frames before its first (app/headless/frame_sequence.h) pass through here.
+  [[nodiscard]] Status follow(const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec4& viewport);
+
   // Whether a frame with these settings has passes that share the bound framebuffer's depth
   // and stencil (FrameNeeds::sharedDepth, with this scene's palettes and models): a window's
   // own framebuffer cannot be shared, so the window draws such frames offscreen.

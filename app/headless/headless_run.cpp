@@ -10,7 +10,11 @@
 #include <optional>
 #include <vector>
 
+#include "app/headless/frame_sequence.h"
 #include "app/headless/headless_session.h"
+#include "app/headless/interrupt_guard.h"
+#include "app/headless/resident_memory.h"
+#include "app/headless/sequence_output.h"
 #include "app/headless/poster.h"
 #include "app/line_export.h"
 #include "app/progress_line.h"
@@ -41,21 +45,29 @@ int runHeadless(const Options& o) {
   auto target = OffscreenTarget::create(o.size.x, o.size.y);
   if (!target) return reportFailure(target.error());
   const int frames = std::max(1, o.frames);
+  const FrameRange range = o.frameRange.value_or(FrameRange{0, frames - 1});
   const float aspect = float(o.size.x) / float(o.size.y);
+  const glm::ivec4 viewport{0, 0, o.size.x, o.size.y};
   // A sequence of an animated scene moves it: the clock steps 1/fps scene seconds per frame.
   const bool moving = frames > 1 && state.animationLength() > 0.0;
-  if (moving) state.playback.playing = true;
-  const int gifFps = moving ? static_cast<int>(std::lround(o.fps)) : 30;
+  const double startTime = state.playback.time;
+  // The outputs, opened before the first frame: a bad path or a missing codec is said now. A
+  // turntable's GIF is the whole orbit's: a range of it (a farm's share) writes frames only.
+  SequenceTargets targets;
+  targets.framesFolder = o.saveFrames;
+  if (o.turntable && o.video.empty() && !o.frameRange) targets.gif = (std::filesystem::path(o.saveFrames) / "turntable.gif").string();
+  targets.video = o.video;
+  targets.videoQuality = o.videoQuality;
+  targets.width = o.size.x;
+  targets.height = o.size.y;
+  targets.frames = range.count();
+  targets.fps = moving || !o.video.empty() ? o.fps : 30.0;
+  Result<SequenceOutput> output = SequenceOutput::open(targets);
+  if (!output) return reportFailure(output.error());
+  const InterruptGuard interrupt;
   std::vector<double> ms;
-  // A turntable also goes into an animated GIF, frame by frame (30 frames a second, looping).
-  std::optional<AnimationWriter> gif;
-  const std::string gifPath = o.turntable ? (std::filesystem::path(o.saveFrames) / "turntable.gif").string() : std::string();
-  if (o.turntable) {
-    Result<AnimationWriter> w = AnimationWriter::open(gifPath, o.size.x, o.size.y, frames, gifFps);
-    if (!w) return reportFailure(w.error());
-    gif = std::move(*w);
-  }
-  ProgressLine progress("rendering " + std::to_string(frames) + " frames");
+  ResidentMemory memory(range.count());
+  ProgressLine progress("rendering " + std::to_string(range.count()) + " frames");
   std::unique_ptr<ProgressLine> bakeProgress;
   renderer->setProgress([&](const std::string& what, double f) {
     if (!bakeProgress) bakeProgress = std::make_unique<ProgressLine>(what);
@@ -63,33 +75,43 @@ int runHeadless(const Options& o) {
   });
   target->bind();
   CameraMatrices lastCamera = state.view(aspect);
-  for (int f = 0; f < frames; ++f) {
+  const auto runStart = std::chrono::steady_clock::now();
+  for (int f = 0; f <= range.last; ++f) {
+    if (interrupt.raised())
+      return reportFailure("interrupted at frame " + std::to_string(f) + ": the video and GIF were not written" +
+                           (o.saveFrames.empty() ? std::string() : "; the frames before it are in " + o.saveFrames));
     const auto t0 = std::chrono::steady_clock::now();
+    if (moving) state.playback.time = sequenceTime(startTime, f, o.fps, state.playback.speed, state.animationLength());
     state.poseScene(*renderer);
     const CameraMatrices cam = state.view(aspect);
+    if (f < range.first) {
+      // Before the range: only what the next frame needs from this one (frame_sequence.h).
+      if (Status s = renderer->follow(cam, state.settings, viewport); !s) return reportFailure("render failed: " + s.error());
+      stepCameraAnimation(state.camera, o.animation, o.size);
+      continue;
+    }
     lastCamera = cam;
     if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
     target->bind();
-    if (Status s = renderer->render(cam, state.settings, {0, 0, o.size.x, o.size.y}); !s)
-      return reportFailure("render failed: " + s.error());
+    if (Status s = renderer->render(cam, state.settings, viewport); !s) return reportFailure("render failed: " + s.error());
     finishGpuWork();
     ms.push_back(msSince(t0));
-    if (!o.saveFrames.empty() || gif) {
-      const ImageRGBA8 image = target->readRGBA8();
-      if (Status s = writeImage(frameFileName(o.saveFrames, f), image); !s) return reportFailure(s.error());
-      if (gif)
-        if (Status s = gif->append(image); !s) return reportFailure(s.error());
-    }
-    if (frames > 1) progress.update(double(f + 1) / frames);
+    if (output->wantsPixels())
+      if (Status s = output->add(target->readRGBA8(), f); !s) return reportFailure(s.error());
+    memory.sample(f - range.first + 1);
+    if (range.count() > 1) progress.update(double(f - range.first + 1) / range.count());
     stepCameraAnimation(state.camera, o.animation, o.size);
-    if (moving) state.playback.advance(1.0 / o.fps, state.animationLength());
   }
-  if (!o.saveFrames.empty()) tellUser(std::to_string(frames) + " frame(s) written to " + o.saveFrames);
-  if (gif) tellUser("turntable written to " + gifPath);
+  if (Status s = output->finish(); !s) return reportFailure(s.error());
+  const double runSeconds = msSince(runStart) / 1000.0;
   std::sort(ms.begin(), ms.end());
-  std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", frames,
+  std::fprintf(stderr, "npr-viewer: %d frame(s) of %s at %dx%d, path %s, match %s: median %.2f ms\n", range.count(),
                state.scene.label().c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
                choiceName(state.settings.match), ms[ms.size() / 2]);
+  if (range.count() > 1) {
+    std::fprintf(stderr, "npr-viewer: %.1f frames a second written (%.2f s in all)%s\n", range.count() / std::max(runSeconds, 1e-9), runSeconds,
+                 memory.summary().c_str());
+  }
   if (!o.svg.empty()) {
     const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};
     const SvgContents what{o.svgRaster ? &frame : nullptr, o.svgFill, state.palette.get()};

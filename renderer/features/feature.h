@@ -31,6 +31,10 @@ class Feature {
   virtual void shade(const FrameView&, const Model*, FrameContext&) {}
   // Passes over the surfaces (lines, strokes, fades), in the table's order; colour frames only.
   [[nodiscard]] virtual Status drawOver(FrameView&) { return okStatus(); }
+  // What a colour frame hands the next (strokes' parameters continued from the last frame's),
+  // carried through a frame that is not drawn: Renderer::follow, a frame range's frames before
+  // its first. A feature that keeps nothing from frame to frame has nothing to do here.
+  [[nodiscard]] virtual Status follow(FrameView&) { return okStatus(); }
 };
 
 // A row of the feature table: a feature's folder adds its features (several where they share

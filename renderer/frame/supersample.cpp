@@ -14,10 +14,15 @@ const gl::TextureUnit kSourceUnit = gl::claimTextureUnit();  // the supersampled
 
 }  // namespace
 
-Status Supersampler::run(int k, const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats,
-                         const std::function<Status(int, const glm::ivec4&)>& draw) {
+int Supersampler::factorFor(int k, const glm::ivec4& viewport) {
   const int limit = maxFramebufferSide();
   while (k > 1 && (viewport.z * k > limit || viewport.w * k > limit)) --k;
+  return std::max(k, 1);
+}
+
+Status Supersampler::run(int k, const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats,
+                         const std::function<Status(int, const glm::ivec4&)>& draw) {
+  k = factorFor(k, viewport);
   if (k <= 1) return draw(1, viewport);
   GLint bound = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);

@@ -25,6 +25,9 @@ class Supersampler {
   // bound again on return. `k` is lowered to what the GL's framebuffer limit allows.
   Status run(int k, const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats,
              const std::function<Status(int k, const glm::ivec4& viewport)>& draw);
+  // The factor run() draws `viewport` at when asked for `k`: lowered to what the GL's
+  // framebuffer limit allows.
+  static int factorFor(int k, const glm::ivec4& viewport);
 
  private:
   std::optional<OffscreenTarget> target_;

@@ -31,7 +31,7 @@ Model::Model(const Mesh& mesh, const glm::mat4& transform, FrameStats& stats, bo
   adopt(mesh);
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
-  strokes_.setMesh(mesh_);
+  strokes_.setMesh(mesh_, rest_);
   patterns_.setMesh(mesh_);
   gpu_.upload(*mesh_);
   stats.bufferUploads += 1;
@@ -49,7 +49,7 @@ void Model::reset(const Mesh& mesh, const glm::mat4& transform, FrameStats& stat
   parts_.clear();
   triangles_.setMesh(mesh_);
   lines_.setMesh(mesh_);
-  strokes_.setMesh(mesh_);
+  strokes_.setMesh(mesh_, rest_);
   patterns_.setMesh(mesh_);
   gpu_.upload(*mesh_);
   materials_.upload(mesh);

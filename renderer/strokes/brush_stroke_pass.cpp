@@ -16,8 +16,9 @@ namespace {
 const gl::TextureUnit kBrushUnit = gl::claimTextureUnit();  // painterly strokes' brush coverage
 }  // namespace
 
-void BrushStrokePass::setMesh(const Mesh* mesh) {
+void BrushStrokePass::setMesh(const Mesh* mesh, const Mesh* rest) {
   mesh_ = mesh;
+  rest_ = rest && rest != mesh && rest->positions.size() == mesh->positions.size() ? rest : nullptr;
   seededDensity_ = -1.0f;
   seededBudget_ = -1;
   count_ = 0;
@@ -50,7 +51,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   const int budget = std::clamp(st.budget, 0, StrokeSettings::kMaxBudget);
   const bool withField = directions.size() == mesh_->positions.size();
   if (density != seededDensity_ || budget != seededBudget_ || withField != seededWithField_) {
-    const StrokeSeeding seeding = seedStrokes(*mesh_, density, budget, directions);
+    const StrokeSeeding seeding = seedStrokes(rest_ ? *rest_ : *mesh_, density, budget, directions);
     ++stats.meshCachesBuilt;
     static_assert(sizeof(StrokeParticle) == 11 * sizeof(float), "the instance layout below reads 11 floats per stroke");
     gl::uploadBuffer(instances_, seeding.particles.data(), seeding.particles.size() * sizeof(StrokeParticle), GL_STATIC_DRAW);
@@ -68,7 +69,7 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
     count_ = seeding.particles.size();
     particles_ = seeding.particles;
     anchors_ = seeding.anchors;
-    moved_ = false;
+    moved_ = rest_ != nullptr;  // seeded at rest: carried to the pose below
     seedMs_ = seeding.ms;
     seededDensity_ = density;
     seededBudget_ = budget;

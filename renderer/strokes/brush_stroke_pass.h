@@ -25,8 +25,11 @@ namespace npr {
 
 class BrushStrokePass {
  public:
-  // Forgets the previous mesh's strokes (seeded again on the next draw).
-  void setMesh(const Mesh* mesh);
+  // Forgets the previous mesh's strokes (seeded again on the next draw). `rest`: the mesh's
+  // rest pose where `mesh` deforms (else null): strokes are seeded there and carried to the
+  // pose, so which strokes there are does not depend on the pose the first draw found (a frame
+  // range's frames equal the whole sequence's).
+  void setMesh(const Mesh* mesh, const Mesh* rest = nullptr);
   // The mesh deformed in place: the strokes are put back on it where they were seeded (their
   // triangle and barycentric place), not seeded again.
   void geometryChanged() { moved_ = true; }
@@ -40,6 +43,7 @@ class BrushStrokePass {
 
  private:
   const Mesh* mesh_ = nullptr;
+  const Mesh* rest_ = nullptr;  // where strokes are seeded when the mesh deforms
   std::vector<StrokeParticle> particles_;  // as uploaded, with where each sits
   std::vector<StrokeAnchor> anchors_;
   bool moved_ = false;  // the mesh deformed since the particles were placed

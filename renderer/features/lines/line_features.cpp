@@ -62,9 +62,14 @@ class FeatureLinesFeature final : public Feature {
   explicit FeatureLinesFeature(std::shared_ptr<StrokeTextures> textures) : textures_(std::move(textures)) {}
   const char* name() const override { return "feature lines"; }
   bool active(const FrameView& f) const override { return f.settings.lines.edgeKinds(); }
+  // The lines found, their chains' parameters continuing the last frame's.
+  Status follow(FrameView& f) override {
+    f.scene.forEach([&](Model& m) { m.lines().update(m.placed(f.camera), f.settings.lines, f.viewport, f.stats); });
+    return okStatus();
+  }
   Status drawOver(FrameView& f) override {
     const LineSettings& ls = f.settings.lines;
-    f.scene.forEach([&](Model& m) { m.lines().update(m.placed(f.camera), ls, f.viewport, f.stats); });
+    (void)follow(f);
     // The base style, then each set in order, each on every model before the next: a later set
     // lies over an earlier one on every object, as a later layer does.
     Status result = okStatus();
@@ -88,8 +93,9 @@ class IntersectionLinesFeature final : public Feature {
   explicit IntersectionLinesFeature(std::shared_ptr<StrokeTextures> textures) : textures_(std::move(textures)) {}
   const char* name() const override { return "intersection lines"; }
   bool active(const FrameView& f) const override { return (f.settings.lines.drawnKinds() & 16u) && !f.scene.empty(); }
-  Status drawOver(FrameView& f) override {
-    // Found again only when the scene changed (objects, their places or their pose).
+  // Found again only when the scene changed (objects, their places or their pose), their
+  // chains' parameters continuing the last pose's.
+  Status follow(FrameView& f) override {
     if (!vao_ || f.scene.version() != sceneVersion_) {
       const auto t0 = std::chrono::steady_clock::now();
       const std::vector<FeatureLine> lines = sceneIntersectionLines(f.scene);
@@ -105,6 +111,10 @@ class IntersectionLinesFeature final : public Feature {
       ++f.stats.bufferUploads;
       f.stats.cpuLinesMs += msSince(t0);
     }
+    return okStatus();
+  }
+  Status drawOver(FrameView& f) override {
+    (void)follow(f);
     // World space: the scene's camera places them.
     for (LineStyle& style : lineStyles(f.settings.lines, nullptr))
       if (style.kinds & 16u) {

@@ -35,6 +35,9 @@ class BakedOcclusionFeature final : public Feature, SurfaceInput {
     });
     return status;
   }
+  // Baked on the pose of the first frame that asks, drawn or not: a frame range bakes at its
+  // sequence's first frame, as the whole sequence does.
+  Status follow(FrameView& f) override { return prepare(f); }
   void shade(const FrameView&, const Model* model, FrameContext& frame) override {
     if (!model) return;
     frame.occlusion = model->occlusionValues();  // the per-triangle paths light with it on the CPU
