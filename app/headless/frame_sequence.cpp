@@ -30,4 +30,11 @@ double sequenceTime(double start, int f, double fps, double speed, double length
   return t < 0.0 ? t + length : t;
 }
 
+glm::vec3 turntableLight(const glm::vec3& light, const glm::vec3& centre, float degrees) {
+  // The orbit camera's yaw turns its eye from +z towards +x: the same turn about +y.
+  const float a = glm::radians(degrees), c = std::cos(a), s = std::sin(a);
+  const glm::vec3 d = light - centre;
+  return centre + glm::vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
+}
+
 }  // namespace npr

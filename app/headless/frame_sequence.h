@@ -8,11 +8,15 @@
 //   - The anchored pattern follows the model from frame to frame: a range warms it up by
 //     following the frames before it without drawing them (Renderer::follow: a few hundred
 //     points projected per object and frame).
+//   - A turntable turns the model under the light: the light turns with the camera's orbit
+//     (turntableLight), so the far side is lit as the near side was, as on a real turntable.
 // Everything else a frame shows (the tone fit, brush strokes, the occlusion bake) is a function
 // of the frame alone.
 #pragma once
 
 #include <string>
+
+#include <glm/glm.hpp>
 
 #include "renderer/core/result.h"
 
@@ -32,5 +36,9 @@ struct FrameRange {
 // The scene clock at frame `f` of a sequence starting at `start` seconds, stepping 1 / `fps`
 // of scene time per frame at `speed`, looped over `length` seconds (0: a still scene).
 double sequenceTime(double start, int f, double fps, double speed, double length);
+
+// Where a turntable's light stands when the camera has orbited `degrees` about the vertical
+// axis through `centre`: `light` turned with it.
+glm::vec3 turntableLight(const glm::vec3& light, const glm::vec3& centre, float degrees);
 
 }  // namespace npr

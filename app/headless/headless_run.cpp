@@ -51,6 +51,8 @@ int runHeadless(const Options& o) {
   // A sequence of an animated scene moves it: the clock steps 1/fps scene seconds per frame.
   const bool moving = frames > 1 && state.animationLength() > 0.0;
   const double startTime = state.playback.time;
+  const glm::vec3 startLight = state.light;
+  const glm::vec3 orbitCentre = state.camera.target();
   // The outputs, opened before the first frame: a bad path or a missing codec is said now. A
   // turntable's GIF is the whole orbit's: a range of it (a farm's share) writes frames only.
   SequenceTargets targets;
@@ -62,9 +64,9 @@ int runHeadless(const Options& o) {
   targets.height = o.size.y;
   targets.frames = range.count();
   targets.fps = moving || !o.video.empty() ? o.fps : 30.0;
+  const InterruptGuard interrupt;  // from here a signal stops the run between frames, cleaning up
   Result<SequenceOutput> output = SequenceOutput::open(targets);
   if (!output) return reportFailure(output.error());
-  const InterruptGuard interrupt;
   std::vector<double> ms;
   ResidentMemory memory(range.count());
   ProgressLine progress("rendering " + std::to_string(range.count()) + " frames");
@@ -77,9 +79,15 @@ int runHeadless(const Options& o) {
   CameraMatrices lastCamera = state.view(aspect);
   const auto runStart = std::chrono::steady_clock::now();
   for (int f = 0; f <= range.last; ++f) {
-    if (interrupt.raised())
-      return reportFailure("interrupted at frame " + std::to_string(f) + ": the video and GIF were not written" +
-                           (o.saveFrames.empty() ? std::string() : "; the frames before it are in " + o.saveFrames));
+    if (interrupt.raised()) {
+      // Exit 128 + SIGINT, as a shell reports a run stopped by Ctrl+C.
+      std::string what = "interrupted at frame " + std::to_string(f);
+      if (!targets.video.empty() || !targets.gif.empty()) what += ": " + (targets.video.empty() ? targets.gif : targets.video) + " was not written";
+      if (!o.saveFrames.empty() && f > range.first)
+        what += "; frames " + std::to_string(range.first) + " to " + std::to_string(f - 1) + " are in " + o.saveFrames;
+      tellUser(what);
+      return 130;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     if (moving) state.playback.time = sequenceTime(startTime, f, o.fps, state.playback.speed, state.animationLength());
     state.poseScene(*renderer);
@@ -91,6 +99,7 @@ int runHeadless(const Options& o) {
       continue;
     }
     lastCamera = cam;
+    if (o.turntable && !state.lightFollowsCamera) state.light = turntableLight(startLight, orbitCentre, float(f) * o.animation.orbitDegrees);
     if (Status s = state.applyLight(*renderer, cam); !s) return reportFailure("light: " + s.error());
     target->bind();
     if (Status s = renderer->render(cam, state.settings, viewport); !s) return reportFailure("render failed: " + s.error());
@@ -109,8 +118,11 @@ int runHeadless(const Options& o) {
                state.scene.label().c_str(), o.size.x, o.size.y, renderPathName(state.settings.path),
                choiceName(state.settings.match), ms[ms.size() / 2]);
   if (range.count() > 1) {
-    std::fprintf(stderr, "npr-viewer: %.1f frames a second written (%.2f s in all)%s\n", range.count() / std::max(runSeconds, 1e-9), runSeconds,
-                 memory.summary().c_str());
+    // Against the frame alone (what the window draws a second at this size): what reading the
+    // frames back, writing and encoding them cost on top.
+    const double median = ms[ms.size() / 2];
+    std::fprintf(stderr, "npr-viewer: %.1f frames a second written (%.2f s in all), %.1f a second drawn alone (the median frame)%s\n",
+                 range.count() / std::max(runSeconds, 1e-9), runSeconds, 1000.0 / std::max(median, 1e-6), memory.summary().c_str());
   }
   if (!o.svg.empty()) {
     const ImageRGBA8 frame = o.svgRaster ? target->readRGBA8() : ImageRGBA8{};

@@ -252,7 +252,9 @@ Result<std::unique_ptr<VideoEncoder>> VideoEncoder::open(const VideoSpec& spec) 
   AVDictionary* options = nullptr;
   if (mp4) {
     av_dict_set(&options, "crf", std::to_string(spec.quality).c_str(), 0);
-    av_dict_set(&options, "preset", "medium", 0);
+    // x264's "faster": a 60-frame 1080p crosshatch turntable on two cores wrote 23.5 frames a
+    // second against medium's 15.8, for 3% more bits and 0.25 dB less (docs/video.md).
+    av_dict_set(&options, "preset", "faster", 0);
   } else {
     // VP9's constant quality runs 0..63: the same place on its scale.
     av_dict_set(&options, "crf", std::to_string((spec.quality * 63 + 25) / 51).c_str(), 0);
