@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -18,6 +19,9 @@
 
 namespace npr {
 namespace {
+
+// The group --help shows; the others show with --help-all.
+constexpr const char* kCommonTasks = "Common tasks";
 
 bool parseFloats(const std::string& s, int n, float* out) {
   std::stringstream ss(s);
@@ -53,97 +57,149 @@ Look Options::look() const {
 }
 
 ParseOutcome parseCommandLine(int argc, char** argv) {
+  // --help shows the common tasks; --help-all, and the manual page, every group.
+  bool everything = false;
+  for (int i = 1; i < argc; ++i) everything = everything || std::strcmp(argv[i], "--help-all") == 0 || std::strcmp(argv[i], "--man-page") == 0;
+  auto group = [everything](const char* name) { return everything || std::strcmp(name, kCommonTasks) == 0 ? std::string(name) : std::string(); };
+
   CLI::App app{"npr-viewer: palette-based non-photorealistic rendering of meshes.\n"
                "Lights each triangle or pixel with the OpenGL lighting model and shows the palette texture\n"
-               "whose average colour or intensity matches best, in screen space.\n"
-               "Every setting below is also a style-file key (the README's settings reference)."};
+               "whose average colour or intensity matches best, in screen space."};
+  app.name("npr-viewer");
+  app.footer(everything ? "Every setting is also a style-file key (the README's settings reference).\n"
+                        : "--help-all lists every option: scene, animation, output, palette tools, diagnostics, and the\n"
+                          "settings (palette and tone, render path, pattern, light, shadows, occlusion, strokes, lines, ...),\n"
+                          "each of which is also a style-file key.");
+  app.set_help_flag("-h,--help", "Print the common options and exit")->group(kCommonTasks);
+  bool helpAll = false;
+  app.add_flag("--help-all", helpAll, "Print every option, in groups, and exit")->group(group(kCommonTasks));
   Options o;
   std::string size, camera;
   std::vector<std::string> paletteFor;
   std::string animate;
-  app.add_option("model", o.models, "Mesh or scene files (OBJ, glTF/GLB, PLY, OFF, STL, OM), shown together; default models/bunny.obj");
   std::string layout;
-  app.add_option("--layout", layout, "Several files: placed as their files place them (file, the default), or set apart in a row or a grid");
-  app.add_option("--camera-from-file", o.cameraFromFile, "View through the scene file's camera N (1 is the first; --info lists them)");
-  app.add_flag("--split-objects", o.splitObjects, "OBJ files: each 'o' and 'g' group an object of its own (its own palette, visibility)");
-  app.add_flag("--file-lights,!--no-file-lights", o.fileLights,
-               "Light the scene with its file's lights (glTF KHR_lights_punctual) where it has any (default on)");
-  std::vector<std::string> objectPalette;
+  std::vector<std::string> objectPalette, objectDetail, materialDetail;
+  std::string gpu, ladder, frameRange;
+  bool manPageWanted = false, naiveStencil = false;
+
+  // What most runs need: open, style, palette, output.
+  std::string g = group(kCommonTasks);
+  app.add_option("model", o.models, "Mesh or scene files (OBJ, glTF/GLB, PLY, OFF, STL, OM), shown together; default models/bunny.obj")
+      ->type_name("FILE")->group(g);
+  app.add_option("--style", o.style,
+                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated, screentone) "
+                 "or FILE; options given beside it win")
+      ->type_name("NAME|FILE")->group(g);
+  app.add_option("--palette", o.palettes, "Palettes by shipped name, folder or .palette file (keys 1-9 cycle them); default crosshatch")
+      ->type_name("NAME|FILE")->group(g);
+  app.add_option("--size", size, "Frame size WxH: the headless frame's, or the window's (default 1280x720)")->type_name("WxH")->group(g);
+  app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)")->type_name("YAW,PITCH,DIST")->group(g);
+  app.add_flag("--headless", o.headless, "Render through EGL with no window")->group(g);
+  app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)")->type_name("FILE")->group(g);
+  app.add_option("--turntable", o.turntable,
+                 "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif")
+      ->type_name("N")->group(g);
+  app.add_option("--video", o.video,
+                 "Write the sequence (--turntable, or --frames with --animate or an animated scene) to FILE: .mp4 (H.264), .webm (VP9) "
+                 "or .gif, at --fps frames a second")
+      ->type_name("FILE")->group(g);
+  app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file")
+      ->type_name("FILE")->group(g);
+  app.add_option("--style-sheet", o.styleSheet,
+                 "Write FILE (PNG): the model in every shipped style, one labelled cell each, to pick a style by looking "
+                 "(--size is the whole sheet's; the other options apply to every cell)")
+      ->type_name("FILE")->group(g);
+  app.add_flag("--version", o.version, "Print the version and exit")->group(g);
+
+  g = group("Scene and window");
+  app.add_option("--layout", layout, "Several files: placed as their files place them (file, the default), or set apart in a row or a grid")
+      ->type_name("file|row|grid")->group(g);
+  app.add_option("--camera-from-file", o.cameraFromFile, "View through the scene file's camera N (1 is the first; --info lists them)")
+      ->type_name("N")->group(g);
+  app.add_flag("--split-objects", o.splitObjects, "OBJ files: each 'o' and 'g' group an object of its own (its own palette, visibility)")->group(g);
+  app.add_flag_function("--no-file-lights", [&o](std::int64_t) { o.fileLights = false; },
+               "Light with the viewer's light even where the scene file has lights (glTF KHR_lights_punctual; by default its own light it)")
+      ->group(g);
+  app.add_flag_function("--file-lights", [&o](std::int64_t) { o.fileLights = true; }, "")->group("");
   app.add_option("--object-palette", objectPalette,
-                 "OBJECT=FILE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)");
-  std::vector<std::string> objectDetail, materialDetail;
+                 "OBJECT=PALETTE: draw the object named OBJECT (or numbered, from 1, as --info lists them) with its own palette (repeatable)")
+      ->type_name("OBJECT=PALETTE")->group(g);
   app.add_option("--object-detail", objectDetail,
-                 "OBJECT=VALUE: the object's detail in [0, 1], which picks the row of a palette with 'axis detail' (repeatable; default 0)");
+                 "OBJECT=VALUE: the object's detail in [0, 1], which picks the row of a palette with 'axis detail' (repeatable; default 0)")
+      ->type_name("OBJECT=VALUE")->group(g);
+  app.add_option("--palette-for", paletteFor,
+                 "MATERIAL=PALETTE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)")
+      ->type_name("MATERIAL=PALETTE")->group(g);
+  app.add_option("--material-detail", materialDetail,
+                 "MATERIAL=VALUE: the detail in [0, 1] of the faces of material MATERIAL, in place of their object's, for a palette with "
+                 "'axis detail' (repeatable; needs --materials on)")
+      ->type_name("MATERIAL=VALUE")->group(g);
+  app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)")->group(g);
+
+  g = group("Animation");
   app.add_option("--animation", o.playAnimation,
-                 "The scene's animation to play: its NAME, its NUMBER from 1 (--info lists them), all (the default) or none (the rest pose)");
-  app.add_option("--time", o.time, "Pose the scene at SECONDS of its animations' time (the first frame's, when it plays)");
-  app.add_flag("--play", o.play, "Play the scene's animations in the window from the start (space plays and pauses)");
-  app.add_option("--fps", o.fps, "Headless sequences (--frames, --turntable): scene frames per second, the clock's step per frame (default 30)");
-  app.add_option("--palette", o.palettes, "Palette file(s) or palette folders; default palettes/crosshatch");
-  app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit");
-  app.add_option("--size", size, "Framebuffer size WxH (headless) or window size");
-  app.add_option("--camera", camera, "Camera YAW,PITCH,DISTANCE (degrees, degrees, model radii)");
-  app.add_flag("--headless", o.headless, "Render through EGL with no window");
-  std::string gpu;
+                 "The scene's animation to play: its NAME, its NUMBER from 1 (--info lists them), all (the default) or none (the rest pose)")
+      ->type_name("NAME|N|all|none")->group(g);
+  app.add_option("--time", o.time, "Pose the scene at SECONDS of its animations' time (the first frame's, when it plays)")
+      ->type_name("SECONDS")->group(g);
+  app.add_flag("--play", o.play, "Play the scene's animations in the window from the start (space plays and pauses)")->group(g);
+  app.add_option("--fps", o.fps, "Headless sequences (--frames, --turntable, --video): frames per second, the clock's step per frame (1..1000; default 30)")
+      ->type_name("N")->group(g);
+  app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)")->type_name("N")->group(g);
+  app.add_option("--animate", animate,
+                 "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)")
+      ->type_name("MOTION")->group(g);
+
+  g = group("Output");
+  app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...")->type_name("DIR")->group(g);
+  CLI::Option* videoQuality =
+      app.add_option("--video-quality", o.videoQuality,
+                     "--video: constant quality, 0 (lossless) to 51, lower is better and larger (default 16: hatching without visible loss)")
+          ->type_name("0..51")->group(g);
+  app.add_option("--frame-range", frameRange,
+                 "Render only frames FIRST-LAST of the sequence (numbered from 0 as --save-frames names them), the same pixels as in "
+                 "the whole run: split a sequence over machines (docs/video.md)")
+      ->type_name("FIRST-LAST")->group(g);
+  app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (needs --lines; the overlay has a button too)")
+      ->type_name("FILE")->group(g);
+  app.add_flag("--svg-raster", o.svgRaster, "--svg: embed the rendered frame under the lines")->group(g);
+  app.add_flag("--svg-fill", o.svgFill,
+               "--svg: the shaded picture as vector regions too, each palette entry's filled with its texture as an SVG pattern, over the background")
+      ->group(g);
+  app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)")
+      ->type_name("N")->group(g);
+
+  g = group("Palette tools");
+  app.add_option("--make-palette", o.makePalette,
+                 "Make a palette from IMAGE (with --ladder) or from a stroke image (with --tam), write it to --out DIR and print its report")
+      ->type_name("IMAGE")->group(g);
+  app.add_option("--ladder", ladder, "--make-palette step applied progressively: blur|offset|solarize|posterize|threshold|darken|desaturate")
+      ->type_name("STEP")->group(g);
+  app.add_flag("--tam", o.tam, "--make-palette: draw a tonal art map with IMAGE as the stroke")->group(g);
+  app.add_option("--levels", o.levels, "--make-palette: palette entries, 2..256 (default 10)")->type_name("N")->group(g);
+  CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: --make-palette's, or the benchmark's (default benchmark-results)")
+                         ->type_name("DIR")->group(g);
+  app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit")->type_name("FILE")->group(g);
+  app.add_option("--palette-sheet", o.paletteSheet,
+                 "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere")
+      ->type_name("DIR")->group(g);
+
+  g = group("Diagnostics");
+  app.add_flag("--info", o.info, "Print each file's load report and scene (objects, cameras, lights, animations) as one line of JSON and exit")
+      ->group(g);
   app.add_option("--gpu", gpu,
                  "Headless runs: the EGL device, by index or part of its name, 'auto' (a GPU before a software rasterizer) "
                  "or 'surfaceless' (Mesa's software platform); --gl-info lists them")
-      ->envname("NPR_GPU");
-  app.add_flag("--gl-info", o.glInfo, "Print the headless context's GL_VENDOR, GL_RENDERER, GL_VERSION and the EGL devices, and exit");
-  app.add_flag("--version", o.version, "Print the version and exit");
-  bool manPageWanted = false;
-  app.add_flag("--man-page", manPageWanted, "Print the manual page (roff, generated from these options) and exit");
-  app.add_flag("--no-panel", o.noPanel, "The window opens with its settings panel hidden (F1 shows it)");
-  app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)");
-  app.add_option("--screenshot", o.screenshot, "Write the last frame to FILE (PNG, TGA, EXR, ...)");
-  app.add_flag("--info", o.info, "Print each file's load report and scene (objects, cameras, lights, animations) as one line of JSON and exit");
-  app.add_option("--palette-info", o.paletteInfo, "Print a palette's report as one line of JSON and exit");
-  app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)");
-  CLI::Option* out = app.add_option("--out", o.outDir, "Output folder: the benchmark's (default benchmark-results) or --make-palette's");
-  std::string ladder;
-  app.add_option("--make-palette", o.makePalette,
-                 "Make a palette from IMAGE (with --ladder) or from a stroke image (with --tam), write it to --out DIR and print its report");
-  app.add_option("--ladder", ladder, "--make-palette step applied progressively: blur|offset|solarize|posterize|threshold|darken|desaturate");
-  app.add_flag("--tam", o.tam, "--make-palette: draw a tonal art map with IMAGE as the stroke");
-  app.add_option("--levels", o.levels, "--make-palette: palette entries, 2..256 (default 10)");
-  app.add_option("--style", o.style,
-                 "A look from a style file: NAME (palettes/styles/NAME.style: crosshatch, pencil, charcoal, painterly, technical, cel, stipple, woodcut, illustrated, screentone) "
-                 "or FILE; options given beside it win");
-  app.add_option("--save-style", o.saveStyle, "Write the look (style, palette and every setting given) to FILE as a style file");
-  app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit");
-  app.add_option("--style-sheet", o.styleSheet,
-                 "Write FILE (PNG): the model in every shipped style, one labelled cell each, to pick a style by looking "
-                 "(--size is the whole sheet's; the other options apply to every cell)");
-  app.add_option("--palette-sheet", o.paletteSheet,
-                 "Write a contact sheet PNG per palette (--palette, or every palette in palettes/) to DIR: levels, tones, a lit sphere");
-  app.add_option("--material-detail", materialDetail,
-                 "MATERIAL=VALUE: the detail in [0, 1] of the faces of material MATERIAL, in place of their object's, for a palette with "
-                 "'axis detail' (repeatable; needs --materials on)");
-  app.add_option("--palette-for", paletteFor,
-                 "MATERIAL=FILE: draw the model's material MATERIAL with its own palette (repeatable; needs --materials on)");
-  app.add_option("--animate", animate,
-                 "Move the camera every frame: orbit:DEGREES, pan:DX,DY (pixels), zoom:FACTOR, comma-separated (e.g. orbit:1,zoom:1.01)");
-  app.add_option("--save-frames", o.saveFrames, "Write every frame to DIR/frame-0000.png, frame-0001.png, ...");
-  app.add_option("--svg", o.svg, "Write the last frame's visible feature lines to FILE as SVG (needs --lines; the overlay has a button too)");
-  app.add_flag("--svg-raster", o.svgRaster, "--svg: embed the rendered frame under the lines");
-  app.add_flag("--svg-fill", o.svgFill,
-               "--svg: the shaded picture as vector regions too, each palette entry's filled with its texture as an SVG pattern, over the background");
-  app.add_option("--tile", o.tile, "Render the headless still in N x N pixel tiles (posters larger than the GL allows tile themselves)");
-  app.add_option("--turntable", o.turntable,
-                 "Render N frames of one full orbit headless into --save-frames DIR (default turntable/), with DIR/turntable.gif");
-  app.add_option("--video", o.video,
-                 "Write the sequence (--turntable, or --frames with --animate or an animated scene) to FILE: .mp4 (H.264), .webm (VP9) "
-                 "or .gif, at --fps frames a second");
-  CLI::Option* videoQuality = app.add_option("--video-quality", o.videoQuality,
-                 "--video: constant quality, 0 (lossless) to 51, lower is better and larger (default 16: hatching without visible loss)");
-  std::string frameRange;
-  app.add_option("--frame-range", frameRange,
-                 "Render only frames FIRST-LAST of the sequence (numbered from 0 as --save-frames names them), the same pixels as in "
-                 "the whole run: split a sequence over machines (docs/render-farm.md)");
-  bool naiveStencil = false;
+      ->envname("NPR_GPU")->type_name("DEVICE")->group(g);
+  app.add_flag("--gl-info", o.glInfo, "Print the headless context's GL_VENDOR, GL_RENDERER, GL_VERSION and the EGL devices, and exit")->group(g);
+  app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit")->group(g);
+  app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)")->group(g);
+  app.add_flag("--settings-reference", o.settingsReference, "Print the settings reference (the README's section) and exit")->group(g);
+  app.add_flag("--man-page", manPageWanted, "Print the manual page (roff, generated from these options) and exit")->group(g);
   app.add_flag("--naive-stencil", naiveStencil,
                "Stencil path: mask and full-screen quads bucket by bucket, for every bucket (the original's cost; "
-               "--no-stencil-scissor --no-stencil-skip-empty --no-stencil-masks-first)");
+               "--no-stencil-scissor --no-stencil-skip-empty --no-stencil-masks-first)")
+      ->group(g);
 
   // The settings: one option per row of the table, in its sections.
   std::map<const Setting*, std::string> given;  // the row's value as the command line gave it
@@ -154,10 +210,13 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       if (row.section != section.name || !row.cli) continue;
       const std::string help = row.help + " (" + row.valueForm() + "; default " + row.format(defaults) + ")";
       const Setting* r = &row;
+      const std::string sectionGroup = group(section.title.c_str());
       CLI::Option* opt = nullptr;
       if (row.type == SettingType::Bool && !row.cliTakesValue) {
-        opt = app.add_flag_function("--" + row.key + ",!--no-" + row.key,
-                                    [&given, r](std::int64_t count) { given[r] = count > 0 ? "on" : "off"; }, help);
+        // --key and --no-key; the help names the pair on one line.
+        const std::string flagHelp = row.help + " (default " + row.format(defaults) + "; --no-" + row.key + " turns it off)";
+        opt = app.add_flag_function("--" + row.key, [&given, r](std::int64_t) { given[r] = "on"; }, flagHelp);
+        app.add_flag_function("--no-" + row.key, [&given, r](std::int64_t) { given[r] = "off"; }, "")->group("");
       } else if (row.repeated) {
         // Each occurrence adds an item (setting.h: repeated).
         opt = app.add_option_function<std::vector<std::string>>("--" + row.key, [&given, r](const std::vector<std::string>& items) {
@@ -167,11 +226,12 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       } else {
         opt = app.add_option_function<std::string>("--" + row.key, [&given, r](const std::string& v) { given[r] = v; }, help);
       }
-      opt->group(section.title);
+      if (!(row.type == SettingType::Bool && !row.cliTakesValue)) opt->type_name(row.typeName());
+      opt->group(sectionGroup);
       options[r] = opt;
       for (const auto& [alias, value] : row.cliAliases)
         app.add_flag_function(alias, [&given, r, value = value](std::int64_t) { given[r] = value; }, "Same as --" + row.key + " " + value)
-            ->group(section.title);
+            ->group(sectionGroup);
     }
   try {
     app.parse(argc, argv);
@@ -179,7 +239,15 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
     std::printf("%s", app.help().c_str());
     return {std::nullopt, 0};
   } catch (const CLI::ParseError& e) {
+    if (helpAll) {  // a bad argument beside --help-all does not hide the help asked for
+      std::printf("%s", app.help().c_str());
+      return {std::nullopt, 0};
+    }
     return {std::nullopt, fail(e.what())};
+  }
+  if (helpAll) {
+    std::printf("%s", app.help().c_str());
+    return {std::nullopt, 0};
   }
   if (manPageWanted) {
     std::printf("%s", manPage(app).c_str());

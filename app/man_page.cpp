@@ -46,11 +46,14 @@ std::string manPage(const CLI::App& app) {
     if (!byGroup.count(opt->get_group())) groups.push_back(opt->get_group());
     byGroup[opt->get_group()].push_back(opt);
   }
+  // One OPTIONS section, a subsection per group.
+  out += ".SH OPTIONS\n";
   for (const std::string& group : groups) {
-    out += ".SH " + roff(group == "Options" ? "OPTIONS" : group) + "\n";
+    out += ".SS " + roff(group) + "\n";
     for (const CLI::Option* opt : byGroup[group]) {
       std::string names = opt->get_name(false, true);
       if (opt->get_positional()) names = opt->get_name(true, false);
+      else if (opt->get_type_size() != 0 && !opt->get_type_name().empty()) names += " " + opt->get_type_name();
       out += ".TP\n.B " + roff(names) + "\n" + roff(opt->get_description()) + "\n";
     }
   }
@@ -64,12 +67,17 @@ std::string manPage(const CLI::App& app) {
          ".TP\n.B XDG_CACHE_HOME\nWhere the mesh cache lives (npr\\-viewer/ inside it; default ~/.cache).\n";
   out += ".SH FILES\n.TP\n.I PREFIX/share/npr-viewer\nThe shipped palettes (palettes/), styles (palettes/styles/) "
          "and default models (models/), found beside the executable.\n";
-  out += ".SH EXIT STATUS\n0 on success, 1 when a file fails to load or a render fails, 2 for bad arguments.\n";
+  out += ".SH EXIT STATUS\n0 on success, 1 when a file fails to load or a render fails, 2 for bad arguments, "
+         "130 when a headless sequence is interrupted (SIGINT, SIGTERM; its partial video is removed).\n";
   out += ".SH EXAMPLES\n.TP\nnpr\\-viewer model.obj \\-\\-style pencil\nOpen a window on model.obj in the pencil style.\n"
          ".TP\nnpr\\-viewer \\-\\-headless model.obj \\-\\-palette wood \\-\\-screenshot out.png\n"
          "Render one frame without a window.\n"
-         ".TP\nnpr\\-viewer \\-\\-turntable 72 model.obj\nSeventy\\-two frames of one orbit and a GIF in turntable/.\n";
-  out += ".SH SEE ALSO\nThe README.md shipped with the sources: tasks, the settings reference, measured figures.\n";
+         ".TP\nnpr\\-viewer \\-\\-turntable 72 model.obj\nSeventy\\-two frames of one orbit and a GIF in turntable/.\n"
+         ".TP\nnpr\\-viewer \\-\\-turntable 240 \\-\\-size 1920x1080 model.obj \\-\\-video spin.mp4\nA turntable as an H.264 video.\n"
+         ".TP\nnpr\\-viewer \\-\\-turntable 240 model.obj \\-\\-frame\\-range 40\\-79 \\-\\-save\\-frames frames\n"
+         "Frames 40 to 79 alone, as the whole run renders them (one machine's share of a render farm's job).\n";
+  out += ".SH SEE ALSO\nPREFIX/share/doc/npr\\-viewer/README.md (tasks, the settings reference, measured figures) and the "
+         "design notes beside it in docs/ (video.md: video files, frame ranges, a render\\-farm recipe).\n";
   return out;
 }
 

@@ -77,6 +77,8 @@ struct Setting {
 
   // "0.125..16", "screen|anchored|object", ... (help, messages, the reference).
   std::string valueForm() const;
+  // The value's placeholder in --help: on|off, N, a few choices joined by |, R,G,B, X,Y,Z, ...
+  std::string typeName() const;
 };
 
 // A section: a feature's rows, in the order the overlay and the reference show them. A style

@@ -491,7 +491,8 @@ std::vector<Setting> buildTable() {
 std::string Setting::valueForm() const {
   auto num = [](double v) {
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
+    // Seven digits: a float's bound as it was written (0.2, not 0.200000003).
+    std::snprintf(buf, sizeof buf, "%.7g", v);
     return std::string(buf);
   };
   auto joined = [&](const std::string& sep, const std::string& last) {
@@ -511,6 +512,25 @@ std::string Setting::valueForm() const {
     case SettingType::Text: return example.empty() ? "text" : "e.g. " + example;
   }
   return "";
+}
+
+std::string Setting::typeName() const {
+  switch (type) {
+    case SettingType::Bool: return "on|off";
+    case SettingType::Int:
+    case SettingType::Float: return "N";
+    case SettingType::Choice: {
+      std::string out;
+      for (const std::string& c : choices) out += (out.empty() ? "" : "|") + c;
+      return out.size() <= 28 ? out : "NAME";
+    }
+    case SettingType::Kinds: return "KINDS";
+    case SettingType::Colour: return "R,G,B";
+    case SettingType::Vector: return "X,Y,Z";
+    case SettingType::File: return "PALETTE|none";
+    case SettingType::Text: return "VALUE";
+  }
+  return "VALUE";
 }
 
 const std::vector<Setting>& settingsTable() {

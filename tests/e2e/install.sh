@@ -13,7 +13,8 @@ mv "$tmp/prefix" "$tmp/moved"
 viewer="$tmp/moved/bin/npr-viewer"
 data="$tmp/moved/share/npr-viewer"
 for f in share/man/man1/npr-viewer.1 share/applications/npr-viewer.desktop share/icons/hicolor/256x256/apps/npr-viewer.png \
-         share/npr-viewer/models/bunny.obj share/npr-viewer/palettes/crosshatch/crosshatch.palette; do
+         share/npr-viewer/models/bunny.obj share/npr-viewer/palettes/crosshatch/crosshatch.palette \
+         share/doc/npr-viewer/README.md share/doc/npr-viewer/docs/video.md; do
   [ -s "$tmp/moved/$f" ] || { echo "FAIL: the install has no $f"; fail=1; }
 done
 grep -q '^\.SH OPTIONS' "$tmp/moved/share/man/man1/npr-viewer.1" || { echo "FAIL: the manual page has no OPTIONS"; fail=1; }
