@@ -14,7 +14,7 @@
 #include "app/headless/headless_session.h"
 #include "app/headless/interrupt_guard.h"
 #include "app/headless/resident_memory.h"
-#include "app/headless/sequence_output.h"
+#include "app/video/sequence_output.h"
 #include "app/headless/poster.h"
 #include "app/line_export.h"
 #include "app/progress_line.h"

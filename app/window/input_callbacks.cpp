@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/window/export_dialog.h"
+
 namespace npr {
 namespace {
 
@@ -15,6 +17,12 @@ Viewer* viewerOf(GLFWwindow* w) { return static_cast<Viewer*>(glfwGetWindowUserP
 
 void onKey(GLFWwindow* w, int key, int /*scancode*/, int action, int mods) {
   if (action == GLFW_RELEASE) return;
+  // While an export runs the view and the look stay as it took them: Esc cancels it, nothing
+  // else acts.
+  if (viewerOf(w)->exportJob) {
+    if (key == GLFW_KEY_ESCAPE) cancelExport(*viewerOf(w));
+    return;
+  }
   // Esc in a file dialog closes the dialog, not the viewer; Enter confirms it.
   if (viewerOf(w)->dialog != Viewer::Dialog::None) {
     if (key == GLFW_KEY_ESCAPE) {

@@ -16,6 +16,7 @@ enum class Action {
   MoveLight,      // param: axis * 2 + (positive ? 1 : 0); axis 0 = x, 1 = y, 2 = z
   Open,           // param: 1 adds to the scene (Ctrl+Shift+O), 0 replaces it (Ctrl+O)
   SaveStyle,      // Ctrl+S: the look under a typed name
+  Export,         // Ctrl+E: a picture at a chosen size, the lines, a turntable video
 };
 
 struct KeyAction {

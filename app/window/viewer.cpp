@@ -61,6 +61,10 @@ void applyAction(Viewer& v, const KeyAction& a) {
       v.dialog = Viewer::Dialog::SaveStyle;
       v.dialogJustOpened = true;
       break;
+    case Action::Export:
+      v.dialog = Viewer::Dialog::Export;
+      v.dialogJustOpened = true;
+      break;
     // A palette that fails to load leaves the current one; the bar says why.
     case Action::SelectPalette: reportIfFailed(s, s.selectPalette(a.param, r)); break;
     case Action::NextPalette: if (paletteCount) reportIfFailed(s, s.selectPalette((s.paletteIndex + 1) % paletteCount, r)); break;

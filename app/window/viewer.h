@@ -12,6 +12,7 @@
 #include "app/viewer_state.h"
 #include "app/window/frame_timer.h"
 #include "app/window/glfw_window.h"
+#include "app/window/export_job.h"
 #include "app/window/input_map.h"
 #include "renderer/renderer.h"
 
@@ -25,7 +26,9 @@ struct Viewer {
   bool overlay = true, help = false, vsync = true, quit = false;
   int screenshotRequested = -1;  // the Screenshot action's param this frame; -1: none
   // The file dialogs (file_dialogs.h): which is open, and what it was opened for.
-  enum class Dialog { None, Open, SaveStyle } dialog = Dialog::None;
+  enum class Dialog { None, Open, SaveStyle, Export } dialog = Dialog::None;
+  // The export running (Ctrl+E), a share of each frame's time; the scene waits for it.
+  std::unique_ptr<ExportJob> exportJob;
   bool dialogAdds = false;           // the open dialog adds to the scene
   bool dialogJustOpened = false;     // give its path field the keyboard on its first frame
   // Enter pressed while a dialog is open, seen by our key callback: Dear ImGui 1.86 polls keys

@@ -18,6 +18,7 @@
 #include "renderer/core/image_io.h"
 #include "app/window/input_callbacks.h"
 #include "app/next_free_name.h"
+#include "app/window/export_dialog.h"
 #include "app/window/file_dialogs.h"
 #include "app/window/help_overlay.h"
 #include "app/window/message_bar.h"
@@ -115,8 +116,20 @@ int runWindowViewer(const Options& o) {
     if (v.overlay) drawOverlay(v);
     drawMessageBar(v);
     drawHelpOverlay(v);
+    drawExportDialog(v);  // before the file dialogs, which end every dialog's first frame
     drawFileDialogs(v);
     imgui.endFrame();
+    if (v.exportJob) {
+      // The export's frames in place of the scene's: the window shows its progress.
+      stepExport(v);
+      const glm::ivec2 size = v.window->framebufferSize();
+      bindWindowFramebuffer();
+      clearRightOf(0, size.x, size.y);
+      imgui.draw();
+      glfwSwapBuffers(w);
+      last = std::chrono::steady_clock::now();
+      continue;
+    }
     if (framePending) {
       framePending = false;
       v.state.viewAspect = v.aspect();

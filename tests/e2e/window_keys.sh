@@ -6,7 +6,7 @@
 # an animated scene. Then the file commands: F12 numbers its files after those already in the
 # folder (a second run overwrites nothing), Ctrl+O opens a typed path (a broken file keeps the
 # scene and says why), Ctrl+S saves the look under a typed name and never replaces a file
-# without a confirmation.
+# without a confirmation, Ctrl+E exports a picture and a turntable and cancels on Esc.
 set -u
 viewer="$1"
 src=$(cd "$(dirname "$0")/../.." && pwd)
@@ -94,6 +94,22 @@ xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "Kept look"; xdotoo
 [ "$(md5sum kept-look.style 2>/dev/null)" = "$saved" ] || { echo "FAIL: Ctrl+S replaced an existing style without a confirmation"; fail=1; }
 xdotool key --clearmodifiers Escape; sleep 0.3   # closes the dialog, not the viewer
 kill -0 $pid 2>/dev/null || { echo "FAIL: Esc in a dialog closed the viewer"; fail=1; }
+# Ctrl+E: a picture at the typed name, a turntable whose extension makes it a GIF of 120 frames
+# (the default), and an export cancelled with Esc leaves nothing, the viewer still open.
+export_as() {  # export_as PATH: Ctrl+E, the path typed over the suggested one, Enter
+  xdotool key --clearmodifiers ctrl+e; sleep 0.5
+  xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "$1"; xdotool key --clearmodifiers Return
+}
+export_as "$tmp/picture.png"; sleep 1.5
+[ -s "$tmp/picture.png" ] || { echo "FAIL: Ctrl+E did not write picture.png"; cat "$tmp/log3"; fail=1; }
+export_as "$tmp/spin.gif"
+for _ in $(seq 120); do [ -e "$tmp/spin.gif" ] && break; sleep 0.25; done
+oiiotool --info "$tmp/spin.gif" 2>/dev/null | grep -q "120 subimages" || { echo "FAIL: Ctrl+E's turntable: $(oiiotool --info "$tmp/spin.gif" 2>&1)"; cat "$tmp/log3"; fail=1; }
+export_as "$tmp/stopped.gif"; sleep 0.8
+xdotool key --clearmodifiers Escape; sleep 0.8   # cancels the export, not the viewer
+ls -a "$tmp" | grep -q "stopped" && { echo "FAIL: a cancelled export left $(ls -a "$tmp" | grep stopped)"; fail=1; }
+grep -q "export cancelled" "$tmp/log3" || { echo "FAIL: the cancel is not said"; fail=1; }
+kill -0 $pid 2>/dev/null || { echo "FAIL: Esc during an export closed the viewer"; fail=1; }
 xdotool key --clearmodifiers Escape
 for _ in $(seq 100); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
 grep -q "OpenGL error" "$tmp/log3" && { echo "FAIL: GL errors (file commands)"; cat "$tmp/log3"; fail=1; }

@@ -1,5 +1,5 @@
-// A headless sequence's outputs (see sequence_output.h).
-#include "app/headless/sequence_output.h"
+// A sequence's outputs (see sequence_output.h).
+#include "app/video/sequence_output.h"
 
 #include <cmath>
 #include <filesystem>

@@ -1,5 +1,5 @@
-// Where a headless sequence's frames go: numbered PNGs (--save-frames), the turntable's GIF, a
-// video (--video: MP4, WebM or GIF). Everything is opened before the first frame is rendered,
+// Where a sequence's frames go (headless runs, the window's export): numbered PNGs
+// (--save-frames), the turntable's GIF, a video (--video: MP4, WebM or GIF). Everything is opened before the first frame is rendered,
 // so a bad path or a missing codec is said at once; the GIF and the video are written under a
 // partial name and renamed when finished, so an interrupted run leaves nothing half-written
 // under the names asked for.
