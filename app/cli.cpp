@@ -142,7 +142,10 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
       ->type_name("NAME|N|all|none")->group(g);
   app.add_option("--time", o.time, "Pose the scene at SECONDS of its animations' time (the first frame's, when it plays)")
       ->type_name("SECONDS")->group(g);
-  app.add_flag("--play", o.play, "Play the scene's animations in the window from the start (space plays and pauses)")->group(g);
+  app.add_flag_function("--paused", [&o](std::int64_t) { o.play = false; },
+                        "The window opens with the scene's animations paused at their first frame (by default they play; space plays and pauses)")
+      ->group(g);
+  app.add_flag_function("--play", [&o](std::int64_t) { o.play = true; }, "")->group("");  // the default; kept for scripts
   app.add_option("--fps", o.fps, "Headless sequences (--frames, --turntable, --video): frames per second, the clock's step per frame (1..1000; default 30)")
       ->type_name("N")->group(g);
   app.add_option("--frames", o.frames, "Render N frames, then exit (benchmark: frames of scripted motion, default 120)")->type_name("N")->group(g);

@@ -35,7 +35,7 @@ struct Options {
   std::vector<std::pair<std::string, float>> materialDetails;       // --material-detail MATERIAL=VALUE
   std::string playAnimation;  // --animation NAME|NUMBER|all|none (empty: all)
   double time = 0.0;          // --time SECONDS: the scene's clock at the first frame
-  bool play = false;          // --play: the clock runs (the window; headless sequences always run it)
+  bool play = true;           // the window's clock runs from the start (--paused: not); headless sequences always run it
   double fps = 30.0;          // --fps: scene frames per second of headless sequences and their GIF
   std::vector<std::string> palettes;
   std::vector<SettingValue> settings;  // in the table's order

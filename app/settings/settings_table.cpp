@@ -176,7 +176,7 @@ std::vector<Setting> buildTable() {
   }
   t.push_back(choiceRow<MatchMode>("match", "match (M)", "palette", "How lit colours pick palette entries (default: the palette's)",
                                    [](Look& l) -> MatchMode& { return l.render.match; }));
-  t.push_back(floatRow("range-scale", "range scale (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
+  t.push_back(floatRow("range-scale", "tone spread (+/-)", "palette", "IntensityRangeScale: spreads the palette about its midpoint", 0.01, 100.0,
                        [](Look& l) -> float& { return l.render.rangeScale; }, true));
   t.push_back(choiceRow<ToneRange>("tone-range", "tone range", "palette",
                                    "auto: the palette's levels fitted onto the 2nd to 95th percentile of the lit tones on screen, each frame from "
@@ -188,11 +188,11 @@ std::vector<Setting> buildTable() {
                                    "strokes of one level or the other, per texel: crisp tone for nested palettes such as the drawn ones, with intensity matching)",
                                    [](Look& l) -> ToneBlend& { return l.render.toneBlend; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Smooth; };
-  t.push_back(boolRow("palette-axis", "second axis", "palette",
+  t.push_back(boolRow("palette-axis", "rows by depth or facing", "palette",
                       "A palette with rows (axis depth or facing): on, the row follows the surface's distance or facing; off, the first row only",
                       [](Look& l) -> bool& { return l.render.paletteAxis; }));
   {
-    Setting b = base("bands", "band thresholds", "palette",
+    Setting b = base("bands", "cel band edges", "palette",
                      "Cel band thresholds T1,T2,... on the match query axis [0,3], strictly ascending (one fewer than the palette's tones); none: the nearest level",
                      K::Text);
     b.example = "0.8,1.6";
@@ -251,12 +251,12 @@ std::vector<Setting> buildTable() {
                                           "Where the per-triangle paths (stencil, triangle) light: cpu, gpu (read back), auto (gpu with shadows)",
                                           [](Look& l) -> TriangleLighting& { return l.render.triangleLighting; }));
   t.back().shown = [](const Look& l) { return l.render.path == RenderPath::Triangle || l.render.path == RenderPath::Stencil; };
-  t.push_back(choiceRow<PosePlacement>("deform", "deform on", "path",
+  t.push_back(choiceRow<PosePlacement>("deform", "pose meshes on", "path",
                                        "Where a skinned or morphing mesh is posed: gpu (always, and the CPU too when the frame reads the mesh there: "
                                        "per-triangle paths, object-space lines, strokes, the anchored pattern), cpu (uploaded each pose), "
                                        "auto (gpu, but cpu where a software rasterizer's frame reads the mesh on the CPU)",
                                        [](Look& l) -> PosePlacement& { return l.render.deform; }));
-  t.push_back(boolRow("gouraud", "Gouraud reference", "path", "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting",
+  t.push_back(boolRow("gouraud", "reference lit per vertex", "path", "Reference path: per-vertex (Gouraud) instead of per-pixel (Phong) lighting",
                       [](Look& l) -> bool& { return l.render.referenceGouraud; }));
   t.push_back(boolRow("materials", "model materials", "path", "Light with the model's own materials, vertex colours and texture maps",
                       [](Look& l) -> bool& { return l.render.materials; }));
@@ -276,7 +276,7 @@ std::vector<Setting> buildTable() {
   t.push_back(choiceRow<PatternSpace>("pattern", "pattern (T)", "pattern",
                                       "Where the palette's pattern lives: screen (the original), anchored (follows the object, stays flat), object (glued to the surface)",
                                       [](Look& l) -> PatternSpace& { return l.render.pattern; }));
-  t.push_back(boolRow("pattern-rotation", "follow rotation", "pattern", "Anchored patterns turn with the object (off: they only move and scale)",
+  t.push_back(boolRow("pattern-rotation", "pattern turns with object", "pattern", "Anchored patterns turn with the object (off: they only move and scale)",
                       [](Look& l) -> bool& { return l.render.patternFollowsRotation; }));
   t.back().cliAliases = {{"--pattern-no-rotation", "off"}};
   t.back().shown = [](const Look& l) { return l.render.pattern == PatternSpace::Anchored; };
@@ -305,7 +305,7 @@ std::vector<Setting> buildTable() {
     };
     t.push_back(o);
   }
-  t.push_back(intRow("orient-bins", "angle steps", "orientation", "Steps the stroke turn is quantised to over 180 degrees", OrientSettings::kMinBins,
+  t.push_back(intRow("orient-bins", "stroke angle steps", "orientation", "Steps the stroke turn is quantised to over 180 degrees", OrientSettings::kMinBins,
                      OrientSettings::kMaxBins, [](Look& l) -> int& { return l.render.orient.bins; }));
   t.back().shown = [](const Look& l) { return l.render.orient.source != OrientSource::None; };
   // --- light
@@ -335,7 +335,7 @@ std::vector<Setting> buildTable() {
   t.push_back(fileRow("occlusion-palette", "in crevices", "occlusion", "Control image: a palette drawn in crevices (needs occlusion)",
                       [](Look& l) -> std::string& { return l.occlusionPalette; }, true));
   t.back().shown = occluded;
-  t.push_back(boolRow("control-palettes", "draw control palettes", "occlusion", "Draw the control-image palettes (off: the main palette alone, to compare)",
+  t.push_back(boolRow("control-palettes", "shadow and crevice palettes", "occlusion", "Draw the control-image palettes (off: the main palette alone, to compare)",
                       [](Look& l) -> bool& { return l.render.controlPalettes; }));
   t.back().shown = [](const Look& l) { return !l.shadowPalette.empty() || !l.occlusionPalette.empty(); };
   // --- painterly strokes
@@ -401,7 +401,7 @@ std::vector<Setting> buildTable() {
   t.push_back(floatRow("line-width", "line width", "lines", "Line width in pixels", 0.1, 64.0, [](Look& l) -> float& { return l.render.lines.width; }));
   t.push_back(floatRow("crease-angle", "crease angle", "lines", "Dihedral angle above which an edge is a crease, degrees", 0.0, 180.0,
                        [](Look& l) -> float& { return l.render.lines.creaseAngle; }));
-  t.push_back(floatRow("suggestive-threshold", "suggestive threshold", "lines",
+  t.push_back(floatRow("suggestive-threshold", "suggestive contour cut-off", "lines",
                        "Suggestive contours: how strongly the radial curvature must rise toward the eye (DeCarlo et al.'s t_d, times the "
                        "mesh's radius squared); higher keeps fewer, stronger lines",
                        LineSettings::kMinSuggestiveThreshold, LineSettings::kMaxSuggestiveThreshold,
@@ -441,7 +441,7 @@ std::vector<Setting> buildTable() {
     t.push_back(sets);
   }
   t.push_back(boolRow("line-falloff", "depth falloff", "lines", "Thinner lines with distance", [](Look& l) -> bool& { return l.render.lines.depthFalloff; }));
-  t.push_back(floatRow("edge-threshold", "edge threshold", "lines", "Image-space edges: the Sobel threshold on depth and normals", 0.01, 4.0,
+  t.push_back(floatRow("edge-threshold", "image edge cut-off", "lines", "Image-space edges: the Sobel threshold on depth and normals", 0.01, 4.0,
                        [](Look& l) -> float& { return l.render.lines.imageThreshold; }, true));
   t.back().shown = [](const Look& l) { return l.render.lines.imageSpace; };
   t.push_back(choiceRow<OutlineMethod>("outline", "outline method", "lines",

@@ -105,7 +105,8 @@ bool settingWidget(const Setting& row, Look& look, const std::vector<std::string
       break;
     }
   }
-  tooltip(row.help + " (" + row.valueForm() + ")");
+  // The exact term too: the option and style key the label stands for.
+  tooltip(row.help + " (" + row.valueForm() + "; --" + row.key + ", style key " + row.key + ")");
   ImGui::PopID();
   return changed;
 }
@@ -307,13 +308,20 @@ void drawOverlay(Viewer& v) {
   // Wrapped, not cut at the panel's edge, whatever its width.
   ImGui::TextWrapped("CPU: shading %.2f ms, frame %.2f ms; GPU: %s", st.cpuShadingMs, st.cpuFrameMs,
                      st.gpuMs >= 0 ? (std::to_string(st.gpuMs).substr(0, 5) + " ms").c_str() : "n/a");
-  ImGui::TextWrapped("%zu triangles, %d non-empty buckets%s", s.scene.triangles(), st.nonEmptyBuckets,
-                     st.backFacesCulled ? ", closed: back faces dropped" : "");
-  ImGui::TextWrapped("recomputes %d, uploads %d, shader builds %d", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  // Buckets are the per-triangle paths' (stencil, triangle); the others count none.
+  if (st.nonEmptyBuckets > 0) {
+    ImGui::TextWrapped("%zu triangles, %d palette entries in use%s", s.scene.triangles(), st.nonEmptyBuckets,
+                       st.backFacesCulled ? "; closed, so back faces are skipped" : "");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("entries in use: the palette's non-empty buckets this frame");
+  } else {
+    ImGui::TextWrapped("%zu triangles%s", s.scene.triangles(), st.backFacesCulled ? "; closed, so back faces are skipped" : "");
+  }
+  ImGui::TextWrapped("this frame: lighting redone %d times, %d uploads, %d shaders built", st.lightingRecomputes, st.bufferUploads, st.shaderBuilds);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("lighting recomputes, buffer uploads, shader builds");
   if (const std::optional<glm::vec2> tone = v.renderer->toneRange())
     ImGui::TextWrapped("tone range: lit tones %.2f..%.2f of 0..3 fill the palette (%.2f ms)", tone->x, tone->y, st.cpuToneMs);
-  if (st.lines) ImGui::TextWrapped("%d lines, silhouettes %.2f ms", st.lines, st.cpuLinesMs);
-  if (st.surfaceBuffers) ImGui::TextWrapped("stencil surface buffers %d, %d by a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
+  if (st.lines) ImGui::TextWrapped("%d lines (found in %.2f ms)", st.lines, st.cpuLinesMs);
+  if (st.surfaceBuffers) ImGui::TextWrapped("stencil path: %d surface buffers, %d drawn in a pass of their own", st.surfaceBuffers, st.surfaceBufferPasses);
   // What renders (the window's context never changes, so it is asked once).
   static const GlInfo gl = currentGlInfo();
   ImGui::TextWrapped("GL: %s, %s%s", gl.renderer.c_str(), gl.version.c_str(), gl.software ? " (software rasterizer)" : "");
@@ -374,7 +382,8 @@ void drawOverlay(Viewer& v) {
   }
 
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
-    ImGui::Checkbox("split view (B)", &s.splitView);
+    bool split = s.splitView;
+    if (ImGui::Checkbox("split view (B)", &split)) applyAction(v, {Action::ToggleSplit});  // framed as B frames it
     if (ImGui::Checkbox("light follows camera (L)", &s.lightFollowsCamera)) {
       s.lightFollowsCamera = !s.lightFollowsCamera;  // undo, then convert through the action
       applyAction(v, {Action::ToggleLightFollow});

@@ -84,7 +84,16 @@ void applyAction(Viewer& v, const KeyAction& a) {
       s.settings.path = (it == paths.end() || it + 1 == paths.end()) ? paths.front() : *(it + 1);
       break;
     }
-    case Action::ToggleSplit: s.splitView = !s.splitView; break;
+    case Action::ToggleSplit:
+      s.splitView = !s.splitView;
+      // Each half is half as wide: framed again so both show the whole scene (leaving the
+      // split view keeps the view; the model only gains room).
+      if (s.splitView && !s.fileCamera) {
+        s.viewAspect = v.aspect();
+        s.frameScene();
+        r.resetPattern();
+      }
+      break;
     case Action::FrameModel:
       s.fileCamera.reset();
       s.viewAspect = v.aspect();

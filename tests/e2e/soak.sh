@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Soak test of the real window under Xvfb: SECONDS of scripted random input (keys from the
 # binding table, drags with each button and with Ctrl, scrolls, resizes, and file drops through
-# XDND, good and broken models and palettes). Fails on a crash, a GL error, resident memory that
+# XDND, good and broken models and palettes; Ctrl+O of broken files; Ctrl+E of pictures under the
+# suggested names). Fails on a crash, a GL error, resident memory that
 # grows more than 5% between the end of the first phase (a third of the run, at most a minute)
 # and the end, or a failed drop that changes the picture (the current model and palette must
 # stay). Usage: soak.sh VIEWER SOURCE_DIR [SECONDS=60] [SEED=1]
@@ -72,6 +73,17 @@ check_failed_drop() {
   checks=$((checks + 1))
 }
 
+# Ctrl+O with a broken file typed must keep the picture too.
+check_failed_open() {
+  local a b file="${broken[$((RANDOM % ${#broken[@]}))]}"
+  shot || { fail=1; return; }; a=$last
+  xdotool key --clearmodifiers ctrl+o; sleep 0.4
+  xdotool key --clearmodifiers ctrl+a; xdotool type --delay 10 "$tmp/$file"; xdotool key --clearmodifiers Return; sleep 0.5
+  shot || { fail=1; return; }; b=$last
+  if ! idiff -q -fail 0 "$a" "$b" >/dev/null 2>&1; then echo "FAIL: opening the broken $file with Ctrl+O changed the scene ($a vs $b)"; fail=1; fi
+  checks=$((checks + 1))
+}
+exports=0
 # Drops must reach the viewer for the checks to mean anything: a good palette changes the picture.
 xdotool key --clearmodifiers F1; sleep 0.3  # hide the overlay: its timings change every frame
 shot || exit 1; a=$last
@@ -108,7 +120,7 @@ while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   if [ $elapsed -ge $next_sample ]; then curve="$curve $(( $(rss) / 1024 ))"; parts="$parts $(rss_parts)"; next_sample=$((next_sample + 60)); fi
   w=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $4; exit}'); w=${w:-480}
   h=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $5; exit}'); h=${h:-360}
-  case $((RANDOM % 20)) in
+  case $((RANDOM % 22)) in
     0|1|2|3|4)    xdotool key --clearmodifiers "${keys[$((RANDOM % ${#keys[@]}))]}" ;;
     5)            if [ $((RANDOM % 2)) = 0 ]; then xdotool key --clearmodifiers F1; sleep 0.3; xdotool key --clearmodifiers F1
                   else xdotool key --clearmodifiers h; sleep 0.3; xdotool key --clearmodifiers h; fi ;;
@@ -123,6 +135,8 @@ while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
     15|16)        if [ $((RANDOM % 2)) = 0 ]; then drop "$tmp/good.obj"; else drop "$tmp/repeated.obj"; fi; drops_good=$((drops_good + 1)) ;;
     17)           drop "${good_palettes[$((RANDOM % ${#good_palettes[@]}))]}"; drops_good=$((drops_good + 1)) ;;
     18|19)        xdotool windowsize "$wid" 480 360; sleep 0.3; check_failed_drop ;;
+    20)           xdotool windowsize "$wid" 480 360; sleep 0.3; check_failed_open ;;
+    21)           xdotool key --clearmodifiers ctrl+e; sleep 0.4; xdotool key --clearmodifiers Return; sleep 0.6; exports=$((exports + 1)) ;;
   esac
   actions=$((actions + 1))
   sleep 0.05
@@ -136,6 +150,12 @@ echo "soak: $actions actions in ${duration} s ($drops_good good drops, $checks f
 [ -n "$parts" ] && echo "soak: of which anonymous writable / executable (JIT) / file-backed (MB):$parts"
 [ $growth -le 50 ] || { echo "FAIL: resident memory grew by more than 5%"; fail=1; }
 [ $checks -gt 0 ] || { echo "FAIL: no failed drop was checked"; fail=1; }
+# Ctrl+E with the suggested name: every picture it said it wrote is there, each under a name of
+# its own (a window too small to export says so instead).
+written=$(grep -c "exported .*npr-picture-" "$tmp/log"); files=$(ls npr-picture-*.png 2>/dev/null | wc -l)
+[ "$written" = "$files" ] || { echo "FAIL: $written exports said, $files pictures there (one overwritten?)"; fail=1; }
+echo "soak: $exports exports asked, $files pictures written"
+
 grep -c "not taken" "$tmp/drops.log" 2>/dev/null | grep -qx 0 || { echo "FAIL: some drops were not taken:"; grep "not taken" "$tmp/drops.log" | head; fail=1; }
 xdotool key --clearmodifiers Escape
 for _ in $(seq 100); do alive || break; sleep 0.1; done
