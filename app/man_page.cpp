@@ -64,7 +64,8 @@ std::string manPage(const CLI::App& app) {
          ".TP\n.B NPR_GPU\nThe EGL device headless runs use, as \\-\\-gpu takes it.\n"
          ".TP\n.B NPR_DATA_DIR\nA folder holding palettes/ and models/ to use instead of the installed data.\n"
          ".TP\n.B NPR_NO_MESH_CACHE\nSet to read every model from its file, never from the mesh cache.\n"
-         ".TP\n.B XDG_CACHE_HOME\nWhere the mesh cache lives (npr\\-viewer/ inside it; default ~/.cache).\n";
+         ".TP\n.B XDG_CACHE_HOME\nWhere the mesh cache lives (npr\\-viewer/ inside it; default ~/.cache).\n"
+         ".TP\n.B XDG_STATE_HOME\nWhere the window keeps its recent files (npr\\-viewer/recent\\-files; default ~/.local/state).\n";
   out += ".SH FILES\n.TP\n.I PREFIX/share/npr-viewer\nThe shipped palettes (palettes/), styles (palettes/styles/) "
          "and default models (models/), found beside the executable.\n";
   out += ".SH EXIT STATUS\n0 on success, 1 when a file fails to load or a render fails, 2 for bad arguments, "

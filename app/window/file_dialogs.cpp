@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/settings/style_file.h"
+#include "app/window/recent_files.h"
 #include "renderer/core/printable.h"
 
 namespace npr {
@@ -104,11 +105,14 @@ void drawOpen(Viewer& v) {
     v.state.problem("not opened: " + chosen + " does not exist");
     return;
   }
+  // Recent, kept between runs: only what opened (a typo is not worth keeping), as an absolute
+  // path so it opens again from any folder.
+  const std::size_t problemsBefore = v.state.problems.size();
   (void)openFile(v, chosen, v.dialogAdds);
-  // Recent: newest first, once each, ten at most (failed opens too: the path is what was typed).
-  v.recent.erase(std::remove(v.recent.begin(), v.recent.end(), chosen), v.recent.end());
-  v.recent.insert(v.recent.begin(), chosen);
-  if (v.recent.size() > 10) v.recent.resize(10);
+  if (v.state.problems.size() == problemsBefore) {
+    addRecentFile(v.recent, fs::absolute(chosen, ec).string());
+    saveRecentFiles(v.recent);
+  }
 }
 
 // A file name from a style's name: letters, digits and dashes.

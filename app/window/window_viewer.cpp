@@ -20,6 +20,7 @@
 #include "app/next_free_name.h"
 #include "app/window/export_dialog.h"
 #include "app/window/file_dialogs.h"
+#include "app/window/recent_files.h"
 #include "app/window/help_overlay.h"
 #include "app/window/message_bar.h"
 #include "app/window/overlay.h"
@@ -95,7 +96,12 @@ int runWindowViewer(const Options& o) {
     if (Status again = startScene(plain, v.state, *v.renderer); !again) return reportFailure(s.error());
     if (v.state.problems.empty()) v.state.problem(s.error());  // a failed load has said it already
   }
-  for (const std::string& m : o.models) v.recent.push_back(m);
+  v.recent = loadRecentFiles();
+  for (auto it = o.models.rbegin(); it != o.models.rend(); ++it) {
+    std::error_code ec;
+    addRecentFile(v.recent, std::filesystem::absolute(*it, ec).string());
+  }
+  if (!o.models.empty()) saveRecentFiles(v.recent);
   if (!o.screenshot.empty()) v.screenshotDir = std::filesystem::path(o.screenshot).parent_path();
   if (v.screenshotDir.empty()) v.screenshotDir = ".";
   installInputCallbacks(v);

@@ -84,6 +84,8 @@ same "$(pic $((n - 1)))" "$(pic $n)" || { echo "FAIL: a failed open changed the 
 xdotool key --clearmodifiers ctrl+o; sleep 0.5
 xdotool type --delay 20 "$src/palettes/stipple"; xdotool key --clearmodifiers Return; sleep 1
 shot; check_changed "opening a palette with Ctrl+O"
+grep -q "palettes/stipple" "$tmp/state/npr-viewer/recent-files" 2>/dev/null || { echo "FAIL: the opened palette is not kept in the recent files"; fail=1; }
+grep -q "broken.obj" "$tmp/state/npr-viewer/recent-files" 2>/dev/null && { echo "FAIL: a file that failed to open was kept as recent"; fail=1; }
 xdotool key --clearmodifiers ctrl+s; sleep 0.5
 xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "Kept look"; xdotool key --clearmodifiers Return; sleep 1
 [ -s kept-look.style ] || { echo "FAIL: Ctrl+S did not write kept-look.style"; cat "$tmp/log3"; fail=1; }
