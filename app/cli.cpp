@@ -194,6 +194,9 @@ ParseOutcome parseCommandLine(int argc, char** argv) {
                  "Headless runs: the EGL device, by index or part of its name, 'auto' (a GPU before a software rasterizer) "
                  "or 'surfaceless' (Mesa's software platform); --gl-info lists them")
       ->envname("NPR_GPU")->type_name("DEVICE")->group(g);
+  app.add_flag("--verbose", o.verbose,
+               "Say every warning of a load (otherwise the first three of each kind, then how many more); bypasses the mesh cache")
+      ->group(g);
   app.add_flag("--gl-info", o.glInfo, "Print the headless context's GL_VENDOR, GL_RENDERER, GL_VERSION and the EGL devices, and exit")->group(g);
   app.add_flag("--list-paths", o.listPaths, "Print every render path (name, user or internal, description) and exit")->group(g);
   app.add_flag("--benchmark", o.benchmark, "Headless speed/accuracy benchmark of every path (models may be generated:torus-871k)")->group(g);

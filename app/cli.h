@@ -60,6 +60,7 @@ struct Options {
   bool settingsReference = false;  // --settings-reference: the settings table as Markdown
   GpuRequest gpu;                  // --gpu INDEX|NAME|auto|surfaceless (or NPR_GPU): the headless device
   bool glInfo = false;             // --gl-info: what the headless context runs on
+  bool verbose = false;            // --verbose: every load warning, not the first three of each kind
   bool version = false;            // --version
   bool benchmark = false;
   bool allMatchModes = false;  // --benchmark --match all

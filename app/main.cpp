@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
     }
     // One line per file: its load report and its scene.
     for (const std::string& model : o.models) {
-      npr::Result<npr::LoadedScene> s = npr::loadScene(model, npr::SceneLoadOptions{o.splitObjects});
+      npr::Result<npr::LoadedScene> s = npr::loadScene(model, npr::SceneLoadOptions{o.splitObjects, o.verbose});
       if (!s) return npr::reportFailure(s.error());
       std::printf("%s\n", npr::sceneReportJson(*s).c_str());
     }

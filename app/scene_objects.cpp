@@ -49,7 +49,7 @@ glm::mat4 filePlacement(const SceneFile& file) { return file.beside ? *file.besi
 Status SceneObjects::load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings) {
   std::vector<LoadedScene> loaded;
   for (const std::string& path : paths) {
-    Result<LoadedScene> s = loadScene(path, SceneLoadOptions{split_});
+    Result<LoadedScene> s = loadScene(path, SceneLoadOptions{split_, allWarnings_});
     if (!s) return Error{s.error()};
     loaded.push_back(std::move(*s));
   }

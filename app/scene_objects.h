@@ -58,6 +58,7 @@ class SceneObjects {
   [[nodiscard]] Status load(const std::vector<std::string>& paths, bool add, Renderer& renderer, std::vector<std::string>& warnings);
   // OBJ groups as objects in the loads that follow (--split-objects).
   void setSplitObjects(bool split) { split_ = split; }
+  void setAllWarnings(bool all) { allWarnings_ = all; }  // --verbose
   void setLayout(Layout layout, Renderer& renderer);
   Layout layout() const { return layout_; }
   bool setVisible(std::size_t object, bool visible, Renderer& renderer);
@@ -113,6 +114,7 @@ class SceneObjects {
   std::vector<SceneFile> files_;
   Layout layout_ = Layout::File;
   bool split_ = false;
+  bool allWarnings_ = false;
   glm::mat4 fit_{1.0f};
   struct PoseKey {
     AnimationChoice choice;

@@ -42,6 +42,7 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   applyDefaultMaterial(renderer.lighting());
   state.scene.setLayout(o.layout, renderer);
   state.scene.setSplitObjects(o.splitObjects);
+  state.scene.setAllWarnings(o.verbose);
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
   if (Status s = state.loadModels(models, false, renderer); !s) return s;
   for (const auto& [object, file] : o.objectPalettes)

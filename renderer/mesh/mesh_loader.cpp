@@ -12,6 +12,7 @@
 #include "renderer/core/json.h"
 #include "renderer/core/input_file.h"
 #include "renderer/mesh/mesh_cache.h"
+#include "renderer/mesh/polygon_soup.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/mesh/obj_parser.h"
@@ -54,7 +55,8 @@ Result<Mesh> loadMesh(const std::string& path) {
   else if (ext == ".gltf" || ext == ".glb") parse = parseGltf;
   else if (ext != ".om") return Error{path + ": unsupported mesh format '" + ext + "' (use .obj, .gltf, .glb, .ply, .off, .stl or .om)"};
   // glTF names other files (buffers, images) that the cache's key does not cover.
-  const bool cacheable = parse != parseGltf;
+  // --verbose wants every warning, which the cache (holding the summed ones) does not keep.
+  const bool cacheable = parse != parseGltf && !WarningDetail::all();
   if (std::optional<Mesh> cached = cacheable ? readMeshCache(path) : std::nullopt) {
     cached->report.load_ms = msSince(t0);
     return std::move(*cached);

@@ -77,7 +77,20 @@ bool PolygonSoup::addVertex(const glm::dvec3& v) {
   return finite;
 }
 
+namespace {
+thread_local bool allWarnings = false;
+}  // namespace
+
+WarningDetail::WarningDetail(bool all) : before_(allWarnings) { allWarnings = all || before_; }
+WarningDetail::~WarningDetail() { allWarnings = before_; }
+bool WarningDetail::all() { return allWarnings; }
+
 void Warnings::add(std::string w) {
+  if (allWarnings) {
+    if (out_.size() < WarningDetail::kAllWarningsCap) out_.push_back(printableMessage(w));
+    else ++dropped_;
+    return;
+  }
   // The kind: what follows the place ("line 12: ", "mesh 3 primitive 0 face 12: ").
   const std::size_t colon = w.rfind(": ");
   std::string kind = colon == std::string::npos ? w : w.substr(colon + 2);

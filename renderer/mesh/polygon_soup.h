@@ -50,6 +50,21 @@ struct PolygonSoup {
 // Collects warnings so a file with a million bad faces cannot flood the report: each kind (the
 // text after the warning's place, "face names fewer than 3 different vertices; skipped") is
 // shown for its first few places, then counted; at most a limit in all.
+// While one exists on this thread, loads keep every warning (--verbose), not the first three
+// of each kind (up to kAllWarningsCap, so a file of a million bad faces costs no gigabytes).
+class WarningDetail {
+ public:
+  explicit WarningDetail(bool all);
+  ~WarningDetail();
+  WarningDetail(const WarningDetail&) = delete;
+  WarningDetail& operator=(const WarningDetail&) = delete;
+  static bool all();
+  static constexpr std::size_t kAllWarningsCap = 100000;
+
+ private:
+  bool before_;
+};
+
 class Warnings {
  public:
   explicit Warnings(std::vector<std::string>& out) : out_(out) {}

@@ -9,6 +9,7 @@
 
 #include "renderer/core/elapsed.h"
 #include "renderer/core/input_file.h"
+#include "renderer/mesh/polygon_soup.h"
 #include "renderer/core/json.h"
 #include "renderer/mesh/mesh_formats.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -57,6 +58,7 @@ std::string sceneReportJson(const LoadedScene& scene) {
 
 Result<LoadedScene> loadScene(const std::string& nameOrPath, const SceneLoadOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  const WarningDetail detail(options.allWarnings);
   std::string ext = fs::path(nameOrPath).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".gltf" || ext == ".glb") {

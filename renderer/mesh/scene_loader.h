@@ -12,6 +12,7 @@ namespace npr {
 
 struct SceneLoadOptions {
   bool splitObjects = false;  // OBJ: each `o` and `g` group an object of its own (--split-objects)
+  bool allWarnings = false;   // every warning, not the first three of each kind (--verbose)
 };
 [[nodiscard]] Result<LoadedScene> loadScene(const std::string& nameOrPath, const SceneLoadOptions& options = {});
 

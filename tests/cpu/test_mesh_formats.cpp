@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/scene_loader.h"
 #include "support/test_util.h"
 
 namespace npr {
@@ -173,6 +174,24 @@ TEST(MeshFormats, RepeatedWarningsAreCountedPerKind) {
   EXPECT_LE(m->report.warnings.size(), 6u) << all;
   EXPECT_NE(all.find("197 more like this (200 in all)"), std::string::npos) << all;
   EXPECT_NE(all.find("line 206"), std::string::npos) << all;  // the other kind still shown where it is
+}
+
+// --verbose: every warning, each where it is, and the cache (which keeps the summed ones) is
+// neither read nor written.
+TEST(MeshFormats, EveryWarningWhenAskedForAll) {
+  test::TempDir d;
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  for (int i = 0; i < 200; ++i) obj += "f 1 1 2\n";
+  const std::string path = d.write("many.obj", obj);
+  (void)loadMesh(path);  // a summed load, cached
+  Result<LoadedScene> s = [&] { return loadScene(path, SceneLoadOptions{false, true}); }();
+  ASSERT_TRUE(s) << s.error();
+  EXPECT_EQ(s->warnings.size(), 200u);
+  EXPECT_FALSE(s->report.from_cache);
+  EXPECT_NE(s->warnings.back().find("line 204"), std::string::npos) << s->warnings.back();
+  Result<LoadedScene> summed = loadScene(path);
+  ASSERT_TRUE(summed);
+  EXPECT_LE(summed->warnings.size(), 6u);  // and the next ordinary load is summed again
 }
 
 }  // namespace npr
