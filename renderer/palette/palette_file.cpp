@@ -4,11 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 #include "renderer/core/colour.h"
 #include "renderer/core/image_io.h"
 #include "renderer/core/input_file.h"
+#include "renderer/core/parallel.h"
 #include "renderer/core/printable.h"
 #include "renderer/palette/palette_analysis.h"
 #include "renderer/palette/palette_mipmaps.h"
@@ -225,7 +227,10 @@ Result<Palette> loadPalette(const std::string& path) {
       p.backgroundImage = std::move(*bg);
     }
   }
-  for (const Pending& im : images) {
+  // Each entry is decoded, analysed and given its levels on its own, the entries spread over
+  // the cores (the crosshatch's ten levels with their mips: 110 ms on one core of this machine
+  // before); errors and warnings are then said in the file's order, as one at a time would.
+  auto loadEntry = [&](const Pending& im, const ImageSize& declared, std::vector<std::string>& warnings) -> Result<PaletteEntry> {
     Result<ImageRGBA8> img = loadImage((dir / im.path).string(), fit);
     if (!img) return Error{path + " line " + std::to_string(im.line) + ": " + img.error()};
     PaletteEntry e;
@@ -236,8 +241,8 @@ Result<Palette> loadPalette(const std::string& path) {
     e.orientation = textureOrientation(e.image, p.backgroundColour);
     // Given levels must halve the level above exactly (GL's rule); an entry reduced to fit the
     // budget drops them (they are reduced from it instead).
-    const bool reduced = e.image.width != sizes[&im - images.data()].width || e.image.height != sizes[&im - images.data()].height;
-    if (reduced && !im.mips.empty()) p.warnings.push_back(im.path + ": its mip levels are reduced from the smaller image instead");
+    const bool reduced = e.image.width != declared.width || e.image.height != declared.height;
+    if (reduced && !im.mips.empty()) warnings.push_back(im.path + ": its mip levels are reduced from the smaller image instead");
     for (const Pending& m : reduced ? std::vector<Pending>{} : im.mips) {
       const ImageRGBA8& above = e.mips.empty() ? e.image : e.mips.back();
       const int level = static_cast<int>(e.mips.size()) + 1;
@@ -256,7 +261,17 @@ Result<Palette> loadPalette(const std::string& path) {
       if (!mi) return Error{mipWhere + ": " + mi.error()};
       e.mips.push_back(std::move(*mi));
     }
-    p.entries.push_back(std::move(e));
+    return e;
+  };
+  std::vector<std::optional<Result<PaletteEntry>>> loaded(images.size());
+  std::vector<std::vector<std::string>> entryWarnings(images.size());
+  parallelChunks(images.size(), workerCount(), [&](std::size_t b, std::size_t e, int) {
+    for (std::size_t i = b; i < e; ++i) loaded[i] = loadEntry(images[i], sizes[i], entryWarnings[i]);
+  }, 1);
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    if (!*loaded[i]) return Error{loaded[i]->error()};
+    for (std::string& w : entryWarnings[i]) p.warnings.push_back(std::move(w));
+    p.entries.push_back(std::move(loaded[i]->value()));
   }
   return p;
 }
