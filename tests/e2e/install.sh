@@ -35,6 +35,18 @@ for style in "$data"/palettes/styles/*.style; do
 done
 [ "$styles" -ge 9 ] || { echo "FAIL: only $styles styles installed"; fail=1; }
 
+# A style saved by one installed tree travels: it names the shipped palette by name, so the
+# tree moved again, and the style loaded from a third folder, draw the same picture.
+"$viewer" --headless --style pencil --palette wood --size 160x120 --save-style "$tmp/elsewhere/kept.style" --screenshot "$tmp/saved.png" >"$tmp/out" 2>&1 ||
+  { echo "FAIL: --save-style from the installed tree:"; cat "$tmp/out"; fail=1; }
+grep -q "^palette wood$" "$tmp/elsewhere/kept.style" || { echo "FAIL: the saved style names its palette by path: $(grep '^palette' "$tmp/elsewhere/kept.style")"; fail=1; }
+mv "$tmp/moved" "$tmp/moved-again" && mkdir -p "$tmp/third" && cp "$tmp/elsewhere/kept.style" "$tmp/third/" && cd "$tmp/third" || exit 1
+"$tmp/moved-again/bin/npr-viewer" --headless --style kept.style --size 160x120 --screenshot "$tmp/loaded.png" >"$tmp/out" 2>&1 ||
+  { echo "FAIL: the saved style does not load after the tree moved:"; cat "$tmp/out"; fail=1; }
+cmp -s "$tmp/saved.png" "$tmp/loaded.png" || idiff -q -fail 0 "$tmp/saved.png" "$tmp/loaded.png" >/dev/null 2>&1 ||
+  { echo "FAIL: the saved style draws another picture after the tree moved"; fail=1; }
+mv "$tmp/moved-again" "$tmp/moved"; cd "$tmp/elsewhere" || exit 1
+
 # The source tree out of reach: an empty folder mounted over it, in a mount namespace of our own.
 if unshare -rm true 2>/dev/null; then
   unshare -rm bash -c "mount -t tmpfs none '$src' && '$viewer' --headless --style pencil --size 160x120 --screenshot '$tmp/hidden.png'" \
