@@ -7,9 +7,9 @@
 set -uo pipefail
 dir="$(cd "$1" && pwd)"; jobs="${2:-$(nproc)}"
 mapfile -t programs < <(find "$dir/tests" -maxdepth 1 -type f -name 'test_*' -perm -u+x | sort)
-# The longest programs under ASan start first (15-25 s each on two cores), so that no core is left
+# The longest programs under ASan start first (9-28 s each on two cores), so that no core is left
 # running one of them alone at the end; the order of the others does not matter.
-long=(test_gl_shadows test_gl_render test_settings test_gl_scene test_mesh_cache test_palette)
+long=(test_gl_shadows test_gl_render test_gl_scene test_gl_style_legibility test_gl_viewer_state test_drawn_palettes)
 ordered=()
 for name in "${long[@]}"; do [ -x "$dir/tests/$name" ] && ordered+=("$dir/tests/$name"); done
 for p in "${programs[@]}"; do [[ " ${long[*]} " == *" $(basename "$p") "* ]] || ordered+=("$p"); done

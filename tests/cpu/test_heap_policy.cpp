@@ -17,6 +17,7 @@
 namespace npr {
 namespace {
 
+#if !defined(__SANITIZE_ADDRESS__) && defined(__GLIBC__)
 // How far the heap's top moves when 4 MB in blocks of 64 KB (under glibc's mmap threshold, as
 // llvmpipe's binning blocks are) are allocated, touched and freed again: 0 if it was kept.
 long heapShrinkAfterFree() {
@@ -29,6 +30,7 @@ long heapShrinkAfterFree() {
   for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) std::free(*it);
   return static_cast<long>(top - static_cast<const char*>(sbrk(0)));
 }
+#endif
 
 TEST(HeapPolicy, FreedMemoryStaysInTheHeap) {
 #if defined(__SANITIZE_ADDRESS__) || !defined(__GLIBC__)
