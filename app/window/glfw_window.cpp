@@ -68,7 +68,7 @@ ImGuiSession::ImGuiSession(GLFWwindow* window) {
   if (scale != 1.0f) {
     ImGui::GetStyle().ScaleAllSizes(scale);
     ImFontConfig font;
-    font.SizePixels = 13.0f * scale;
+    font.SizePixels = kFontPixels * scale;
     ImGui::GetIO().Fonts->AddFontDefault(&font);
   }
   ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the window's own callbacks

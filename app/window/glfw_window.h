@@ -34,9 +34,12 @@ class GlfwWindow {
 };
 
 // Dear ImGui for a window: context plus backends, shut down in reverse order on destruction.
-// Install the window's own callbacks first: the GLFW backend chains to them.
+// Install the window's own callbacks first: the GLFW backend chains to them. The font is
+// kFontPixels at content scale 1 and that times the scale above it; widgets scale with it.
 class ImGuiSession {
  public:
+  static constexpr float kFontPixels = 13.0f;  // Dear ImGui's default font's own size
+
   explicit ImGuiSession(GLFWwindow* window);
   ~ImGuiSession();
   ImGuiSession(const ImGuiSession&) = delete;

@@ -15,12 +15,25 @@
 
 #include "app/settings/look.h"
 #include "app/settings/style_file.h"
+#include "app/window/glfw_window.h"
 #include "renderer/core/printable.h"
 #include "renderer/gl/gl_info.h"
 
 namespace npr {
 namespace fs = std::filesystem;
 namespace {
+
+// A row of widgets wraps instead of running past the panel's edge (where its text was cut): the
+// next widget, `width` wide, goes beside the last one only when it fits in what the line has left.
+void besideIfFits(float width) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+float buttonWidth(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
+float checkboxWidth(const char* label) {
+  return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
 
 void tooltip(const std::string& text) {
   if (ImGui::IsItemHovered() && !text.empty()) ImGui::SetTooltip("%s", text.c_str());
@@ -69,7 +82,7 @@ bool settingWidget(const Setting& row, Look& look, const std::vector<std::string
       std::string next;
       for (std::size_t i = 0; i < row.choices.size(); ++i) {
         bool on = current.find("," + row.choices[i] + ",") != std::string::npos;
-        if (i % 3) ImGui::SameLine();
+        if (i > 0) besideIfFits(checkboxWidth(row.choices[i].c_str()));
         changed |= ImGui::Checkbox(row.choices[i].c_str(), &on);
         if (on) next += (next.empty() ? "" : ",") + row.choices[i];
       }
@@ -289,10 +302,13 @@ void drawOverlay(Viewer& v) {
   const FrameStats& st = v.renderer->stats();
   // Docked at the right edge, the window's full height; its width is the user's (drag the
   // left edge), and the scene is drawn and framed in the rest of the window.
+  // Widths in the overlay's own units: on a screen of content scale 2 its font and widgets are
+  // twice the size (ImGuiSession), so the panel is too, or its labels would be cut at its edge.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float ui = ImGui::GetFontSize() / ImGuiSession::kFontPixels;
   ImGui::SetNextWindowPos(ImVec2(display.x, 0.0f), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
-  ImGui::SetNextWindowSize(ImVec2(std::min(360.0f, display.x * 0.45f), display.y), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(200.0f, display.x), display.y), ImVec2(std::max(200.0f, display.x * 0.7f), display.y));
+  ImGui::SetNextWindowSize(ImVec2(std::min(360.0f * ui, display.x * 0.45f), display.y), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(std::min(200.0f * ui, display.x), display.y), ImVec2(std::max(200.0f * ui, display.x * 0.7f), display.y));
   if (!ImGui::Begin("npr-viewer (F1 hides)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings)) {
     v.panelWidth = 0.0f;  // collapsed: the scene takes the whole window
     ImGui::End();
@@ -336,10 +352,10 @@ void drawOverlay(Viewer& v) {
       if (ImGui::Selectable(fs::path(file).stem().c_str())) (void)openFile(v, file, false);  // as Ctrl+O opens a style
     ImGui::EndCombo();
   }
-  ImGui::SameLine();
+  besideIfFits(buttonWidth("save style (Ctrl+S)"));
   if (ImGui::Button("save style (Ctrl+S)")) applyAction(v, {Action::SaveStyle});
   if (ImGui::Button("open (Ctrl+O)")) applyAction(v, {Action::Open, 0});
-  ImGui::SameLine();
+  besideIfFits(buttonWidth("add to scene (Ctrl+Shift+O)"));
   if (ImGui::Button("add to scene (Ctrl+Shift+O)")) applyAction(v, {Action::Open, 1});
   // Palette list: the number keys and [ ] choose among these.
   const std::string current = s.palette ? s.palette->name : "-";
@@ -389,16 +405,16 @@ void drawOverlay(Viewer& v) {
       applyAction(v, {Action::ToggleLightFollow});
     }
     if (ImGui::Button("frame (F)")) applyAction(v, {Action::FrameModel});
-    ImGui::SameLine();
+    besideIfFits(buttonWidth("reset view (R)"));
     if (ImGui::Button("reset view (R)")) applyAction(v, {Action::ResetView});
-    ImGui::SameLine();
+    besideIfFits(buttonWidth("screenshot (F12)"));
     if (ImGui::Button("screenshot (F12)")) applyAction(v, {Action::Screenshot, 0});
     if (ImGui::Button("export lines (SVG)")) v.svgRequested = true;
-    ImGui::SameLine();
+    besideIfFits(checkboxWidth("vsync (V)"));
     bool vsync = v.vsync;
     if (ImGui::Checkbox("vsync (V)", &vsync)) applyAction(v, {Action::ToggleVsync});
     ImGui::Checkbox("help (H)", &v.help);
-    ImGui::SameLine();
+    besideIfFits(buttonWidth("quit (Esc)"));
     if (ImGui::Button("quit (Esc)")) applyAction(v, {Action::Quit});
   }
   if (!s.messages.empty()) {
