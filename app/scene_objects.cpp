@@ -270,7 +270,12 @@ std::size_t SceneObjects::triangles() const {
   return n;
 }
 
-std::vector<glm::vec3> SceneObjects::framingPoints(std::size_t budget) const {
+std::vector<glm::vec3> SceneObjects::framingPoints(const AnimationChoice& choice, std::size_t budget) const {
+  // Poses over the animation: enough that a turn or a bounce is seen whole, few enough that a
+  // large moving object's share of the budget stays dense (16 poses of every 16th vertex).
+  constexpr int kPoses = 16;
+  const double length = choice.which == AnimationChoice::Which::None ? 0.0 : animationLength(choice);
+  const auto moves = [&](const ViewerObject& o) { return length > 0.0 && o.animated && o.skin < 0 && o.node >= 0; };
   std::size_t total = 0;
   for (const ViewerObject& o : objects_)
     if (o.visible) total += o.mesh->positions.size();
@@ -278,11 +283,35 @@ std::vector<glm::vec3> SceneObjects::framingPoints(std::size_t budget) const {
   std::vector<glm::vec3> points;
   points.reserve(total / stride + objects_.size());
   for (const ViewerObject& o : objects_) {
-    if (!o.visible) continue;
+    if (!o.visible || moves(o)) continue;
     // One object is drawn as loaded (place()): its rest placement is the identity.
     const glm::mat4 rest = objects_.size() == 1 ? glm::mat4(1.0f) : toViewer(o.file) * o.inFile;
     const std::vector<glm::vec3>& p = o.mesh->positions;
     for (std::size_t i = 0; i < p.size(); i += stride) points.push_back(glm::vec3(rest * glm::vec4(p[i], 1.0f)));
+  }
+  if (length <= 0.0) return points;
+  NodePose pose;
+  std::size_t number = 0;  // the scene-order number of each file's first animation (as pose())
+  for (std::size_t f = 0; f < files_.size(); ++f) {
+    const SceneFile& file = files_[f];
+    std::vector<const SceneAnimation*> playing;
+    for (std::size_t a = 0; a < file.animations.size(); ++a, ++number)
+      if (choice.which == AnimationChoice::Which::All || choice.one == number) playing.push_back(&file.animations[a]);
+    if (playing.empty()) continue;
+    for (int k = 0; k < kPoses; ++k) {
+      poseNodes(file.nodes, playing, static_cast<float>(length * k / (kPoses - 1)), pose);
+      for (const ViewerObject& o : objects_) {
+        if (o.file != f || !o.visible || !moves(o) || o.node >= static_cast<int>(pose.world.size())) continue;
+        const glm::mat4 placed = toViewer(f) * pose.world[static_cast<std::size_t>(o.node)] * o.afterNode;
+        const std::vector<glm::vec3>& p = o.mesh->positions;
+        // At least 64 of a small mesh's vertices each pose (every one of a square's four).
+        const std::size_t step = std::max<std::size_t>(1, std::min(stride * kPoses, p.size() / 64));
+        for (std::size_t i = 0; i < p.size(); i += step) {
+          const glm::vec3 q(placed * glm::vec4(p[i], 1.0f));
+          if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) points.push_back(q);  // an overflowing pose is not drawn (pose())
+        }
+      }
+    }
   }
   return points;
 }

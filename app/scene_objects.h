@@ -71,10 +71,12 @@ class SceneObjects {
   const std::vector<SceneFile>& files() const { return files_; }
   bool empty() const { return objects_.empty(); }
   std::size_t triangles() const;
-  // The shown objects' vertices placed at rest (as the layout places them, before any
-  // animation moves them), at most about `budget` of them (every k-th of a large scene): what
-  // the camera frames, the same whatever time the scene is posed at.
-  std::vector<glm::vec3> framingPoints(std::size_t budget = 200000) const;
+  // The shown objects' vertices as the layout places them, at most about `budget` of them
+  // (every k-th of a large scene): what the camera frames, the same whatever time the scene is
+  // posed at. An object that `choice`'s animations move by its node is taken at poses spread
+  // over the animation, so it stays in the frame all through its motion; the others (and
+  // skinned ones, whose vertices move on the GPU) at rest.
+  std::vector<glm::vec3> framingPoints(const AnimationChoice& choice = {AnimationChoice::Which::None}, std::size_t budget = 200000) const;
   // The shown object whose surface the ray through `ndc` (-1..1) meets first, or none.
   std::optional<std::size_t> pick(const CameraMatrices& camera, const glm::vec2& ndc) const;
   // The object's bounding sphere in the viewer's space (centre, radius).

@@ -69,7 +69,7 @@ Status ViewerState::loadModels(const std::vector<std::string>& paths, bool add, 
 
 void ViewerState::frameScene(bool everyYaw) {
   camera.frame(1.0f);  // the scene is fitted into the unit sphere: near and far planes, and the fallback
-  camera.framePoints(scene.framingPoints(), viewAspect, 0.9f, everyYaw);
+  camera.framePoints(scene.framingPoints(playback.choice), viewAspect, 0.9f, everyYaw);
 }
 
 void ViewerState::noteMissingMaterial(const std::string& material, const char* forWhat) {

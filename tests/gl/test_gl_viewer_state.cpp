@@ -257,6 +257,54 @@ TEST_F(SceneStateFixture, TheFilesCameraAndLightsAreUsed) {
   EXPECT_NEAR(r->lighting().light(0).diffuse.g, 1.0f, 1e-6f);
 }
 
+// An object that slides ten of its sizes across the scene stays in the frame all through its
+// motion: the camera frames its poses over the animation, not its rest place alone.
+TEST_F(SceneStateFixture, AnAnimatedSceneIsFramedOverItsWholeMotion) {
+  test::TempDir d;
+  const float p[12] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const std::uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+  const float times[2] = {0.0f, 2.0f};
+  const float slide[6] = {0, 0, 0, 20, 0, 0};
+  std::string bin(reinterpret_cast<const char*>(p), 48);
+  bin.append(reinterpret_cast<const char*>(idx), 12);
+  bin.append(reinterpret_cast<const char*>(times), 8);
+  bin.append(reinterpret_cast<const char*>(slide), 24);
+  d.write("slide.bin", bin);
+  const std::string gltf = d.write("slide.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0,1]}],
+    "nodes":[{"mesh":0,"translation":[0,-3,0]},{"mesh":0,"translation":[0,3,0]}],
+    "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],
+    "animations":[{"channels":[{"sampler":0,"target":{"node":1,"path":"translation"}}],
+                   "samplers":[{"input":2,"output":3}]}],
+    "accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[-1,-1,0],"max":[1,1,0]},
+                 {"bufferView":1,"componentType":5123,"count":6,"type":"SCALAR"},
+                 {"bufferView":2,"componentType":5126,"count":2,"type":"SCALAR","min":[0],"max":[2]},
+                 {"bufferView":3,"componentType":5126,"count":2,"type":"VEC3"}],
+    "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":12},
+                   {"buffer":0,"byteOffset":60,"byteLength":8},{"buffer":0,"byteOffset":68,"byteLength":24}],
+    "buffers":[{"uri":"slide.bin","byteLength":92}]})");
+  ViewerState state;
+  state.viewAspect = 1.0f;
+  ASSERT_TRUE(state.loadModels({gltf}, false, *r));
+  ASSERT_NEAR(state.animationLength(), 2.0, 1e-6);
+  const CameraMatrices cam = state.view(1.0f);
+  // Every corner of both squares, at every tenth of the motion, inside the picture; the
+  // sliding square's last pose reaches near the picture's edge (framed, not lost in it).
+  float reach = 0.0f;
+  for (int k = 0; k <= 10; ++k) {
+    state.playback.time = 0.2 * k;
+    state.poseScene(*r);
+    for (const ViewerObject& o : state.scene.objects())
+      for (const glm::vec3& v : o.mesh->positions) {
+        const glm::vec4 clip = cam.projection * cam.view * o.placed * glm::vec4(v, 1.0f);
+        ASSERT_GT(clip.w, 0.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        EXPECT_LE(std::max(std::abs(ndc.x), std::abs(ndc.y)), 1.0f) << o.name << " at " << state.playback.time << " s is outside the frame";
+        reach = std::max(reach, std::abs(ndc.x));
+      }
+  }
+  EXPECT_GT(reach, 0.6f) << "the motion is framed with room to spare";
+}
+
 TEST_F(SceneStateFixture, AnimationPosesWhatItMovesCarriesChildrenAndLeavesTheRestStill) {
   ViewerState state;
   ASSERT_TRUE(state.loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"), *r));
