@@ -37,7 +37,9 @@ std::string manPage(const CLI::App& app) {
   out += ".SH DESCRIPTION\n" + roff(app.get_description()) + "\n";
   out += ".PP\nWithout options it opens a window on the default model and palette. Models are OBJ (with "
          "MTL materials and textures), glTF 2.0 (.gltf, .glb; scenes, materials, animation), PLY, OFF, STL or OM files; palettes are .palette files or folders "
-         "holding one.\n";
+         "holding one, and looks are .style files. It writes pictures (PNG, and TGA, EXR or any format OpenImageIO "
+         "writes, by the extension), the lines as SVG, frame sequences as numbered PNGs, videos as MP4 (H.264), WebM "
+         "(VP9) or GIF, and looks as style files.\n";
   // Options by group, in the order the command line declares them.
   std::vector<std::string> groups;
   std::map<std::string, std::vector<const CLI::Option*>> byGroup;
