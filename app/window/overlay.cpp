@@ -30,6 +30,21 @@ void besideIfFits(float width) {
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
+// The widest label drawn beside a widget (the settings table's, and the panel's own): widgets
+// take what the panel has left after it, so a label is not cut at the panel's edge. Half the
+// panel each, as before, cut "tone spread (+/-)" at the default panel of a 640-pixel window.
+float labelColumn() {
+  static float fontSize = 0.0f, widest = 0.0f;  // measured again only when the font changes
+  if (fontSize != ImGui::GetFontSize()) {
+    fontSize = ImGui::GetFontSize();
+    widest = 0.0f;
+    for (const Setting& row : settingsTable())
+      if (row.type != SettingType::Bool && row.type != SettingType::Kinds)
+        widest = std::max(widest, ImGui::CalcTextSize(row.label.c_str(), nullptr, true).x);
+    for (const char* label : {"palette", "style", "speed"}) widest = std::max(widest, ImGui::CalcTextSize(label).x);
+  }
+  return widest + ImGui::GetStyle().ItemInnerSpacing.x;
+}
 float buttonWidth(const char* label) { return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x; }
 float checkboxWidth(const char* label) {
   return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
@@ -315,7 +330,8 @@ void drawOverlay(Viewer& v) {
     return;
   }
   v.panelWidth = ImGui::GetWindowWidth();
-  ImGui::PushItemWidth(v.panelWidth * 0.5f);  // room for the labels beside the widgets
+  // Room for the labels beside the widgets, up to 60% of the panel (the widgets keep the rest).
+  ImGui::PushItemWidth(-std::min(labelColumn(), 0.6f * v.panelWidth));
   ImGui::TextWrapped("%.2f ms mean, %.2f ms 1%% worst, %.0f fps", v.timer.meanMs(), v.timer.worst1PercentMs(), v.timer.fps());
   const auto& h = v.timer.history();
   // The panel's whole width (Dear ImGui 1.86 draws a plot given -1 one pixel wide).
