@@ -15,7 +15,7 @@
 #include "app/headless/interrupt_guard.h"
 #include "app/headless/resident_memory.h"
 #include "app/video/sequence_output.h"
-#include "app/headless/poster.h"
+#include "app/video/poster.h"
 #include "app/line_export.h"
 #include "app/progress_line.h"
 #include "app/startup.h"

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "app/next_free_name.h"
+#include "app/window/glfw_window.h"
 #include "renderer/core/printable.h"
 
 namespace npr {
@@ -64,7 +65,7 @@ void drawExportDialog(Viewer& v) {
   if (v.exportJob) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(480.0f, display.x * 0.9f), 0.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(480.0f * ImGui::GetFontSize() / ImGuiSession::kFontPixels, display.x * 0.9f), 0.0f), ImGuiCond_Always);
     ImGui::Begin("Exporting", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
     ImGui::TextUnformatted(printable(v.exportJob->label()).c_str());
     ImGui::ProgressBar(float(v.exportJob->fraction()), ImVec2(-1.0f, 0.0f));
@@ -82,7 +83,7 @@ void drawExportDialog(Viewer& v) {
   }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.9f), 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f * ImGui::GetFontSize() / ImGuiSession::kFontPixels, display.x * 0.9f), 0.0f), ImGuiCond_Always);
   bool open = true;
   if (!ImGui::Begin("Export (Ctrl+E)", &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();

@@ -33,7 +33,8 @@ ExportKind exportKindOf(const std::string& path) {
 
 ExportJob::~ExportJob() {
   output_.reset();  // an unfinished video or GIF removes its partial file
-  if (kind_ != ExportKind::Turntable && done_ == 0 && !request_.path.empty()) {
+  poster_.reset();  // closed before its partial file goes
+  if (kind_ != ExportKind::Turntable && done_ < frames() && !request_.path.empty()) {
     std::error_code ec;
     std::filesystem::remove(partialFileName(request_.path), ec);
   }
@@ -43,9 +44,11 @@ Result<std::unique_ptr<ExportJob>> ExportJob::start(const ExportRequest& r, cons
   std::unique_ptr<ExportJob> job(new ExportJob());
   job->request_ = r;
   job->kind_ = exportKindOf(r.path);
-  const int limit = maxFramebufferSide();
+  // An image beyond the GL's limit is a poster, drawn in tiles (as headless --size draws it).
+  const int limit = job->kind_ == ExportKind::Image ? kMaxPosterSide : maxFramebufferSide();
   if (r.size.x < 16 || r.size.y < 16 || r.size.x > limit || r.size.y > limit)
-    return Error{"the size must be 16 to " + std::to_string(limit) + " pixels a side (larger posters: --headless --size, drawn in tiles)"};
+    return Error{"the size must be 16 to " + std::to_string(limit) + " pixels a side" +
+                 (job->kind_ == ExportKind::Image ? "" : " (pictures may be larger: drawn in tiles)")};
   if (std::filesystem::path(r.path).filename().empty()) return Error{"no file name given"};
   const std::filesystem::path folder = std::filesystem::path(r.path).parent_path();
   std::error_code ec;
@@ -53,6 +56,13 @@ Result<std::unique_ptr<ExportJob>> ExportJob::start(const ExportRequest& r, cons
   job->camera_ = state.camera;
   job->light_ = state.light;
   if (job->kind_ == ExportKind::Lines) return job;  // drawn by exportSvg, which makes its own targets
+  if (job->kind_ == ExportKind::Image && (r.size.x > maxFramebufferSide() || r.size.y > maxFramebufferSide())) {
+    Result<std::unique_ptr<PosterRender>> poster = PosterRender::start(partialFileName(r.path), r.size, 0);
+    if (!poster) return Error{poster.error()};
+    job->poster_ = std::move(*poster);
+    job->tiles_ = job->poster_->tiles();
+    return job;
+  }
   Result<OffscreenTarget> target = OffscreenTarget::create(r.size.x, r.size.y);
   if (!target) return Error{target.error()};
   job->target_ = std::move(*target);
@@ -88,6 +98,12 @@ Status ExportJob::renderFrame(ViewerState& state, Renderer& renderer, int frame)
   if (st && kind_ == ExportKind::Lines) {
     st = exportSvg(renderer, cam, state.settings, request_.size, SvgContents{nullptr, false, state.palette.get()}, partial);
     if (st) st = moveIntoPlace(partial, request_.path);
+  } else if (st && poster_) {
+    st = poster_->drawTile(state, renderer, frame);
+    if (st && frame + 1 == poster_->tiles()) {
+      poster_.reset();  // finished and closed
+      st = moveIntoPlace(partial, request_.path);
+    }
   } else if (st) {
     target_->bind();
     st = renderer.render(cam, state.settings, {0, 0, request_.size.x, request_.size.y});
@@ -103,8 +119,13 @@ Status ExportJob::renderFrame(ViewerState& state, Renderer& renderer, int frame)
   return st;
 }
 
+int ExportJob::frames() const {
+  if (kind_ == ExportKind::Turntable) return request_.frames;
+  return std::max(1, tiles_);
+}
+
 Result<bool> ExportJob::step(ViewerState& state, Renderer& renderer, double budgetMs) {
-  const int frames = kind_ == ExportKind::Turntable ? request_.frames : 1;
+  const int frames = this->frames();
   const auto t0 = std::chrono::steady_clock::now();
   do {
     if (Status st = renderFrame(state, renderer, done_); !st) return Error{st.error()};
@@ -118,15 +139,14 @@ Result<bool> ExportJob::step(ViewerState& state, Renderer& renderer, double budg
   return true;
 }
 
-double ExportJob::fraction() const {
-  const int frames = kind_ == ExportKind::Turntable ? request_.frames : 1;
-  return double(done_) / double(frames);
-}
+double ExportJob::fraction() const { return double(done_) / double(frames()); }
 
 std::string ExportJob::label() const {
   const std::string name = std::filesystem::path(request_.path).filename().string();
-  if (kind_ != ExportKind::Turntable) return name;
-  return name + ": frame " + std::to_string(std::min(done_ + 1, request_.frames)) + " of " + std::to_string(request_.frames);
+  if (kind_ == ExportKind::Turntable)
+    return name + ": frame " + std::to_string(std::min(done_ + 1, request_.frames)) + " of " + std::to_string(request_.frames);
+  if (tiles_ > 1) return name + ": tile " + std::to_string(std::min(done_ + 1, tiles_)) + " of " + std::to_string(tiles_);
+  return name;
 }
 
 }  // namespace npr

@@ -1,7 +1,8 @@
 // An export from the window (Ctrl+E), run a few frames at a time between the window's frames
 // so the window stays responsive, shows how far it got and can cancel: the scene as an image at
-// a chosen size, its lines as SVG, or a turntable of it as a video (MP4, WebM or GIF), from the
-// view the window shows. What it writes appears under its name only when finished.
+// a chosen size (beyond the GL's framebuffer limit, a poster drawn tile by tile), its lines as
+// SVG, or a turntable of it as a video (MP4, WebM or GIF), from the view the window shows. What
+// it writes appears under its name only when finished.
 #pragma once
 
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/video/poster.h"
 #include "app/video/sequence_output.h"
 #include "app/viewer_state.h"
 #include "renderer/core/result.h"
@@ -52,7 +54,10 @@ class ExportJob {
   glm::vec3 light_{0.0f};
   std::optional<OffscreenTarget> target_;
   std::optional<SequenceOutput> output_;
+  std::unique_ptr<PosterRender> poster_;  // an image larger than the GL draws at once
+  int tiles_ = 0;                         // the poster's
   int done_ = 0;
+  int frames() const;  // the steps: a turntable's frames, a poster's tiles, else 1
 };
 
 }  // namespace npr

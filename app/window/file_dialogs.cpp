@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/settings/style_file.h"
+#include "app/window/glfw_window.h"
 #include "app/window/recent_files.h"
 #include "renderer/core/printable.h"
 
@@ -43,7 +44,7 @@ void setText(std::array<char, 1024>& field, const std::string& text) {
 bool beginDialog(Viewer& v, const char* title) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.3f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, display.x * 0.9f), 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f * ImGui::GetFontSize() / ImGuiSession::kFontPixels, display.x * 0.9f), 0.0f), ImGuiCond_Always);
   bool open = true;
   if (!ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();

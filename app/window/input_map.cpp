@@ -67,7 +67,7 @@ const std::vector<Binding>& keyBindings() {
       {"H", "these keys, over the scene"},
       {"Ctrl+O / Ctrl+Shift+O", "open a model, scene, palette or style (type its path, Enter) / add a model to the scene"},
       {"Ctrl+S", "save the look as a style file (a name is asked; an existing file is replaced only when confirmed)"},
-      {"Ctrl+E", "export: a picture at a chosen size (.png), the lines (.svg) or a turntable (.mp4 .webm .gif), with progress; Esc cancels"},
+      {"Ctrl+E", "export: a picture at a chosen size (.png; a poster in tiles beyond the GL's limit), the lines (.svg) or a turntable (.mp4 .webm .gif), with progress; Esc cancels"},
       {"F12 / Shift+F12", "screenshot of the scene at the window's size / of the whole window (npr-screenshot-NNNN.png, never overwriting)"},
       {"Drop a file", "as Ctrl+O: a model (.obj .gltf .glb .ply .off .stl .om), palette (.palette) or style (.style); with Shift, add the model to the scene"},
       {"Double-click", "frame the object under the cursor (F: the whole scene)"},

@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "app/settings/style_file.h"
 #include "app/viewer_state.h"
+#include "app/window/export_job.h"
 #include "gl/gl_test_env.h"
+#include "renderer/gl/offscreen_target.h"
 #include "renderer/mesh/mesh_loader.h"
 #include "support/test_util.h"
 
@@ -303,6 +306,52 @@ TEST_F(SceneStateFixture, AnAnimatedSceneIsFramedOverItsWholeMotion) {
       }
   }
   EXPECT_GT(reach, 0.6f) << "the motion is framed with room to spare";
+}
+
+// Ctrl+E's picture beyond the GL's framebuffer limit is a poster, drawn tile by tile between
+// the window's frames: the whole size is written, nothing is under its name until it is
+// finished, and one cancelled after its first tile leaves nothing behind.
+TEST_F(SceneStateFixture, AnExportBeyondTheFramebufferLimitIsAPosterInTiles) {
+  test::TempDir d;
+  ViewerState state;
+  ASSERT_TRUE(state.loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"), *r));
+  ASSERT_TRUE(state.loadModels({sourcePath("models/bunny.obj")}, false, *r));
+  ExportRequest request;
+  request.path = (d.path() / "poster.png").string();
+  request.size = {maxFramebufferSide() + 100, 48};
+  Result<std::unique_ptr<ExportJob>> job = ExportJob::start(request, state);
+  ASSERT_TRUE(job) << job.error();
+  int steps = 0;
+  for (bool done = false; !done; ++steps) {
+    Result<bool> step = (*job)->step(state, *r, 0.0);  // one tile a step
+    ASSERT_TRUE(step) << step.error();
+    done = *step;
+    if (!done) {
+      EXPECT_FALSE(std::filesystem::exists(request.path)) << "written under its name before it was finished";
+    }
+  }
+  EXPECT_GE(steps, 2) << "not drawn in tiles";
+  EXPECT_NE((*job)->label().find("tile"), std::string::npos) << (*job)->label();
+  job->reset();
+  // Its size from the PNG's header (IHDR: width and height, big-endian, at bytes 16 and 20):
+  // the image readers refuse pictures this wide, as they should for palettes.
+  std::ifstream png(request.path, std::ios::binary);
+  unsigned char header[24] = {};
+  ASSERT_TRUE(png.read(reinterpret_cast<char*>(header), 24));
+  const auto be32 = [&](int at) { return int(header[at]) << 24 | int(header[at + 1]) << 16 | int(header[at + 2]) << 8 | int(header[at + 3]); };
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(header + 12), 4), "IHDR");
+  EXPECT_EQ(be32(16), request.size.x);
+  EXPECT_EQ(be32(20), request.size.y);
+
+  request.path = (d.path() / "cancelled.png").string();
+  {
+    Result<std::unique_ptr<ExportJob>> cancelled = ExportJob::start(request, state);
+    ASSERT_TRUE(cancelled) << cancelled.error();
+    ASSERT_TRUE((*cancelled)->step(state, *r, 0.0));
+  }
+  std::vector<std::string> left;
+  for (const auto& e : std::filesystem::directory_iterator(d.path())) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"poster.png"}) << "a cancelled poster left a file";
 }
 
 TEST_F(SceneStateFixture, AnimationPosesWhatItMovesCarriesChildrenAndLeavesTheRestStill) {
