@@ -5,8 +5,9 @@
 # image twice; that Esc closes the viewer with exit status 0; and that space plays and pauses
 # an animated scene. Then the file commands: F12 numbers its files after those already in the
 # folder (a second run overwrites nothing), Ctrl+O opens a typed path (a broken file keeps the
-# scene and says why), Ctrl+S saves the look under a typed name and never replaces a file
-# without a confirmation, Ctrl+E exports a picture and a turntable and cancels on Esc.
+# scene and says why, on stderr and in the window's message bar; a palette and a glTF scene
+# open), Ctrl+S saves the look under a typed name and never replaces a file without a
+# confirmation, Ctrl+E exports a picture and a turntable and cancels on Esc.
 set -u
 viewer="$1"
 src=$(cd "$(dirname "$0")/../.." && pwd)
@@ -81,11 +82,25 @@ grep -q "broken.obj" "$tmp/log3" || { echo "FAIL: a broken file opened with Ctrl
 xdotool key --clearmodifiers F1; sleep 0.3; xdotool key --clearmodifiers F1; sleep 0.3   # the bar stays: only the scene is compared
 shot
 same "$(pic $((n - 1)))" "$(pic $n)" || { echo "FAIL: a failed open changed the scene"; fail=1; }
+# The reason shows in the window too: a red bar across the top of the scene (Shift+F12 shoots
+# the whole window; the file is moved aside so the scene shots keep their numbers).
+n=$((n + 1)); xdotool key --clearmodifiers shift+F12
+for _ in $(seq 100); do [ -s "$(pic $n)" ] && sleep 0.3 && break; sleep 0.1; done
+mv "$(pic $n)" bar.png 2>/dev/null; n=$((n - 1))
+oiiotool bar.png --cut 480x40+0+0 --ch R,G,B -o bar.ppm >/dev/null 2>&1
+red=$(/usr/bin/python3 -c "
+d = open('bar.ppm', 'rb').read(); px = d.split(maxsplit=4)[4]
+print(sum(1 for i in range(0, len(px) - 2, 3) if px[i] > 80 and px[i] > 2.5 * px[i + 1] and px[i] > 2.5 * px[i + 2]))" 2>/dev/null)
+[ "${red:-0}" -gt 1000 ] || { echo "FAIL: no message bar in the window after a failed open (${red:-no} red pixels at its top)"; fail=1; }
 xdotool key --clearmodifiers ctrl+o; sleep 0.5
 xdotool type --delay 20 "$src/palettes/stipple"; xdotool key --clearmodifiers Return; sleep 1
 shot; check_changed "opening a palette with Ctrl+O"
 grep -q "palettes/stipple" "$tmp/state/npr-viewer/recent-files" 2>/dev/null || { echo "FAIL: the opened palette is not kept in the recent files"; fail=1; }
 grep -q "broken.obj" "$tmp/state/npr-viewer/recent-files" 2>/dev/null && { echo "FAIL: a file that failed to open was kept as recent"; fail=1; }
+xdotool key --clearmodifiers ctrl+o; sleep 0.5
+xdotool type --delay 20 "$src/models/pendulum.gltf"; xdotool key --clearmodifiers Return; sleep 1.5
+shot; check_changed "opening a glTF scene with Ctrl+O"
+grep -q "pendulum.gltf" "$tmp/state/npr-viewer/recent-files" 2>/dev/null || { echo "FAIL: the glTF opened with Ctrl+O is not among the recent files"; fail=1; }
 xdotool key --clearmodifiers ctrl+s; sleep 0.5
 xdotool key --clearmodifiers ctrl+a; xdotool type --delay 20 "Kept look"; xdotool key --clearmodifiers Return; sleep 1
 [ -s kept-look.style ] || { echo "FAIL: Ctrl+S did not write kept-look.style"; cat "$tmp/log3"; fail=1; }
