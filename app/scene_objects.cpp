@@ -15,6 +15,16 @@ namespace npr {
 namespace fs = std::filesystem;
 namespace {
 
+// The animations of `file` that `choice` plays; `number` is the scene-order number of the
+// file's first animation, moved past its last (files are walked in order).
+std::vector<const SceneAnimation*> playedAnimations(const SceneFile& file, const AnimationChoice& choice, std::size_t& number) {
+  std::vector<const SceneAnimation*> playing;
+  for (std::size_t a = 0; a < file.animations.size(); ++a, ++number)
+    if (choice.which == AnimationChoice::Which::All || (choice.which == AnimationChoice::Which::One && choice.one == number))
+      playing.push_back(&file.animations[a]);
+  return playing;
+}
+
 // The sphere about the bounding box's centre holding every vertex of `objects` placed by
 // `placement(object)`: what the loader fits a single mesh by, so a scene fits as tightly.
 template <class Placement>
@@ -213,11 +223,7 @@ void SceneObjects::pose(const AnimationChoice& choice, double time, Renderer& re
   for (std::size_t f = 0; f < files_.size(); ++f) {
     const SceneFile& file = files_[f];
     if (file.animations.empty() && !file.deforms) continue;
-    std::vector<const SceneAnimation*> playing;
-    for (std::size_t a = 0; a < file.animations.size(); ++a, ++number) {
-      if (choice.which == AnimationChoice::Which::All || (choice.which == AnimationChoice::Which::One && choice.one == number))
-        playing.push_back(&file.animations[a]);
-    }
+    const std::vector<const SceneAnimation*> playing = playedAnimations(file, choice, number);
     // Objects any of the file's animations moves are posed (at rest when none of them plays).
     poseNodes(file.nodes, playing, static_cast<float>(time), nodePose_);
     const std::vector<glm::mat4>& world = nodePose_.world;
@@ -294,9 +300,7 @@ std::vector<glm::vec3> SceneObjects::framingPoints(const AnimationChoice& choice
   std::size_t number = 0;  // the scene-order number of each file's first animation (as pose())
   for (std::size_t f = 0; f < files_.size(); ++f) {
     const SceneFile& file = files_[f];
-    std::vector<const SceneAnimation*> playing;
-    for (std::size_t a = 0; a < file.animations.size(); ++a, ++number)
-      if (choice.which == AnimationChoice::Which::All || choice.one == number) playing.push_back(&file.animations[a]);
+    const std::vector<const SceneAnimation*> playing = playedAnimations(file, choice, number);
     if (playing.empty()) continue;
     for (int k = 0; k < kPoses; ++k) {
       poseNodes(file.nodes, playing, static_cast<float>(length * k / (kPoses - 1)), pose);
