@@ -14,6 +14,9 @@ inline RenderSettings viewerDefaultSettings() {
   s.toneRange = ToneRange::PerObject;
   // Silhouettes outlined: a dark object keeps its shape against dark hatching or a ground.
   s.lines.silhouettes = true;
+  // Tone edges anti-aliased in the shader: about 1.1x the bunny's frame on llvmpipe (issue 57;
+  // docs/lines-and-tone.md), for the window and stills alike. Supersampling stays a choice.
+  s.aa = AntiAliasing::Edges;
   return s;
 }
 

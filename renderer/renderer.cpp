@@ -130,11 +130,11 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // the paper, the surfaces with the path, then the features' passes over them. Frames of the
 // other outputs take the steps their output reads.
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, FrameOutput output) {
-  if (output == FrameOutput::Colour && s.supersample > 1 && viewport.z > 0 && viewport.w > 0) {
-    const int k = std::min(s.supersample, RenderSettings::kMaxSupersample);
+  if (output == FrameOutput::Colour && supersampleFactor(s.aa) > 1 && viewport.z > 0 && viewport.w > 0) {
+    const int k = std::min(supersampleFactor(s.aa), RenderSettings::kMaxSupersample);
     return supersampler_.run(k, viewport, gpu_.programs, gpu_.emptyVao, stats_, [&](int factor, const glm::ivec4& big) {
       RenderSettings scaled = pixelSizesScaled(s, float(factor));
-      scaled.supersample = 1;
+      scaled.aa = AntiAliasing::Edges;
       // A poster's tile sits at k times its offset in the supersampled whole.
       const std::optional<Tile> tile = work_.tile;
       if (work_.tile) work_.tile->offset *= factor;
@@ -199,10 +199,10 @@ Status Renderer::follow(const CameraMatrices& camera, const RenderSettings& s, c
   // when the frame is supersampled. The pattern follows where render() places it: not on the
   // reference path.
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
-  if (s.supersample > 1) {
-    const int k = Supersampler::factorFor(std::min(s.supersample, RenderSettings::kMaxSupersample), viewport);
+  if (supersampleFactor(s.aa) > 1) {
+    const int k = Supersampler::factorFor(std::min(supersampleFactor(s.aa), RenderSettings::kMaxSupersample), viewport);
     RenderSettings scaled = pixelSizesScaled(s, float(k));
-    scaled.supersample = 1;
+    scaled.aa = AntiAliasing::Edges;
     return follow(camera, scaled, k > 1 ? glm::ivec4(0, 0, viewport.z * k, viewport.w * k) : viewport);
   }
   const glm::ivec4& v = viewport;

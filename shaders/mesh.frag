@@ -20,6 +20,8 @@
 // OUTPUT_BLEND writes (entry a, entry b, weight of b) as floats (one entry: a = b, weight 0).
 // DEFER_TURN (turned lookups on dense meshes) writes the pixel's stroke angle and entry for
 // turn_resolve.frag instead.
+// TONE_EDGES (pixel and vertex paths' colour): the match taken at four points of the pixel and
+// their entries' texels averaged, so tone edges are anti-aliased and the pattern is not.
 // ALPHA_COVERAGE discards what a see-through material leaves out (coverage.glsl), in every pass.
 // CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
@@ -102,6 +104,30 @@ vec4 deferTurn(int e) {
 #define SHOW_ENTRY(e) vec4(paletteColour(e), 1.0)
 #endif
 
+#if defined(TONE_EDGES) && (defined(PATH_PIXEL) || defined(PATH_VERTEX))
+// The tone is supersampled, not the frame: the lit colour is carried to four points of a
+// rotated grid inside the pixel along its screen derivatives (exact where it is linear across
+// the pixel, as in the vertex path) and matched at each. Each point's entry is shown at this
+// pixel's own texel, so the pattern is sampled once per pixel and never shimmers. Inside a band
+// (the four agree) it is one fetch; at an edge, the entry of the first point and the other one
+// (a third, in a band thinner than a pixel, counts as the other), weighted by their points.
+vec3 toneEdgeColour(vec3 lit) {
+  vec3 dx = dFdx(lit), dy = dFdy(lit);
+  int e0 = matchEntry(lit - 0.125 * dx - 0.375 * dy);
+  int e1 = matchEntry(lit + 0.375 * dx - 0.125 * dy);
+  int e2 = matchEntry(lit + 0.125 * dx + 0.375 * dy);
+  int e3 = matchEntry(lit - 0.375 * dx + 0.125 * dy);
+  vec3 c0 = paletteColour(paletteLayer(e0));
+  if (e1 == e0 && e2 == e0 && e3 == e0) return c0;
+  int other = e1 != e0 ? e1 : (e2 != e0 ? e2 : e3);
+  float own = 1.0 + float(e1 == e0) + float(e2 == e0) + float(e3 == e0);
+  return mix(paletteColour(paletteLayer(other)), c0, own * 0.25);
+}
+#define SHOW_MATCHED(lit) vec4(toneEdgeColour(lit), 1.0)
+#else
+#define SHOW_MATCHED(lit) SHOW_ENTRY(paletteLayer(matchEntry(lit)))
+#endif
+
 void main() {
 #if defined(ALPHA_COVERAGE) && defined(MATERIAL_MAPS)
   if (!covered(vMaterial, vTexcoord)) discard;
@@ -147,7 +173,7 @@ void main() {
   fragColor = SHOW_ENTRY(uEntry);
 #elif defined(PATH_VERTEX)
   setPaletteRow(vPosition, vNormal);
-  fragColor = SHOW_ENTRY(paletteLayer(matchEntry(gl_FrontFacing ? vColorFront : vColorBack)));
+  fragColor = SHOW_MATCHED(gl_FrontFacing ? vColorFront : vColorBack);
 #elif defined(PATH_GOURAUD)
   fragColor = vec4(gl_FrontFacing ? vColorFront : vColorBack, 1.0);
 #else
@@ -169,7 +195,7 @@ void main() {
   setPaletteRow(vPosition, vNormal);
 #endif
 #if defined(PATH_PIXEL)
-  fragColor = SHOW_ENTRY(paletteLayer(matchEntry(lit)));
+  fragColor = SHOW_MATCHED(lit);
 #elif defined(PATH_SMOOTH) && defined(OUTPUT_BLEND)
   fragColor = vec4(blendSelection(lit), 1.0);
 #elif defined(PATH_SMOOTH) && defined(DEFER_TURN)

@@ -1,4 +1,4 @@
-// Anti-aliasing by supersampling (RenderSettings::supersample): the frame drawn at k times the
+// Anti-aliasing by supersampling (RenderSettings::aa, SsaaK): the frame drawn at k times the
 // viewport's width and height into a target of ours, every size in pixels scaled by k
 // (pixelSizesScaled), then box-filtered into the framebuffer that was bound, over the
 // viewport. Tone edges, silhouettes and lines are smoothed; a palette's texels cover whole

@@ -28,6 +28,10 @@ Status ShadedPath::draw(FrameContext& f) {
     variant.deferTurn = true;
     variant.palette->orientBins = 0;
   }
+  // Tone edges smoothed where one pass shows whole entries per pixel (the smooth path blends
+  // anyway; a deferred turn shows its entry in the resolve, unsmoothed).
+  variant.toneEdges = !resolve && palette && f.output == gl::MeshOutput::Colour && (kind_ == Kind::Vertex || kind_ == Kind::Pixel) &&
+                      toneEdgesSmoothed(f.settings.aa);
   gl::apply(f.meshPass(resolve ? gl::pass::kMeshMarked : gl::pass::kMesh));
   if (!variant.materials || f.gpuMesh.materialRuns().empty()) {
     Result<gl::ShaderProgram*> prog = f.program(variant);

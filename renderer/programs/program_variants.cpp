@@ -71,6 +71,7 @@ struct SourceOf {
     if (m.output == MeshOutput::Entry) s.defines.push_back("OUTPUT_ENTRY");
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
     if (m.deferTurn) s.defines.push_back("DEFER_TURN");
+    if (m.toneEdges) s.defines.push_back("TONE_EDGES");
     if (m.shading == MeshShading::Mask && (m.stroke == StrokeSource::Field || m.stroke == StrokeSource::Light))
       s.defines.push_back("MASK_STROKE_ANGLE");
     if (m.shading == MeshShading::Mask && m.palette && m.palette->pattern == PatternMapping::Object)

@@ -94,6 +94,9 @@ struct MeshProgram {
   // Palette shadings with a stroke source: write each pixel's stroke angle and entry at output 1
   // for one turned lookup per pixel afterwards (passes/turn_resolve_pass.h) instead of the texel.
   bool deferTurn = false;
+  // The pixel and vertex shadings' colour: tone edges anti-aliased by matching at four points
+  // of each pixel (mesh.frag's TONE_EDGES; RenderSettings::aa).
+  bool toneEdges = false;
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.

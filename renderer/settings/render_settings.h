@@ -268,6 +268,18 @@ struct RenderTuning {
 // Whether and how the palette is fitted onto the tones on screen (RenderSettings::toneRange).
 enum class ToneRange : std::uint8_t { Fixed, Auto, PerObject };
 
+// Anti-aliasing, cheapest first. Edges: the pixel and vertex paths' tone edges smoothed in the
+// shader (mesh.frag's TONE_EDGES: the match taken at four points of each pixel, each point's
+// entry shown at the pixel's own texel, so the pattern is untouched); lines always keep their
+// own one-pixel soft rim. SsaaK (K = 2..4) adds supersampling (frame/supersample.h): the frame
+// drawn at K times the viewport's width and height, every size in pixels (lines, dashes,
+// strokes, the pattern's texel) times as much, then box-filtered down: silhouettes and the
+// per-triangle paths' edges are smoothed too, at about K^2 the fill.
+enum class AntiAliasing : std::uint8_t { Off = 0, Edges = 1, Ssaa2 = 2, Ssaa3 = 3, Ssaa4 = 4 };
+// The supersampling factor: 1 below Ssaa2.
+inline int supersampleFactor(AntiAliasing a) { return a >= AntiAliasing::Ssaa2 ? int(a) : 1; }
+inline bool toneEdgesSmoothed(AntiAliasing a) { return a != AntiAliasing::Off; }
+
 struct RenderSettings;
 // `s` with every size given in pixels (line widths, dashes and tapers, stroke sizes, the
 // pattern's texel) times `k`: the same picture drawn at k times the resolution.
@@ -303,11 +315,9 @@ struct RenderSettings {
   // scaled patterns; about 15% of a bunny frame on llvmpipe).
   bool patternLinearFilter = false;
   static constexpr float kMinPatternScale = 0.125f, kMaxPatternScale = 16.0f;
-  // Anti-aliasing by supersampling (frame/supersample.h): the frame drawn at this many times
-  // the viewport's width and height, every size in pixels (lines, dashes, strokes, the
-  // pattern's texel) times as much, then box-filtered down. 1: off. A palette's pattern is
-  // unchanged (each texel covers whole blocks); tone edges, silhouettes and lines are smoothed.
-  int supersample = 1;
+  // Anti-aliasing (AntiAliasing): off in the renderer (its path tests compare against the
+  // original); the viewer starts at Edges (app/viewer_defaults.h).
+  AntiAliasing aa = AntiAliasing::Off;
   static constexpr int kMaxSupersample = 4;
   OrientSettings orient;
   // A ground plane under the model, drawn with the same palette and path (mesh/ground_plane.h).

@@ -7,7 +7,7 @@
 // Run: build/tests/bench/bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus]
 //      [--entries N] [--paths triangle,pixel,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--shadows]
 //      [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--turn-placements] [--tone-threshold]
-//      [--palette-axis]
+//      [--palette-axis] [--aa]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -63,6 +63,7 @@ struct PathRow {
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
   bool autoTone = false;                  // the automatic tone range (--tone-range)
+  AntiAliasing aa = AntiAliasing::Off;    // anti-aliasing (--aa: +edges, +ssaa2)
   bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
   bool control = false;                   // control-image palettes drawn (--control)
   bool screenOcclusion = false;           // screen-space occlusion instead of the bake (--occlusion)
@@ -75,7 +76,7 @@ int main(int argc, char** argv) {
   int w = 1280, h = 720, frames = 15;
   std::vector<float> scales;  // --pattern-scale, repeatable: a row per scale
   bool patternLinear = false;  // --pattern-linear: also each mapped row filtered
-  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, placements = false, toneThreshold = false, paletteAxis = false;
+  bool quick = false, materials = false, patterns = false, orient = false, shadows = false, staticLight = false, occlusion = false, gpuTriangles = false, control = false, toneRange = false, aa = false, placements = false, toneThreshold = false, paletteAxis = false;
   std::string meshFilter, pathFilter;
   std::vector<int> sizes = {1, 10, 30, 64, 256};
   for (int i = 1; i < argc; ++i) {
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--static-light")) staticLight = true;
     else if (!std::strcmp(argv[i], "--occlusion")) occlusion = true;
     else if (!std::strcmp(argv[i], "--tone-range")) toneRange = true;
+    else if (!std::strcmp(argv[i], "--aa")) aa = true;
     else if (!std::strcmp(argv[i], "--gpu-triangles")) gpuTriangles = true;
     else if (!std::strcmp(argv[i], "--control")) control = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) meshFilter = argv[++i];
@@ -101,13 +103,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--entries") && i + 1 < argc) sizes = {std::atoi(argv[++i])};
     else {
       std::fprintf(stderr, "usage: bench_frames [--size WxH] [--frames N] [--quick] [--mesh bunny|torus] [--entries N] "
-                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--tone-threshold] [--palette-axis] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range]\n(the reference and lit-textured floors always run; --materials draws the "
+                           "[--paths p1,p2,...] [--materials] [--patterns] [--pattern-scale S]... [--pattern-linear] [--orient] [--turn-placements] [--tone-threshold] [--palette-axis] [--shadows] [--static-light] [--occlusion] [--gpu-triangles] [--control] [--tone-range] [--aa]\n(the reference and lit-textured floors always run; --materials draws the "
                            "torus with 16 materials, 4 textured, each path with materials off and on; --patterns adds each path with "
                            "the anchored and the object pattern space; the camera orbits 1 degree per frame; --orient uses the hatch palette and adds each "
                            "path with strokes along the curvature; --tone-threshold adds the smooth path with crisp tone (+threshold, --tone-blend threshold); --palette-axis gives the palette a second row (the same images) on a depth axis across the model and adds each path with it (+axis), the rows without drawing the first row only (--no-palette-axis); --turn-placements also each +orient row with the turn forced into the mesh pass (+in-mesh) and into the resolve pass (+resolved), the choice automatic placement makes by density; --shadows adds each GPU-lit path with the ground plane, then with its shadows too; "
                            "--static-light keeps the light still, so shadow maps are drawn once; --occlusion adds each GPU-lit path with baked "
                            "ambient occlusion, baked before timing, and each per-pixel one with screen-space occlusion (+ssao); --gpu-triangles adds the per-triangle paths lit on the GPU; --control adds each +shadows and "
-                           "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto))\n");
+                           "+occlusion row again with a control-image palette (stipple) drawn in shadows and crevices; --tone-range adds each palette path with the automatic tone range (+auto); --aa adds each palette path with the shader's tone edges (+edges) and with 2x2 supersampling (+ssaa2))\n");
       return 2;
     }
   }
@@ -245,6 +247,13 @@ int main(int argc, char** argv) {
         on.autoTone = true;
         paths.push_back(on);
       }
+      if (aa && pathInfo(p.path).usesPalette && p.path != RenderPath::LitTextured)
+        for (AntiAliasing a : {AntiAliasing::Edges, AntiAliasing::Ssaa2}) {
+          PathRow on = p;
+          on.label += a == AntiAliasing::Edges ? "+edges" : "+ssaa2";
+          on.aa = a;
+          paths.push_back(on);
+        }
       if (gpuTriangles && (p.path == RenderPath::Triangle || p.path == RenderPath::Stencil)) {
         PathRow on = p;
         on.label += "+gpu-lit";
@@ -323,6 +332,7 @@ int main(int argc, char** argv) {
         s.occlusion = paths[p].occlusion;
         s.toneRange = paths[p].autoTone ? ToneRange::Auto : ToneRange::Fixed;
         s.controlPalettes = paths[p].control;
+        s.aa = paths[p].aa;
         if (paths[p].screenOcclusion) s.occlusionMethod = OcclusionMethod::Screen;
         s.triangleLighting = paths[p].gpuTriangles ? TriangleLighting::Gpu : TriangleLighting::Cpu;
         if (patterns) {  // a moving camera, so the anchored rows fit real motion
