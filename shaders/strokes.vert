@@ -1,7 +1,7 @@
 // Painterly brush strokes (strokes/brush_stroke_pass.h): one instanced quad per stroke
 // particle, sized in pixels, turned along the direction field projected to the screen (across
 // the light's gradient where the field has no direction), lit at the particle with the scene's
-// lighting. Strokes turned away from the eye fade out over the last few degrees, and strokes
+// lighting; near the silhouette it turns to follow the contour. Strokes turned away from the eye fade out over the last few degrees, and strokes
 // beyond the fraction kept at this distance fade out over a band of ranks: nothing pops. The
 // quad is pulled towards the eye along its ray by half its size (the ray keeps where it
 // projects), so the surface it sits on does not cut it while nearer surfaces still hide it.
@@ -63,6 +63,15 @@ void main() {
   vec2 d = ahead.xy / ahead.w * halfViewport - s0;
   float len = length(d);
   vec2 along = len > 1e-5 ? d / len : vec2(1.0, 0.0);
+  // Near the silhouette the stroke turns to follow the contour (perpendicular to the normal on
+  // screen), as a painter's last strokes do: one turned across it would hang off the form by
+  // half its length.
+  vec2 nScreen = n.xy;
+  if (dot(nScreen, nScreen) > 1e-8) {
+    vec2 contour = normalize(vec2(-nScreen.y, nScreen.x));
+    contour *= dot(contour, along) < 0.0 ? -1.0 : 1.0;
+    along = normalize(mix(along, contour, 1.0 - smoothstep(0.15, 0.5, facing)) + vec2(1e-6, 0.0));
+  }
   // Jitter: a few degrees of turn and a fifth of the size, from the particle's seed.
   float turn = (aRankSeed.y - 0.5) * 0.35;
   along = mat2(cos(turn), sin(turn), -sin(turn), cos(turn)) * along;

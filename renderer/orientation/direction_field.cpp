@@ -57,7 +57,8 @@ DirectionField computeDirectionField(const Mesh& mesh, const DirectionFieldOptio
   });
 
   // Jacobi iterations of the cross field: each vertex takes the mean of its neighbours' cross
-  // values plus its own curvature direction weighted by its confidence.
+  // values plus its own curvature direction weighted by its confidence (and curvatureWeight:
+  // held too hard, noisy directions pin pairs of singular points that smoothing would cancel).
   std::vector<glm::vec2> anchor(nv);
   for (std::size_t v = 0; v < nv; ++v) anchor[v] = crossValue(pc.maxDirection[v], t1[v], t2[v]);
   std::vector<glm::vec3> next(nv);
@@ -67,7 +68,7 @@ DirectionField computeDirectionField(const Mesh& mesh, const DirectionFieldOptio
         next[v] = d[v];
         if (pc.normals[v] == glm::vec3(0.0f)) continue;
         const std::uint32_t n0 = pc.neighbourStart[v], n1 = pc.neighbourStart[v + 1];
-        glm::vec2 s = anchor[v] * (2.0f * float(n1 - n0) * confidence[v]);
+        glm::vec2 s = anchor[v] * (opt.curvatureWeight * float(n1 - n0) * confidence[v]);
         for (std::uint32_t k = n0; k < n1; ++k) s += crossValue(d[pc.neighbours[k]], t1[v], t2[v]);
         if (!(glm::dot(s, s) > 1e-20f)) continue;
         const float angle = 0.25f * std::atan2(s.y, s.x);
