@@ -3,7 +3,8 @@
 // leaves gaps along the stroke: dashes uDash.x pixels long every uDash.x + uDash.y (hidden
 // lines: 6 in 10 by default). TAPERED narrows the stroke to points over uTaper pixels at its
 // ends. TEXTURED multiplies the ink by a texture stretched along the stroke (a brush, or the
-// user's image). uInk lightens (the hidden lines of the base style).
+// user's image). uInk lightens (the hidden lines of the base style). OCCLUSION_LIMIT (hidden
+// parts, a set's occlusion=LEVEL) leaves out what lines.vert found behind the limit layer.
 #ifdef TONE_COLOUR
 // colour=tone: the average colour of the palette entry the lit tone matches.
 #include "palette.glsl"
@@ -34,6 +35,9 @@ flat in float vLength;
 flat in vec2 vPressure;
 #endif
 uniform float uInk;
+#ifdef OCCLUSION_LIMIT
+in float vBeyondLimit;  // 1 at an end behind the limit layer (lines.vert), interpolated between
+#endif
 #ifdef DASHED
 uniform vec2 uDash;
 #endif
@@ -66,6 +70,9 @@ void main() {
   float along = clamp(vArc / max(abs(vChain), 1e-3), 0.0, 1.0);
   // Across: the same side of the chain for every segment, whichever way it was stored.
   ink *= texture(uStrokeTexture, vec2(along, 0.5 + 0.5 * vWay * vAcross / max(halfWidth, 1e-3))).r;
+#endif
+#ifdef OCCLUSION_LIMIT
+  if (vBeyondLimit > 0.5) discard;
 #endif
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;

@@ -51,6 +51,31 @@ uniform uint uMaterialMask[8];  // bit m: material m is taken (0xFFFF: none)
 bool taken(uint m) { return m < 256u && (uMaterialMask[m >> 5] & (1u << (m & 31u))) != 0u; }
 #endif
 
+#ifdef OCCLUSION_LIMIT
+// Hidden parts limited by occlusion level (a set's occlusion=LEVEL, lines/occlusion_layers.h):
+// each end of the edge is tested against the limit layer, the surface one more than LEVEL
+// surfaces would put in front of it, and the fragment stage leaves out the half beyond.
+uniform sampler2D uOcclusionLimit;  // window depth of the limit layer over the viewport (1: none)
+uniform ivec2 uOcclusionSize;       // the viewport's size
+uniform vec3 uDepthMap;             // P[2][2], P[3][2], 1 perspective or 0 orthographic
+uniform float uOcclusionTolerance;  // eye units: a line on the limit surface itself is not behind it
+out float vBeyondLimit;
+float viewDistance(float windowDepth) {
+  float ndc = 2.0 * windowDepth - 1.0;
+  return uDepthMap.z > 0.5 ? uDepthMap.y / (ndc + uDepthMap.x) : (uDepthMap.y - ndc) / uDepthMap.x;
+}
+// Whether the point at clip position `p` (pixel `s` from the viewport's centre) lies behind the
+// limit layer. The farthest of the layer within a pixel: an edge is where the faces meeting
+// there are farthest, and a pixel's centre beside it falls on them, nearer by their slope.
+float beyondLimit(vec4 p, vec2 s) {
+  ivec2 at = ivec2(floor(s + 0.5 * vec2(uOcclusionSize)));
+  float limit = 0.0;
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) limit = max(limit, texelFetch(uOcclusionLimit, clamp(at + ivec2(dx, dy), ivec2(0), uOcclusionSize - 1), 0).r);
+  if (limit >= 1.0) return 0.0;
+  return viewDistance(0.5 * p.z / p.w + 0.5) > viewDistance(limit) + uOcclusionTolerance ? 1.0 : 0.0;
+}
+#endif
 out vec3 vColour;
 flat out float vInk;
 out float vAcross;  // pixels from the line's centre
@@ -158,6 +183,9 @@ void main() {
   vAlong = end ? vLength : 0.0;
 #endif
   gl_Position = vec4(s / half_ * p.w, p.z - 3e-4 * p.w, p.w);
+#ifdef OCCLUSION_LIMIT
+  vBeyondLimit = beyondLimit(p, end ? s1 : s0);
+#endif
 #ifdef TONE_COLOUR
   vec3 eyePosition = (uModelView * vec4(end ? end_ : start, 1.0)).xyz;
   vec3 n = uNormalMatrix * aNormal;

@@ -22,6 +22,8 @@
 // turn_resolve.frag instead.
 // TONE_EDGES (pixel and vertex paths' colour): the match taken at four points of the pixel and
 // their entries' texels averaged, so tone edges are anti-aliased and the pattern is not.
+// PEEL_BEHIND (with PATH_MASK): only what lies behind the layer in front (depth peeling for the
+// hidden lines' occlusion levels, renderer/lines/occlusion_layers.h).
 // ALPHA_COVERAGE discards what a see-through material leaves out (coverage.glsl), in every pass.
 // CONTROL_SHADOW / CONTROL_OCCLUSION: a control-image palette's pass, blended over the frame
 // with its parameter as alpha (passes/control_palette_pass.h): the share of diffuse light
@@ -128,7 +130,21 @@ vec3 toneEdgeColour(vec3 lit) {
 #define SHOW_MATCHED(lit) SHOW_ENTRY(paletteLayer(matchEntry(lit)))
 #endif
 
+#ifdef PEEL_BEHIND
+uniform sampler2D uPeelFront;  // window depth of the layer in front, texel for pixel
+uniform vec3 uPeelDepthMap;    // P[2][2], P[3][2], 1 perspective or 0 orthographic
+uniform float uPeelTolerance;  // eye units: a surface this near the layer is the layer itself
+float peelDistance(float windowDepth) {
+  float ndc = 2.0 * windowDepth - 1.0;
+  return uPeelDepthMap.z > 0.5 ? uPeelDepthMap.y / (ndc + uPeelDepthMap.x) : (uPeelDepthMap.y - ndc) / uPeelDepthMap.x;
+}
+#endif
+
 void main() {
+#ifdef PEEL_BEHIND
+  float layer = texelFetch(uPeelFront, ivec2(gl_FragCoord.xy), 0).r;
+  if (layer >= 1.0 || peelDistance(gl_FragCoord.z) <= peelDistance(layer) + uPeelTolerance) discard;
+#endif
 #if defined(ALPHA_COVERAGE) && defined(MATERIAL_MAPS)
   if (!covered(vMaterial, vTexcoord)) discard;
 #elif defined(ALPHA_COVERAGE)

@@ -417,7 +417,7 @@ std::vector<Setting> buildTable() {
     Setting sets = base("line-set", "line sets", "lines",
                         "A line set: object-space kinds drawn in a style of their own, over the kinds `lines` names that no set takes; "
                         "repeat it for several, drawn in order. KINDS [visibility=visible|hidden|both] [width=W] [colour=R,G,B|tone] [dash=ON,OFF] [taper=PIXELS] "
-                        "[texture=brush|FILE (stretched along each stroke)] [curvature=GAIN (-4..4: wider where the surface curves more)] [falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)] "
+                        "[texture=brush|FILE (stretched along each stroke)] [curvature=GAIN (-4..4: wider where the surface curves more)] [occlusion=LEVEL (1..3: hidden parts drawn only behind at most that many surfaces)] [falloff=on|off] [sketchy=on|off] [objects=NAME,... (* and ? match)] "
                         "[materials=NAME,...]",
                         K::Text);
     sets.example = "silhouette,crease visibility=hidden width=1 dash=4,3";

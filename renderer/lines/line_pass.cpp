@@ -168,6 +168,7 @@ LineStyle LineStyle::of(const LineSet& set, const LineSettings& ls) {
   s.texture = set.texture;
   s.toneColour = set.toneColour;
   s.curvatureGain = set.curvature;
+  s.occlusion = set.occlusion;
   s.kinds = set.kinds;
   if (!set.materials.empty()) s.materialNames = &set.materials;
   return s;
@@ -207,6 +208,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     const bool textured = style.textureBound.id != 0 && !hidden;
     const bool byCurvature = style.curvatureGain != 0.0f;
     gl::LineProgram variant{sketchy, style.falloff, dash.x > 0.0f, tapered, style.byMaterial(), textured, byCurvature};
+    variant.occlusionLimit = hidden && style.limitsOcclusion();
     if (style.tonedNow()) {
       variant.lighting = style.lighting->features();
       variant.palette = style.palette->matchingVariant(style.match);
@@ -241,6 +243,15 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     // stroke, and unchanged as the view turns about it.
     p.set("uParamPixels", 1.0f / std::max(centrePixel(placed, viewport), 1e-9f));
     if (tapered) p.set("uTaper", style.taper);
+    if (variant.occlusionLimit) {
+      gl::bindTexture(kOcclusionLimitUnit, GL_TEXTURE_2D, style.layers->limit(style.occlusion));
+      p.set("uOcclusionLimit", gl::unitIndex(kOcclusionLimitUnit));
+      p.set("uOcclusionSize", glm::ivec2(viewport.z, viewport.w));
+      // Window depth to distance along the view axis: perspective P[3][2] / (ndc + P[2][2]),
+      // orthographic (P[3][2] - ndc) / P[2][2].
+      p.set("uDepthMap", glm::vec3(placed.projection[2][2], placed.projection[3][2], perspective ? 1.0f : 0.0f));
+      p.set("uOcclusionTolerance", style.layers->tolerance());
+    }
     if (variant.lighting) {
       // Lit in eye space as the strokes are (strokes.vert): the lines' space to the eye's.
       p.set("uModelView", placed.view);

@@ -19,6 +19,7 @@
 #include "renderer/gl/program_cache.h"
 #include "renderer/lines/feature_edges.h"
 #include "renderer/lines/line_chains.h"
+#include "renderer/lines/occlusion_layers.h"
 #include "renderer/lines/stroke_textures.h"
 #include "renderer/lighting/lighting_state.h"
 #include "renderer/palette/gpu_palette.h"
@@ -60,6 +61,11 @@ struct LineStyle {
   const GpuPalette* palette = nullptr;
   MatchMode match = MatchMode::Intensity;
   bool tonedNow() const { return toneColour && lighting && palette; }
+  // Hidden parts drawn only where at most `occlusion` surfaces lie in front (0: all), read from
+  // the layers the feature peeled for this level (null: all drawn).
+  int occlusion = 0;
+  const OcclusionLayers* layers = nullptr;
+  bool limitsOcclusion() const { return hidden && occlusion > 0 && layers; }
   // A set selecting materials: the materials it takes, by index into the mesh's, as bits
   // (resolve() fills them from the set's names); lines on no such face are not drawn.
   const std::vector<std::string>* materialNames = nullptr;

@@ -72,6 +72,7 @@ struct SourceOf {
     if (m.output == MeshOutput::Blend) s.defines.push_back("OUTPUT_BLEND");
     if (m.deferTurn) s.defines.push_back("DEFER_TURN");
     if (m.toneEdges) s.defines.push_back("TONE_EDGES");
+    if (m.peel) s.defines.push_back("PEEL_BEHIND");
     if (m.shading == MeshShading::Mask && (m.stroke == StrokeSource::Field || m.stroke == StrokeSource::Light))
       s.defines.push_back("MASK_STROKE_ANGLE");
     if (m.shading == MeshShading::Mask && m.palette && m.palette->pattern == PatternMapping::Object)
@@ -123,6 +124,7 @@ struct SourceOf {
     if (l.byMaterial) s.defines.push_back("BY_MATERIAL");
     if (l.textured) s.defines.push_back("TEXTURED");
     if (l.byCurvature) s.defines.push_back("BY_CURVATURE");
+    if (l.occlusionLimit) s.defines.push_back("OCCLUSION_LIMIT");
     if (l.lighting && l.palette) {
       s.defines.push_back("TONE_COLOUR");
       for (auto& d : l.lighting->glslDefines()) s.defines.push_back(d);

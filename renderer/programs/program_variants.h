@@ -97,6 +97,9 @@ struct MeshProgram {
   // The pixel and vertex shadings' colour: tone edges anti-aliased by matching at four points
   // of each pixel (mesh.frag's TONE_EDGES; RenderSettings::aa).
   bool toneEdges = false;
+  // Mask shading: fragments at or in front of the layer before are discarded (depth peeling for
+  // the hidden lines' occlusion levels, lines/occlusion_layers.h).
+  bool peel = false;
 };
 
 // fullscreen.vert + quad.frag: the stencil path's quads and every path's background.
@@ -126,6 +129,7 @@ struct LineProgram {
   bool byMaterial = false;  // only lines on faces of the materials a set takes (materials=NAME,...)
   bool textured = false;    // a coverage texture stretched along each stroke (texture=brush|FILE)
   bool byCurvature = false; // wider where the surface curves more (curvature=GAIN)
+  bool occlusionLimit = false;  // hidden parts drawn only up to an occlusion level (occlusion=LEVEL)
   // colour=tone: lit with these lighting features, matched with this palette.
   std::optional<LightingFeatures> lighting = std::nullopt;
   std::optional<PaletteVariant> palette = std::nullopt;

@@ -161,6 +161,11 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
     } else if (key == "curvature") {
       if (!parseNumber(value, set.curvature) || std::fabs(set.curvature) > LineSet::kMaxCurvatureGain)
         return why = "curvature must be a number in -4..4 (how much wider where the surface curves more; 0: off)", false;
+    } else if (key == "occlusion") {
+      float level = 0.0f;
+      if (!parseNumber(value, level) || level != std::floor(level) || level < 0.0f || level > float(LineSet::kMaxOcclusion))
+        return why = "occlusion must be 0..3: the most surfaces in front of a hidden part that is still drawn (0: every one)", false;
+      set.occlusion = int(level);
     } else if (key == "texture") {
       if (value.empty() || value.size() > 4096) return why = "texture must be brush or an image file's path (without blanks)", false;
       set.texture = value;
@@ -175,7 +180,7 @@ bool parseLineSet(const std::string& text, LineSet& set, std::string& why) {
       if (value != "on" && value != "off") return why = key + " must be on or off", false;
       (key == "falloff" ? set.falloff : set.sketchy) = value == "on";
     } else {
-      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, texture, curvature, falloff, sketchy, objects, materials)", false;
+      return why = "unknown key '" + key + "' (visibility, width, colour, dash, taper, texture, curvature, occlusion, falloff, sketchy, objects, materials)", false;
     }
   }
   return true;
@@ -267,6 +272,7 @@ std::string formatLineSets(const std::vector<LineSet>& sets) {
     if (s.taper > 0.0f) out += " taper=" + formatFloat(s.taper);
     if (!s.texture.empty()) out += " texture=" + s.texture;
     if (s.curvature != 0.0f) out += " curvature=" + formatFloat(s.curvature);
+    if (s.occlusion > 0) out += " occlusion=" + std::to_string(s.occlusion);
     if (s.falloff) out += " falloff=on";
     if (s.sketchy) out += " sketchy=on";
     for (std::size_t i = 0; i < s.objects.size(); ++i) out += (i ? "," : " objects=") + s.objects[i];

@@ -54,14 +54,20 @@ struct LineSet {
   // Width x (the surface's curvature / the mesh's median)^curvature, within 1/4..4: positive
   // draws tight bends and thin parts heavier, negative lighter; 0: off.
   float curvature = 0.0f;
+  // Hidden parts drawn only where at most this many surfaces lie in front of them (Blender Line
+  // Art's occlusion level; every surface counts, so a closed part's far side is at level 1 and
+  // whatever it encloses at 2 or more); 0: every hidden part. Each level costs one depth-only
+  // pass of the scene in frames that draw the set (lines/occlusion_layers.h).
+  int occlusion = 0;
   bool takesMaterial(const std::string& name) const;
   static constexpr float kMinWidth = 0.1f, kMaxWidth = 64.0f, kMaxDash = 1000.0f, kMaxTaper = 1000.0f, kMaxCurvatureGain = 4.0f;
+  static constexpr int kMaxOcclusion = 3;
   bool has(int kind) const { return (kinds >> kind) & 1u; }
   // Whether it draws on the object named `object` (null: the scene's intersection lines).
   bool appliesTo(const std::string* object) const;
 };
 // Sets, one per line (or separated by ';'): `KINDS [visibility=visible|hidden|both] [width=W]
-// [colour=R,G,B|tone] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [curvature=GAIN] [falloff=on|off] [sketchy=on|off]
+// [colour=R,G,B|tone] [dash=ON,OFF] [taper=PIXELS] [texture=brush|FILE] [curvature=GAIN] [occlusion=LEVEL] [falloff=on|off] [sketchy=on|off]
 // [objects=NAME,...] [materials=NAME,...]`, or `none`. On failure `why`
 // says which set and what is wrong, and `sets` is unchanged.
 bool parseLineSets(const std::string& text, std::vector<LineSet>& sets, std::string* why);

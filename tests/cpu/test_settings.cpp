@@ -189,12 +189,19 @@ TEST(SettingsTable, LineSetsAreAListOneItemPerLine) {
            {"crease materials=", "set 1: materials must name at least one material"},
            {"crease texture=", "set 1: texture must be brush or an image file"},
            {"crease curvature=5", "set 1: curvature must be"},
+           {"crease visibility=hidden occlusion=1.5", "set 1: occlusion must be 0..3"},
+           {"crease visibility=hidden occlusion=4", "set 1: occlusion must be 0..3"},
+           {"crease visibility=hidden occlusion=nan", "set 1: occlusion must be 0..3"},
            {"crease shade=on", "set 1: unknown key 'shade'"},
            {";", "no set"}}) {
     EXPECT_FALSE(parseLineSets(bad, sets, &why)) << bad;
     EXPECT_NE(why.find(reason), std::string::npos) << bad << ": " << why;
     EXPECT_EQ(sets.size(), 2u) << "a bad list changed the sets";
   }
+  std::vector<LineSet> limited;
+  ASSERT_TRUE(parseLineSets("silhouette visibility=hidden occlusion=2", limited, &why)) << why;
+  EXPECT_EQ(limited[0].occlusion, 2);
+  EXPECT_EQ(formatLineSets(limited), "silhouette visibility=hidden width=2 occlusion=2");
   ASSERT_TRUE(parseLineSets("none", sets, &why));
   EXPECT_TRUE(sets.empty());
   // Objects by name, with wildcards; a set naming objects leaves the scene's intersections alone.

@@ -22,6 +22,7 @@
 #include "renderer/mesh/mesh_loader.h"
 #include "renderer/settings/choice_names.h"
 #include "support/line_comparison.h"
+#include "support/test_util.h"
 
 namespace npr {
 namespace {
@@ -319,6 +320,43 @@ TEST_F(OutlineFixture, LineSetsDrawTheirKindsAndPartsInTheirOwnStyle) {
   // A set that draws only the hidden parts adds nothing visible: without it, no green at all.
   l.sets.pop_back();
   EXPECT_EQ(count(draw(cube, l), 1), 0);
+}
+
+// Hidden lines limited by occlusion level (occlusion=LEVEL): a box's far edges lie behind one
+// surface (its near side) and stay at level 1; a box inside another is behind the outer box's
+// near side and, for its far edges, its own near side too (level 2).
+TEST_F(OutlineFixture, HiddenLinesStopAtTheirOcclusionLevel) {
+  const Mesh outer = boxMesh(glm::vec3(-0.5f), glm::vec3(0.5f)), inner = boxMesh(glm::vec3(-0.2f), glm::vec3(0.2f));
+  auto green = [&](const std::string& sets, bool nested, const char* picture = nullptr) {
+    LineSettings l;
+    std::string why;
+    EXPECT_TRUE(parseLineSets(sets, l.sets, &why)) << why;
+    r->scene().setOnly(&outer);
+    if (nested) (void)r->scene().add(inner, glm::mat4(1.0f));
+    RenderSettings s;
+    s.lines = l;
+    const ImageRGBA8 img = test::renderImage(*r, test::testCamera(1.0f), s, kSize, kSize);
+    if (picture) {
+      EXPECT_TRUE(writeImage(test::outputPath(picture), img));
+    }
+    int n = 0;
+    for (std::size_t i = 0; i < img.pixels.size(); i += 4) n += img.pixels[i + 1] > 150 && img.pixels[i] < 110 && img.pixels[i + 2] < 110;
+    return n;
+  };
+  const std::string hidden = "silhouette,crease visibility=hidden width=2 colour=0,1,0";
+  const int aloneAll = green(hidden, false), aloneLevel1 = green(hidden + " occlusion=1", false);
+  const int nestedAll = green(hidden, true, "occlusion-all.png"), nested1 = green(hidden + " occlusion=1", true, "occlusion-1.png"),
+            nested2 = green(hidden + " occlusion=2", true, "occlusion-2.png");
+  std::printf("hidden line pixels: one box %d (all), %d (level 1); box in a box %d (all), %d (level 1), %d (level 2)\n", aloneAll, aloneLevel1,
+              nestedAll, nested1, nested2);
+  EXPECT_GT(aloneAll, 100);
+  // One box: every hidden edge is behind its near side only.
+  EXPECT_GE(aloneLevel1, aloneAll * 95 / 100);
+  // Box in a box: level 1 leaves out the inner box's far edges (and what the inner box hides of
+  // the outer's), level 2 brings back more, and all of them more still.
+  EXPECT_LT(nested1, nestedAll * 90 / 100);
+  EXPECT_GT(nested2, nested1 + 20);
+  EXPECT_GE(nestedAll, nested2);
 }
 
 // A roof: a ridge along x (64 edges of about 4 pixels here) between two slopes at right angles,

@@ -2,6 +2,7 @@
 // charcoal rim from back faces (lines/hardware_outline_pass.h), image-space edges from the
 // frame's depth and normals (lines/image_edges_pass.h), each model's object-space feature
 // lines (lines/line_pass.h), and the scene's intersection lines (lines/intersection_lines.h).
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -11,6 +12,7 @@
 #include "renderer/lines/image_edges_pass.h"
 #include "renderer/scene/scene_lines.h"
 #include "renderer/lines/line_pass.h"
+#include "renderer/lines/occlusion_layers.h"
 #include "renderer/lines/stroke_textures.h"
 
 namespace npr {
@@ -70,6 +72,12 @@ class FeatureLinesFeature final : public Feature {
   Status drawOver(FrameView& f) override {
     const LineSettings& ls = f.settings.lines;
     (void)follow(f);
+    // The surfaces' layers, once, as deep as the sets that limit hidden parts' occlusion ask.
+    int levels = 0;
+    for (const LineSet& set : ls.sets)
+      if (set.visibility != LineSet::Visibility::Visible) levels = std::max(levels, set.occlusion);
+    if (levels > 0)
+      if (Status st = layers_.build(levels, f.scene.placed(f.camera), f.scene.bounds().w, f.viewport, f.programs, f.stats); !st) return st;
     // The base style, then each set in order, each on every model before the next: a later set
     // lies over an earlier one on every object, as a later layer does.
     Status result = okStatus();
@@ -78,6 +86,7 @@ class FeatureLinesFeature final : public Feature {
         if (!result) return;
         if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name())) {
           result = prepareStyle(*style, *textures_, f);
+          if (levels > 0) style->layers = &layers_;
           if (result) result = m.lines().drawStyle(*style, m.placed(f.camera), f.viewport, f.programs, f.stats);
         }
       });
@@ -86,6 +95,7 @@ class FeatureLinesFeature final : public Feature {
 
  private:
   std::shared_ptr<StrokeTextures> textures_;
+  OcclusionLayers layers_;
 };
 
 class IntersectionLinesFeature final : public Feature {
