@@ -57,13 +57,10 @@ bool taken(uint m) { return m < 256u && (uMaterialMask[m >> 5] & (1u << (m & 31u
 // surfaces would put in front of it, and the fragment stage leaves out the half beyond.
 uniform sampler2D uOcclusionLimit;  // window depth of the limit layer over the viewport (1: none)
 uniform ivec2 uOcclusionSize;       // the viewport's size
-uniform vec3 uDepthMap;             // P[2][2], P[3][2], 1 perspective or 0 orthographic
+uniform vec3 uDepthMap;             // view_distance.glsl's map for this camera
 uniform float uOcclusionTolerance;  // eye units: a line on the limit surface itself is not behind it
 out float vBeyondLimit;
-float viewDistance(float windowDepth) {
-  float ndc = 2.0 * windowDepth - 1.0;
-  return uDepthMap.z > 0.5 ? uDepthMap.y / (ndc + uDepthMap.x) : (uDepthMap.y - ndc) / uDepthMap.x;
-}
+#include "view_distance.glsl"
 // Whether the point at clip position `p` (pixel `s` from the viewport's centre) lies behind the
 // limit layer. The farthest of the layer within a pixel: an edge is where the faces meeting
 // there are farthest, and a pixel's centre beside it falls on them, nearer by their slope.
@@ -73,7 +70,7 @@ float beyondLimit(vec4 p, vec2 s) {
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) limit = max(limit, texelFetch(uOcclusionLimit, clamp(at + ivec2(dx, dy), ivec2(0), uOcclusionSize - 1), 0).r);
   if (limit >= 1.0) return 0.0;
-  return viewDistance(0.5 * p.z / p.w + 0.5) > viewDistance(limit) + uOcclusionTolerance ? 1.0 : 0.0;
+  return viewDistance(0.5 * p.z / p.w + 0.5, uDepthMap) > viewDistance(limit, uDepthMap) + uOcclusionTolerance ? 1.0 : 0.0;
 }
 #endif
 out vec3 vColour;

@@ -132,18 +132,15 @@ vec3 toneEdgeColour(vec3 lit) {
 
 #ifdef PEEL_BEHIND
 uniform sampler2D uPeelFront;  // window depth of the layer in front, texel for pixel
-uniform vec3 uPeelDepthMap;    // P[2][2], P[3][2], 1 perspective or 0 orthographic
+uniform vec3 uPeelDepthMap;    // view_distance.glsl's map for this camera
 uniform float uPeelTolerance;  // eye units: a surface this near the layer is the layer itself
-float peelDistance(float windowDepth) {
-  float ndc = 2.0 * windowDepth - 1.0;
-  return uPeelDepthMap.z > 0.5 ? uPeelDepthMap.y / (ndc + uPeelDepthMap.x) : (uPeelDepthMap.y - ndc) / uPeelDepthMap.x;
-}
+#include "view_distance.glsl"
 #endif
 
 void main() {
 #ifdef PEEL_BEHIND
   float layer = texelFetch(uPeelFront, ivec2(gl_FragCoord.xy), 0).r;
-  if (layer >= 1.0 || peelDistance(gl_FragCoord.z) <= peelDistance(layer) + uPeelTolerance) discard;
+  if (layer >= 1.0 || viewDistance(gl_FragCoord.z, uPeelDepthMap) <= viewDistance(layer, uPeelDepthMap) + uPeelTolerance) discard;
 #endif
 #if defined(ALPHA_COVERAGE) && defined(MATERIAL_MAPS)
   if (!covered(vMaterial, vTexcoord)) discard;

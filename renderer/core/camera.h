@@ -14,6 +14,12 @@ struct CameraMatrices {
   glm::mat4 projection{1.0f};
 };
 
+// What shaders/view_distance.glsl needs to turn `projection`'s window depths into distances
+// along the view axis: P[2][2], P[3][2], and 1 for perspective or 0 for orthographic.
+inline glm::vec3 depthDistanceMap(const glm::mat4& projection) {
+  return {projection[2][2], projection[3][2], projection[3][3] == 0.0f ? 1.0f : 0.0f};
+}
+
 class OrbitCamera {
  public:
   static constexpr float kMaxPitch = 89.5f;  // degrees: the view direction never reaches the up axis

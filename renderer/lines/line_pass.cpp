@@ -247,9 +247,7 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
       gl::bindTexture(kOcclusionLimitUnit, GL_TEXTURE_2D, style.layers->limit(style.occlusion));
       p.set("uOcclusionLimit", gl::unitIndex(kOcclusionLimitUnit));
       p.set("uOcclusionSize", glm::ivec2(viewport.z, viewport.w));
-      // Window depth to distance along the view axis: perspective P[3][2] / (ndc + P[2][2]),
-      // orthographic (P[3][2] - ndc) / P[2][2].
-      p.set("uDepthMap", glm::vec3(placed.projection[2][2], placed.projection[3][2], perspective ? 1.0f : 0.0f));
+      p.set("uDepthMap", depthDistanceMap(placed.projection));
       p.set("uOcclusionTolerance", style.layers->tolerance());
     }
     if (variant.lighting) {

@@ -68,7 +68,7 @@ Status OcclusionLayers::build(int levels, const std::vector<PlacedMesh>& meshes,
       if (variant.alphaCoverage) m.materials->bind(p);
       setMeshTransform(p, m.camera);
       p.set("uPeelFront", gl::unitIndex(kPeelUnit));
-      p.set("uPeelDepthMap", glm::vec3(m.camera.projection[2][2], m.camera.projection[3][2], m.camera.projection[3][3] == 0.0f ? 1.0f : 0.0f));
+      p.set("uPeelDepthMap", depthDistanceMap(m.camera.projection));
       p.set("uPeelTolerance", tolerance_);
       m.mesh->drawAll();
       ++stats.drawCalls;
