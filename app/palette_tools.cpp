@@ -1,8 +1,6 @@
 // --make-palette and --palette-sheet (see palette_tools.h).
 #include "app/palette_tools.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -85,15 +83,13 @@ Status writeSheet(HeadlessSession& session, const std::string& paletteFile, cons
   const int columns = std::min(n, kColumns), rows = (n + kColumns - 1) / kColumns;
   const int width = kSphere + kGap + columns * (kTile + kGap) + kGap;
   const int height = kTitle + std::max(kSphere, rows * (kTile + kSwatch + kLabel + kGap)) + kGap;
-  OIIO::ImageBuf sheet(OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::UINT8));
-  const float white[4] = {1, 1, 1, 1};
-  OIIO::ImageBufAlgo::fill(sheet, white);
+  ImageRGBA8 sheet = blankSheet(width, height);
   const PaletteAnalysis a = analysePalette(*p);
   char title[256];
   std::snprintf(title, sizeof title, "%s: %d levels, tones %.2f to %.2f, steps within %.1f%% of even", p->name.c_str(), n,
                 a.minIntensity / 3.0f, a.maxIntensity / 3.0f, 100.0f * a.spacingError);
   drawText(sheet, kGap, kTitle - 6, title, 16, fontMissing);
-  OIIO::ImageBufAlgo::paste(sheet, 0, kTitle, 0, 0, toBuf(*sphere));
+  paste(sheet, 0, kTitle, *sphere);
   const ImageRGBA8* bg = p->backgroundImage ? &*p->backgroundImage : nullptr;
   for (int i = 0; i < n; ++i) {
     const PaletteEntry& e = p->entries[size_t(i)];
@@ -106,14 +102,14 @@ Status writeSheet(HeadlessSession& session, const std::string& paletteFile, cons
         for (int k = 0; k < 4; ++k)
           tile.pixels[(size_t(ty) * kTile + size_t(tx)) * 4 + size_t(k)] =
               shown.pixels[(size_t(ty % shown.height) * size_t(shown.width) + size_t(tx % shown.width)) * 4 + size_t(k)];
-    OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, toBuf(tile));
-    const float swatch[4] = {e.average.r, e.average.g, e.average.b, 1.0f};
-    OIIO::ImageBufAlgo::fill(sheet, swatch, OIIO::ROI(x, x + kTile, y + kTile, y + kTile + kSwatch, 0, 1, 0, 4));
+    paste(sheet, x, y, tile);
+    const float swatch[3] = {e.average.r, e.average.g, e.average.b};
+    fillRect(sheet, x, y + kTile, kTile, kSwatch, swatch);
     char label[32];
     std::snprintf(label, sizeof label, "%d: %.3f", i, e.intensity / 3.0f);
     drawText(sheet, x, y + kTile + kSwatch + kLabel - 4, label, 13, fontMissing);
   }
-  if (Status s = writeImage(out.string(), fromBuf(sheet)); !s) return s;
+  if (Status s = writeImage(out.string(), sheet); !s) return s;
   tellUser("wrote " + out.string());
   return okStatus();
 }

@@ -1,7 +1,6 @@
 // The style sheet (see style_sheet.h).
 #include "app/headless/style_sheet.h"
 
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
 #include <cmath>
@@ -61,9 +60,7 @@ int runStyleSheet(const Options& o) {
                          std::to_string(columns * 32) + "x" + std::to_string(rows * (32 + kLabel)));
   auto session = openHeadlessSession(true, o.gpu);
   if (!session) return reportFailure(session.error());
-  OIIO::ImageBuf sheet(OIIO::ImageSpec(columns * cell.x, rows * (cell.y + kLabel), 4, OIIO::TypeDesc::UINT8));
-  const float white[4] = {1, 1, 1, 1};
-  OIIO::ImageBufAlgo::fill(sheet, white);
+  ImageRGBA8 sheet = blankSheet(columns * cell.x, rows * (cell.y + kLabel));
   bool fontMissing = false;
   ProgressLine progress("style sheet of " + std::to_string(n) + " styles");
   for (int i = 0; i < n; ++i) {
@@ -71,14 +68,14 @@ int runStyleSheet(const Options& o) {
     Result<ImageRGBA8> image = renderCell(o, file, cell, *session->renderer);
     if (!image) return reportFailure("--style-sheet: " + file + ": " + image.error());
     const int x = (i % columns) * cell.x, y = (i / columns) * (cell.y + kLabel);
-    OIIO::ImageBufAlgo::paste(sheet, x, y, 0, 0, toBuf(*image));
+    paste(sheet, x, y, *image);
     Result<Style> style = loadStyle(file);
     const std::string name = std::filesystem::path(file).stem().string();
     drawText(sheet, x + 6, y + cell.y + kLabel - 6, style && !style->name.empty() ? style->name + " (" + name + ")" : name, 15, fontMissing);
     progress.update(double(i + 1) / n);
   }
   if (fontMissing) std::fprintf(stderr, "npr-viewer: no DejaVu Sans font found: the style sheet's cells are not labelled\n");
-  if (Status s = writeImage(o.styleSheet, fromBuf(sheet)); !s) return reportFailure(s.error());
+  if (Status s = writeImage(o.styleSheet, sheet); !s) return reportFailure(s.error());
   if (const int errors = gl::checkErrors("style sheet")) return reportFailure(std::to_string(errors) + " OpenGL error(s) during the style sheet");
   tellUser("style sheet of " + std::to_string(n) + " styles written to " + o.styleSheet);
   return 0;

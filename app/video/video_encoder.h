@@ -40,22 +40,25 @@ class VideoEncoder {
  public:
   // Opens the codec and the partial file, so that a missing codec or an unwritable folder is
   // said before any frame is rendered. MP4 and WebM only (GIFs go through AnimationWriter).
+  // The encoder lives in the FFmpeg module, loaded here on first use.
   [[nodiscard]] static Result<std::unique_ptr<VideoEncoder>> open(const VideoSpec& spec);
   // An unfinished encoder stops its thread and removes the partial file.
-  ~VideoEncoder();
+  virtual ~VideoEncoder() = default;
+  VideoEncoder() = default;
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // Queues the next frame (width x height, top row first); waits while the queue is full. An
   // error the encoding thread met is returned here, or by finish().
-  [[nodiscard]] Status append(ImageRGBA8 frame);
+  [[nodiscard]] virtual Status append(ImageRGBA8 frame) = 0;
   // Encodes what is queued, writes the file's index and renames it to its final name.
-  [[nodiscard]] Status finish();
-  struct State;
+  [[nodiscard]] virtual Status finish() = 0;
+};
 
- private:
-  explicit VideoEncoder(std::unique_ptr<State> state);
-  std::unique_ptr<State> state_;
+// The FFmpeg module's table (ffmpeg-video.so): an H.264 (`mp4`) or VP9 encoder writing to
+// `partial`; `tell` passes FFmpeg's warnings to the user.
+struct VideoEncoderModule {
+  Result<std::unique_ptr<VideoEncoder>> (*open)(const VideoSpec& spec, bool mp4, const std::string& partial, void (*tell)(const std::string&));
 };
 
 }  // namespace npr

@@ -1,23 +1,43 @@
-// Image reading, resizing and writing through OpenImageIO (see image_io.h).
+// Image reading, resizing and writing (see image_io.h). PNG and JPEG files of up to
+// kWholeDecodePixels are decoded here with stb_image (Debian's libstb), PNGs written with zlib
+// (png_encoder.h): that is every palette, texture and screenshot of a usual run, with no
+// OpenImageIO loaded. Other formats, larger images (read a band at a time), posters and GIFs go
+// to the OpenImageIO module, loaded on first use (image_codec_module.h).
 #include "renderer/core/image_io.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <stb_image.h>
+#include <stb_image_resize.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cctype>
+#include <cerrno>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <cstring>
 
 #include "renderer/core/colour.h"
+#include "renderer/core/image_codec_module.h"
 #include "renderer/core/input_file.h"
+#include "renderer/core/plugin_module.h"
+#include "renderer/core/png_encoder.h"
 
 namespace npr {
+
+Result<const ImageCodecModule*> imageCodecModule() {
+  Result<const void*> table = loadModuleTable("oiio-images.so", "images in formats other than PNG and JPEG, posters and GIFs");
+  if (!table) return Error{table.error()};
+  return static_cast<const ImageCodecModule*>(*table);
+}
+
 namespace {
+
+// Decoded whole here up to this many pixels (64 MiB as 8-bit RGBA); larger images are read a
+// band at a time through OpenImageIO, so the full-size pixels of a huge image never exist.
+constexpr double kWholeDecodePixels = 4096.0 * 4096.0;
 
 // A PNG's chunks must fit in the file: libpng allocates a chunk's declared length before it
 // reads it, so one bad length field in a file of a few hundred bytes cost 1.8 GB (fuzz_image).
@@ -48,29 +68,6 @@ Status checkPngChunks(const std::string& path, std::uintmax_t fileSize) {
   return okStatus();
 }
 
-// Opens the image after the input-file checks; returns the reader and its spec checked.
-Result<std::unique_ptr<OIIO::ImageInput>> openImage(const std::string& path) {
-  Result<std::uintmax_t> file = checkInputFile(path, InputKind::Image);
-  if (!file) return Error{file.error()};
-  if (Status png = checkPngChunks(path, *file); !png) return Error{png.error()};
-  // Keep straight (unassociated) alpha: OpenImageIO would otherwise premultiply PNG and TGA
-  // colours on read, and the compositing below expects straight alpha.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) {
-    std::string why = OIIO::geterror();
-    if (why.empty()) why = "unsupported or corrupt image";
-    return Error{path + ": cannot read image: " + why};
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide)
-    return Error{path + ": image size " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                 " is outside 1.." + std::to_string(kMaxImageSide)};
-  if (spec.nchannels < 1 || spec.nchannels > 64) return Error{path + ": image has " + std::to_string(spec.nchannels) + " channels"};
-  return in;
-}
-
 // Area weights of source columns for each output column: output x covers source
 // [x * scale, (x + 1) * scale).
 struct Footprint {
@@ -94,23 +91,111 @@ Footprint footprint(int srcSize, int outSize) {
   return f;
 }
 
+
+bool isPng(const std::string& bytes) { return bytes.size() >= 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0; }
+bool isJpeg(const std::string& bytes) { return bytes.size() >= 3 && bytes.compare(0, 3, "\xff\xd8\xff") == 0; }
+
+// A PNG or JPEG decoded whole by stb_image, handed out as rows like OpenImageIO's.
+class StbRows final : public ImageRowReader {
+ public:
+  StbRows(int w, int h, int n, bool sixteen, void* pixels) : pixels_(pixels, &stbi_image_free), sixteen_(sixteen) {
+    width = w;
+    height = h;
+    channels = n;
+    alpha = n == 2 ? 1 : (n == 4 ? 3 : -1);
+  }
+  Status readRows(int y0, int y1, float* out) override {
+    const size_t first = static_cast<size_t>(y0) * width * channels, count = static_cast<size_t>(y1 - y0) * width * channels;
+    if (sixteen_) {
+      const auto* p = static_cast<const std::uint16_t*>(pixels_.get()) + first;
+      for (size_t i = 0; i < count; ++i) out[i] = p[i] / 65535.0f;
+    } else {
+      const auto* p = static_cast<const std::uint8_t*>(pixels_.get()) + first;
+      for (size_t i = 0; i < count; ++i) out[i] = p[i] / 255.0f;
+    }
+    return okStatus();
+  }
+
+ private:
+  std::unique_ptr<void, void (*)(void*)> pixels_;
+  bool sixteen_;
+};
+
+Status checkSize(const std::string& path, int w, int h) {
+  if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+    return Error{path + ": image size " + std::to_string(w) + "x" + std::to_string(h) + " is outside 1.." + std::to_string(kMaxImageSide)};
+  return okStatus();
+}
+
+// The image's header through stb_image when it is a PNG or JPEG small enough to decode whole;
+// nothing (and no error) when OpenImageIO should read it instead.
+struct StbHeader {
+  int width = 0, height = 0, channels = 0;
+  bool sixteen = false;
+};
+std::optional<StbHeader> stbHeader(const std::string& bytes) {
+  if (!isPng(bytes) && !isJpeg(bytes)) return std::nullopt;
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(bytes.size());
+  StbHeader h;
+  if (!stbi_info_from_memory(data, size, &h.width, &h.height, &h.channels)) return std::nullopt;
+  if (double(h.width) * h.height > kWholeDecodePixels) return std::nullopt;
+  h.sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
+  return h;
+}
+
+// Opens the image after the input-file checks: here when stb_image decodes it, else through
+// the OpenImageIO module (formats stb does not read, huge images, and the PNG and JPEG
+// variants it refuses, such as CMYK or arithmetic-coded JPEG).
+Result<std::unique_ptr<ImageRowReader>> openImage(const std::string& path, bool headerOnly) {
+  Result<std::string> bytes = readInputFile(path, InputKind::Image);
+  if (!bytes) return Error{bytes.error()};
+  if (isPng(*bytes))
+    if (Status png = checkPngChunks(path, bytes->size()); !png) return Error{png.error()};
+  if (std::optional<StbHeader> h = stbHeader(*bytes)) {
+    if (Status s = checkSize(path, h->width, h->height); !s) return Error{s.error()};
+    if (headerOnly) return std::unique_ptr<ImageRowReader>(std::make_unique<StbRows>(h->width, h->height, h->channels, h->sixteen, nullptr));
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
+    const int size = static_cast<int>(bytes->size());
+    int w = 0, ht = 0, n = 0;
+    void* pixels = h->sixteen ? static_cast<void*>(stbi_load_16_from_memory(data, size, &w, &ht, &n, 0))
+                              : static_cast<void*>(stbi_load_from_memory(data, size, &w, &ht, &n, 0));
+    if (pixels && w == h->width && ht == h->height && n >= 1 && n <= 4)
+      return std::unique_ptr<ImageRowReader>(std::make_unique<StbRows>(w, ht, n, h->sixteen, pixels));
+    stbi_image_free(pixels);
+  }
+  Result<const ImageCodecModule*> oiio = imageCodecModule();
+  if (!oiio) return Error{path + ": " + oiio.error()};
+  return (*oiio)->open(path);
+}
+
+std::string lowerExtension(const std::string& path) {
+  const size_t dot = path.find_last_of("./");
+  if (dot == std::string::npos || path[dot] != '.') return "";
+  std::string e = path.substr(dot + 1);
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+Result<std::vector<std::uint8_t>> pngBytes(const ImageRGBA8& image) { return encodePngRgba8(image); }
+
 }  // namespace
 
 Result<ImageSize> readImageSize(const std::string& path) {
-  Result<std::unique_ptr<OIIO::ImageInput>> in = openImage(path);
+  Result<std::unique_ptr<ImageRowReader>> in = openImage(path, true);
   if (!in) return Error{in.error()};
-  return ImageSize{(*in)->spec().width, (*in)->spec().height};
+  return ImageSize{(*in)->width, (*in)->height};
 }
 
 Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit) {
-  Result<std::unique_ptr<OIIO::ImageInput>> opened = openImage(path);
+  Result<std::unique_ptr<ImageRowReader>> opened = openImage(path, false);
   if (!opened) return Error{opened.error()};
-  OIIO::ImageInput& in = **opened;
-  const OIIO::ImageSpec spec = in.spec();
-  const int nc = spec.nchannels;
-  const int alpha = spec.alpha_channel >= 0 && spec.alpha_channel < nc ? spec.alpha_channel : (nc == 2 ? 1 : (nc >= 4 ? 3 : -1));
-  const bool isFloat = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
-                       spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+  ImageRowReader& in = **opened;
+  struct {
+    int width, height;
+  } const spec{in.width, in.height};
+  const int nc = in.channels, alpha = in.alpha;
+  const bool isFloat = in.isFloat;
   const int outW = std::max(1, std::min(spec.width, fit.width)), outH = std::max(1, std::min(spec.height, fit.height));
   const bool reduce = outW != spec.width || outH != spec.height;
   ImageRGBA8 img{outW, outH, std::vector<std::uint8_t>(static_cast<size_t>(outW) * outH * 4)};
@@ -138,22 +223,9 @@ Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit) {
   const int rowsPerChunk = 64;
   std::vector<float> buf(static_cast<size_t>(spec.width) * rowsPerChunk * nc);
   std::vector<float> lin(reduce ? static_cast<size_t>(spec.width) * 4 : 0);
-  // Rows are read in the file's own format into a buffer kept across chunks and converted
-  // here: asked for floats, OpenImageIO allocates a conversion buffer on every call, which
-  // under the sanitizers (fresh pages, poisoned and quarantined) cost seconds per palette.
-  // Files whose channels differ in format are left to its conversion.
-  const bool native = spec.channelformats.empty();
-  std::vector<unsigned char> raw(native ? spec.scanline_bytes(true) * rowsPerChunk : 0);
   for (int y0 = 0; y0 < spec.height; y0 += rowsPerChunk) {
     const int y1 = std::min(spec.height, y0 + rowsPerChunk);
-    const bool read = native ? in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::UNKNOWN, raw.data()) &&
-                                   OIIO::convert_pixel_values(spec.format, raw.data(), OIIO::TypeDesc::FLOAT, buf.data(),
-                                                              (y1 - y0) * spec.width * nc)
-                             : in.read_scanlines(0, 0, y0 + spec.y, y1 + spec.y, 0, 0, nc, OIIO::TypeDesc::FLOAT, buf.data());
-    if (!read) {
-      std::string why = in.geterror();
-      return Error{path + ": image data could not be read (truncated or corrupt): " + (why.empty() ? "read failed" : why)};
-    }
+    if (Status read = in.readRows(y0, y1, buf.data()); !read) return Error{read.error()};
     for (int y = y0; y < y1; ++y) {
       for (int x = 0; x < spec.width; ++x) {
         const float* s = &buf[(static_cast<size_t>(y - y0) * spec.width + x) * nc];
@@ -199,130 +271,70 @@ Result<ImageRGBA8> loadImage(const std::string& path, ImageSize fit) {
 }
 
 Result<ImageRGBA8> resizeImage(const ImageRGBA8& img, int w, int h) {
-  OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
-  OIIO::ImageBuf src(spec, const_cast<std::uint8_t*>(img.pixels.data()));
-  OIIO::ImageBuf dst = OIIO::ImageBufAlgo::resize(src, "", 0.0f, OIIO::ROI(0, w, 0, h, 0, 1, 0, 4));
-  if (dst.has_error()) return Error{"resize failed: " + dst.geterror()};
+  if (w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide || img.width < 1 || img.height < 1)
+    return Error{"resize to " + std::to_string(w) + "x" + std::to_string(h) + " refused"};
   ImageRGBA8 out{w, h, std::vector<std::uint8_t>(static_cast<size_t>(w) * h * 4)};
-  dst.get_pixels(OIIO::ROI(0, w, 0, h, 0, 1, 0, 4), OIIO::TypeDesc::UINT8, out.pixels.data());
+  // Filtered in linear light with straight alpha weighting colours (stb_image_resize).
+  if (!stbir_resize_uint8_srgb(img.pixels.data(), img.width, img.height, 0, out.pixels.data(), w, h, 0, 4, 3, 0))
+    return Error{"resize failed"};
   return out;
 }
 
-
 Status writeImage(const std::string& path, const ImageRGBA8& image) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:UnassociatedAlpha", 1);  // our pixels carry straight alpha
-  // zlib level 3, not OpenImageIO's 6: a 1280x720 frame is written 65 ms sooner (563 -> 500 ms
-  // file to PNG, the bunny headless), 8% larger.
-  spec.attribute("png:compressionLevel", 3);
-  if (!out->open(path, spec)) return Error{path + ": cannot open for writing: " + out->geterror()};
-  if (!out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data())) return Error{path + ": write failed: " + out->geterror()};
-  if (!out->close()) return Error{path + ": close failed: " + out->geterror()};
+  if (lowerExtension(path) != "png") {
+    Result<const ImageCodecModule*> oiio = imageCodecModule();
+    if (!oiio) return Error{path + ": " + oiio.error()};
+    return (*oiio)->write(path, image);
+  }
+  Result<std::vector<std::uint8_t>> png = pngBytes(image);
+  if (!png) return Error{path + ": " + png.error()};
+  std::ofstream f(path, std::ios::binary | std::ios::trunc);
+  if (!f) return Error{path + ": cannot open for writing: " + std::strerror(errno)};
+  f.write(reinterpret_cast<const char*>(png->data()), static_cast<std::streamsize>(png->size()));
+  f.close();
+  if (!f) return Error{path + ": write failed (disk full?)"};
   return okStatus();
 }
 
-Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) {
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput proxy(bytes);
-  auto out = OIIO::ImageOutput::create("png");
-  if (!out) return Error{"PNG encoder unavailable: " + OIIO::geterror()};
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!out->set_ioproxy(&proxy) || !out->open("memory.png", spec) || !out->write_image(OIIO::TypeDesc::UINT8, image.pixels.data()) ||
-      !out->close())
-    return Error{"PNG encoding failed: " + out->geterror()};
-  return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
-}
+Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) { return pngBytes(image); }
 
 struct StripWriter::State {
-  std::string path;
-  std::unique_ptr<OIIO::ImageOutput> out;
-  int width = 0, height = 0, row = 0;
+  std::unique_ptr<ImageSink> sink;
 };
-
 StripWriter::StripWriter(StripWriter&&) noexcept = default;
 StripWriter& StripWriter::operator=(StripWriter&&) noexcept = default;
-StripWriter::~StripWriter() {
-  if (state_ && state_->out) state_->out->close();
-}
+StripWriter::~StripWriter() = default;
 
 Result<StripWriter> StripWriter::open(const std::string& path, int width, int height) {
+  Result<const ImageCodecModule*> oiio = imageCodecModule();
+  if (!oiio) return Error{path + ": " + oiio.error()};
+  Result<std::unique_ptr<ImageSink>> sink = (*oiio)->openStrips(path, width, height);
+  if (!sink) return Error{sink.error()};
   StripWriter w;
-  w.state_ = std::make_unique<State>();
-  State& s = *w.state_;
-  s.path = path;
-  s.width = width;
-  s.height = height;
-  s.out = OIIO::ImageOutput::create(path);
-  if (!s.out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
-  OIIO::ImageSpec spec(width, height, 4, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  if (!s.out->open(path, spec)) return Error{path + ": cannot open for writing: " + s.out->geterror()};
+  w.state_ = std::make_unique<State>(State{std::move(*sink)});
   return w;
 }
 
-Status StripWriter::append(const ImageRGBA8& strip) {
-  State& s = *state_;
-  if (!s.out || strip.width != s.width || s.row + strip.height > s.height) return Error{s.path + ": a strip that does not fit the image"};
-  if (!s.out->write_scanlines(s.row, s.row + strip.height, 0, OIIO::TypeDesc::UINT8, strip.pixels.data()))
-    return Error{s.path + ": write failed: " + s.out->geterror()};
-  s.row += strip.height;
-  if (s.row == s.height) {
-    const bool closed = s.out->close();
-    s.out.reset();
-    if (!closed) return Error{s.path + ": close failed"};
-  }
-  return okStatus();
-}
+Status StripWriter::append(const ImageRGBA8& strip) { return state_->sink->append(strip); }
 
 struct AnimationWriter::State {
-  std::string path;
-  std::unique_ptr<OIIO::ImageOutput> out;
-  OIIO::ImageSpec spec;
-  int frames = 0, written = 0;
+  std::unique_ptr<ImageSink> sink;
 };
-
 AnimationWriter::AnimationWriter(AnimationWriter&&) noexcept = default;
 AnimationWriter& AnimationWriter::operator=(AnimationWriter&&) noexcept = default;
-AnimationWriter::~AnimationWriter() {
-  if (state_ && state_->out) state_->out->close();
-}
+AnimationWriter::~AnimationWriter() = default;
 
 Result<AnimationWriter> AnimationWriter::open(const std::string& path, int width, int height, int frames, int fps) {
   if (frames < 1 || width < 1 || height < 1) return Error{path + ": an animation needs at least one frame of at least one pixel"};
+  Result<const ImageCodecModule*> oiio = imageCodecModule();
+  if (!oiio) return Error{path + ": " + oiio.error()};
+  Result<std::unique_ptr<ImageSink>> sink = (*oiio)->openAnimation(path, width, height, frames, fps);
+  if (!sink) return Error{sink.error()};
   AnimationWriter w;
-  w.state_ = std::make_unique<State>();
-  State& s = *w.state_;
-  s.path = path;
-  s.frames = frames;
-  s.out = OIIO::ImageOutput::create(path);
-  if (!s.out) return Error{path + ": cannot write this image format (" + OIIO::geterror() + ")"};
-  if (frames > 1 && !(s.out->supports("multiimage") && s.out->supports("appendsubimage")))
-    return Error{path + ": " + s.out->format_name() + " files hold one image; use .gif for an animation"};
-  s.spec = OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::UINT8);
-  s.spec.attribute("oiio:UnassociatedAlpha", 1);
-  s.spec.attribute("FramesPerSecond", OIIO::TypeRational, std::vector<int>{fps, 1}.data());
-  s.spec.attribute("oiio:LoopCount", 0);  // loop forever
-  const std::vector<OIIO::ImageSpec> specs(static_cast<size_t>(frames), s.spec);
-  if (!s.out->open(path, frames, specs.data())) return Error{path + ": cannot open for writing: " + s.out->geterror()};
+  w.state_ = std::make_unique<State>(State{std::move(*sink)});
   return w;
 }
 
-Status AnimationWriter::append(const ImageRGBA8& frame) {
-  State& s = *state_;
-  if (s.written >= s.frames) return Error{s.path + ": more frames than the animation was opened for"};
-  if (frame.width != s.spec.width || frame.height != s.spec.height) return Error{s.path + ": a frame of another size"};
-  if (s.written > 0 && !s.out->open(s.path, s.spec, OIIO::ImageOutput::AppendSubimage))
-    return Error{s.path + ": cannot add frame " + std::to_string(s.written) + ": " + s.out->geterror()};
-  if (!s.out->write_image(OIIO::TypeDesc::UINT8, frame.pixels.data())) return Error{s.path + ": write failed: " + s.out->geterror()};
-  if (++s.written == s.frames) {
-    const bool closed = s.out->close();
-    if (!closed) return Error{s.path + ": close failed: " + s.out->geterror()};
-    s.out.reset();
-  }
-  return okStatus();
-}
+Status AnimationWriter::append(const ImageRGBA8& frame) { return state_->sink->append(frame); }
 
 }  // namespace npr

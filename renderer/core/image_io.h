@@ -1,6 +1,7 @@
-// Images through OpenImageIO: reading any format it knows as encoded RGBA8 (palette textures),
-// resizing, and writing (screenshots, test diffs, the palette generator) in the format the
-// file's extension names (PNG, TGA, EXR, ...).
+// Images: reading any format OpenImageIO knows as encoded RGBA8 (palette textures), resizing,
+// and writing (screenshots, test diffs, the palette generator) in the format the file's
+// extension names (PNG, TGA, EXR, ...). PNG and JPEG are read and PNG written without
+// OpenImageIO, which is loaded only for the rest (image_io.cpp says why).
 #pragma once
 
 #include <memory>

@@ -1,8 +1,6 @@
 // The palette maker (see palette_maker.h).
 #include "renderer/palette/palette_maker.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -49,41 +47,50 @@ MatchMode ladderMatchMode(Ladder l) {
 
 namespace {
 
-OIIO::ImageBuf toBuf(const ImageRGBA8& img) {
-  OIIO::ImageBuf buf(OIIO::ImageSpec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT));
-  std::vector<float> f(img.pixels.size());
-  for (size_t i = 0; i < f.size(); ++i) f[i] = img.pixels[i] / 255.0f;
-  buf.set_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, f.data());
-  return buf;
+// Steps computed on the encoded values as floats, as an image editor does; alpha comes out
+// opaque (palette images tile over the paper).
+struct Planes {
+  int width = 0, height = 0;
+  std::vector<float> v;  // RGBA, 0..1
+};
+
+Planes toPlanes(const ImageRGBA8& img) {
+  Planes p{img.width, img.height, std::vector<float>(img.pixels.size())};
+  for (size_t i = 0; i < p.v.size(); ++i) p.v[i] = img.pixels[i] / 255.0f;
+  return p;
 }
 
-ImageRGBA8 fromBuf(const OIIO::ImageBuf& buf) {
-  const OIIO::ImageSpec& s = buf.spec();
-  std::vector<float> f(size_t(s.width) * size_t(s.height) * 4);
-  buf.get_pixels(OIIO::ROI(0, s.width, 0, s.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT, f.data());
-  ImageRGBA8 img{s.width, s.height, std::vector<std::uint8_t>(f.size())};
-  for (size_t i = 0; i < f.size(); ++i) img.pixels[i] = toByte(f[i]);
-  for (size_t i = 3; i < f.size(); i += 4) img.pixels[i] = 255;
+ImageRGBA8 toImage(const Planes& p) {
+  ImageRGBA8 img{p.width, p.height, std::vector<std::uint8_t>(p.v.size())};
+  for (size_t i = 0; i < p.v.size(); ++i) img.pixels[i] = toByte(p.v[i]);
+  for (size_t i = 3; i < p.v.size(); i += 4) img.pixels[i] = 255;
   return img;
 }
 
-// A Gaussian blur that wraps around the edges (palette images tile): the image is blurred
-// within a 3 x 3 tiling of itself and the middle cut out.
-Result<OIIO::ImageBuf> wrappedBlur(const OIIO::ImageBuf& src, float width) {
-  const int w = src.spec().width, h = src.spec().height;
-  OIIO::ImageBuf tiled(OIIO::ImageSpec(3 * w, 3 * h, 4, OIIO::TypeDesc::FLOAT));
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i)
-      if (!OIIO::ImageBufAlgo::paste(tiled, i * w, j * h, 0, 0, src)) return Error{"blur: " + tiled.geterror()};
-  const OIIO::ImageBuf kernel = OIIO::ImageBufAlgo::make_kernel("gaussian", width, width);
-  OIIO::ImageBuf blurred = OIIO::ImageBufAlgo::convolve(tiled, kernel);
-  if (blurred.has_error()) return Error{"blur: " + blurred.geterror()};
-  OIIO::ImageBuf out = OIIO::ImageBufAlgo::cut(blurred, OIIO::ROI(w, 2 * w, h, 2 * h, 0, 1, 0, 4));
-  if (out.has_error()) return Error{"blur: " + out.geterror()};
-  return out;
+// A Gaussian blur that wraps around the edges (palette images tile), separable. `width` is
+// the kernel's full width; its weights fall as exp(-8 d^2 / width^2) (sigma = width / 4).
+Planes wrappedBlur(const Planes& src, float width) {
+  const int radius = std::max(1, int(width / 2.0f));
+  std::vector<float> weight(size_t(2 * radius + 1));
+  float sum = 0;
+  for (int d = -radius; d <= radius; ++d) sum += weight[size_t(d + radius)] = std::exp(-8.0f * float(d * d) / (width * width));
+  for (float& w : weight) w /= sum;
+  const int w = src.width, h = src.height;
+  auto pass = [&](const Planes& in, bool horizontal) {
+    Planes out{w, h, std::vector<float>(in.v.size(), 0.0f)};
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int d = -radius; d <= radius; ++d) {
+          const int sx = horizontal ? ((x + d) % w + w) % w : x, sy = horizontal ? y : ((y + d) % h + h) % h;
+          const float k = weight[size_t(d + radius)];
+          for (size_t c = 0; c < 4; ++c) out.v[(size_t(y) * w + x) * 4 + c] += k * in.v[(size_t(sy) * w + sx) * 4 + c];
+        }
+    return out;
+  };
+  return pass(pass(src, true), false);
 }
 
-// Per-pixel steps OpenImageIO has no algorithm for (solarize, posterize, threshold).
+// Per-channel steps (solarize, posterize).
 ImageRGBA8 mapChannels(const ImageRGBA8& src, const std::function<float(float)>& f) {
   ImageRGBA8 out = src;
   for (size_t i = 0; i < out.pixels.size(); i += 4)
@@ -101,25 +108,29 @@ Result<std::vector<ImageRGBA8>> ladderImages(const ImageRGBA8& src, Ladder ladde
   // Strength k of n - 1 for each step; order ladders list the strongest first.
   const int n = levels;
   std::vector<ImageRGBA8> steps;  // by strength
-  const OIIO::ImageBuf base = toBuf(src);
+  const Planes base = toPlanes(src);
   switch (ladder) {
     case Ladder::Blur: {
-      OIIO::ImageBuf cur = base;
+      Planes cur = base;
       steps.push_back(src);
       const float width = std::max(3.0f, float(std::min(src.width, src.height)) / 32.0f);
       for (int k = 1; k < n; ++k) {
-        Result<OIIO::ImageBuf> b = wrappedBlur(cur, width);
-        if (!b) return Error{b.error()};
-        cur = std::move(*b);
-        steps.push_back(fromBuf(cur));
+        cur = wrappedBlur(cur, width);
+        steps.push_back(toImage(cur));
       }
       break;
     }
     case Ladder::Offset:
       for (int k = 0; k < n; ++k) {
-        const OIIO::ImageBuf shifted = OIIO::ImageBufAlgo::circular_shift(base, k * src.width / n, k * src.height / (2 * n));
-        if (shifted.has_error()) return Error{"offset: " + shifted.geterror()};
-        steps.push_back(fromBuf(shifted));
+        // Moved right and down, wrapping round the tile.
+        const int dx = k * src.width / n, dy = k * src.height / (2 * n);
+        ImageRGBA8 shifted = src;
+        for (int y = 0; y < src.height; ++y)
+          for (int x = 0; x < src.width; ++x)
+            std::copy_n(&src.pixels[(size_t(y) * src.width + x) * 4], 4,
+                        &shifted.pixels[(size_t((y + dy) % src.height) * src.width + (x + dx) % src.width) * 4]);
+        for (size_t i = 3; i < shifted.pixels.size(); i += 4) shifted.pixels[i] = 255;
+        steps.push_back(std::move(shifted));
       }
       break;
     case Ladder::Solarize:
@@ -155,17 +166,22 @@ Result<std::vector<ImageRGBA8>> ladderImages(const ImageRGBA8& src, Ladder ladde
     case Ladder::Darken:
       for (int k = 0; k < n; ++k) {
         const float f = 1.0f - 0.85f * float(k) / float(n - 1);
-        const float scale[4] = {f, f, f, 1.0f};
-        const OIIO::ImageBuf d = OIIO::ImageBufAlgo::mul(base, OIIO::cspan<float>(scale, 4));
-        if (d.has_error()) return Error{"darken: " + d.geterror()};
-        steps.push_back(fromBuf(d));
+        Planes d = base;
+        for (size_t i = 0; i < d.v.size(); ++i)
+          if (i % 4 != 3) d.v[i] *= f;
+        steps.push_back(toImage(d));
       }
       break;
     case Ladder::Desaturate:
       for (int k = 0; k < n; ++k) {
-        const OIIO::ImageBuf d = OIIO::ImageBufAlgo::saturate(base, 1.0f - float(k) / float(n - 1));
-        if (d.has_error()) return Error{"desaturate: " + d.geterror()};
-        steps.push_back(fromBuf(d));
+        // Towards the Rec. 709 luma of each texel.
+        const float keep = 1.0f - float(k) / float(n - 1);
+        Planes d = base;
+        for (size_t i = 0; i < d.v.size(); i += 4) {
+          const float luma = 0.2126f * d.v[i] + 0.7152f * d.v[i + 1] + 0.0722f * d.v[i + 2];
+          for (size_t c = 0; c < 3; ++c) d.v[i + c] = luma + keep * (d.v[i + c] - luma);
+        }
+        steps.push_back(toImage(d));
       }
       break;
   }

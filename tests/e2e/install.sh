@@ -61,5 +61,23 @@ if unshare -rm true 2>/dev/null; then
 else
   echo "note: no mount namespace here (unshare -rm refused); the source tree stayed visible, --version showed it unused"
 fi
+# The modules (renderer/core/plugin_module.h): the moved tree loads its own OpenImageIO module for
+# a TGA and its FFmpeg module for a video; the binary alone, with no modules beside it, still
+# writes PNGs, and says which module a TGA needs instead of failing blind.
+for m in oiio-images.so ffmpeg-video.so; do [ -s "$tmp/moved/lib/npr-viewer/$m" ] || { echo "FAIL: the install has no lib/npr-viewer/$m"; fail=1; }; done
+"$viewer" --headless --size 64x48 --screenshot "$tmp/elsewhere/shot.tga" >"$tmp/out" 2>&1 && [ -s "$tmp/elsewhere/shot.tga" ] ||
+  { echo "FAIL: the installed viewer cannot write a TGA through its module:"; cat "$tmp/out"; fail=1; }
+"$viewer" --headless --frames 3 --size 64x48 --video "$tmp/elsewhere/v.webm" >"$tmp/out" 2>&1 && [ -s "$tmp/elsewhere/v.webm" ] ||
+  { echo "FAIL: the installed viewer cannot write a video through its module:"; cat "$tmp/out"; fail=1; }
+mkdir -p "$tmp/alone/bin" && cp "$viewer" "$tmp/alone/bin/" && cd "$tmp/alone" || exit 1
+NPR_DATA_DIR="$data" "$tmp/alone/bin/npr-viewer" --headless --size 64x48 --screenshot alone.png >"$tmp/out" 2>&1 && [ -s alone.png ] ||
+  { echo "FAIL: without its modules the viewer cannot write a PNG:"; cat "$tmp/out"; fail=1; }
+if NPR_DATA_DIR="$data" "$tmp/alone/bin/npr-viewer" --headless --size 64x48 --screenshot alone.tga >"$tmp/out" 2>&1; then
+  echo "FAIL: a TGA was written with no OpenImageIO module"; fail=1
+elif ! grep -q "module oiio-images.so (for .*) is not installed" "$tmp/out"; then
+  echo "FAIL: a TGA without the module does not name the module:"; cat "$tmp/out"; fail=1
+fi
+cd "$tmp/elsewhere" || exit 1
+
 echo "install: $styles styles rendered from the moved tree"
 exit $fail
