@@ -65,10 +65,17 @@ void applyAction(Viewer& v, const KeyAction& a) {
       v.dialog = Viewer::Dialog::Export;
       v.dialogJustOpened = true;
       break;
-    // A palette that fails to load leaves the current one; the bar says why.
-    case Action::SelectPalette: reportIfFailed(s, s.selectPalette(a.param, r)); break;
-    case Action::NextPalette: if (paletteCount) reportIfFailed(s, s.selectPalette((s.paletteIndex + 1) % paletteCount, r)); break;
-    case Action::PreviousPalette: if (paletteCount) reportIfFailed(s, s.selectPalette((s.paletteIndex + paletteCount - 1) % paletteCount, r)); break;
+    // A palette that fails to load leaves the current one; the bar says why. Its images are
+    // decoded whole, on worker threads: their transient memory goes back as a file's does.
+    case Action::SelectPalette:
+    case Action::NextPalette:
+    case Action::PreviousPalette: {
+      const int step = a.action == Action::NextPalette ? 1 : a.action == Action::PreviousPalette ? paletteCount - 1 : 0;
+      if (a.action != Action::SelectPalette && !paletteCount) break;
+      reportIfFailed(s, s.selectPalette(step ? (s.paletteIndex + step) % paletteCount : a.param, r));
+      releaseFreedHeapMemory();
+      break;
+    }
     case Action::CycleMatch:
       s.settings.bands.clear();
       s.settings.match = s.settings.match == MatchMode::Colors ? MatchMode::Intensity

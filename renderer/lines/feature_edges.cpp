@@ -4,9 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <mutex>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "renderer/core/parallel.h"
+#include "renderer/mesh/manifold_fans.h"
 #include "renderer/mesh/weld.h"
 #include "renderer/orientation/principal_curvature.h"
 
@@ -23,48 +26,124 @@ struct FaceHash {
   }
 };
 
+// OpenMesh reports each refused face on its global error stream; we count them instead. Edges
+// of several objects are built at once (LinePass::buildEdges), so the stream is silenced while
+// any is being built and restored by the last: it is switched only when no other holds it.
+class SilencedOmerr {
+ public:
+  SilencedOmerr() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (holders()++ == 0) omerr().disable();
+  }
+  ~SilencedOmerr() {
+    std::lock_guard<std::mutex> lock(mutex());
+    if (--holders() == 0) omerr().enable();
+  }
+  SilencedOmerr(const SilencedOmerr&) = delete;
+  SilencedOmerr& operator=(const SilencedOmerr&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& holders() {
+    static int n = 0;
+    return n;
+  }
+};
+
 std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b) {
   return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
 }
 
 }  // namespace
 
-FeatureEdges::FeatureEdges(const Mesh& m) {
+FeatureEdges::FeatureEdges(const Mesh& m, Topology topology) {
   WeldedPositions weld = weldPositions(m.positions);
   positions_ = std::move(weld.positions);
   remap_ = std::move(weld.remap);
   const std::vector<std::uint32_t>& remap = remap_;
-  // Halfedge adjacency on the welded faces; doubled and degenerate faces dropped.
-  TriMesh welded;
-  welded.reserve(positions_.size(), m.triangleCount() * 3 / 2, m.triangleCount());
-  std::vector<TriMesh::VertexHandle> vh(positions_.size());
-  for (size_t i = 0; i < positions_.size(); ++i) vh[i] = welded.add_vertex(TriMesh::Point(positions_[i].x, positions_[i].y, positions_[i].z));
-  std::unordered_set<FaceKey, FaceHash> seen;
-  seen.reserve(m.triangleCount());
-  std::vector<std::array<std::uint32_t, 3>> refused;
-  const bool materials = m.faceMaterials.size() == m.triangleCount();
-  auto& errlog = omerr();
-  errlog.disable();
-  for (size_t t = 0; t < m.triangleCount(); ++t) {
-    std::array<std::uint32_t, 3> f = {remap[m.indices[t * 3]], remap[m.indices[t * 3 + 1]], remap[m.indices[t * 3 + 2]]};
-    if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-    std::array<std::uint32_t, 3> s = f;
-    std::sort(s.begin(), s.end());
-    if (!seen.insert(FaceKey{s[0], s[1], s[2]}).second) {
-      ++duplicateFaces_;
+  // The welded faces, doubled and degenerate ones dropped.
+  std::vector<std::array<int, 3>> faces;
+  std::vector<std::uint16_t> materialOf;
+  faces.reserve(m.triangleCount());
+  {
+    std::unordered_set<FaceKey, FaceHash> seen;
+    seen.reserve(m.triangleCount());
+    const bool materials = m.faceMaterials.size() == m.triangleCount();
+    for (size_t t = 0; t < m.triangleCount(); ++t) {
+      std::array<std::uint32_t, 3> f = {remap[m.indices[t * 3]], remap[m.indices[t * 3 + 1]], remap[m.indices[t * 3 + 2]]};
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
+      std::array<std::uint32_t, 3> s = f;
+      std::sort(s.begin(), s.end());
+      if (!seen.insert(FaceKey{s[0], s[1], s[2]}).second) {
+        ++duplicateFaces_;
+        continue;
+      }
+      faces.push_back({int(f[0]), int(f[1]), int(f[2])});
+      if (materials) materialOf.push_back(m.faceMaterials[t]);
+    }
+  }
+  if (topology == Topology::Auto && formsManifoldFans(faces, positions_.size())) pairEdges(faces, materialOf);
+  else buildHalfedges(faces, materialOf);
+  updatePlanes();
+}
+
+// An oriented manifold: every face is taken, and each edge is made by the first face that has
+// it, running as that face runs (OpenMesh's order and orientation, so the lines come out the
+// same); its second face, if any, runs it the other way.
+void FeatureEdges::pairEdges(const std::vector<std::array<int, 3>>& faces, std::vector<std::uint16_t>& materialOf) {
+  faceMaterial_ = std::move(materialOf);
+  faceVertices_.resize(3 * faces.size());
+  struct Edge {
+    std::uint32_t from, to, face0, face1;
+  };
+  std::vector<Edge> edges;
+  edges.reserve(faces.size() * 3 / 2 + 1);
+  std::unordered_map<std::uint64_t, std::uint32_t> index;
+  index.reserve(faces.size() * 3 / 2 + 1);
+  for (size_t f = 0; f < faces.size(); ++f)
+    for (size_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = std::uint32_t(faces[f][k]), b = std::uint32_t(faces[f][(k + 1) % 3]);
+      faceVertices_[3 * f + k] = a;
+      const auto [it, made] = index.try_emplace(edgeKey(a, b), std::uint32_t(edges.size()));
+      if (made) edges.push_back({a, b, std::uint32_t(f), kNoFace});
+      else edges[it->second].face1 = std::uint32_t(f);
+    }
+  for (const Edge& e : edges) {
+    if (e.face1 == kNoFace) {
+      boundary_.insert(boundary_.end(), {e.from, e.to});
+      boundaryFace_.push_back(e.face0);
       continue;
     }
-    if (!welded.add_face(vh[f[0]], vh[f[1]], vh[f[2]]).is_valid()) refused.push_back(f);
-    else if (materials) faceMaterial_.push_back(m.faceMaterials[t]);
+    manifoldEnds_.insert(manifoldEnds_.end(), {e.from, e.to});
+    manifoldFaces_.insert(manifoldFaces_.end(), {e.face0, e.face1});
   }
-  errlog.enable();
+}
+
+// Anything else: OpenMesh's halfedge structure takes the faces in order and refuses those that
+// would make an edge or a vertex non-manifold; their edges become junctions.
+void FeatureEdges::buildHalfedges(const std::vector<std::array<int, 3>>& faces, const std::vector<std::uint16_t>& materialOf) {
+  TriMesh welded;
+  welded.reserve(positions_.size(), faces.size() * 3 / 2, faces.size());
+  std::vector<TriMesh::VertexHandle> vh(positions_.size());
+  for (size_t i = 0; i < positions_.size(); ++i) vh[i] = welded.add_vertex(TriMesh::Point(positions_[i].x, positions_[i].y, positions_[i].z));
+  std::vector<std::array<std::uint32_t, 3>> refused;
+  {
+    const SilencedOmerr silenced;
+    for (size_t t = 0; t < faces.size(); ++t) {
+      const std::array<std::uint32_t, 3> f = {std::uint32_t(faces[t][0]), std::uint32_t(faces[t][1]), std::uint32_t(faces[t][2])};
+      if (!welded.add_face(vh[f[0]], vh[f[1]], vh[f[2]]).is_valid()) refused.push_back(f);
+      else if (!materialOf.empty()) faceMaterial_.push_back(materialOf[t]);
+    }
+  }
 
   faceVertices_.resize(3 * welded.n_faces());
   for (auto fh : welded.faces()) {
     int k = 0;
     for (auto fv : welded.fv_range(fh)) faceVertices_[3 * size_t(fh.idx()) + size_t(k++)] = std::uint32_t(fv.idx());
   }
-  updatePlanes();
   std::unordered_set<std::uint64_t> junction;
   for (const auto& f : refused)
     for (int k = 0; k < 3; ++k) junction.insert(edgeKey(f[size_t(k)], f[size_t((k + 1) % 3)]));
@@ -93,6 +172,7 @@ FeatureEdges::FeatureEdges(const Mesh& m) {
     ++junctionCount_;
   }
 }
+
 
 glm::u16vec2 FeatureEdges::materialsOf(std::uint32_t f0, std::uint32_t f1) const {
   const auto of = [&](std::uint32_t f) { return f < faceMaterial_.size() ? faceMaterial_[f] : kNoMaterial; };

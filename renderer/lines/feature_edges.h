@@ -11,6 +11,7 @@
 
 #include "renderer/programs/shader_limits.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -57,7 +58,12 @@ struct FeatureLine {
 
 class FeatureEdges {
  public:
-  explicit FeatureEdges(const Mesh& mesh);
+  // How the adjacency is found. Auto: an oriented manifold (manifold_fans.h) is paired by a hash
+  // of its edges, in the order and orientation the halfedge structure would give; anything
+  // else goes through OpenMesh, which decides which faces a non-manifold mesh refuses.
+  // Halfedges: always OpenMesh (what tests hold Auto to).
+  enum class Topology { Auto, Halfedges };
+  explicit FeatureEdges(const Mesh& mesh, Topology topology = Topology::Auto);
   // `mesh` (the one built from, deformed since: same vertices and faces) moved: positions and
   // face planes follow; the edges, their adjacency and kinds stay.
   void updatePositions(const Mesh& mesh);
@@ -83,6 +89,8 @@ class FeatureEdges {
 
  private:
   void updatePlanes();  // face normals and planes from positions_
+  void pairEdges(const std::vector<std::array<int, 3>>& faces, std::vector<std::uint16_t>& materialOf);
+  void buildHalfedges(const std::vector<std::array<int, 3>>& faces, const std::vector<std::uint16_t>& materialOf);
 
   std::vector<glm::vec3> positions_;       // welded
   std::vector<std::uint32_t> remap_;       // mesh vertex -> welded

@@ -63,6 +63,12 @@ void LinePass::geometryChanged() {
   silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
 }
 
+bool LinePass::needsEdges(const LineSettings& ls) const { return mesh_ && !edges_ && (ls.drawnKinds() & 15u) && ls.edgeKinds(); }
+
+void LinePass::buildEdges() {
+  if (mesh_ && !edges_) edges_ = std::make_unique<FeatureEdges>(*mesh_);
+}
+
 void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, const glm::ivec4& viewport, FrameStats& stats) {
   if (!ls.edgeKinds() || !mesh_) return;
   const auto t0 = std::chrono::steady_clock::now();

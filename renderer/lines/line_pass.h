@@ -96,6 +96,10 @@ class LinePass {
   void setMesh(const Mesh* mesh);
   // The mesh was deformed in place: the lines follow (their edges are not searched again).
   void geometryChanged();
+  // Whether the next update with these settings builds the mesh's edges (buildEdges), which
+  // takes no GL and may run on any thread, one per pass: a scene builds its objects' at once.
+  bool needsEdges(const LineSettings& lines) const;
+  void buildEdges();
   // Finds and uploads what the settings draw for this view (the static kinds once per mesh).
   void update(const CameraMatrices& camera, const LineSettings& lines, const glm::ivec4& viewport, FrameStats& stats);
   // Draws the lines of `style` found by the last update (a scene draws each style on every

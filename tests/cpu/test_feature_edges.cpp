@@ -16,6 +16,7 @@
 #include "renderer/lines/region_trace.h"
 #include "renderer/lines/suggestive_contours.h"
 #include "renderer/mesh/mesh_loader.h"
+#include "renderer/mesh/scene_loader.h"
 #include "renderer/lines/svg_export.h"
 #include "renderer/mesh/mesh_builder.h"
 #include "renderer/immediate_api.h"
@@ -563,5 +564,49 @@ TEST(RegionTrace, LoopsFilledByTheNonzeroRuleCoverExactlyEachLabelsPixels) {
   ASSERT_EQ(loop.size(), 4u);
   EXPECT_EQ(winding(one[0], glm::vec2(11.5f, 5.5f)), 1);
 }
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// The lines of `mesh` found through OpenMesh's halfedges and through the edge pairing that
+// takes its place on oriented manifolds: the same lines, in the same order and direction.
+void expectSameLines(const Mesh& mesh, const std::string& what) {
+  FeatureEdges fast(mesh), general(mesh, FeatureEdges::Topology::Halfedges);
+  for (float angle : {30.0f, 60.0f}) {
+    const std::vector<FeatureLine>& a = fast.staticLines(angle);
+    const std::vector<FeatureLine> b = general.staticLines(angle);
+    ASSERT_EQ(a.size(), b.size()) << what << " at " << angle;
+    for (size_t i = 0; i < a.size(); ++i)
+      ASSERT_TRUE(a[i].a == b[i].a && a[i].b == b[i].b && a[i].kind == b[i].kind) << what << ": static line " << i;
+  }
+  for (const glm::vec3 eye : {glm::vec3(0, 0, 3), glm::vec3(2, 1, -2)}) {
+    const std::vector<FeatureLine>& a = fast.silhouettes(eye);
+    const std::vector<FeatureLine> b = general.silhouettes(eye);
+    ASSERT_EQ(a.size(), b.size()) << what;
+    for (size_t i = 0; i < a.size(); ++i) ASSERT_TRUE(a[i].a == b[i].a && a[i].b == b[i].b) << what << ": silhouette " << i;
+  }
+}
+
+TEST(FeatureEdges, PairingEdgesGivesTheHalfedgesLinesOnRealModels) {
+  int meshes = 0;
+  for (const char* file : {"/models/bunny.obj", "/models/teapot.obj"}) {
+    Result<Mesh> m = loadMesh(std::string(NPR_SOURCE_DIR) + file);
+    ASSERT_TRUE(m) << m.error();
+    expectSameLines(*m, file);
+    ++meshes;
+  }
+  expectSameLines(torus(48, 24), "torus");
+  // The Khronos engine's 67 parts and assimp's spider (assimp-testmodels): parts no one here made.
+  for (const char* file : {"/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                           "/usr/share/assimp/models/OBJ/spider.obj"}) {
+    Result<LoadedScene> scene = loadScene(file);
+    ASSERT_TRUE(scene) << scene.error();
+    for (const SceneObject& o : scene->objects) expectSameLines(*o.mesh, file + (": " + o.name)), ++meshes;
+  }
+  EXPECT_GT(meshes, 60);
+}
+
 }  // namespace
 }  // namespace npr

@@ -3,10 +3,12 @@
 // frame's depth and normals (lines/image_edges_pass.h), each model's object-space feature
 // lines (lines/line_pass.h), and the scene's intersection lines (lines/intersection_lines.h).
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <memory>
 
 #include "renderer/core/elapsed.h"
+#include "renderer/core/parallel.h"
 #include "renderer/features/feature.h"
 #include "renderer/lines/hardware_outline_pass.h"
 #include "renderer/lines/image_edges_pass.h"
@@ -60,12 +62,29 @@ Status prepareStyle(LineStyle& style, StrokeTextures& textures, const FrameView&
 }
 
 class FeatureLinesFeature final : public Feature {
+  // The objects' edges not yet found, found at once on every core, each object taken by the
+  // next free thread: a scene's first frame waited for them one after the other (the Khronos
+  // engine's 67 objects: docs/performance-history.md, "Start-up").
+  static void buildEdges(FrameView& f) {
+    std::vector<LinePass*> pending;
+    f.scene.forEach([&](Model& m) {
+      if (m.lines().needsEdges(f.settings.lines)) pending.push_back(&m.lines());
+    });
+    if (pending.empty()) return;
+    std::atomic<std::size_t> next{0};
+    parallelChunks(pending.size(), workerCount(), [&](std::size_t, std::size_t, int) {
+      for (std::size_t i = next++; i < pending.size(); i = next++) pending[i]->buildEdges();
+    }, 1);
+    f.stats.meshCachesBuilt += static_cast<int>(pending.size());
+  }
+
  public:
   explicit FeatureLinesFeature(std::shared_ptr<StrokeTextures> textures) : textures_(std::move(textures)) {}
   const char* name() const override { return "feature lines"; }
   bool active(const FrameView& f) const override { return f.settings.lines.edgeKinds(); }
   // The lines found, their chains' parameters continuing the last frame's.
   Status follow(FrameView& f) override {
+    buildEdges(f);
     f.scene.forEach([&](Model& m) { m.lines().update(m.placed(f.camera), f.settings.lines, f.viewport, f.stats); });
     return okStatus();
   }
