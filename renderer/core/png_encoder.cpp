@@ -3,9 +3,12 @@
 
 #include <zlib.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <string>
+
+#include "renderer/core/parallel.h"
 
 namespace npr {
 namespace {
@@ -52,32 +55,75 @@ void filterRow(const std::uint8_t* row, const std::uint8_t* above, size_t bytes,
   out.insert(out.end(), rows[bestType].begin(), rows[bestType].end());
 }
 
+// Bands of rows filtered and deflated on their own threads (as pigz does): each band a raw
+// deflate stream ended on a byte boundary (a sync flush), the last one finished; the zlib
+// header before them and the Adler-32 of the whole after, combined from the bands'. A 1280x720
+// frame took 55 ms on one core of this machine (docs/performance-history.md, "Start-up").
+struct Band {
+  std::vector<std::uint8_t> packed;
+  uLong adler = 1;
+  size_t rawSize = 0;
+  bool ok = false;
+};
+
+Band deflateBand(const ImageRGBA8& image, int y0, int y1, bool last, int level) {
+  const size_t rowBytes = size_t(image.width) * 4;
+  std::vector<std::uint8_t> raw;
+  std::array<std::vector<std::uint8_t>, 5> rows;
+  raw.reserve((rowBytes + 1) * size_t(y1 - y0));
+  for (int y = y0; y < y1; ++y)
+    filterRow(&image.pixels[size_t(y) * rowBytes], y > 0 ? &image.pixels[size_t(y - 1) * rowBytes] : nullptr, rowBytes, rows, raw);
+  Band band;
+  band.rawSize = raw.size();
+  band.adler = adler32(1L, raw.data(), uInt(raw.size()));
+  z_stream z{};
+  if (deflateInit2(&z, level, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) != Z_OK) return band;
+  band.packed.resize(deflateBound(&z, uLong(raw.size())) + 16);
+  z.next_in = raw.data();
+  z.avail_in = uInt(raw.size());
+  z.next_out = band.packed.data();
+  z.avail_out = uInt(band.packed.size());
+  const int r = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
+  band.ok = last ? r == Z_STREAM_END : (r == Z_OK && z.avail_in == 0);
+  band.packed.resize(band.packed.size() - z.avail_out);
+  deflateEnd(&z);
+  return band;
+}
+
 }  // namespace
 
 Result<std::vector<std::uint8_t>> encodePngRgba8(const ImageRGBA8& image, int zlibLevel) {
   if (image.width < 1 || image.height < 1 || image.pixels.size() != size_t(image.width) * size_t(image.height) * 4)
     return Error{"PNG encoding: an empty or malformed image"};
+  // Bands of at least 64 rows and 256 KB: a thread's start costs more than a smaller band saves.
   const size_t rowBytes = size_t(image.width) * 4;
-  std::vector<std::uint8_t> raw;
-  std::array<std::vector<std::uint8_t>, 5> rows;
-  raw.reserve((rowBytes + 1) * size_t(image.height));
-  for (int y = 0; y < image.height; ++y)
-    filterRow(&image.pixels[size_t(y) * rowBytes], y > 0 ? &image.pixels[size_t(y - 1) * rowBytes] : nullptr, rowBytes, rows, raw);
+  const int minRows = std::max(64, int((size_t(256) << 10) / rowBytes));
+  const int bands = std::max(1, std::min(workerCount(), image.height / minRows));
+  std::vector<Band> out(static_cast<size_t>(bands));
+  parallelChunks(size_t(bands), bands, [&](size_t b, size_t e, int) {
+    for (size_t i = b; i < e; ++i) {
+      const int y0 = int(i * size_t(image.height) / size_t(bands)), y1 = int((i + 1) * size_t(image.height) / size_t(bands));
+      out[i] = deflateBand(image, y0, y1, i + 1 == size_t(bands), zlibLevel);
+    }
+  }, 1);
+  std::vector<std::uint8_t> stream{0x78, 0x5e};  // deflate, 32K window; a level-3 hint; no dictionary
+  uLong adler = 1;
+  for (const Band& band : out) {
+    if (!band.ok) return Error{"PNG encoding: zlib could not compress the image (out of memory?)"};
+    stream.insert(stream.end(), band.packed.begin(), band.packed.end());
+    adler = adler32_combine(adler, band.adler, z_off_t(band.rawSize));
+  }
+  put32(stream, std::uint32_t(adler));
 
-  uLongf packedSize = compressBound(uLong(raw.size()));
-  std::vector<std::uint8_t> packed(packedSize);
-  if (compress2(packed.data(), &packedSize, raw.data(), uLong(raw.size()), zlibLevel) != Z_OK)
-    return Error{"PNG encoding: zlib could not compress " + std::to_string(raw.size()) + " bytes (out of memory?)"};
-
-  std::vector<std::uint8_t> out{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
+  std::vector<std::uint8_t> png{0x89, 'P', 'N', 'G', 0x0d, 0x0a, 0x1a, 0x0a};
   std::vector<std::uint8_t> header;
   put32(header, std::uint32_t(image.width));
   put32(header, std::uint32_t(image.height));
   header.insert(header.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, adaptive filters, not interlaced
-  chunk(out, "IHDR", header.data(), header.size());
-  chunk(out, "IDAT", packed.data(), packedSize);
-  chunk(out, "IEND", nullptr, 0);
-  return out;
+  chunk(png, "IHDR", header.data(), header.size());
+  chunk(png, "IDAT", stream.data(), stream.size());
+  chunk(png, "IEND", nullptr, 0);
+  return png;
 }
 
 }  // namespace npr

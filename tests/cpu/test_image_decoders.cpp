@@ -142,3 +142,21 @@ TEST(ImageDecoders, WrittenPngsReadBackExactlyWithStraightAlpha) {
   ASSERT_TRUE(bytes);
   EXPECT_EQ(std::string(bytes->begin(), bytes->begin() + 4), "\x89PNG");
 }
+
+// A frame large enough to be deflated in bands on several threads (png_encoder.cpp) reads back
+// exactly, through OpenImageIO's libpng and zlib's checks of the stream and its Adler-32.
+TEST(ImageDecoders, AFrameDeflatedInBandsReadsBackExactly) {
+  npr::ImageRGBA8 img{1280, 720, std::vector<std::uint8_t>(size_t(1280) * 720 * 4)};
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x)
+      for (int k = 0; k < 4; ++k)
+        img.pixels[(size_t(y) * img.width + x) * 4 + k] = std::uint8_t(k == 3 ? 255 - (x ^ y) % 7 : (x * (k + 1) + y * 3 + (x * y) % 11) % 256);
+  npr::test::TempDir dir;
+  const std::string path = (dir.path() / "frame.png").string();
+  ASSERT_TRUE(npr::writeImage(path, img));
+  const Difference d = compare(img, readWithOiio(path));
+  EXPECT_EQ(d.largest, 0);
+  npr::Result<npr::ImageRGBA8> ours = npr::loadImage(path);
+  ASSERT_TRUE(ours) << ours.error();
+  EXPECT_EQ(ours->pixels, img.pixels);
+}
