@@ -3,9 +3,12 @@
 # binding table, drags with each button and with Ctrl, scrolls, resizes, and file drops through
 # XDND, good and broken models and palettes; Ctrl+O of broken files; Ctrl+E of pictures under the
 # suggested names). Fails on a crash, a GL error, resident memory that
-# grows more than 5% between the end of the first phase (a third of the run, at most a minute)
-# and the end, or a failed drop that changes the picture (the current model and palette must
-# stay). Usage: soak.sh VIEWER SOURCE_DIR [SECONDS=60] [SEED=1]
+# grows more than 13 MB between the end of the first phase (a third of the run, at most a
+# minute) and the end, or a failed drop that changes the picture (the current model and palette
+# must stay). 13 MB was the bound's 5% of the 267 MB the viewer held when it was set, half of it
+# OpenImageIO's libraries: with those gone (loaded on first use), the same readings' swing with
+# the look's state (anonymous memory 93 -> 110 MB before, 66 -> 81 MB after, 150 s, seed 1)
+# crossed a 5% that had shrunk to 7 MB. Usage: soak.sh VIEWER SOURCE_DIR [SECONDS=60] [SEED=1]
 set -u
 viewer="$1"; src="$2"; duration="${3:-60}"; seed="${4:-1}"
 if [ -z "${DISPLAY:-}" ]; then exec xvfb-run -a -s "-screen 0 1024x768x24" bash "$0" "$@"; fi
@@ -43,14 +46,18 @@ shot() {  # F12, then wait for the numbered screenshot; sets $last to its name
   echo "FAIL: screenshot $shots was not written" >&2; return 1
 }
 drop() { /usr/bin/python3 "$here/xdnd_drop.py" "$wid" "$@" >>"$tmp/drops.log" 2>&1 || echo "drop of $* not taken" >>"$tmp/drops.log"; }
-# Resident memory depends on the scene and the look (llvmpipe keeps textures and each path's
-# buffers in it), so it is read with the same model and a whole saved look loaded each time
+# Resident memory depends on the scene, the look and the window's size (llvmpipe keeps textures
+# and each path's buffers in it), so it is read at one size, with the same model and a whole
+# saved look loaded each time
 # (rest.style: every setting, path, match mode and light included; split view and the overlay
 # are toggled in pairs below, so they are off here). Read three times, 0.3 s apart, and the
 # least kept: a leak stays in every reading, a load still finishing on its thread does not.
 "$viewer" --headless --size 64x64 --palette crosshatch --save-style rest.style >/dev/null 2>&1 \
   || { echo "FAIL: could not save the resting look"; exit 1; }
 rss() {
+  # The window's size too: every full-frame target the passes keep grows with it (a 700x500
+  # window holds about 15 MB more than 480x360).
+  xdotool windowsize "$wid" 480 360; sleep 0.3
   drop "$tmp/good.obj"; drop "$tmp/rest.style"; sleep 1
   local least="" r
   for _ in 1 2 3; do
@@ -121,6 +128,10 @@ for k in $palettes_to_warm; do
   done
 done
 xdotool key --clearmodifiers 1; sleep 0.4
+# Every shipped palette dropped once: the random phase drops them, and each brings textures of
+# its own sizes and shader variants for its entry count (bounded, and compiled once).
+for p in "${good_palettes[@]}"; do drop "$p"; sleep 0.4; done
+xdotool key --clearmodifiers 1; sleep 0.4
 # One of each of the random phase's heavier actions, so that their first-time allocations
 # (the export's read-back and encoder, the file dialog, a failed load's scratch) land before the
 # baseline: a 30-second run otherwise measured them as growth whenever they first came late.
@@ -132,7 +143,7 @@ start=$(date +%s); baseline_at=$((duration / 3)); [ $baseline_at -gt 60 ] && bas
 baseline=""; actions=0; drops_good=0; curve=""; parts=""; next_sample=60
 while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   elapsed=$(( $(date +%s) - start ))
-  [ -z "$baseline" ] && [ $elapsed -ge $baseline_at ] && baseline=$(rss)
+  [ -z "$baseline" ] && [ $elapsed -ge $baseline_at ] && baseline=$(rss) && baseline_parts=$(rss_parts)
   # The curve: resident memory each minute, read the same way (README, the issue's notes).
   if [ $elapsed -ge $next_sample ]; then curve="$curve $(( $(rss) / 1024 ))"; parts="$parts $(rss_parts)"; next_sample=$((next_sample + 60)); fi
   w=$(xdotool getwindowgeometry "$wid" 2>/dev/null | awk -F'[ x]' '/Geometry/ {print $4; exit}'); w=${w:-480}
@@ -159,14 +170,15 @@ while [ $(( $(date +%s) - start )) -lt "$duration" ] && alive; do
   actions=$((actions + 1))
   sleep 0.05
 done
-final=$(rss)
+sleep 3; final=$(rss); final_parts=$(rss_parts)
 if ! alive; then wait $pid; echo "FAIL: the viewer died (exit $?) after $actions actions"; tail -20 "$tmp/log"; exit 1; fi
 [ -n "$baseline" ] || baseline=$final
 growth=$(( (final - baseline) * 1000 / (baseline > 0 ? baseline : 1) ))
 echo "soak: $actions actions in ${duration} s ($drops_good good drops, $checks failed-drop checks), RSS ${baseline} kB at ${baseline_at} s -> ${final} kB at the end (${growth} per mille)"
 [ -n "$curve" ] && echo "soak: RSS each minute (MB):$curve"
 [ -n "$parts" ] && echo "soak: of which anonymous writable / executable (JIT) / file-backed (MB):$parts"
-[ $growth -le 50 ] || { echo "FAIL: resident memory grew by more than 5%"; fail=1; }
+echo "soak: anonymous writable / executable (JIT) / file-backed (MB): ${baseline_parts:-?} at ${baseline_at} s -> $final_parts at the end"
+[ $((final - baseline)) -le $((13 * 1024)) ] || { echo "FAIL: resident memory grew by more than 13 MB"; fail=1; }
 [ $checks -gt 0 ] || { echo "FAIL: no failed drop was checked"; fail=1; }
 # Ctrl+E with the suggested name: every picture it said it wrote is there, each under a name of
 # its own (a window too small to export says so instead).
