@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -92,8 +93,8 @@ Footprint footprint(int srcSize, int outSize) {
 }
 
 
-bool isPng(const std::string& bytes) { return bytes.size() >= 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0; }
-bool isJpeg(const std::string& bytes) { return bytes.size() >= 3 && bytes.compare(0, 3, "\xff\xd8\xff") == 0; }
+bool isPng(const std::string& head) { return head.size() >= 8 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0; }
+bool isJpeg(const std::string& head) { return head.size() >= 3 && head.compare(0, 3, "\xff\xd8\xff") == 0; }
 
 // A PNG or JPEG decoded whole by stb_image, handed out as rows like OpenImageIO's.
 class StbRows final : public ImageRowReader {
@@ -127,39 +128,47 @@ Status checkSize(const std::string& path, int w, int h) {
   return okStatus();
 }
 
-// The image's header through stb_image when it is a PNG or JPEG small enough to decode whole;
-// nothing (and no error) when OpenImageIO should read it instead.
+// The header of a PNG or JPEG through stb_image (reading only as far as it needs), when it is
+// small enough to decode whole; nothing (and no error) when OpenImageIO should read it instead.
 struct StbHeader {
   int width = 0, height = 0, channels = 0;
   bool sixteen = false;
 };
-std::optional<StbHeader> stbHeader(const std::string& bytes) {
-  if (!isPng(bytes) && !isJpeg(bytes)) return std::nullopt;
-  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
-  const int size = static_cast<int>(bytes.size());
+std::optional<StbHeader> stbHeader(const std::string& path) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) return std::nullopt;
   StbHeader h;
-  if (!stbi_info_from_memory(data, size, &h.width, &h.height, &h.channels)) return std::nullopt;
+  if (!stbi_info_from_file(f.get(), &h.width, &h.height, &h.channels)) return std::nullopt;
   if (double(h.width) * h.height > kWholeDecodePixels) return std::nullopt;
-  h.sixteen = stbi_is_16_bit_from_memory(data, size) != 0;
+  h.sixteen = stbi_is_16_bit_from_file(f.get()) != 0;
   return h;
 }
 
 // Opens the image after the input-file checks: here when stb_image decodes it, else through
 // the OpenImageIO module (formats stb does not read, huge images, and the PNG and JPEG
-// variants it refuses, such as CMYK or arithmetic-coded JPEG).
+// variants it refuses, such as CMYK or arithmetic-coded JPEG). Only the signature is read
+// before that choice, and only the header for `headerOnly`.
 Result<std::unique_ptr<ImageRowReader>> openImage(const std::string& path, bool headerOnly) {
-  Result<std::string> bytes = readInputFile(path, InputKind::Image);
-  if (!bytes) return Error{bytes.error()};
-  if (isPng(*bytes))
-    if (Status png = checkPngChunks(path, bytes->size()); !png) return Error{png.error()};
-  if (std::optional<StbHeader> h = stbHeader(*bytes)) {
+  Result<std::uintmax_t> size = checkInputFile(path, InputKind::Image);
+  if (!size) return Error{size.error()};
+  std::string head(8, '\0');
+  {
+    std::ifstream f(path, std::ios::binary);
+    f.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(std::max<std::streamsize>(0, f.gcount())));
+  }
+  if (isPng(head))
+    if (Status png = checkPngChunks(path, *size); !png) return Error{png.error()};
+  if (std::optional<StbHeader> h = isPng(head) || isJpeg(head) ? stbHeader(path) : std::nullopt) {
     if (Status s = checkSize(path, h->width, h->height); !s) return Error{s.error()};
     if (headerOnly) return std::unique_ptr<ImageRowReader>(std::make_unique<StbRows>(h->width, h->height, h->channels, h->sixteen, nullptr));
+    Result<std::string> bytes = readInputFile(path, InputKind::Image);
+    if (!bytes) return Error{bytes.error()};
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes->data());
-    const int size = static_cast<int>(bytes->size());
+    const int length = static_cast<int>(bytes->size());
     int w = 0, ht = 0, n = 0;
-    void* pixels = h->sixteen ? static_cast<void*>(stbi_load_16_from_memory(data, size, &w, &ht, &n, 0))
-                              : static_cast<void*>(stbi_load_from_memory(data, size, &w, &ht, &n, 0));
+    void* pixels = h->sixteen ? static_cast<void*>(stbi_load_16_from_memory(data, length, &w, &ht, &n, 0))
+                              : static_cast<void*>(stbi_load_from_memory(data, length, &w, &ht, &n, 0));
     if (pixels && w == h->width && ht == h->height && n >= 1 && n <= 4)
       return std::unique_ptr<ImageRowReader>(std::make_unique<StbRows>(w, ht, n, h->sixteen, pixels));
     stbi_image_free(pixels);
@@ -176,8 +185,6 @@ std::string lowerExtension(const std::string& path) {
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return e;
 }
-
-Result<std::vector<std::uint8_t>> pngBytes(const ImageRGBA8& image) { return encodePngRgba8(image); }
 
 }  // namespace
 
@@ -286,7 +293,7 @@ Status writeImage(const std::string& path, const ImageRGBA8& image) {
     if (!oiio) return Error{path + ": " + oiio.error()};
     return (*oiio)->write(path, image);
   }
-  Result<std::vector<std::uint8_t>> png = pngBytes(image);
+  Result<std::vector<std::uint8_t>> png = encodePngRgba8(image);
   if (!png) return Error{path + ": " + png.error()};
   std::ofstream f(path, std::ios::binary | std::ios::trunc);
   if (!f) return Error{path + ": cannot open for writing: " + std::strerror(errno)};
@@ -296,7 +303,7 @@ Status writeImage(const std::string& path, const ImageRGBA8& image) {
   return okStatus();
 }
 
-Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) { return pngBytes(image); }
+Result<std::vector<std::uint8_t>> encodePng(const ImageRGBA8& image) { return encodePngRgba8(image); }
 
 struct StripWriter::State {
   std::unique_ptr<ImageSink> sink;

@@ -35,9 +35,8 @@ std::uint8_t paeth(int a, int b, int c) {
 void filterRow(const std::uint8_t* row, const std::uint8_t* above, size_t bytes, std::array<std::vector<std::uint8_t>, 5>& rows,
                std::vector<std::uint8_t>& out) {
   constexpr size_t bpp = 4;
-  static const std::uint8_t zeros[1] = {0};
   for (auto& r : rows) r.resize(bytes);
-  auto up = [&](size_t i) -> int { return above ? above[i] : zeros[0]; };
+  auto up = [&](size_t i) -> int { return above ? above[i] : 0; };
   for (size_t i = 0; i < bytes; ++i) rows[0][i] = row[i];
   for (size_t i = 0; i < bytes; ++i) rows[1][i] = std::uint8_t(row[i] - (i >= bpp ? row[i - bpp] : 0));
   for (size_t i = 0; i < bytes; ++i) rows[2][i] = std::uint8_t(row[i] - up(i));

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <mutex>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "renderer/core/parallel.h"
 #include "renderer/mesh/manifold_fans.h"
+#include "renderer/mesh/silenced_omerr.h"
 #include "renderer/mesh/weld.h"
 #include "renderer/orientation/principal_curvature.h"
 
@@ -23,33 +23,6 @@ struct FaceKey {
 struct FaceHash {
   size_t operator()(const FaceKey& k) const {
     return (size_t(k.a) * 0x9E3779B97F4A7C15ull) ^ (size_t(k.b) * 0xC2B2AE3D27D4EB4Full) ^ (size_t(k.c) * 0x165667B19E3779F9ull);
-  }
-};
-
-// OpenMesh reports each refused face on its global error stream; we count them instead. Edges
-// of several objects are built at once (LinePass::buildEdges), so the stream is silenced while
-// any is being built and restored by the last: it is switched only when no other holds it.
-class SilencedOmerr {
- public:
-  SilencedOmerr() {
-    std::lock_guard<std::mutex> lock(mutex());
-    if (holders()++ == 0) omerr().disable();
-  }
-  ~SilencedOmerr() {
-    std::lock_guard<std::mutex> lock(mutex());
-    if (--holders() == 0) omerr().enable();
-  }
-  SilencedOmerr(const SilencedOmerr&) = delete;
-  SilencedOmerr& operator=(const SilencedOmerr&) = delete;
-
- private:
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static int& holders() {
-    static int n = 0;
-    return n;
   }
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "renderer/mesh/manifold_fans.h"
+#include "renderer/mesh/silenced_omerr.h"
 
 namespace npr {
 
@@ -49,22 +50,22 @@ void buildTriMesh(std::vector<glm::vec3> verts, std::vector<std::array<int, 3>> 
     std::vector<TriMesh::VertexHandle> vh(verts.size());
     for (size_t i = 0; i < verts.size(); ++i) vh[i] = mesh.add_vertex(TriMesh::Point(verts[i].x, verts[i].y, verts[i].z));
     verts = {};
-    // OpenMesh prints an error line for each refused face; we count them in the report instead.
-    auto& errlog = omerr();
-    errlog.disable();
-    for (const auto& t : tris) {
-      const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
-      if (fh.is_valid()) continue;
-      ++refused;
-      TriMesh::VertexHandle c[3];
-      for (int k = 0; k < 3; ++k) {
-        const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
-        c[k] = mesh.add_vertex(p);
-        if (vertexOrigin) vertexOrigin->push_back(static_cast<std::uint32_t>(t[k]));
+    {
+      // OpenMesh prints an error line for each refused face; we count them in the report instead.
+      const SilencedOmerr silenced;
+      for (const auto& t : tris) {
+        const auto fh = mesh.add_face(vh[static_cast<size_t>(t[0])], vh[static_cast<size_t>(t[1])], vh[static_cast<size_t>(t[2])]);
+        if (fh.is_valid()) continue;
+        ++refused;
+        TriMesh::VertexHandle c[3];
+        for (int k = 0; k < 3; ++k) {
+          const TriMesh::Point p = mesh.point(vh[static_cast<size_t>(t[k])]);  // a copy: add_vertex may reallocate the points
+          c[k] = mesh.add_vertex(p);
+          if (vertexOrigin) vertexOrigin->push_back(static_cast<std::uint32_t>(t[k]));
+        }
+        mesh.add_face(c[0], c[1], c[2]);
       }
-      mesh.add_face(c[0], c[1], c[2]);
     }
-    errlog.enable();
     tris = {};
     // The arrays the renderer draws: every vertex (copies for refused faces included) and each
     // face's corners in the halfedge structure's order, a cyclic rotation of the file's (the
