@@ -13,6 +13,8 @@ in vec3 vLit;
 #endif
 in vec3 vColour;
 flat in float vInk;
+noperspective in vec2 vJoint, vJointAlong, vJointAcross, vJointInside;
+flat in vec2 vNeighbourLength;
 in float vAcross;
 flat in float vHalfWidth;
 #ifdef DASHED
@@ -74,6 +76,15 @@ void main() {
 #ifdef OCCLUSION_LIMIT
   if (vBeyondLimit > 0.5) discard;
 #endif
+  // A cap's pixels (past this segment's end) on the neighbour's side of the joint's cut, where
+  // the neighbour's quad (as wide as this one) covers them: the neighbour draws them
+  // (lines.vert). Only caps: where the neighbour fails the depth test (the line goes behind a
+  // surface) a cut into this segment's own length would open a gap.
+  bvec2 theirs = bvec2(vJoint.x < 0.0 && vJointInside.x < 0.0 && abs(vJointAcross.x) < vHalfWidth &&
+                           vJointAlong.x > 0.5 - vHalfWidth && vJointAlong.x < vNeighbourLength.x + vHalfWidth - 0.5,
+                       vJoint.y < 0.0 && vJointInside.y < 0.0 && abs(vJointAcross.y) < vHalfWidth &&
+                           vJointAlong.y > 0.5 - vHalfWidth && vJointAlong.y < vNeighbourLength.y + vHalfWidth - 0.5);
+  if (any(theirs)) discard;
   float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;
 #ifdef TONE_COLOUR

@@ -27,6 +27,8 @@ layout(location = 5) in float aLength; // the chain's length; negative: a closed
 layout(location = 6) in uvec2 aMaterials;  // the faces' materials on either side
 layout(location = 7) in vec2 aCurvature;  // the surface's at the start and the end (0: not known)
 layout(location = 8) in float aInk;       // how much of its ink the line draws (suggestive contours fade in)
+layout(location = 10) in vec4 aBefore;   // the chain's vertex before aStart (w 0: none)
+layout(location = 11) in vec4 aAfter;    // ... and after aEnd
 
 uniform mat4 uModelViewProjection;
 uniform vec2 uViewport;    // pixels
@@ -75,6 +77,11 @@ float beyondLimit(vec4 p, vec2 s) {
 #endif
 out vec3 vColour;
 flat out float vInk;
+// At its joints (x: the start's, y: the end's): pixels on this segment's side of the cut
+// (negative: the neighbour's side), inside this segment from the joint (negative: its cap), and
+// along and across the neighbour from the joint, with the neighbour's length in pixels.
+noperspective out vec2 vJoint, vJointAlong, vJointAcross, vJointInside;
+flat out vec2 vNeighbourLength;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
 #ifdef DASHED
@@ -98,6 +105,34 @@ uint hashBits(uint x) {
   return x;
 }
 float hash01(uint x) { return float(hashBits(x) & 0xFFFFu) / 65535.0; }
+
+vec2 unitOr(vec2 d, vec2 otherwise) {
+  float len = length(d);
+  return len > 1e-4 ? d / len : otherwise;
+}
+
+// Where a joint at `at` (pixels) cuts this segment's quad: its far end at `own`, the
+// neighbour's at `other` (clip space, w 0: no neighbour). The cut runs along the bisector of
+// the angle the two make at the joint; the neighbour computes the same line from the same
+// numbers with the sides swapped. Where a cap (the half width a quad reaches past its end)
+// overlaps the neighbour's quad, lines.frag leaves the part on the neighbour's side to the
+// neighbour, so a pixel there is inked once (a partial coverage blended twice darkened every
+// joint). A pixel only one quad covers stays its own: the cut never opens a gap. `cut`: the
+// normal pointing into this segment, zero for no cut (no neighbour, one behind the eye, or a
+// hairpin, where the two run the same way).
+struct Joint {
+  vec2 cut, along;  // the cut's normal; the unit from the joint to the neighbour's far end
+  float length;     // the neighbour's, pixels
+};
+Joint jointCut(vec2 at, vec2 own, vec4 other, vec2 half_) {
+  Joint j = Joint(vec2(0.0), vec2(0.0), 0.0);
+  if (other.w <= 0.0) return j;
+  vec2 far = other.xy / other.w * half_;
+  vec2 u = unitOr(own - at, vec2(0.0)), v = unitOr(far - at, vec2(0.0));
+  vec2 n = u - v;
+  if (dot(u, u) > 0.5 && dot(v, v) > 0.5 && dot(n, n) > 0.01) j = Joint(n, v, length(far - at));
+  return j;
+}
 
 vec3 towardsEye(vec3 p) {
   vec3 toEye = uEye.w > 0.5 ? uEye.xyz - p : uEye.xyz;
@@ -133,12 +168,20 @@ void main() {
 #endif
   if (drop) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    vJoint = vJointAlong = vJointAcross = vJointInside = vNeighbourLength = vec2(0.0);
     vAcross = 0.0;
     vHalfWidth = 0.0;
     return;
   }
   vec2 half_ = 0.5 * uViewport;
   vec2 s0 = p0.xy / p0.w * half_, s1 = p1.xy / p1.w * half_;
+#ifndef SKETCHY
+  // The joints' cuts, before the ends move: both segments at a joint must see the same points.
+  bool pulled = int(aKind + 0.5) == 4 && uValleyPixels > 0.0;
+  vec4 before = aBefore.w > 0.5 ? uModelViewProjection * vec4(pulled ? towardsEye(aBefore.xyz) : aBefore.xyz, 1.0) : vec4(0.0);
+  vec4 after = aAfter.w > 0.5 ? uModelViewProjection * vec4(pulled ? towardsEye(aAfter.xyz) : aAfter.xyz, 1.0) : vec4(0.0);
+  Joint cut0 = jointCut(s0, s1, before, half_), cut1 = jointCut(s1, s0, after, half_);
+#endif
 #ifdef SKETCHY
   uint seed = floatBitsToUint(aStart.x) ^ hashBits(floatBitsToUint(aStart.y) ^ hashBits(floatBitsToUint(aStart.z))) ^
               hashBits(floatBitsToUint(aEnd.x) + floatBitsToUint(aEnd.y) * 3u + floatBitsToUint(aEnd.z) * 7u) ^
@@ -163,6 +206,16 @@ void main() {
   vec4 p = end ? p1 : p0;
   vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
   vAcross = side * vHalfWidth;
+#ifdef SKETCHY
+  vJoint = vec2(1.0);  // sketchy strokes overlap as a pencil's do
+  vJointAlong = vJointAcross = vJointInside = vNeighbourLength = vec2(0.0);
+#else
+  vJoint = vec2(dot(s - s0, cut0.cut), dot(s - s1, cut1.cut)) + vec2(cut0.length > 0.0 ? 0.0 : 1.0, cut1.length > 0.0 ? 0.0 : 1.0);
+  vJointAlong = vec2(dot(s - s0, cut0.along), dot(s - s1, cut1.along));
+  vJointAcross = vec2(dot(s - s0, vec2(-cut0.along.y, cut0.along.x)), dot(s - s1, vec2(-cut1.along.y, cut1.along.x)));
+  vNeighbourLength = vec2(cut0.length, cut1.length);
+  vJointInside = vec2(dot(s - s0, dir), dot(s1 - s, dir));
+#endif
   // The quad's caps reach half a width past the segment's ends, along the parameter's way.
 #ifdef DASHED
   float dashWay = aParam.y >= aParam.x ? 1.0 : -1.0;

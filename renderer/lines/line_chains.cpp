@@ -267,11 +267,18 @@ const std::vector<ChainedLine>& LineChains::update(const std::vector<FeatureLine
       const float length = closed ? -arc.back() : arc.back();
       // A segment's two ends take its first vertex's part (no jump inside a segment). Each
       // keeps its own way round (the sketchy strokes' jitter hashes its ends in order).
+      // Its neighbours along the chain: a loop's wrap round its seam, an open chain's ends have none.
+      const auto neighbour = [&](std::size_t i, bool forward) {
+        if (forward ? i + 2 < nv : i > 0) return glm::vec4(verts[forward ? i + 2 : i - 1], 1.0f);
+        if (closed && nv > 3) return glm::vec4(verts[forward ? 1 : nv - 2], 1.0f);
+        return glm::vec4(0.0f);
+      };
       for (std::size_t i = 0; i + 1 < nv; ++i) {
         const glm::vec2 p(params[i], paramOf(i + 1, group[i]));
         const LineAttributes& at = lines[b + segs[i]].attributes;  // its ends stay its own (see above)
-        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, at});
-        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, at});
+        const glm::vec4 before = neighbour(i, false), after = neighbour(i, true);
+        if (along[i]) out_.push_back({verts[i], verts[i + 1], lines[b].kind, p, {arc[i], arc[i + 1]}, length, at, before, after});
+        else out_.push_back({verts[i + 1], verts[i], lines[b].kind, {p.y, p.x}, {arc[i + 1], arc[i]}, length, at, after, before});
       }
       ++chainId;
     }

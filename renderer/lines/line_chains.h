@@ -28,6 +28,10 @@ struct ChainedLine {
   glm::vec2 arc;      // the distance along the chain from its start to a and to b
   float length;       // the chain's length; negative for a closed loop (it has no ends)
   LineAttributes attributes;  // the segment's own, as found (its ends keep their way round)
+  // The chain's vertex before a and after b (w 1), or none (w 0: the chain ends or branches
+  // there). lines.vert cuts the segment's quad at the joint's bisector with them, so two
+  // segments' caps never cover a pixel twice and a partial coverage is not inked twice.
+  glm::vec4 before{0.0f}, after{0.0f};
 };
 
 // A step of a chain: a segment, walked from its second end to its first when `reversed`.

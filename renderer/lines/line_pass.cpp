@@ -35,6 +35,8 @@ const LineStream kLineStreams[] = {
     {7, 2, GL_FLOAT, kAttributes + offsetof(LineAttributes, curvature)},
     {8, 1, GL_FLOAT, kAttributes + offsetof(LineAttributes, ink)},
     {9, 3, GL_FLOAT, kAttributes + offsetof(LineAttributes, normal)},
+    {10, 4, GL_FLOAT, offsetof(ChainedLine, before)},
+    {11, 4, GL_FLOAT, offsetof(ChainedLine, after)},
 };
 // Object units a screen pixel spans at the lines' origin (the object's centre).
 float centrePixel(const CameraMatrices& placed, const glm::ivec4& viewport) {
