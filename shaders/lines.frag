@@ -15,6 +15,8 @@ in vec3 vColour;
 flat in float vInk;
 noperspective in vec2 vJoint, vJointAlong, vJointAcross, vJointInside;
 flat in vec2 vNeighbourLength;
+flat in float vDot;
+noperspective in float vDotAlong;
 in float vAcross;
 flat in float vHalfWidth;
 #ifdef DASHED
@@ -85,7 +87,8 @@ void main() {
                        vJoint.y < 0.0 && vJointInside.y < 0.0 && abs(vJointAcross.y) < vHalfWidth &&
                            vJointAlong.y > 0.5 - vHalfWidth && vJointAlong.y < vNeighbourLength.y + vHalfWidth - 0.5);
   if (any(theirs)) discard;
-  float alpha = clamp(halfWidth - abs(vAcross), 0.0, 1.0) * ink;
+  float across = vDot > 0.5 ? length(vec2(vAcross, vDotAlong)) : abs(vAcross);
+  float alpha = clamp(halfWidth - across, 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;
 #ifdef TONE_COLOUR
   fragColor = vec4(uEntryColour[matchEntry(vLit)], alpha);

@@ -82,6 +82,10 @@ flat out float vInk;
 // along and across the neighbour from the joint, with the neighbour's length in pixels.
 noperspective out vec2 vJoint, vJointAlong, vJointAcross, vJointInside;
 flat out vec2 vNeighbourLength;
+// A dot (a segment of no length: a file's point): drawn round, vDotAlong pixels from its centre
+// along the quad as vAcross is across it.
+flat out float vDot;
+noperspective out float vDotAlong;
 out float vAcross;  // pixels from the line's centre
 flat out float vHalfWidth;
 #ifdef DASHED
@@ -153,6 +157,9 @@ void main() {
   vColour = uColours[int(aKind + 0.5)];
   vInk = aInk;
   float width = uWidth;
+  bool isDot = aStart == aEnd;
+  vDot = isDot ? 1.0 : 0.0;
+  if (isDot) width = max(2.5 * width, 3.0);
 #ifdef DEPTH_FALLOFF
   width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);
 #endif
@@ -169,6 +176,7 @@ void main() {
   if (drop) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     vJoint = vJointAlong = vJointAcross = vJointInside = vNeighbourLength = vec2(0.0);
+    vDotAlong = 0.0;
     vAcross = 0.0;
     vHalfWidth = 0.0;
     return;
@@ -204,7 +212,10 @@ void main() {
   float side = (gl_VertexID % 2 == 0) ? -1.0 : 1.0;
   vHalfWidth = 0.5 * width + 0.5;  // half a pixel more for the antialiased rim
   vec4 p = end ? p1 : p0;
-  vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * 0.5 * width;
+  // A dot's quad reaches its rim along as well as across.
+  float reach = isDot ? vHalfWidth : 0.5 * width;
+  vec2 s = (end ? s1 : s0) + perp * side * vHalfWidth + dir * (end ? 1.0 : -1.0) * reach;
+  vDotAlong = (end ? 1.0 : -1.0) * reach;
   vAcross = side * vHalfWidth;
 #ifdef SKETCHY
   vJoint = vec2(1.0);  // sketchy strokes overlap as a pencil's do

@@ -55,7 +55,7 @@ void LinePass::setMesh(const Mesh* mesh) {
   uploadedCreaseAngle_ = -1.0f;
   silhouetteEye_ = suggestiveEye_ = glm::vec3(NAN);
   suggestive_.reset();
-  staticCount_ = creaseCount_ = silhouetteCount_ = suggestiveCount_ = 0;
+  staticCount_ = creaseCount_ = silhouetteCount_ = suggestiveCount_ = marksCount_ = 0;
 }
 
 void LinePass::geometryChanged() {
@@ -87,12 +87,7 @@ void LinePass::update(const CameraMatrices& camera, const LineSettings& ls, cons
     uploadedCreaseAngle_ = -1.0f;
     silhouetteEye_ = glm::vec3(NAN);
   }
-  if (!vao_) {
-    vao_ = gl::createVertexArray();
-    staticLines_ = gl::createBuffer();
-    silhouettes_ = gl::createBuffer();
-    suggestiveLines_ = gl::createBuffer();
-  }
+  ensureBuffers();
   if ((kinds & 14u) && uploadedCreaseAngle_ != ls.creaseAngle) {
     // Static lines are creases, then boundaries, then material boundaries: the parts asked for
     // are drawn as ranges.
@@ -297,6 +292,37 @@ Status drawLineRanges(const std::vector<LineRange>& ranges, const CameraMatrices
     }
   }
   return okStatus();
+}
+
+void LinePass::ensureBuffers() {
+  if (vao_) return;
+  vao_ = gl::createVertexArray();
+  staticLines_ = gl::createBuffer();
+  silhouettes_ = gl::createBuffer();
+  suggestiveLines_ = gl::createBuffer();
+  marks_ = gl::createBuffer();
+}
+
+Status LinePass::drawMarks(LineStyle style, const CameraMatrices& camera, const glm::ivec4& viewport, gl::ProgramCache& programs,
+                           FrameStats& stats) {
+  if (!mesh_ || !mesh_->hasMarks()) return okStatus();
+  ensureBuffers();
+  if (marksCount_ == 0) {
+    std::vector<FeatureLine> segments;
+    segments.reserve(mesh_->segments.size() / 2);
+    const float kind = float(EdgeKind::Silhouette);  // drawn in the ink of the outlines
+    for (std::size_t i = 0; i + 1 < mesh_->segments.size(); i += 2) segments.push_back({mesh_->segments[i], mesh_->segments[i + 1], kind});
+    LineChains chains(1e-3f * mesh_->radius, false);
+    std::vector<ChainedLine> all = chains.update(segments);
+    // A dot is a segment of no length, with no neighbours (lines.vert draws it round).
+    for (const glm::vec3& p : mesh_->dots) all.push_back({p, p, kind, glm::vec2(0.0f), glm::vec2(0.0f), 0.0f, LineAttributes{}});
+    gl::uploadBuffer(marks_, all.data(), all.size() * sizeof(ChainedLine), GL_STATIC_DRAW);
+    marksCount_ = all.size();
+    ++stats.bufferUploads;
+  }
+  style.hidden = false;
+  style.visible = true;
+  return drawLineRanges({{&marks_, 0, marksCount_}}, camera, style, viewport, vao_, programs, stats);
 }
 
 std::vector<FeatureLine> LinePass::lines(const CameraMatrices& camera, const LineSettings& ls) {

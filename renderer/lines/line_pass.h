@@ -110,13 +110,20 @@ class LinePass {
   // creases, boundaries, material lines, suggestive contours, as enabled): what vector export
   // writes.
   std::vector<FeatureLine> lines(const CameraMatrices& camera, const LineSettings& lines);
+  // Draws the file's own marks (Mesh::dots and segments: glTF points and lines) in `style`'s
+  // silhouette colour and width, visible parts only: the segments chained into strokes, the
+  // dots round, two and a half widths across (at least 3 pixels). Uploaded the first time.
+  [[nodiscard]] Status drawMarks(LineStyle style, const CameraMatrices& camera, const glm::ivec4& viewport, gl::ProgramCache& programs,
+                                 FrameStats& stats);
 
  private:
+  void ensureBuffers();
   const Mesh* mesh_ = nullptr;
   std::unique_ptr<FeatureEdges> edges_;
   std::unique_ptr<SuggestiveContours> suggestive_;  // made when first drawn (it estimates the curvature)
   gl::VertexArray vao_;
-  gl::Buffer staticLines_, silhouettes_, suggestiveLines_;
+  gl::Buffer staticLines_, silhouettes_, suggestiveLines_, marks_;
+  std::size_t marksCount_ = 0;  // segments, then dots, in marks_ (0 until uploaded)
   // Each kind's edges chained into strokes; the silhouettes' and suggestive contours' parameters
   // carried from one view to the next.
   LineChains staticChains_, silhouetteChains_, suggestiveChains_;

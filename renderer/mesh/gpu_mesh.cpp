@@ -198,7 +198,7 @@ void GpuMesh::uploadAppearance(const Mesh& mesh) {
 
 void GpuMesh::drawAll() const {
   bindIndices(indices_);
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+  drawTriangles(0, static_cast<std::uint32_t>(triangleCount_));  // a file of only points and lines has none
 }
 
 void GpuMesh::drawRun(const MaterialRun& run) const {

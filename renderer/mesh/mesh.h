@@ -117,11 +117,15 @@ struct Mesh {
   // fills it. Such a mesh is never treated as closed when culling.
   bool seeThrough = false;
   MeshDeformation deformation;
+  // What the file draws besides faces (glTF POINTS and LINES primitives), in the mesh's space:
+  // dots, and segments (two ends each) drawn as strokes of the line style (lines/line_pass.h).
+  std::vector<glm::vec3> dots, segments;
   LoadReport report;
 
   std::size_t triangleCount() const { return indices.size() / 3; }
   // Whether the file gave anything beyond the shape (what `--materials on` draws).
   bool hasAppearance() const { return !materials.empty() || !colours.empty(); }
+  bool hasMarks() const { return !dots.empty() || !segments.empty(); }
 
 };
 

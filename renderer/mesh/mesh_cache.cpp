@@ -192,7 +192,7 @@ std::optional<Mesh> readMeshCache(const std::string& path) {
 bool writeMeshCache(const std::string& path, const Mesh& m) {
   // A model with materials depends on its .mtl and texture files too, which the key does not
   // cover: it is parsed each time.
-  if (m.hasAppearance()) return false;
+  if (m.hasAppearance() || m.hasMarks()) return false;
   const std::optional<SourceKey> key = sourceKey(path);
   if (!key || key->size < kMinCachedBytes) return false;
   const fs::path entry = entryFor(*key);

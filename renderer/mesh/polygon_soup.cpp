@@ -251,23 +251,39 @@ std::vector<PolygonSoup> splitSoup(PolygonSoup soup, const std::vector<std::uint
   return out;
 }
 
+namespace {
+// The soup's vertices normalised (mesh_builder.h) together with its marks, which count in the
+// bounds; the marks' normalised positions go to `m`.
+std::vector<glm::vec3> normalizeWithMarks(PolygonSoup& soup, Mesh& m) {
+  const std::size_t nv = soup.vertices.size(), dots = soup.dots.size();
+  soup.vertices.insert(soup.vertices.end(), soup.dots.begin(), soup.dots.end());
+  soup.vertices.insert(soup.vertices.end(), soup.segments.begin(), soup.segments.end());
+  soup.vertexValid.resize(soup.vertices.size(), 1);  // marks are finite (the readers keep only those)
+  std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
+  m.dots.assign(verts.begin() + std::ptrdiff_t(nv), verts.begin() + std::ptrdiff_t(nv + dots));
+  m.segments.assign(verts.begin() + std::ptrdiff_t(nv + dots), verts.end());
+  verts.resize(nv);
+  soup.vertices = {};
+  soup.vertexValid = {};
+  soup.dots = {};
+  soup.segments = {};
+  return verts;
+}
+}  // namespace
+
 Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
-  if (soup.triangles.empty())
+  if (soup.triangles.empty() && soup.dots.empty() && soup.segments.empty())
     return Error{report.file + ": contains no faces (" + std::to_string(soup.vertices.size()) +
                  " vertices, but no face that could be used); nothing to draw"};
   Mesh m;
   m.report = std::move(report);
   const bool appearance = soup.tracksTexcoords || soup.tracksMaterials || !soup.colours.empty() || !soup.deform.empty();
   if (!appearance) {
-    std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
-    soup.vertices = {};
-    soup.vertexValid = {};
+    std::vector<glm::vec3> verts = normalizeWithMarks(soup, m);
     buildTriMesh(std::move(verts), std::move(soup.triangles), m);
   } else {
     std::vector<std::uint32_t> split = splitVertices(soup);
-    std::vector<glm::vec3> verts = normalizePositions(soup.vertices, &soup.vertexValid, m.report);
-    soup.vertices = {};
-    soup.vertexValid = {};
+    std::vector<glm::vec3> verts = normalizeWithMarks(soup, m);
     std::vector<std::uint32_t> vertexOrigin, faceOrigin;
     buildTriMesh(std::move(verts), std::move(soup.triangles), m, &vertexOrigin, &faceOrigin);
     const std::size_t nv = m.positions.size(), nf = m.indices.size() / 3;
@@ -317,7 +333,7 @@ Result<Mesh> buildMesh(PolygonSoup soup, LoadReport report) {
       m.textures = std::move(soup.textures);
     }
   }
-  if (m.indices.empty())
+  if (m.indices.empty() && !m.hasMarks())
     return Error{m.report.file + ": every face is degenerate (names one vertex more than once); nothing to draw"};
   return m;
 }

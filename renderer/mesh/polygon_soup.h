@@ -37,6 +37,9 @@ struct PolygonSoup {
   bool skinned = false;
   std::size_t morphTargets = 0;
   std::size_t deformWidth() const { return (skinned ? 8 : 0) + 6 * morphTargets; }
+  // Marks (glTF POINTS and LINES primitives, placed as the vertices are): dots, and segments
+  // as pairs of ends. They count in the model's bounds and become Mesh::dots and segments.
+  std::vector<glm::dvec3> dots, segments;
 
   // Starts per-triangle texture coordinates / materials, giving the triangles so far none / 0.
   void trackTexcoords() { triangleTexcoords.resize(triangles.size(), {-1, -1, -1}); tracksTexcoords = true; }

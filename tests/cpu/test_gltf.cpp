@@ -74,6 +74,77 @@ TEST(Gltf, AWrittenTriangleLoads) {
   EXPECT_EQ(m->positions.size(), 3u);
 }
 
+// Points and lines primitives become the mesh's marks, placed and normalised as its vertices
+// are: a strip of the triangle's three corners is two segments, a loop three, LINES one (of
+// three indices), POINTS three dots; a line strip with an index past the positions skips that
+// segment, named. A file of only points and lines loads, its marks setting its bounds.
+TEST(Gltf, PointsAndLinesBecomeTheMeshsDotsAndSegments) {
+  TempDir d;
+  Doc doc;
+  doc.meshes = R"([{"primitives":[{"attributes":{"POSITION":0},"indices":1},
+                                  {"attributes":{"POSITION":0},"mode":3},
+                                  {"attributes":{"POSITION":0},"mode":2},
+                                  {"attributes":{"POSITION":0},"indices":1,"mode":1},
+                                  {"attributes":{"POSITION":0},"mode":0}]}])";
+  auto m = load(d, doc);
+  ASSERT_TRUE(m) << m.error();
+  EXPECT_EQ(m->triangleCount(), 1u);
+  EXPECT_EQ(m->dots.size(), 3u);
+  ASSERT_EQ(m->segments.size(), 2u * (2 + 3 + 1));
+  // The strip's first segment runs from the first corner to the second, where the triangle's are.
+  EXPECT_EQ(m->segments[0], m->positions[0]);
+  EXPECT_EQ(m->segments[1], m->positions[1]);
+  EXPECT_EQ(m->dots[2], m->positions[2]);
+  // The loop closes: its last segment ends where it began.
+  EXPECT_EQ(m->segments[2 * 4 + 1], m->segments[2 * 2]);
+
+  // Lines alone, reaching five units past the triangle: they load, and widen the bounds.
+  Doc lines;
+  lines.buffer.resize(44 + 24);
+  const float far[6] = {0, 0, 0, 5, 0, 0};
+  std::memcpy(lines.buffer.data() + 44, far, 24);
+  lines.accessors = R"([{"bufferView":0,"componentType":5126,"count":2,"type":"VEC3"}])";
+  lines.bufferViews = R"([{"buffer":0,"byteOffset":44,"byteLength":24}])";
+  lines.meshes = R"([{"primitives":[{"attributes":{"POSITION":0},"mode":1}]}])";
+  auto only = load(d, lines, "lines.gltf");
+  ASSERT_TRUE(only) << only.error();
+  EXPECT_EQ(only->triangleCount(), 0u);
+  ASSERT_EQ(only->segments.size(), 2u);
+  EXPECT_NEAR(glm::length(only->segments[1] - only->segments[0]), 2.0f, 1e-4f) << "the marks are not normalised with the model";
+
+  // A strip indexing past its three positions: the two segments touching the bad index are skipped, named.
+  Doc bad;
+  bad.accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                      {"bufferView":1,"componentType":5123,"count":4,"type":"SCALAR"}])";
+  bad.bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":8}])";
+  bad.buffer = triangleBuffer();
+  const std::uint16_t idx[4] = {0, 1, 7, 2};
+  std::memcpy(bad.buffer.data() + 36, idx, 8);
+  bad.meshes = R"([{"primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":3}]}])";
+  auto skipped = load(d, bad, "bad.gltf");
+  ASSERT_TRUE(skipped) << skipped.error();
+  EXPECT_EQ(skipped->segments.size(), 2u);
+  bool named = false;
+  for (const std::string& w : skipped->report.warnings) named |= contains(w, "2 line segment(s) with an index past its 3 positions");
+  EXPECT_TRUE(named) << "the skipped segments are not reported";
+}
+
+// Khronos' glTF-Asset-Generator primitive modes (assimp-testmodels): points, lines, a line
+// loop and a line strip, each a square's outline with no faces, load as marks.
+TEST(Gltf, KhronosPointAndLineModesLoadAsMarks) {
+  const std::string dir = "/usr/share/assimp/models/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/";
+  const struct {
+    const char* file;
+    std::size_t dots, segments;
+  } cases[] = {{"Mesh_PrimitiveMode_00.gltf", 1024, 0}, {"Mesh_PrimitiveMode_01.gltf", 0, 4}, {"Mesh_PrimitiveMode_02.gltf", 0, 4}, {"Mesh_PrimitiveMode_03.gltf", 0, 4}};
+  for (const auto& c : cases) {
+    auto m = loadMesh(dir + c.file);
+    ASSERT_TRUE(m) << c.file << ": " << m.error();
+    EXPECT_EQ(m->dots.size(), c.dots) << c.file;
+    EXPECT_EQ(m->segments.size() / 2, c.segments) << c.file;
+  }
+}
+
 TEST(Gltf, NodeTransformsPlaceTheMeshesAndMirroringKeepsTheWinding) {
   TempDir d;
   // Two instances of the triangle, one moved 10 along x and one mirrored in x: the flattened

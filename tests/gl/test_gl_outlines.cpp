@@ -510,6 +510,52 @@ TEST_F(OutlineFixture, AChainsJointsInkEachPixelOnce) {
   EXPECT_LT(darkest, 0.78) << "a joint inked a pixel twice";
 }
 
+// A file's own points and lines (Mesh::dots and segments: glTF POINTS and LINES) are drawn
+// with no feature lines asked for: a segment as a stroke of the line width, a dot round, two
+// and a half widths across.
+TEST_F(OutlineFixture, AFilesPointsAndLinesAreDrawnAsStrokesAndRoundDots) {
+  Mesh marked = boxMesh(glm::vec3(-0.2f), glm::vec3(0.2f));
+  marked.segments = {{-0.9f, -0.6f, 0.0f}, {0.9f, -0.6f, 0.0f}};
+  marked.dots = {{0.0f, 0.7f, 0.0f}};
+  LineSettings none;
+  r->scene().setOnly(&marked);
+  RenderSettings s;
+  s.lines = none;
+  s.lines.width = 4.0f;
+  const CameraMatrices faceOn = test::testCamera(1.0f, 0.0f, 0.0f);
+  const ImageRGBA8 img = test::renderImage(*r, faceOn, s, kSize, kSize);
+  Mesh bare = boxMesh(glm::vec3(-0.2f), glm::vec3(0.2f));
+  r->scene().setOnly(&bare);
+  const ImageRGBA8 plain = test::renderImage(*r, faceOn, s, kSize, kSize);
+  // Ink per row and per column in the lower and upper thirds.
+  double lineInk = 0.0, dotInk = 0.0;
+  int lineRows = 0, dotLeft = kSize, dotRight = -1, dotTop = kSize, dotBottom = -1;
+  std::vector<double> rowInk(kSize, 0.0);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const std::size_t i = (std::size_t(y) * kSize + std::size_t(x)) * 4 + 1;
+      const double d = std::max(0.0, (double(plain.pixels[i]) - double(img.pixels[i])) / 255.0);
+      if (y > 2 * kSize / 3) {
+        lineInk += d;
+        rowInk[std::size_t(y)] += d;
+      } else if (y < kSize / 3) {
+        dotInk += d;
+        if (d > 0.5) dotLeft = std::min(dotLeft, x), dotRight = std::max(dotRight, x), dotTop = std::min(dotTop, y), dotBottom = std::max(dotBottom, y);
+      }
+    }
+  for (double v : rowInk) lineRows += v > 1.0;
+  std::printf("segment: ink %.1f over %d rows; dot: ink %.1f, %d x %d pixels over half ink\n", lineInk, lineRows, dotInk,
+              dotRight - dotLeft + 1, dotBottom - dotTop + 1);
+  // The segment spans 0.9 of the picture's width at 4 pixels: about 4 x 290 of ink over 4 or 5 rows.
+  EXPECT_GT(lineInk, 0.8 * 4.0 * 0.9 * kSize) << "the file's line is not drawn";
+  EXPECT_LT(lineInk, 1.25 * 4.0 * 0.9 * kSize);
+  EXPECT_LE(lineRows, 6);
+  // The dot: 10 pixels across, round: pi 25 of ink, not the 100 of a square.
+  EXPECT_NEAR(dotRight - dotLeft + 1, 10, 1) << "the dot is not two and a half widths across";
+  EXPECT_NEAR(dotBottom - dotTop + 1, 10, 1);
+  EXPECT_NEAR(dotInk, 3.14159 * 25.0, 8.0) << "the dot is not round";
+}
+
 // A set's texture runs once along the whole chain, from one end to the other, and each pixel
 // gets the texture's coverage once: the segments' overlapping caps at the ridge's 63 joints
 // (each pixel lies under three quads) must not blend it again.

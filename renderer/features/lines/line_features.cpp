@@ -1,7 +1,8 @@
 // The line kinds as features, drawn over the surfaces in this order: hardware outlines and the
 // charcoal rim from back faces (lines/hardware_outline_pass.h), image-space edges from the
 // frame's depth and normals (lines/image_edges_pass.h), each model's object-space feature
-// lines (lines/line_pass.h), and the scene's intersection lines (lines/intersection_lines.h).
+// lines (lines/line_pass.h), the scene's intersection lines (lines/intersection_lines.h), and
+// the files' own points and lines.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -162,6 +163,27 @@ class IntersectionLinesFeature final : public Feature {
   unsigned sceneVersion_ = 0;
 };
 
+// The files' own points and lines (glTF POINTS and LINES primitives: Mesh::dots and segments),
+// drawn whatever kinds of feature line the settings draw: they are part of the model, in the
+// outlines' ink and width.
+class MarksFeature final : public Feature {
+ public:
+  const char* name() const override { return "points and lines"; }
+  bool active(const FrameView& f) const override {
+    bool any = false;
+    f.scene.forEach([&](const Model& m) { any = any || m.mesh().hasMarks(); });
+    return any;
+  }
+  Status drawOver(FrameView& f) override {
+    Status result = okStatus();
+    f.scene.forEach([&](Model& m) {
+      if (result && m.mesh().hasMarks())
+        result = m.lines().drawMarks(LineStyle::base(f.settings.lines, &m.name()), m.placed(f.camera), f.viewport, f.programs, f.stats);
+    });
+    return result;
+  }
+};
+
 }  // namespace
 
 void addLinesFeatures(std::vector<std::unique_ptr<Feature>>& features) {
@@ -171,6 +193,7 @@ void addLinesFeatures(std::vector<std::unique_ptr<Feature>>& features) {
   auto strokeTextures = std::make_shared<StrokeTextures>();
   features.push_back(std::make_unique<FeatureLinesFeature>(strokeTextures));
   features.push_back(std::make_unique<IntersectionLinesFeature>(strokeTextures));
+  features.push_back(std::make_unique<MarksFeature>());
 }
 
 // Object-space lines are found on the CPU's pose.

@@ -18,7 +18,7 @@ class BakedOcclusionFeature final : public Feature, SurfaceInput {
   Status prepare(FrameView& f) override {
     Status status = okStatus();
     f.scene.forEach([&](Model& m) {
-      if (!status) return;
+      if (!status || m.mesh().triangleCount() == 0) return;  // a file's points and lines alone: nothing to shade
       if (status = m.startOcclusionBake(); !status) return;
       OcclusionBake& bake = *m.occlusionBake();
       if (bake.done()) return;

@@ -30,7 +30,7 @@ Status GltfReader::read() {
   for (int root : roots)
     if (Status s = visit(root, glm::dmat4(1.0), -1, 0, visited); !s) return s;
   if (skippedPrimitives_ > 0)
-    warn_.add(name_ + ": " + std::to_string(skippedPrimitives_) + " primitive(s) of points or lines not drawn (only triangles are)");
+    warn_.add(name_ + ": " + std::to_string(skippedPrimitives_) + " primitive(s) of points or lines on a skinned or morphed mesh not drawn (their marks do not follow the pose)");
   if (mode_ == Mode::Flatten && (!m_.cameras.empty() || !lights_.empty()))
     warn_.add(name_ + ": " + std::to_string(m_.cameras.size()) + " camera(s) and " + std::to_string(lights_.size()) +
               " light(s) are not used when the file is read as one mesh");
@@ -173,8 +173,11 @@ Status GltfReader::mesh(const tinygltf::Node& n, int index, int node, const glm:
 
 Status GltfReader::primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t) {
   PolygonSoup& soup = t.soup;
+  if (prim.mode == TINYGLTF_MODE_POINTS || prim.mode == TINYGLTF_MODE_LINE || prim.mode == TINYGLTF_MODE_LINE_LOOP ||
+      prim.mode == TINYGLTF_MODE_LINE_STRIP)
+    return marks(prim, world, where, t);
   if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP && prim.mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-    ++skippedPrimitives_;
+    warn_.add(name_ + ": " + where + " has mode " + std::to_string(prim.mode) + ", which glTF does not define; skipped");
     return okStatus();
   }
   const auto pos = prim.attributes.find("POSITION");

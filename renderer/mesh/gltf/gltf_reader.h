@@ -37,6 +37,7 @@ namespace fs = std::filesystem;
 // Bounds on what one file may make, whatever its counts say: instancing one mesh from many
 // nodes multiplies it, so the flattened scene is bounded, not only each accessor.
 inline constexpr std::uint64_t kMaxSceneTriangles = 50'000'000;
+inline constexpr std::uint64_t kMaxSceneMarks = 20'000'000;  // points and line segments
 inline constexpr int kMaxNodeDepth = 256;
 // Keyframe values over every channel (each copies its sampler's, and samplers may be shared).
 inline constexpr std::uint64_t kMaxAnimationKeys = 4'000'000;
@@ -212,6 +213,9 @@ class GltfReader {
   void readDeformation(const tinygltf::Primitive& prim, const glm::dmat3& placement, std::size_t count, const std::string& where, Target& t);
 
   Status primitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t);
+  // A POINTS or LINES, LINE_LOOP or LINE_STRIP primitive: its points as dots and its lines as
+  // segments of the soup's marks, placed by `world` (gltf_marks.cpp).
+  Status marks(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, Target& t);
 
   const std::string& name_;
   const tinygltf::Model& m_;
@@ -235,7 +239,9 @@ class GltfReader {
   std::map<int, int> skinOf_;
   std::uint64_t animationKeys_ = 0;
   std::uint64_t sceneTriangles_ = 0;
-  std::size_t skippedPrimitives_ = 0;
+  std::size_t skippedPrimitives_ = 0;  // of points or lines on a deforming mesh
+  std::uint64_t sceneMarks_ = 0;      // dots and segments made, instances counted
+
 };
 
 }  // namespace npr::gltf
