@@ -282,9 +282,16 @@ std::vector<glm::vec3> SceneObjects::framingPoints(const AnimationChoice& choice
   constexpr int kPoses = 16;
   const double length = choice.which == AnimationChoice::Which::None ? 0.0 : animationLength(choice);
   const auto moves = [&](const ViewerObject& o) { return length > 0.0 && o.animated && o.skin < 0 && o.node >= 0; };
+  // What is drawn of a mesh: its vertices and a file's points and lines (Mesh::dots, segments).
+  const auto drawnPoints = [](const Mesh& m) { return m.positions.size() + m.dots.size() + m.segments.size(); };
+  const auto drawnPoint = [](const Mesh& m, std::size_t i) -> const glm::vec3& {
+    if (i < m.positions.size()) return m.positions[i];
+    i -= m.positions.size();
+    return i < m.dots.size() ? m.dots[i] : m.segments[i - m.dots.size()];
+  };
   std::size_t total = 0;
   for (const ViewerObject& o : objects_)
-    if (o.visible) total += o.mesh->positions.size();
+    if (o.visible) total += drawnPoints(*o.mesh);
   const std::size_t stride = std::max<std::size_t>(1, total / std::max<std::size_t>(budget, 1));
   std::vector<glm::vec3> points;
   points.reserve(total / stride + objects_.size());
@@ -292,8 +299,7 @@ std::vector<glm::vec3> SceneObjects::framingPoints(const AnimationChoice& choice
     if (!o.visible || moves(o)) continue;
     // One object is drawn as loaded (place()): its rest placement is the identity.
     const glm::mat4 rest = objects_.size() == 1 ? glm::mat4(1.0f) : toViewer(o.file) * o.inFile;
-    const std::vector<glm::vec3>& p = o.mesh->positions;
-    for (std::size_t i = 0; i < p.size(); i += stride) points.push_back(glm::vec3(rest * glm::vec4(p[i], 1.0f)));
+    for (std::size_t i = 0, n = drawnPoints(*o.mesh); i < n; i += stride) points.push_back(glm::vec3(rest * glm::vec4(drawnPoint(*o.mesh, i), 1.0f)));
   }
   if (length <= 0.0) return points;
   NodePose pose;
@@ -307,11 +313,11 @@ std::vector<glm::vec3> SceneObjects::framingPoints(const AnimationChoice& choice
       for (const ViewerObject& o : objects_) {
         if (o.file != f || !o.visible || !moves(o) || o.node >= static_cast<int>(pose.world.size())) continue;
         const glm::mat4 placed = toViewer(f) * pose.world[static_cast<std::size_t>(o.node)] * o.afterNode;
-        const std::vector<glm::vec3>& p = o.mesh->positions;
+        const std::size_t n = drawnPoints(*o.mesh);
         // At least 64 of a small mesh's vertices each pose (every one of a square's four).
-        const std::size_t step = std::max<std::size_t>(1, std::min(stride * kPoses, p.size() / 64));
-        for (std::size_t i = 0; i < p.size(); i += step) {
-          const glm::vec3 q(placed * glm::vec4(p[i], 1.0f));
+        const std::size_t step = std::max<std::size_t>(1, std::min(stride * kPoses, n / 64));
+        for (std::size_t i = 0; i < n; i += step) {
+          const glm::vec3 q(placed * glm::vec4(drawnPoint(*o.mesh, i), 1.0f));
           if (std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) points.push_back(q);  // an overflowing pose is not drawn (pose())
         }
       }

@@ -111,6 +111,8 @@ void finalizeMesh(Mesh& m) {
   const size_t nv = m.positions.size(), nf = m.indices.size() / 3;
   float r2 = 0.0f;
   for (const glm::vec3& p : m.positions) r2 = std::max(r2, glm::dot(p, p));
+  for (const std::vector<glm::vec3>* marks : {&m.dots, &m.segments})  // a file's points and lines are drawn too
+    for (const glm::vec3& p : *marks) r2 = std::max(r2, glm::dot(p, p));
   m.radius = r2 > 0.0f ? std::sqrt(r2) : 1.0f;
   m.faceCentroids.resize(nf);
   m.faceNormals.resize(nf);

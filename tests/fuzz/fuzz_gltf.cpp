@@ -1,7 +1,7 @@
 // libFuzzer harness: the glTF reader (tinygltf's JSON and GLB parsing, then our checks of every
 // accessor, buffer view, node, material, camera and light) on arbitrary bytes, JSON and GLB
 // alike, read both flattened and as a scene, never crashes, hangs or leaks; what it accepts is
-// meshes the renderer can draw (fuzz_mesh.h) and finite object, camera and light transforms.
+// meshes the renderer can draw (fuzz_mesh.h: faces, or points and lines) and finite object, camera and light transforms.
 // External files are looked up beside a folder that does not exist, so none is ever read.
 #include <cmath>
 #include <cstddef>
@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (s->objects.empty()) __builtin_trap();
   for (const npr::SceneObject& o : s->objects) {
-    if (!o.mesh || o.mesh->indices.empty() || o.mesh->normals.size() != o.mesh->positions.size()) __builtin_trap();
+    if (!o.mesh || (o.mesh->indices.empty() && !o.mesh->hasMarks()) || o.mesh->normals.size() != o.mesh->positions.size()) __builtin_trap();
     for (std::uint32_t i : o.mesh->indices)
       if (i >= o.mesh->positions.size()) __builtin_trap();
   }

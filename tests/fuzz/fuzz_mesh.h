@@ -27,6 +27,13 @@ inline void checkMesh(Result<Mesh>& m) {
     if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) __builtin_trap();
     if (glm::length(p) > 1.0f + 1e-3f) __builtin_trap();
   }
+  // Something to draw: faces, or a file's points and lines, finite and in the unit sphere, the
+  // lines' ends in pairs.
+  if (m->indices.empty() && !m->hasMarks()) __builtin_trap();
+  if (m->segments.size() % 2) __builtin_trap();
+  for (const std::vector<glm::vec3>* marks : {&m->dots, &m->segments})
+    for (const glm::vec3& p : *marks)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || glm::length(p) > 1.0f + 1e-3f) __builtin_trap();
   // The appearance (OBJ): every array empty or one entry per vertex / triangle, every index in
   // range, texture coordinates finite.
   const std::size_t nf = m->triangleCount();
