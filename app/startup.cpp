@@ -2,6 +2,7 @@
 #include "app/startup.h"
 
 #include <algorithm>
+#include <future>
 
 #include "app/settings/style_file.h"
 #include "renderer/core/printable.h"
@@ -44,6 +45,11 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
   state.scene.setSplitObjects(o.splitObjects);
   state.scene.setAllWarnings(o.verbose);
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>{defaultModelPath()} : o.models;
+  // The first palette is read (decoded and analysed, no GL) on another thread while the models
+  // load: both are CPU work the first frame waits for, and a model's file is mostly read by
+  // one thread (docs/performance-history.md, "Start-up").
+  const std::string first = o.palettes.empty() ? defaultPalettePath() : o.palettes.front();
+  std::future<Result<Palette>> firstPalette = std::async(std::launch::async, [first] { return npr::loadPalette(first); });
   if (Status s = state.loadModels(models, false, renderer); !s) return s;
   for (const auto& [object, file] : o.objectPalettes)
     if (Status s = setObjectPalette(state, renderer, object, file); !s) return s;
@@ -53,10 +59,9 @@ Status startScene(const Options& o, ViewerState& state, Renderer& renderer) {
     for (std::size_t i : *chosen) state.scene.setDetail(i, detail, renderer);
   }
   state.palettes = discoverPalettes();
-  const std::string first = o.palettes.empty() ? defaultPalettePath() : o.palettes.front();
   for (const auto& p : o.palettes)
     if (std::find(state.palettes.begin(), state.palettes.end(), p) == state.palettes.end()) state.palettes.push_back(p);
-  if (Status s = state.loadPalette(first, renderer); !s) return s;
+  if (Status s = state.loadPalette(first, firstPalette.get(), renderer); !s) return s;
   // A style sets the look; what the command line names beside it wins.
   if (!o.style.empty()) {
     Result<std::string> file = findStyle(o.style);

@@ -135,8 +135,9 @@ void ViewerState::noteIdleControlPalettes() {
     note(std::string("control palettes are not drawn by the ") + renderPathName(settings.path) + " path (it has no palette)");
 }
 
-Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) {
-  Result<Palette> p = npr::loadPalette(path);
+Status ViewerState::loadPalette(const std::string& path, Renderer& renderer) { return loadPalette(path, npr::loadPalette(path), renderer); }
+
+Status ViewerState::loadPalette(const std::string& path, Result<Palette> p, Renderer& renderer) {
   if (!p) return Error{"palette not loaded: " + p.error()};
   if (Status s = renderer.palettes().setMain(*p); !s) return Error{"palette not loaded: " + s.error()};
   palette = std::make_unique<Palette>(std::move(*p));

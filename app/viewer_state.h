@@ -58,6 +58,9 @@ struct ViewerState {
   Status loadModel(const std::string& path, Renderer& renderer) { return loadModels({path}, false, renderer); }
   // Loads and selects a palette; the palette's own defaults (match mode, range scale) apply.
   Status loadPalette(const std::string& path, Renderer& renderer);
+  // The same with the file already read (npr::loadPalette's result, made elsewhere: start-up
+  // reads the first palette while the models load).
+  Status loadPalette(const std::string& path, Result<Palette> read, Renderer& renderer);
   Status selectPalette(int index, Renderer& renderer);
   // Per-material palettes: draws the model's material `material` with the palette at `path`
   // (kept when the model changes; a model without that material is told so). An empty path
