@@ -36,7 +36,7 @@ void ViewerState::note(const std::string& raw) {
   // Also on stderr: a user who started the viewer from a terminal, and the soak test's log,
   // see every load failure and warning without the overlay. A failure repeated every frame
   // (a render error) is printed once, not once per frame.
-  if (messages.empty() || messages.back() != message) std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());  // escaped above
+  if (echo && (messages.empty() || messages.back() != message)) std::fprintf(stderr, "npr-viewer: %s\n", message.c_str());  // escaped above
   messages.push_back(message);
   if (messages.size() > 20) messages.erase(messages.begin());
 }

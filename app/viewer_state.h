@@ -47,6 +47,9 @@ struct ViewerState {
   // Failures the user must see (a failed open, a refused palette or style, a failed export):
   // the window's message bar shows them until dismissed. Also in `messages` and on stderr.
   std::vector<std::string> problems;
+  // Notes go to stderr too; off for a look drawn aside (the style menu's pictures), whose
+  // notes ("style applied") are not the user's doing.
+  bool echo = true;
   std::string styleName;  // the style applied last (what Ctrl+S offers to save as); empty: none
 
   // Shows the files' objects in place of the scene (or beside it, `add`); the camera frames

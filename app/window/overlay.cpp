@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -363,9 +365,24 @@ void drawOverlay(Viewer& v) {
   drawFileViews(v);
   drawTimeline(v);
   // Styles: a whole look at once (app/settings/style_file.h); a style that fails changes nothing.
-  if (ImGui::BeginCombo("style", "choose a style")) {
-    for (const std::string& file : discoverStyles())
-      if (ImGui::Selectable(fs::path(file).stem().c_str())) (void)openFile(v, file, false);  // as Ctrl+O opens a style
+  // Each with its picture on the scene shown (style_thumbnails.h), drawn one a frame while the
+  // menu is open.
+  if (ImGui::BeginCombo("style", "choose a style", ImGuiComboFlags_HeightLargest)) {
+    v.styleThumbnails.request();
+    const ImVec2 picture(float(StyleThumbnails::kWidth) * 0.75f, float(StyleThumbnails::kHeight) * 0.75f);
+    for (const std::string& file : discoverStyles()) {
+      ImGui::PushID(file.c_str());
+      const ImVec2 at = ImGui::GetCursorPos();
+      if (ImGui::Selectable("##style", false, 0, ImVec2(0.0f, picture.y))) (void)openFile(v, file, false);  // as Ctrl+O opens a style
+      ImGui::SetCursorPos(at);
+      if (const std::optional<unsigned> texture = v.styleThumbnails.texture(file))
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(*texture)), picture, ImVec2(0, 1), ImVec2(1, 0));  // GL's rows run up
+      else
+        ImGui::Dummy(picture);
+      ImGui::SameLine();
+      ImGui::TextUnformatted(fs::path(file).stem().c_str());
+      ImGui::PopID();
+    }
     ImGui::EndCombo();
   }
   besideIfFits(buttonWidth("save style (Ctrl+S)"));

@@ -14,6 +14,7 @@
 #include "app/window/glfw_window.h"
 #include "app/window/export_job.h"
 #include "app/window/input_map.h"
+#include "app/window/style_thumbnails.h"
 #include "renderer/renderer.h"
 
 namespace npr {
@@ -36,6 +37,7 @@ struct Viewer {
   bool dialogEnter = false;
   std::vector<std::string> recent;   // files opened, newest first (the open dialog lists them)
   bool svgRequested = false;  // the overlay's "export lines (SVG)"
+  StyleThumbnails styleThumbnails;  // the style menu's pictures
   std::filesystem::path screenshotDir = ".";
   glm::dvec2 lastCursor{0.0};
   glm::dvec2 lastClick{0.0};   // the last left press (double-click framing)

@@ -35,7 +35,7 @@ class Scene {
   // A scene of one model showing `mesh`, untransformed: the present model reused when there is
   // exactly one (its own palette dropped). Null or an empty mesh: an empty scene.
   void setOnly(const Mesh* mesh) {
-    if (!mesh || mesh->indices.empty()) return clear();
+    if (!mesh || (mesh->indices.empty() && !mesh->hasMarks())) return clear();
     if (models_.size() != 1) {
       clear();
       add(*mesh);

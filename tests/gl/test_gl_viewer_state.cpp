@@ -10,6 +10,7 @@
 #include "app/settings/style_file.h"
 #include "app/viewer_state.h"
 #include "app/window/export_job.h"
+#include "app/window/style_thumbnails.h"
 #include "gl/gl_test_env.h"
 #include "renderer/gl/offscreen_target.h"
 #include "renderer/mesh/mesh_loader.h"
@@ -444,6 +445,64 @@ TEST_F(AddFixture, AnAddedModelStandsBesideTheSceneAtItsSize) {
     EXPECT_LT(ratio, 2.0f) << "the added model swallows the scene";
     EXPECT_GT(glm::distance(glm::vec3(a), glm::vec3(b)), 0.9f * (a.w + b.w)) << "the added model overlaps the scene";
   }
+}
+
+}  // namespace
+}  // namespace npr
+
+namespace npr {
+namespace {
+
+// The style menu's pictures: one drawn per frame the menu asks, each the scene in that style
+// (the styles' pictures differ), by a renderer of their own that is let go once all are drawn;
+// the window's renderer draws exactly as before, its tone range where it was.
+TEST_F(Fixture, StylePicturesAreDrawnOneAFrameAsideFromTheWindowsRenderer) {
+  ViewerState live;
+  live.echo = false;
+  ASSERT_TRUE(live.loadModel(sourcePath("models/bunny.obj"), *r));
+  ASSERT_TRUE(live.loadPalette(sourcePath("palettes/crosshatch/crosshatch.palette"), *r));
+  live.frameScene();
+  const CameraMatrices cam = live.view(float(StyleThumbnails::kWidth) / float(StyleThumbnails::kHeight));
+  const ImageRGBA8 before = renderImage(*r, cam, live.settings, 96, 72);
+  const std::optional<glm::vec2> toneBefore = r->toneRange();
+
+  StyleThumbnails pictures;
+  ASSERT_TRUE(pictures.drawStep(live, cam));
+  EXPECT_EQ(pictures.drawn(), 0u) << "drawn without the menu asking";
+  const std::vector<std::string> styles = discoverStyles();
+  ASSERT_GE(styles.size(), 3u);
+  for (std::size_t i = 0; i < styles.size(); ++i) {
+    pictures.request();
+    const Status st = pictures.drawStep(live, cam);
+    ASSERT_TRUE(st) << st.error();
+    EXPECT_EQ(pictures.drawn(), i + 1) << "not one picture a frame";
+  }
+  EXPECT_TRUE(pictures.holdsRenderer());
+  pictures.request();
+  ASSERT_TRUE(pictures.drawStep(live, cam));
+  EXPECT_FALSE(pictures.holdsRenderer()) << "the second renderer is kept after every picture is drawn";
+  // Each picture shows the bunny: ink in its middle; cel's and charcoal's differ in colour.
+  auto mean = [](const ImageRGBA8& img) {
+    glm::dvec3 sum(0.0);
+    for (std::size_t i = 0; i < img.pixels.size(); i += 4) sum += glm::dvec3(img.pixels[i], img.pixels[i + 1], img.pixels[i + 2]);
+    return sum / double(img.pixels.size() / 4);
+  };
+  std::optional<ImageRGBA8> celPicture, charcoalPicture;
+  for (const std::string& s : styles) {
+    if (std::filesystem::path(s).stem() == "cel") celPicture = pictures.picture(s);
+    if (std::filesystem::path(s).stem() == "charcoal") charcoalPicture = pictures.picture(s);
+  }
+  ASSERT_TRUE(celPicture && charcoalPicture);
+  EXPECT_EQ(celPicture->width, StyleThumbnails::kWidth);
+  const glm::dvec3 a = mean(*celPicture), b = mean(*charcoalPicture);
+  std::printf("mean colour: cel %.0f %.0f %.0f, charcoal %.0f %.0f %.0f\n", a.x, a.y, a.z, b.x, b.y, b.z);
+  EXPECT_GT(glm::length(a - b), 10.0) << "the pictures do not show their styles";
+  // The window's renderer: the same frame, the same tone range, its palette still crosshatch.
+  const ImageRGBA8 after = renderImage(*r, cam, live.settings, 96, 72);
+  EXPECT_EQ(countDiffering(before, after), 0);
+  EXPECT_EQ(r->toneRange().has_value(), toneBefore.has_value());
+  if (toneBefore && r->toneRange()) EXPECT_EQ(*r->toneRange(), *toneBefore);
+  EXPECT_EQ(live.palette->name, "Crosshatch");
 }
 
 }  // namespace
