@@ -501,7 +501,9 @@ TEST_F(Fixture, StylePicturesAreDrawnOneAFrameAsideFromTheWindowsRenderer) {
   const ImageRGBA8 after = renderImage(*r, cam, live.settings, 96, 72);
   EXPECT_EQ(countDiffering(before, after), 0);
   EXPECT_EQ(r->toneRange().has_value(), toneBefore.has_value());
-  if (toneBefore && r->toneRange()) EXPECT_EQ(*r->toneRange(), *toneBefore);
+  if (toneBefore && r->toneRange()) {
+    EXPECT_EQ(*r->toneRange(), *toneBefore);
+  }
   EXPECT_EQ(live.palette->name, "Crosshatch");
 }
 
