@@ -1,6 +1,8 @@
 // Painterly brush strokes (see brush_stroke_pass.h).
 #include "renderer/strokes/brush_stroke_pass.h"
 
+#include <cmath>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -27,7 +29,7 @@ void BrushStrokePass::setMesh(const Mesh* mesh, const Mesh* rest) {
   moved_ = false;
 }
 
-Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings& st, const LightingState& lighting, const GpuPalette& palette,
+Status BrushStrokePass::draw(const CameraMatrices& camera, float sceneScale, const StrokeSettings& st, const LightingState& lighting, const GpuPalette& palette,
                              MatchMode match, const std::vector<glm::vec3>& directions, bool fade, const glm::ivec4& viewport,
                              gl::ProgramCache& programs, FrameStats& stats) {
   if (!st.on || !mesh_) return okStatus();
@@ -51,7 +53,8 @@ Status BrushStrokePass::draw(const CameraMatrices& camera, const StrokeSettings&
   const int budget = std::clamp(st.budget, 0, StrokeSettings::kMaxBudget);
   const bool withField = directions.size() == mesh_->positions.size();
   if (density != seededDensity_ || budget != seededBudget_ || withField != seededWithField_) {
-    const StrokeSeeding seeding = seedStrokes(rest_ ? *rest_ : *mesh_, density, budget, directions);
+    const float scale = std::isfinite(sceneScale) && sceneScale > 0.0f ? sceneScale : 1.0f;
+    const StrokeSeeding seeding = seedStrokes(rest_ ? *rest_ : *mesh_, density * scale * scale, budget, directions);
     ++stats.meshCachesBuilt;
     static_assert(sizeof(StrokeParticle) == 11 * sizeof(float), "the instance layout below reads 11 floats per stroke");
     gl::uploadBuffer(instances_, seeding.particles.data(), seeding.particles.size() * sizeof(StrokeParticle), GL_STATIC_DRAW);

@@ -33,9 +33,14 @@ class BrushStrokePass {
   // The mesh deformed in place: the strokes are put back on it where they were seeded (their
   // triangle and barycentric place), not seeded again.
   void geometryChanged() { moved_ = true; }
-  // `directions`: the mesh's direction field (one per vertex) or empty. Seeds first when the
-  // mesh, density or budget changed since the last seeding.
-  [[nodiscard]] Status draw(const CameraMatrices& camera, const StrokeSettings& strokes, const LightingState& lighting,
+  // `directions`: the mesh's direction field (one per vertex) or empty. `sceneScale`: scene
+  // units per mesh unit (the model's transform's largest axis scale), so the density is per
+  // unit area of the scene, as --stroke-density says: each part of a scene of many is fitted
+  // to its own unit sphere, and seeded at the whole scene's density every small part took as
+  // many strokes as a whole model. Seeds first when the mesh, density or budget changed since
+  // the last seeding (the scale then in force is kept: an animation that scales a model does
+  // not seed it again every frame).
+  [[nodiscard]] Status draw(const CameraMatrices& camera, float sceneScale, const StrokeSettings& strokes, const LightingState& lighting,
                             const GpuPalette& palette, MatchMode match, const std::vector<glm::vec3>& directions, bool fade,
                             const glm::ivec4& viewport, gl::ProgramCache& programs, FrameStats& stats);
   std::size_t strokes() const { return count_; }
