@@ -46,6 +46,13 @@ in float vBeyondLimit;  // 1 at an end behind the limit layer (lines.vert), inte
 uniform vec2 uDash;
 #endif
 out vec4 fragColor;
+// At one joint: a cap's pixel (past this segment's end, inside < 0) on the neighbour's side of
+// the joint's cut (side < 0), where the neighbour's quad (as wide as this one) covers it, is
+// the neighbour's to draw (lines.vert). Only caps: where the neighbour fails the depth test
+// (the line goes behind a surface) a cut into this segment's own length would open a gap.
+bool neighbourDraws(float side, float inside, float along, float across, float neighbourLength) {
+  return side < 0.0 && inside < 0.0 && abs(across) < vHalfWidth && along > 0.5 - vHalfWidth && along < neighbourLength + vHalfWidth - 0.5;
+}
 void main() {
   float halfWidth = vHalfWidth;
   float ink = uInk * vInk;
@@ -78,15 +85,9 @@ void main() {
 #ifdef OCCLUSION_LIMIT
   if (vBeyondLimit > 0.5) discard;
 #endif
-  // A cap's pixels (past this segment's end) on the neighbour's side of the joint's cut, where
-  // the neighbour's quad (as wide as this one) covers them: the neighbour draws them
-  // (lines.vert). Only caps: where the neighbour fails the depth test (the line goes behind a
-  // surface) a cut into this segment's own length would open a gap.
-  bvec2 theirs = bvec2(vJoint.x < 0.0 && vJointInside.x < 0.0 && abs(vJointAcross.x) < vHalfWidth &&
-                           vJointAlong.x > 0.5 - vHalfWidth && vJointAlong.x < vNeighbourLength.x + vHalfWidth - 0.5,
-                       vJoint.y < 0.0 && vJointInside.y < 0.0 && abs(vJointAcross.y) < vHalfWidth &&
-                           vJointAlong.y > 0.5 - vHalfWidth && vJointAlong.y < vNeighbourLength.y + vHalfWidth - 0.5);
-  if (any(theirs)) discard;
+  if (neighbourDraws(vJoint.x, vJointInside.x, vJointAlong.x, vJointAcross.x, vNeighbourLength.x) ||
+      neighbourDraws(vJoint.y, vJointInside.y, vJointAlong.y, vJointAcross.y, vNeighbourLength.y))
+    discard;
   float across = vDot > 0.5 ? length(vec2(vAcross, vDotAlong)) : abs(vAcross);
   float alpha = clamp(halfWidth - across, 0.0, 1.0) * ink;
   if (alpha <= 0.0) discard;

@@ -36,7 +36,7 @@ std::string StyleThumbnails::sceneKey(const ViewerState& live) const {
   return key;
 }
 
-Status StyleThumbnails::drawStep(const ViewerState& live, const CameraMatrices& camera) {
+Status StyleThumbnails::drawStep(const ViewerState& live) {
   if (!requested_) return okStatus();
   requested_ = false;
   const std::string key = sceneKey(live);
@@ -46,7 +46,7 @@ Status StyleThumbnails::drawStep(const ViewerState& live, const CameraMatrices& 
     renderer_.reset();
     meshes_.clear();
     key_ = key;
-    camera_ = camera;
+    camera_ = live.view(float(kWidth) / float(kHeight));
     styles_ = discoverStyles();
   }
   const auto next = std::find_if(styles_.begin(), styles_.end(), [&](const std::string& s) { return !pictures_.count(s) && !contains(failed_, s); });

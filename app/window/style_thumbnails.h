@@ -29,11 +29,11 @@ class StyleThumbnails {
   std::optional<unsigned> texture(const std::string& style) const;
   // The menu was open this frame: drawStep() draws the next picture missing.
   void request() { requested_ = true; }
-  // Draws one missing picture of `live`'s scene, seen as `camera` shows it (a 4:3 view; kept
-  // for the scene's later pictures), when the menu asked since the last call; leaves its own
-  // framebuffer bound (the caller binds its own after). A style that fails is left without a
-  // picture, its reason returned once.
-  [[nodiscard]] Status drawStep(const ViewerState& live, const CameraMatrices& camera);
+  // Draws one missing picture of `live`'s scene from its view (taken, at the pictures' shape,
+  // when the scene's first picture is drawn), when the menu asked since the last call; leaves
+  // its own framebuffer bound (the caller binds its own after). A style that fails is left
+  // without a picture, its reason returned once.
+  [[nodiscard]] Status drawStep(const ViewerState& live);
   // The picture read back (for tests); none when not drawn.
   std::optional<ImageRGBA8> picture(const std::string& style) const;
   // How many of the shipped styles have their picture, and whether the second renderer is held.

@@ -137,8 +137,7 @@ int runWindowViewer(const Options& o) {
       continue;
     }
     // The style menu's next picture, by a renderer of its own, before the scene's frame.
-    if (Status st = v.styleThumbnails.drawStep(v.state, v.state.view(float(StyleThumbnails::kWidth) / float(StyleThumbnails::kHeight))); !st)
-      v.state.note(st.error());
+    if (Status st = v.styleThumbnails.drawStep(v.state); !st) v.state.note(st.error());
     if (framePending) {
       framePending = false;
       v.state.viewAspect = v.aspect();

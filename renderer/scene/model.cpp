@@ -117,11 +117,13 @@ float Model::pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ive
   return projectedSphereArea(placed, mesh_->radius, viewport) / frontTriangles;
 }
 
-float Model::sceneRadius() const {
+float Model::scale() const {
   float scale = 0.0f;
   for (int c = 0; c < 3; ++c) scale = std::max(scale, glm::length(glm::vec3(transform_[c])));
-  return mesh_->radius * scale;
+  return scale;
 }
+
+float Model::sceneRadius() const { return mesh_->radius * scale(); }
 
 const DirectionField& Model::directionField(FrameStats& stats) {
   if (!field_) {

@@ -83,7 +83,9 @@ class Model {
   void setDetail(float detail) { detail_ = detail; }
   // The camera as this model sees it: the scene's view times the model's transform.
   CameraMatrices placed(const CameraMatrices& camera) const { return {camera.view * transform_, camera.projection}; }
-  // The bounding sphere's radius in scene units (the largest axis scale of the transform).
+  // Scene units per mesh unit: the largest axis scale of the transform.
+  float scale() const;
+  // The bounding sphere's radius in scene units.
   float sceneRadius() const;
   // Screen pixels per front-facing triangle seen through `placed` (the bounding disc over half
   // the triangles): how dense the mesh is on screen, which picks where patterns and turns are

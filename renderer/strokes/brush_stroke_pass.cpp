@@ -1,9 +1,8 @@
 // Painterly brush strokes (see brush_stroke_pass.h).
 #include "renderer/strokes/brush_stroke_pass.h"
 
-#include <cmath>
-
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "renderer/gl/pass_state.h"

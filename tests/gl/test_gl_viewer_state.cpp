@@ -467,19 +467,19 @@ TEST_F(Fixture, StylePicturesAreDrawnOneAFrameAsideFromTheWindowsRenderer) {
   const std::optional<glm::vec2> toneBefore = r->toneRange();
 
   StyleThumbnails pictures;
-  ASSERT_TRUE(pictures.drawStep(live, cam));
+  ASSERT_TRUE(pictures.drawStep(live));
   EXPECT_EQ(pictures.drawn(), 0u) << "drawn without the menu asking";
   const std::vector<std::string> styles = discoverStyles();
   ASSERT_GE(styles.size(), 3u);
   for (std::size_t i = 0; i < styles.size(); ++i) {
     pictures.request();
-    const Status st = pictures.drawStep(live, cam);
+    const Status st = pictures.drawStep(live);
     ASSERT_TRUE(st) << st.error();
     EXPECT_EQ(pictures.drawn(), i + 1) << "not one picture a frame";
   }
   EXPECT_TRUE(pictures.holdsRenderer());
   pictures.request();
-  ASSERT_TRUE(pictures.drawStep(live, cam));
+  ASSERT_TRUE(pictures.drawStep(live));
   EXPECT_FALSE(pictures.holdsRenderer()) << "the second renderer is kept after every picture is drawn";
   // Each picture shows the bunny: ink in its middle; cel's and charcoal's differ in colour.
   auto mean = [](const ImageRGBA8& img) {

@@ -1,7 +1,6 @@
 // Painterly brush strokes (`--strokes`) as a feature: each model's strokes, seeded on its
 // surface once and oriented by its direction field, drawn over the surfaces
 // (strokes/brush_stroke_pass.h).
-#include <algorithm>
 #include <memory>
 
 #include "renderer/features/feature.h"
@@ -17,9 +16,7 @@ class StrokesFeature final : public Feature {
     Status result = okStatus();
     f.scene.forEach([&](Model& m) {
       if (!result) return;
-      const glm::mat3 t(m.transform());
-      const float scale = std::max({glm::length(t[0]), glm::length(t[1]), glm::length(t[2])});
-      result = m.strokes().draw(m.placed(f.camera), scale, f.settings.strokes, f.lighting, *f.palette, f.settings.match,
+      result = m.strokes().draw(m.placed(f.camera), m.scale(), f.settings.strokes, f.lighting, *f.palette, f.settings.match,
                                   m.surfaceDirections(f.stats), f.settings.tuning.strokeFade, f.viewport, f.programs, f.stats);
     });
     return result;

@@ -41,4 +41,14 @@ Result<AccessorView> GltfReader::accessor(int index, const std::string& what, st
   return v;
 }
 
+Result<std::optional<AccessorView>> GltfReader::indices(const tinygltf::Primitive& prim, const std::string& where) const {
+  if (prim.indices < 0) return std::optional<AccessorView>();
+  Result<AccessorView> a = accessor(prim.indices, where + " indices", {TINYGLTF_TYPE_SCALAR});
+  if (!a) return Error{a.error()};
+  if (a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+      a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+    return fail(where + ": indices must be unsigned integers");
+  return std::optional<AccessorView>(*a);
+}
+
 }  // namespace npr::gltf

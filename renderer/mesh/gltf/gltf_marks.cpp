@@ -22,15 +22,9 @@ Status GltfReader::marks(const tinygltf::Primitive& prim, const glm::dmat4& worl
   if (pos == prim.attributes.end()) return fail(where + " has no POSITION");
   Result<AccessorView> positions = accessor(pos->second, where + " POSITION", {TINYGLTF_TYPE_VEC3});
   if (!positions) return Error{positions.error()};
-  std::optional<AccessorView> indices;
-  if (prim.indices >= 0) {
-    Result<AccessorView> a = accessor(prim.indices, where + " indices", {TINYGLTF_TYPE_SCALAR});
-    if (!a) return Error{a.error()};
-    if (a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-        a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-      return fail(where + ": indices must be unsigned integers");
-    indices = *a;
-  }
+  Result<std::optional<AccessorView>> read = this->indices(prim, where);
+  if (!read) return Error{read.error()};
+  const std::optional<AccessorView>& indices = *read;
   const std::size_t corners = indices ? indices->count : positions->count;
   const std::uint64_t made = prim.mode == TINYGLTF_MODE_POINTS ? corners
                              : prim.mode == TINYGLTF_MODE_LINE ? corners / 2

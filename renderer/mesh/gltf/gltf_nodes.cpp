@@ -199,15 +199,9 @@ Status GltfReader::primitive(const tinygltf::Primitive& prim, const glm::dmat4& 
     if (a->count != positions->count) return fail(where + ": COLOR_0 has " + std::to_string(a->count) + " elements for " + std::to_string(positions->count) + " positions");
     colour = *a;
   }
-  std::optional<AccessorView> indices;
-  if (prim.indices >= 0) {
-    Result<AccessorView> a = accessor(prim.indices, where + " indices", {TINYGLTF_TYPE_SCALAR});
-    if (!a) return Error{a.error()};
-    if (a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-        a->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-      return fail(where + ": indices must be unsigned integers");
-    indices = *a;
-  }
+  Result<std::optional<AccessorView>> read = this->indices(prim, where);
+  if (!read) return Error{read.error()};
+  const std::optional<AccessorView>& indices = *read;
   const std::size_t corners = indices ? indices->count : positions->count;
   const std::uint64_t triangles = prim.mode == TINYGLTF_MODE_TRIANGLES ? corners / 3 : (corners >= 3 ? corners - 2 : 0);
   sceneTriangles_ += triangles;

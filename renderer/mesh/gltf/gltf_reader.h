@@ -160,6 +160,8 @@ class GltfReader {
   Target& newTarget(int mesh = -1, int skin = -1);
 
   Result<AccessorView> accessor(int index, const std::string& what, std::initializer_list<int> types) const;
+  // A primitive's indices (none when it has none), checked to be unsigned integers.
+  Result<std::optional<AccessorView>> indices(const tinygltf::Primitive& prim, const std::string& where) const;
 
   // The file's materials, mapped onto GL's (the formula in gltf_container.cpp's opening comment), and the images their
   // base colour maps use, decoded once; each mesh copies the ones it uses (localMaterial).
