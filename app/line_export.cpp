@@ -84,7 +84,9 @@ Result<SvgFills> traceFills(Renderer& renderer, const CameraMatrices& camera, co
 
 Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderSettings& settings, const glm::ivec2& size,
                  const SvgContents& what, const std::string& path) {
-  if (!settings.lines.objectSpace() && !what.fill)
+  const SceneMarks marks = renderer.marks();
+  const bool anyMarks = !marks.segments.empty() || !marks.dots.empty();
+  if (!settings.lines.objectSpace() && !what.fill && !anyMarks)
     return Error{"--svg: nothing to export; turn on some object-space lines (--lines silhouette,crease,boundary,material,intersection) or --svg-fill"};
   if (what.fill && !what.palette) return Error{"--svg-fill: no palette is loaded"};
   auto depth = OffscreenTarget::create(size.x, size.y, OffscreenTarget::Format::RGBA32F);
@@ -138,6 +140,19 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
                             hidden ? style.hiddenDash : style.dash, chains.chains[k], hidden ? 0.0f : style.taper});
       }
   }
+  std::vector<SvgDots> dots;
+  if (anyMarks) {
+    // The file's own points and lines, as the frame draws them: in the base style's outline
+    // ink and width, visible parts only.
+    const LineStyle style = LineStyle::base(ls, nullptr);
+    const glm::vec3 ink = style.colours[int(EdgeKind::Silhouette)];
+    const SvgLines chains = visibleLineChains(marks.segments, camera, size, eye);
+    paths += chains.paths;
+    lengthPx += chains.lengthPx;
+    groups.push_back({"marks", ink, style.width, 1.0f, glm::vec2(0.0f), chains.chains[int(EdgeKind::Silhouette)], 0.0f});
+    dots.push_back({"marks-dots", ink, markDotDiameter(style.width), visibleDots(marks.dots, camera, size, eye)});
+    paths += int(dots.back().centres.size());
+  }
   std::optional<SvgFills> fills;
   if (what.fill) {
     Result<SvgFills> traced = traceFills(renderer, camera, settings, size, *what.palette);
@@ -151,7 +166,7 @@ Status exportSvg(Renderer& renderer, const CameraMatrices& camera, const RenderS
     png = std::move(*encoded);
   }
   std::ofstream out(path, std::ios::binary);
-  out << svgDocument(groups, size, png, fills ? &*fills : nullptr);
+  out << svgDocument(groups, size, png, fills ? &*fills : nullptr, dots);
   if (!out.flush()) return Error{path + ": cannot write the SVG"};
   std::string regions;
   if (fills) {

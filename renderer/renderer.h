@@ -95,6 +95,9 @@ class Renderer {
     return sceneFeatureLines(scene_, camera, settings, kindsFor, set, gpu_.programs);
   }
 
+  // The files' own points and lines in scene space, for vector export.
+  SceneMarks marks() const { return sceneMarks(scene_); }
+
   // The anchored pattern starts again from the screen's frame at the next frame: call on view
   // jumps (frame the model, reset the view). A new model does it too.
   void resetPattern() {

@@ -159,7 +159,7 @@ void main() {
   float width = uWidth;
   bool isDot = aStart == aEnd;
   vDot = isDot ? 1.0 : 0.0;
-  if (isDot) width = max(2.5 * width, 3.0);
+  if (isDot) width = max(2.5 * width, 3.0);  // markDotDiameter (lines/line_pass.h)
 #ifdef DEPTH_FALLOFF
   width *= clamp(uFalloffDepth / max(0.5 * (p0.w + p1.w), 1e-6), 0.35, 1.6);
 #endif

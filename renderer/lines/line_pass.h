@@ -5,6 +5,8 @@
 // uploaded once per mesh and angle, silhouettes and suggestive contours when the eye moves.
 #pragma once
 
+#include <algorithm>
+
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -37,6 +39,10 @@ struct LineRange {
 
 // Materials past this index are never selected by a line set (lines.vert's mask).
 inline constexpr int kMaxSelectableMaterials = 256;
+
+// A file's point drawn with lines `width` pixels wide: its diameter in pixels (lines.vert's dots
+// are drawn so; the SVG export writes them so).
+inline float markDotDiameter(float width) { return std::max(2.5f * width, 3.0f); }
 
 // How a group of lines is drawn: the line settings' own style for the kinds no set takes, or a
 // line set's.

@@ -111,6 +111,22 @@ SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMa
   return out;
 }
 
+std::vector<glm::vec2> visibleDots(const std::vector<glm::vec3>& dots, const CameraMatrices& camera, const glm::ivec2& size,
+                                   const ImageRGBA32F& eyePosition) {
+  const Projector proj{camera, glm::vec2(size)};
+  std::vector<glm::vec2> out;
+  for (const glm::vec3& d : dots) {
+    const glm::vec3 p = glm::vec3(camera.view * glm::vec4(d, 1.0f));
+    if (p.z > -1e-4f) continue;  // at or behind the eye
+    const glm::vec2 w = proj.window(p);
+    if (!std::isfinite(w.x + w.y)) continue;
+    const float x = std::floor(w.x), y = std::floor(w.y);
+    if (x < 0.0f || y < 0.0f || x >= float(size.x) || y >= float(size.y)) continue;
+    if (!hidden(eyePosition, int(x), int(y), p)) out.push_back(w);
+  }
+  return out;
+}
+
 std::string hexColour(const glm::vec3& c) {
   char s[8];
   auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
@@ -210,7 +226,7 @@ std::vector<SvgGroup> kindGroups(const SvgLines& lines, const LineSettings& styl
 }
 
 std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng,
-                        const SvgFills* fills) {
+                        const SvgFills* fills, const std::vector<SvgDots>& dots) {
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
     << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" version=\"1.1\" width=\"" << size.x
@@ -219,7 +235,7 @@ std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& s
   if (!rasterPng.empty())
     o << "<image id=\"rendering\" x=\"0\" y=\"0\" width=\"" << size.x << "\" height=\"" << size.y
       << "\" xlink:href=\"data:image/png;base64," << base64(rasterPng) << "\"/>\n";
-  char number[64];
+  char number[96];
   if (fills) {
     // A GL window's pattern row 0 is its bottom row and the palette's image rows are flipped on
     // upload, so a tile drawn upright starts at y = height mod its height (see pattern.glsl).
@@ -285,6 +301,15 @@ std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& s
         o << number;
       }
       o << "\"/>\n";
+    }
+    o << "</g>\n";
+  }
+  for (const SvgDots& d : dots) {
+    if (d.centres.empty()) continue;
+    o << "<g id=\"" << d.id << "\" fill=\"" << hexColour(d.colour) << "\" stroke=\"none\">\n";
+    for (const glm::vec2& c : d.centres) {
+      std::snprintf(number, sizeof number, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"/>\n", double(c.x), double(c.y), double(0.5f * d.diameter));
+      o << number;
     }
     o << "</g>\n";
   }

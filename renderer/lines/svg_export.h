@@ -3,7 +3,7 @@
 // against the frame's eye-space depth; the hidden parts instead for hidden lines), chained into
 // polylines at shared ends in drawing order, one SVG group per kind and part of each line style
 // (the line settings' own, then the line sets) with its colour, width and dashes, optionally over the rendered frame as
-// an embedded raster layer. Plain SVG 1.1 that vector editors read. No GL here: the caller
+// an embedded raster layer, and the file's own points and lines (glTF's) as dots and polylines. Plain SVG 1.1 that vector editors read. No GL here: the caller
 // hands over the lines and the depth it read back.
 #pragma once
 
@@ -32,6 +32,11 @@ struct SvgLines {
 SvgLines visibleLineChains(const std::vector<FeatureLine>& lines, const CameraMatrices& camera, const glm::ivec2& size,
                            const ImageRGBA32F& eyePosition, bool hiddenParts = false);
 
+// Of `dots` (scene space), where they land in the window (pixels, y down) and the model does not
+// hide them, tested as the lines' samples are.
+std::vector<glm::vec2> visibleDots(const std::vector<glm::vec3>& dots, const CameraMatrices& camera, const glm::ivec2& size,
+                                   const ImageRGBA32F& eyePosition);
+
 // "#rrggbb", each channel clamped to 0..1 and rounded.
 std::string hexColour(const glm::vec3& c);
 
@@ -45,6 +50,14 @@ struct SvgGroup {
   // Pixels over which each chain narrows to a point at both ends (0: blunt). Tapered chains
   // are written as filled outlines (SVG strokes have one width), dashes cut out of them.
   float taper = 0.0f;
+};
+
+// Round dots in one colour (a file's points), `diameter` pixels across.
+struct SvgDots {
+  std::string id;
+  glm::vec3 colour{0.0f};
+  float diameter = 3.0f;
+  std::vector<glm::vec2> centres;
 };
 
 // The outline of `chain` drawn `width` wide and narrowing to points over `taper` pixels at both
@@ -70,8 +83,8 @@ struct SvgFills {
 };
 
 // The SVG document: the canvas is the frame; `rasterPng` (may be empty) is embedded underneath,
-// then the fills (may be null), then the groups in order, empty ones left out.
+// then the fills (may be null), then the groups in order, then the dots, empty ones left out.
 std::string svgDocument(const std::vector<SvgGroup>& groups, const glm::ivec2& size, const std::vector<std::uint8_t>& rasterPng,
-                        const SvgFills* fills = nullptr);
+                        const SvgFills* fills = nullptr, const std::vector<SvgDots>& dots = {});
 
 }  // namespace npr

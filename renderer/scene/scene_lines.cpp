@@ -50,4 +50,17 @@ std::vector<FeatureLine> sceneFeatureLines(Scene& scene, const CameraMatrices& c
   return out;
 }
 
+SceneMarks sceneMarks(const Scene& scene) {
+  SceneMarks out;
+  scene.forEach([&](const Model& m) {
+    const Mesh& mesh = m.mesh();
+    const glm::mat4& t = m.transform();
+    auto place = [&](const glm::vec3& p) { return glm::vec3(t * glm::vec4(p, 1.0f)); };
+    for (std::size_t i = 0; i + 1 < mesh.segments.size(); i += 2)
+      out.segments.push_back({place(mesh.segments[i]), place(mesh.segments[i + 1]), float(EdgeKind::Silhouette)});
+    for (const glm::vec3& d : mesh.dots) out.dots.push_back(place(d));
+  });
+  return out;
+}
+
 }  // namespace npr

@@ -1,5 +1,6 @@
-// The scene's lines in scene space: where its models' surfaces cross, and the feature lines a
-// frame shows for a camera (for vector export), each model's placed by its transform.
+// The scene's lines in scene space: where its models' surfaces cross, the feature lines a frame
+// shows for a camera and the files' own points and lines (for vector export), each model's
+// placed by its transform.
 #pragma once
 
 #include <cstdint>
@@ -26,5 +27,14 @@ std::vector<FeatureLine> sceneIntersectionLines(const Scene& scene, Intersection
 std::vector<FeatureLine> sceneFeatureLines(Scene& scene, const CameraMatrices& camera, const RenderSettings& settings,
                                            const std::function<std::uint8_t(const std::string* object)>& kindsFor, const LineSet* set,
                                            gl::ProgramCache& programs);
+
+// The shown models' own marks (Mesh::dots and segments: a file's points and lines) in scene
+// space, placed by their transforms: segments as silhouette-kind lines (the ink they are drawn
+// in), dots as points.
+struct SceneMarks {
+  std::vector<FeatureLine> segments;
+  std::vector<glm::vec3> dots;
+};
+SceneMarks sceneMarks(const Scene& scene);
 
 }  // namespace npr

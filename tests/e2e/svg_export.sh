@@ -2,7 +2,8 @@
 # End-to-end: --svg. The file parses as XML, is SVG 1.1 with one group per line kind (suggestive
 # contours among them), and its
 # lines, rasterised by rsvg-convert, coincide with the raster lines within a pixel (drawn over a
-# plain white palette so only the lines show), on the bunny and the teapot.
+# plain white palette so only the lines show), on the bunny and the teapot; a glTF file's own
+# points and lines are written where the frame draws them.
 set -u
 viewer="$1"; overlap="$2"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
@@ -72,6 +73,47 @@ if "$viewer" "$src/models/bunny.obj" --headless --size 320x240 --palette "$src/p
   grep -q '<g id="set2-creases" fill="#000000" stroke="none"' "$tmp/tone.svg" || { echo "FAIL: a tapered set is not written as filled outlines"; fail=1; }
 else
   echo "FAIL: colour=tone --svg: $(cat "$tmp/err")"; fail=1
+fi
+# A file's own points and lines (glTF POINTS and LINE_STRIP): a quad with 16 points in front of
+# it and 16 behind, and a strip from front to back. The SVG has the 16 visible dots as circles of
+# the drawn diameter and the strip's visible part as a polyline; rasterised, both coincide with
+# the frame's (drawn over the white palette, so only the marks show).
+python3 - "$tmp/marks.gltf" <<'PY'
+import base64, json, struct, sys
+# A quad at z=0 facing +z; 16 points in front of it (z=0.4) and 16 behind (z=-0.4), all inside
+# its outline; a line strip from front to back.
+quad = [(-1,-1,0),(1,-1,0),(1,1,0),(-1,1,0)]
+front = [(-0.6+0.4*i, -0.6+0.4*j, 0.4) for i in range(4) for j in range(4)]
+back = [(x, y, -0.4) for x, y, _ in front]
+strip = [(-0.8,-0.8,0.4),(0.8,-0.8,0.4),(0.8,0.8,-0.4),(-0.8,0.8,-0.4)]
+pts = quad + front + back + strip
+pos = b"".join(struct.pack("<3f", *p) for p in pts)
+idx = struct.pack("<6H", 0,1,2, 0,2,3) + b"\0\0"
+buf = pos + idx
+n = len(pts)
+lo = [min(p[k] for p in pts) for k in range(3)]; hi = [max(p[k] for p in pts) for k in range(3)]
+doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "buffers": [{"byteLength": len(buf), "uri": "data:application/octet-stream;base64," + base64.b64encode(buf).decode()}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(pos)}, {"buffer": 0, "byteOffset": len(pos), "byteLength": 12}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1,-1,0], "max": [1,1,0]},
+    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+    {"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 32, "type": "VEC3", "min": [-0.6,-0.6,-0.4], "max": [0.6,0.6,0.4]},
+    {"bufferView": 0, "byteOffset": 48 + 32*12, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-0.8,-0.8,-0.4], "max": [0.8,0.8,0.4]}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4},
+                             {"attributes": {"POSITION": 2}, "mode": 0},
+                             {"attributes": {"POSITION": 3}, "mode": 3}]}]}
+json.dump(doc, open(sys.argv[1], "w"))
+PY
+if "$viewer" "$tmp/marks.gltf" --headless --size 480x360 --palette "$tmp/white.palette" --line-width 2 \
+     --screenshot "$tmp/marks.png" --svg "$tmp/marks.svg" 2>"$tmp/err"; then
+  dots=$(grep -c '<circle [^>]* r="2.50"/>' "$tmp/marks.svg")
+  [ "$dots" = 16 ] || { echo "FAIL: marks: $dots dots of 5 px in the SVG (expected the 16 in front)"; fail=1; }
+  grep -q '<g id="marks" fill="none"' "$tmp/marks.svg" || { echo "FAIL: marks: no group of the file's lines"; fail=1; }
+  rsvg-convert -b white "$tmp/marks.svg" -o "$tmp/marks-svg.png" &&
+    "$overlap" "$tmp/marks.png" "$tmp/marks-svg.png" 1 0.95 || { echo "FAIL: the SVG's points and lines and the frame's do not coincide"; fail=1; }
+else
+  echo "FAIL: points and lines --svg: $(cat "$tmp/err")"; fail=1
 fi
 # With the frame embedded underneath, and a refusal without lines.
 "$viewer" --headless --size 96x72 --lines silhouette --svg "$tmp/raster.svg" --svg-raster 2>/dev/null
