@@ -130,9 +130,9 @@ void Renderer::clearViewport(const glm::ivec4& viewport) {
 // the paper, the surfaces with the path, then the features' passes over them. Frames of the
 // other outputs take the steps their output reads.
 Status Renderer::render(const CameraMatrices& camera, const RenderSettings& s, const glm::ivec4& viewport, FrameOutput output) {
-  if (output == FrameOutput::Colour && supersampleFactor(s.aa) > 1 && viewport.z > 0 && viewport.w > 0) {
+  if (output == FrameOutput::Colour && (supersampleFactor(s.aa) > 1 || postFiltered(s.aa)) && viewport.z > 0 && viewport.w > 0) {
     const int k = std::min(supersampleFactor(s.aa), RenderSettings::kMaxSupersample);
-    return supersampler_.run(k, viewport, gpu_.programs, gpu_.emptyVao, stats_, [&](int factor, const glm::ivec4& big) {
+    return supersampler_.run(k, postFiltered(s.aa), viewport, gpu_.programs, gpu_.emptyVao, stats_, [&](int factor, const glm::ivec4& big) {
       RenderSettings scaled = pixelSizesScaled(s, float(factor));
       scaled.aa = AntiAliasing::Edges;
       // A poster's tile sits at k times its offset in the supersampled whole.
@@ -199,11 +199,12 @@ Status Renderer::follow(const CameraMatrices& camera, const RenderSettings& s, c
   // when the frame is supersampled. The pattern follows where render() places it: not on the
   // reference path.
   if (viewport.z < 1 || viewport.w < 1) return okStatus();
-  if (supersampleFactor(s.aa) > 1) {
+  if (supersampleFactor(s.aa) > 1 || postFiltered(s.aa)) {
     const int k = Supersampler::factorFor(std::min(supersampleFactor(s.aa), RenderSettings::kMaxSupersample), viewport);
     RenderSettings scaled = pixelSizesScaled(s, float(k));
     scaled.aa = AntiAliasing::Edges;
-    return follow(camera, scaled, k > 1 ? glm::ivec4(0, 0, viewport.z * k, viewport.w * k) : viewport);
+    const bool ours = k > 1 || postFiltered(s.aa);  // drawn into the supersampler's target
+    return follow(camera, scaled, ours ? glm::ivec4(0, 0, viewport.z * k, viewport.w * k) : viewport);
   }
   const glm::ivec4& v = viewport;
   // Posed as render() poses: the close-up samples are drawn from the posed surface.

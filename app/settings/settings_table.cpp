@@ -247,8 +247,10 @@ std::vector<Setting> buildTable() {
       "Anti-aliasing: edges smooths the pixel and vertex paths' tone edges in the shader (the match taken at four points of "
       "each pixel, the pattern untouched; about 1.1x a frame on a CPU rasterizer); ssaaK also draws the frame at K times the "
       "width and height (line widths, strokes and the pattern's texel too) and box-filters it down: silhouettes and the "
-      "per-triangle paths' edges too, about K^2 the fill; off: none. Lines always keep their own one-pixel soft rim",
-      {{"off", AntiAliasing::Off}, {"edges", AntiAliasing::Edges}, {"ssaa2", AntiAliasing::Ssaa2}, {"ssaa3", AntiAliasing::Ssaa3}, {"ssaa4", AntiAliasing::Ssaa4}},
+      "per-triangle paths' edges too, about K^2 the fill; fxaa: edges, then a post-process filter over the frame (one full-screen pass; "
+      "it softens the palette's pattern too); off: none. Lines always keep their own one-pixel soft rim",
+      {{"off", AntiAliasing::Off}, {"edges", AntiAliasing::Edges}, {"ssaa2", AntiAliasing::Ssaa2}, {"ssaa3", AntiAliasing::Ssaa3}, {"ssaa4", AntiAliasing::Ssaa4},
+       {"fxaa", AntiAliasing::Fxaa}},
       [](Look& l) -> AntiAliasing& { return l.render.aa; }));
   t.push_back(choiceRow<TriangleLighting>("triangle-lighting", "triangle lighting", "path",
                                           "Where the per-triangle paths (stencil, triangle) light: cpu, gpu (read back), auto (gpu with shadows)",

@@ -20,10 +20,10 @@ int Supersampler::factorFor(int k, const glm::ivec4& viewport) {
   return std::max(k, 1);
 }
 
-Status Supersampler::run(int k, const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats,
+Status Supersampler::run(int k, bool filter, const glm::ivec4& viewport, gl::ProgramCache& programs, const gl::VertexArray& emptyVao, FrameStats& stats,
                          const std::function<Status(int, const glm::ivec4&)>& draw) {
   k = factorFor(k, viewport);
-  if (k <= 1) return draw(1, viewport);
+  if (k <= 1 && !filter) return draw(1, viewport);
   GLint bound = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
   const glm::ivec2 size(viewport.z * k, viewport.w * k);
@@ -39,7 +39,8 @@ Status Supersampler::run(int k, const glm::ivec4& viewport, gl::ProgramCache& pr
   glBindFramebuffer(GL_FRAMEBUFFER, GLuint(bound));
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   if (!drawn) return drawn;
-  Result<gl::ShaderProgram*> prog = programs.get(gl::SupersampleProgram{}, stats.shaderBuilds);
+  Result<gl::ShaderProgram*> prog =
+      k > 1 ? programs.get(gl::SupersampleProgram{}, stats.shaderBuilds) : programs.get(gl::EdgeFilterProgram{}, stats.shaderBuilds);
   if (!prog) return Error{prog.error()};
   gl::PassState state;
   state.scissor = true;
@@ -49,7 +50,11 @@ Status Supersampler::run(int k, const glm::ivec4& viewport, gl::ProgramCache& pr
   gl::ShaderProgram& p = **prog;
   p.use();
   p.set("uSource", gl::unitIndex(kSourceUnit));
-  p.set("uFactor", k);
+  if (k > 1) {
+    p.set("uFactor", k);
+  } else {
+    p.set("uSize", glm::ivec2(viewport.z, viewport.w));
+  }
   p.set("uOrigin", glm::vec2(viewport.x, viewport.y));
   glBindVertexArray(emptyVao.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

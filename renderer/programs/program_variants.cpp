@@ -176,6 +176,7 @@ struct SourceOf {
   }
   ProgramSource operator()(const MarkerProgram&) const { return {"marker.vert", "marker.frag", {}}; }
   ProgramSource operator()(const SupersampleProgram&) const { return {"fullscreen.vert", "supersample_resolve.frag", {}}; }
+  ProgramSource operator()(const EdgeFilterProgram&) const { return {"fullscreen.vert", "edge_filter.frag", {}}; }
   ProgramSource operator()(const ShadowDepthProgram& d) const {
     ProgramSource s{"shadow_depth.vert", "shadow_depth.frag", {}};
     if (d.alphaCoverage) s.defines.push_back("ALPHA_COVERAGE");

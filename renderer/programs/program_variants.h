@@ -159,6 +159,8 @@ struct MarkerProgram {};
 
 // fullscreen.vert + supersample_resolve.frag: a supersampled frame box-filtered down.
 struct SupersampleProgram {};
+// fullscreen.vert + edge_filter.frag: the frame's post-process anti-aliasing filter (aa fxaa).
+struct EdgeFilterProgram {};
 
 // shadow_depth.vert + shadow_depth.frag: casters' depth for the shadow maps.
 struct ShadowDepthProgram {
@@ -201,7 +203,8 @@ struct FeatureProgram {
 };
 
 using ProgramVariant = std::variant<FeatureProgram, MeshProgram, QuadProgram, LineProgram, OutlineProgram, StrokeProgram, EdgeProgram, MarkerProgram, ShadowDepthProgram, OcclusionBakeProgram,
-                                    TriangleLightProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram, SupersampleProgram>;
+                                    TriangleLightProgram, GroundShadowProgram, TurnResolveProgram, DeformProgram, SupersampleProgram,
+                                    EdgeFilterProgram>;
 
 ProgramSource programSource(const ProgramVariant& variant);
 

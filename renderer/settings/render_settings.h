@@ -280,10 +280,13 @@ enum class ToneRange : std::uint8_t { Fixed, Auto, PerObject };
 // own one-pixel soft rim. SsaaK (K = 2..4) adds supersampling (frame/supersample.h): the frame
 // drawn at K times the viewport's width and height, every size in pixels (lines, dashes,
 // strokes, the pattern's texel) times as much, then box-filtered down: silhouettes and the
-// per-triangle paths' edges are smoothed too, at about K^2 the fill.
-enum class AntiAliasing : std::uint8_t { Off = 0, Edges = 1, Ssaa2 = 2, Ssaa3 = 3, Ssaa4 = 4 };
-// The supersampling factor: 1 below Ssaa2.
-inline int supersampleFactor(AntiAliasing a) { return a >= AntiAliasing::Ssaa2 ? int(a) : 1; }
+// per-triangle paths' edges are smoothed too, at about K^2 the fill. Fxaa adds a post-process
+// filter over the frame drawn at its own size (shaders/edge_filter.frag): one more full-screen
+// pass, but the palette's pattern is softened with the edges.
+enum class AntiAliasing : std::uint8_t { Off = 0, Edges = 1, Ssaa2 = 2, Ssaa3 = 3, Ssaa4 = 4, Fxaa = 5 };
+// The supersampling factor: 1 but for SsaaK.
+inline int supersampleFactor(AntiAliasing a) { return a >= AntiAliasing::Ssaa2 && a <= AntiAliasing::Ssaa4 ? int(a) : 1; }
+inline bool postFiltered(AntiAliasing a) { return a == AntiAliasing::Fxaa; }
 inline bool toneEdgesSmoothed(AntiAliasing a) { return a != AntiAliasing::Off; }
 
 struct RenderSettings;

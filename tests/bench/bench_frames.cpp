@@ -63,7 +63,7 @@ struct PathRow {
   bool ground = false;                    // the ground plane alone (--shadows' yardstick)
   bool occlusion = false;                 // baked ambient occlusion (--occlusion)
   bool autoTone = false;                  // the automatic tone range (--tone-range)
-  AntiAliasing aa = AntiAliasing::Off;    // anti-aliasing (--aa: +edges, +ssaa2)
+  AntiAliasing aa = AntiAliasing::Off;    // anti-aliasing (--aa: +edges, +fxaa, +ssaa2)
   bool gpuTriangles = false;              // per-triangle lighting on the GPU (--gpu-triangles)
   bool control = false;                   // control-image palettes drawn (--control)
   bool screenOcclusion = false;           // screen-space occlusion instead of the bake (--occlusion)
@@ -248,9 +248,9 @@ int main(int argc, char** argv) {
         paths.push_back(on);
       }
       if (aa && pathInfo(p.path).usesPalette && p.path != RenderPath::LitTextured)
-        for (AntiAliasing a : {AntiAliasing::Edges, AntiAliasing::Ssaa2}) {
+        for (AntiAliasing a : {AntiAliasing::Edges, AntiAliasing::Fxaa, AntiAliasing::Ssaa2}) {
           PathRow on = p;
-          on.label += a == AntiAliasing::Edges ? "+edges" : "+ssaa2";
+          on.label += a == AntiAliasing::Edges ? "+edges" : a == AntiAliasing::Fxaa ? "+fxaa" : "+ssaa2";
           on.aa = a;
           paths.push_back(on);
         }
