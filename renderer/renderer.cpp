@@ -41,6 +41,9 @@ FrameNeeds frameNeeds(const RenderSettings& s) {
   FrameNeeds needs;
   // The per-triangle paths light the faces on the CPU; the anchored pattern fits samples read there.
   needs.cpuPose = pathInfo(s.path).perTriangle || s.pattern == PatternSpace::Anchored;
+  // Each object's own pattern frame and direction field. (Its own tone range is fitted per
+  // surface: a batch of one material as one.)
+  needs.objectSurfaces = s.pattern != PatternSpace::Screen || s.orient.source == OrientSource::Curvature;
   featureNeeds(s, needs);
   return needs;
 }
@@ -78,6 +81,7 @@ Status Renderer::prepare(const CameraMatrices& camera, const RenderSettings& s, 
     if (status) status = m.applyPose(on.gpu, on.cpu, gpu_.programs, stats_);
   });
   if (!status) return status;
+  scene_.setBatching(s.tuning.batchObjects && !frameNeeds(s).objectSurfaces);
   // The reference path draws no palette: in the split view it need not fit the tone range a
   // second time each frame. Stroke angles read no tone.
   if (output == FrameOutput::Colour ? s.path != RenderPath::Reference : output != FrameOutput::StrokeAngles) {

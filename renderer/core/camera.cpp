@@ -180,6 +180,23 @@ bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius) {
   return std::isfinite(nearP) && std::isfinite(ahead) && ahead - radius > nearP;
 }
 
+bool sphereOutsideView(const CameraMatrices& camera, float radius) {
+  // The planes of the clip volume, -w <= x, y, z <= w, in the sphere's own space: row 3 of the
+  // projection times the view, plus or minus rows 0 to 2.
+  const glm::mat4 m = camera.projection * camera.view;
+  const glm::vec4 w(m[0][3], m[1][3], m[2][3], m[3][3]);
+  for (int axis = 0; axis < 3; ++axis) {
+    const glm::vec4 row(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
+    for (const float sign : {1.0f, -1.0f}) {
+      const glm::vec4 plane = w + sign * row;  // inside where dot(plane, (p, 1)) >= 0
+      const float length = glm::length(glm::vec3(plane));
+      if (!(length > 0.0f) || !std::isfinite(length)) return false;
+      if (plane.w / length < -radius) return true;  // the centre (the origin) lies beyond it by more than the radius
+    }
+  }
+  return false;
+}
+
 CameraMatrices OrbitCamera::matrices(float aspect) const {
   CameraMatrices m;
   if (!(aspect > 0.0f) || !std::isfinite(aspect)) aspect = 1.0f;

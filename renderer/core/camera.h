@@ -78,5 +78,9 @@ float projectedSphereArea(const CameraMatrices& camera, float radius, const glm:
 // Whether the sphere of `radius` about the origin lies wholly beyond the near plane (perspective
 // or orthographic projections): the eye is outside it and no clipping cuts into what it holds.
 bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius);
+// Whether the sphere of `radius` about the origin lies wholly outside the view volume (beyond
+// one of its six planes): nothing of what it holds can be drawn. Conservative: false where the
+// matrices are degenerate.
+bool sphereOutsideView(const CameraMatrices& camera, float radius);
 
 }  // namespace npr

@@ -41,6 +41,7 @@ struct FrameStats {
   int surfaceBuffers = 0;
   int surfaceBufferPasses = 0;
   bool backFacesCulled = false;  // the mesh passes dropped back faces (render_pass.h: FrameContext)
+  int surfacesCulled = 0;        // objects or batches wholly outside the view, not drawn (scene_surfaces.h)
 
   // Clears the per-frame figures; gpuMs stays until a newer timer query finishes.
   void startFrame() {

@@ -16,6 +16,10 @@ struct FrameNeeds {
   // its surface buffers, the turn resolve): a window's own framebuffer cannot be shared, so the
   // window draws such frames offscreen.
   bool sharedDepth = false;
+  // Something a surface pass reads is each object's own (its pattern's frame, its occlusion
+  // bake, its direction field): the objects are drawn one by one, never merged
+  // into batches (scene/scene_batches.h).
+  bool objectSurfaces = false;
 };
 
 // What a path is asked for its needs with: the settings, and what the scene's palettes and

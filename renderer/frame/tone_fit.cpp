@@ -14,6 +14,10 @@ namespace npr {
 // dark bunny of test_gl_style_legibility in the crosshatch style reads at 0.35 of the paper's
 // lightness, 0.32 with the 98th. The highlight still takes the lightest level.
 constexpr float kLowPercentile = 2.0f, kHighPercentile = 95.0f;
+// At most this many triangles sampled over the scene, and this many surfaces fitted each to its
+// own range (the rest take the scene's): each slot is a matcher and its lookup tables.
+constexpr std::size_t kMaxSamples = 65536;
+constexpr int kMaxToneSlots = 1024;
 
 // The ground set apart from the objects (figure and ground): its own lit tones fitted onto the
 // palette's lightest levels, so it reads lighter and sparser than the objects on it whatever
@@ -34,12 +38,15 @@ void ToneFit::fitGround(Model& ground, const LightingState& lighting, const Came
 
 void ToneFit::update(Scene& scene, const LightingState& lighting, const CameraMatrices& camera, const RenderSettings& s, FrameStats& stats) {
   const bool perObject = s.toneRange == ToneRange::PerObject && s.bands.empty();
-  if (!perObject)
-    scene.forEachIncludingHidden([](Model& m) {
+  if (!perObject) {
+    const auto reset = [](Model& m) {
       m.toneTracker().reset();
       m.toneTarget.reset();
       m.toneSlot = 0;
-    });
+    };
+    scene.forEachIncludingHidden(reset);
+    scene.forEachSurface(reset);  // the batches too
+  }
   Model* ground = s.ground ? scene.ground() : nullptr;
   if (ground) ground->toneSlot = 0;
   if (s.toneRange == ToneRange::Fixed || !s.bands.empty()) {
@@ -55,17 +62,24 @@ void ToneFit::update(Scene& scene, const LightingState& lighting, const CameraMa
   // with 2560 or all of them (its highlight falls on few faces). So about 8192 over the scene,
   // at least 64 each: the bunny's frame costs what the fixed range's does within the noise; the
   // 67-part engine orbiting pays 1.12x with 4096 and 1.16x with 16384 (docs/lines-and-tone.md).
+  // The surfaces as drawn: a batch of small objects (scene/scene_batches.h, each batch of one
+  // material) is fitted as one. Past kMaxSamples over the scene the share of each shrinks, so a
+  // scene of thousands of parts costs what one of a few hundred does.
   std::size_t models = 0;
-  scene.forEach([&](const Model&) { ++models; });
-  const std::size_t budget = perObject ? std::max<std::size_t>(64, 8192 / std::max<std::size_t>(models, 1))
-                                       : std::max<std::size_t>(256, 1024 / std::max<std::size_t>(models, 1));
+  scene.forEachSurface([&](const Model&) { ++models; });
+  models = std::max<std::size_t>(models, 1);
+  const std::size_t budget = std::max<std::size_t>(1, std::min(perObject ? std::max<std::size_t>(64, 8192 / models) : std::max<std::size_t>(256, 1024 / models),
+                                                               kMaxSamples / models));
   samples_.clear();
   int slot = 0;
-  scene.forEach([&](Model& m) {
+  scene.forEachSurface([&](Model& m) {
     const std::size_t first = samples_.size();
     m.poseToneSamples(toneSampleStride(m.mesh().triangleCount(), budget));  // a pose only the GPU made
     sampleTones(m.mesh(), lighting, camera.view * m.transform(), camera.projection, s.materials, s.match, budget, samples_);
-    if (!perObject) return;
+    if (!perObject || slot >= kMaxToneSlots) {  // past the slots, the scene's range
+      m.toneSlot = 0;
+      return;
+    }
     // Its own tones, fitted and smoothed as the scene's are (slots from 1, in scene order).
     std::vector<ToneSample> own(samples_.begin() + std::ptrdiff_t(first), samples_.end());
     m.toneTarget = m.toneTracker().update(percentileRange(own, kLowPercentile, kHighPercentile, 0.15f), 1.0f);

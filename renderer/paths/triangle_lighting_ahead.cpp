@@ -17,7 +17,7 @@ void lightTrianglesAhead(FrameView& f) {
   const RenderSettings& s = f.settings;
   if (s.triangleLighting == TriangleLighting::Gpu || s.shadows || s.occlusion) return;
   std::vector<Model*> models;
-  f.scene.forEach([&](Model& m) {
+  f.scene.forEachSurface([&](Model& m) {
     if (m.toneSlot == 0 && (m.parts().empty() || !s.materials) && f.paletteOf(m)) models.push_back(&m);
   });
   if (models.size() < 2) return;

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/animation/deformation.h"
 #include "renderer/mesh/mesh_subset.h"
 
@@ -114,7 +116,11 @@ void Model::poseToneSamples(std::size_t stride) {
 
 float Model::pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const {
   const float frontTriangles = 0.5f * float(mesh_->indices.size() / 3);
-  return projectedSphereArea(placed, mesh_->radius, viewport) / frontTriangles;
+  if (memberSpheres_.empty()) return projectedSphereArea(placed, mesh_->radius, viewport) / frontTriangles;
+  float area = 0.0f;
+  for (const glm::vec4& s : memberSpheres_)
+    area += projectedSphereArea({placed.view * glm::translate(glm::mat4(1.0f), glm::vec3(s)), placed.projection}, s.w, viewport);
+  return area / frontTriangles;
 }
 
 float Model::scale() const {

@@ -91,6 +91,9 @@ class Model {
   // the triangles): how dense the mesh is on screen, which picks where patterns and turns are
   // worked out.
   float pixelsPerFrontTriangle(const CameraMatrices& placed, const glm::ivec4& viewport) const;
+  // A batch of objects (scene_batches.h): each object's bounding sphere in the model's space
+  // (centre, radius), whose discs pixelsPerFrontTriangle sums instead of the batch's one.
+  void setMemberSpheres(std::vector<glm::vec4> spheres) { memberSpheres_ = std::move(spheres); }
 
   GpuMesh& gpu() { return gpu_; }
   const GpuMesh& gpu() const { return gpu_; }
@@ -139,6 +142,7 @@ class Model {
   void adopt(const Mesh& mesh);  // mesh_ and rest_ for a new mesh (a posed copy when it deforms)
   void poseOnCpu(bool upload, FrameStats& stats);
 
+  std::vector<glm::vec4> memberSpheres_;
   const Mesh* mesh_;
   const Mesh* rest_;
   std::unique_ptr<Mesh> posed_;           // a deforming mesh's posed copy

@@ -17,12 +17,14 @@ Status Scene::setPalette(ModelId id, const Palette& palette) {
   if (!uploaded) return Error{uploaded.error()};
   m->setPalette(std::move(*uploaded));
   stats_.bufferUploads += 1;
+  batchesFor_ = ~0u;  // it is drawn alone now
   return okStatus();
 }
 
 bool Scene::setDetail(ModelId id, float detail) {
   Model* m = find(id);
   if (m) m->setDetail(std::isfinite(detail) ? std::clamp(detail, 0.0f, 1.0f) : 0.0f);
+  batchesFor_ = ~0u;  // batches keep one detail each
   return m != nullptr;
 }
 
@@ -36,6 +38,35 @@ double Scene::strokeSeedMs() {
   double ms = 0.0;
   forEach([&](Model& m) { ms += m.strokes().seedMs(); });
   return ms;
+}
+
+void Scene::updateBatches() {
+  if (batchesFor_ == layoutVersion_) return;
+  batchesFor_ = layoutVersion_;
+  batches_.clear();
+  std::vector<Entry*> candidates;
+  std::vector<const Model*> models;
+  for (Entry& e : models_) {
+    e.batched = false;
+    if (e.visible && !e.moving && batchable(*e.model)) {
+      candidates.push_back(&e);
+      models.push_back(e.model.get());
+    }
+  }
+  if (models.size() < kMinBatchedObjects) return;
+  for (const std::vector<std::size_t>& group : groupIntoBatches(models)) {
+    std::vector<const Model*> members;
+    for (std::size_t i : group) members.push_back(models[i]);
+    glm::mat4 placement(1.0f);
+    Batch b;
+    std::vector<glm::vec4> spheres;
+    b.mesh = std::make_unique<Mesh>(mergeObjects(members, placement, &spheres));
+    b.model = std::make_unique<Model>(*b.mesh, placement, stats_);
+    b.model->setMemberSpheres(std::move(spheres));
+    b.model->setDetail(members.front()->detail());
+    for (std::size_t i : group) candidates[i]->batched = true;
+    batches_.push_back(std::move(b));
+  }
 }
 
 Model* Scene::ground() {

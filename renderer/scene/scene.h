@@ -1,6 +1,8 @@
 // The scene: the models the renderer draws, each with its own transform and derived caches
 // (model.h). The API adds, removes, moves, hides and shows them; a hidden model keeps its
 // caches and is skipped by every pass (forEach, placed, bounds and first see only the shown).
+// With batching on, the surface passes draw small static models merged into batches
+// (scene_batches.h; forEachSurface, placed); everything else sees the models themselves.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "renderer/scene/model.h"
+#include "renderer/scene/scene_batches.h"
 #include "renderer/mesh/placed_mesh.h"
 
 namespace npr {
@@ -51,6 +54,7 @@ class Scene {
   [[nodiscard]] Status setPalette(ModelId id, const Palette& palette);
   void clearPalette(ModelId id) {
     if (Model* m = find(id)) m->setPalette(nullptr);
+    batchesFor_ = ~0u;
   }
   // The object's name, for line sets that select objects. False when there is no such model.
   bool setName(ModelId id, const std::string& name) {
@@ -112,12 +116,17 @@ class Scene {
   // A move of the animation: as setTransform, but the scene's layout (what the ground is
   // sized and placed by) stays, so the ground does not follow a jumping character.
   bool pose(ModelId id, const glm::mat4& transform) {
-    Model* m = find(id);
-    if (!m) return false;
-    if (m->transform() == transform) return true;
-    m->setTransform(transform);
-    ++version_;
-    return true;
+    for (auto& e : models_) {
+      if (e.id != id) continue;
+      if (e.model->transform() == transform) return true;
+      e.model->setTransform(transform);
+      ++version_;
+      // A model that moves is drawn alone from now on: its batch is made again without it.
+      if (!e.moving && e.batched) batchesFor_ = ~0u;
+      e.moving = true;
+      return true;
+    }
+    return false;
   }
   // A model's geometry changed in place (animation): what covers the whole scene (shadow
   // maps) is drawn again; the layout stays.
@@ -160,11 +169,30 @@ class Scene {
   void forEachIncludingHidden(Fn&& fn) {
     for (auto& m : models_) fn(*m.model);
   }
-  // Every model's mesh with the camera placed by its transform (passes that see the whole scene).
-  std::vector<PlacedMesh> placed(const CameraMatrices& camera) const {
+  // Whether the surface passes draw batches (scene_batches.h): the frame turns it off where it
+  // reads what only the objects themselves hold (their own tone ranges, patterns, bakes).
+  void setBatching(bool on) { batching_ = on; }
+  bool batching() const { return batching_; }
+  // Calls fn(Model&) for every surface the surface passes draw: the batches, then every shown
+  // model not in one (all shown models when batching is off). Batches are made the first time
+  // after the layout changed.
+  template <class Fn>
+  void forEachSurface(Fn&& fn) {
+    if (batching_) {
+      updateBatches();
+      for (auto& b : batches_) fn(*b.model);
+    }
+    for (auto& m : models_)
+      if (m.visible && !(batching_ && m.batched)) fn(*m.model);
+  }
+  // The batches drawn now (0 with batching off or none made).
+  std::size_t batchCount() const { return batching_ ? batches_.size() : 0; }
+  // A model's materials gained or lost palettes of their own (its parts): batches are made again.
+  void partsChanged() { batchesFor_ = ~0u; }
+  // Every surface's mesh with the camera placed by its transform (passes that see the whole scene).
+  std::vector<PlacedMesh> placed(const CameraMatrices& camera) {
     std::vector<PlacedMesh> meshes;
-    for (const auto& e : models_)
-      if (e.visible) meshes.push_back({&e.model->gpu(), e.model->placed(camera), &e.model->materials()});
+    forEachSurface([&](Model& m) { meshes.push_back({&m.gpu(), m.placed(camera), &m.materials()}); });
     return meshes;
   }
   // The first shown model (null when none is).
@@ -205,8 +233,20 @@ class Scene {
     ModelId id;
     std::unique_ptr<Model> model;
     bool visible = true;
+    bool batched = false;  // drawn in a batch (while batching is on)
+    bool moving = false;   // posed by animation: never batched
   };
   std::vector<Entry> models_;
+  // Small static models merged for the surface passes (scene_batches.h), made for layout
+  // version batchesFor_.
+  struct Batch {
+    std::unique_ptr<Mesh> mesh;
+    std::unique_ptr<Model> model;
+  };
+  void updateBatches();
+  std::vector<Batch> batches_;
+  bool batching_ = false;
+  unsigned batchesFor_ = ~0u;
   ModelId nextId_ = 1;
   unsigned version_ = 0, layoutVersion_ = 0;
   Mesh groundMesh_;

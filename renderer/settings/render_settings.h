@@ -269,6 +269,9 @@ struct RenderTuning {
   // Painterly strokes beyond the framing distance fade in and out over a band of ranks (off:
   // cut, which pops).
   bool strokeFade = true;
+  // Small static objects merged into batches for the surface passes where the frame allows
+  // (scene/scene_batches.h); off: every object drawn alone, to compare.
+  bool batchObjects = true;
 };
 
 // Whether and how the palette is fitted onto the tones on screen (RenderSettings::toneRange).

@@ -23,8 +23,14 @@ Status SceneSurfaces::draw(FrameView& frame, const std::vector<Feature*>& active
   RenderPass* p = draw ? nullptr : &path(frame.settings.path);
   if (p) p->beginScene();
   Status status = okStatus();
-  frame.scene.forEach([&](Model& m) {
-    if (status) status = drawModel(frame, m, output, &m != placed, draw);
+  frame.scene.forEachSurface([&](Model& m) {
+    if (!status) return;
+    // Nothing of it in view: no draw, and none of the path's work for it.
+    if (sphereOutsideView(m.placed(frame.camera), m.mesh().radius)) {
+      ++frame.stats.surfacesCulled;
+      return;
+    }
+    status = drawModel(frame, m, output, &m != placed, draw);
   });
   if (status && !frame.scene.empty()) status = drawGround(frame, output, draw);
   if (p)

@@ -1,6 +1,7 @@
-// The scene's surfaces, drawn with the frame's render path: every shown model, each of its
-// per-material parts with its own palette, then the ground, each part with the active
-// features' share (Feature::shade) and the control-image palettes over it. Owns the paths
+// The scene's surfaces, drawn with the frame's render path: every shown model (small static
+// ones merged into batches: scene/scene_batches.h), each of its per-material parts with its
+// own palette, then the ground, each part with the active features' share (Feature::shade)
+// and the control-image palettes over it; a model or batch wholly outside the view is skipped. Owns the paths
 // (paths/, one per row of the path table), the turn resolve they may leave turned lookups to,
 // and the pattern placement of the model being drawn.
 #pragma once

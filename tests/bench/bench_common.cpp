@@ -113,13 +113,14 @@ std::optional<ImageBenchArgs> parseImageBenchArgs(int argc, char** argv, const c
     if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) a.frames = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &a.width, &a.height);
     else if (!std::strcmp(argv[i], "--quick")) a.quick = true;
+    else if (!std::strcmp(argv[i], "--objects") && i + 1 < argc) a.objects = std::atoi(argv[++i]);
     else {
-      std::fprintf(stderr, "usage: %s [--size WxH] [--frames N] [--quick]\n", program);
+      std::fprintf(stderr, "usage: %s [--size WxH] [--frames N] [--quick] [--objects N]\n", program);
       return std::nullopt;
     }
   }
-  if (a.frames < 1 || a.width < 16 || a.height < 16) {
-    std::fprintf(stderr, "%s: --frames must be positive and --size at least 16x16\n", program);
+  if (a.frames < 1 || a.width < 16 || a.height < 16 || a.objects < 0 || a.objects > 1000000) {
+    std::fprintf(stderr, "%s: --frames must be positive, --size at least 16x16 and --objects 0..1000000\n", program);
     return std::nullopt;
   }
   return a;

@@ -26,6 +26,7 @@ const Mesh& largeMaterialMesh();
 struct ImageBenchArgs {
   int width = 640, height = 480, frames = 24;
   bool quick = false;
+  int objects = 0;  // --objects N: the scene's object count, where a bench builds one (0: its own)
 };
 std::optional<ImageBenchArgs> parseImageBenchArgs(int argc, char** argv, const char* program);
 // The headless context on the device NPR_GPU names (as the viewer's --gpu), without the debug

@@ -341,6 +341,66 @@ std::vector<glm::vec3> placed(const SceneObject& o) {
 
 bool near(const glm::vec3& a, const glm::vec3& b) { return glm::length(a - b) < 1e-4f; }
 
+// EXT_mesh_gpu_instancing (required by the file): a node of three instances becomes three
+// objects sharing one mesh, each placed by the node's transform times its instance's
+// (translation and scale); the file flattened has the three copies. Instances whose streams
+// disagree in count are refused, named; a non-finite one is left out, named.
+TEST(GltfScene, GpuInstancesBecomeObjectsPlacedByNodeTimesInstance) {
+  TempDir d;
+  Doc doc;
+  doc.buffer.resize(44 + 72);
+  const float translations[9] = {0, 0, 0, 5, 0, 0, 0, 5, 0};
+  const float scales[9] = {1, 1, 1, 2, 2, 2, 1, 3, 1};
+  std::memcpy(doc.buffer.data() + 44, translations, 36);
+  std::memcpy(doc.buffer.data() + 80, scales, 36);
+  doc.accessors = R"([{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"},
+                      {"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"},
+                      {"bufferView":2,"componentType":5126,"count":3,"type":"VEC3"},
+                      {"bufferView":3,"componentType":5126,"count":3,"type":"VEC3"},
+                      {"bufferView":3,"componentType":5126,"count":2,"type":"VEC3"}])";
+  doc.bufferViews = R"([{"buffer":0,"byteOffset":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6},
+                        {"buffer":0,"byteOffset":44,"byteLength":36},{"buffer":0,"byteOffset":80,"byteLength":36}])";
+  doc.nodes = R"([{"name":"grid","mesh":0,"translation":[10,0,0],
+                   "extensions":{"EXT_mesh_gpu_instancing":{"attributes":{"TRANSLATION":2,"SCALE":3}}}}])";
+  doc.extra = R"(,"extensionsUsed":["EXT_mesh_gpu_instancing"],"extensionsRequired":["EXT_mesh_gpu_instancing"])";
+  auto s = loadAsScene(d, doc);
+  ASSERT_TRUE(s) << s.error();
+  ASSERT_EQ(s->objects.size(), 3u);
+  EXPECT_EQ(s->objects[1].name, "grid #1");
+  EXPECT_EQ(s->objects[0].mesh.get(), s->objects[2].mesh.get());
+  const glm::vec3 file[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::vector<glm::vec3> at = placed(s->objects[k]);
+    const glm::vec3 t(translations[3 * k], translations[3 * k + 1], translations[3 * k + 2]);
+    const glm::vec3 sc(scales[3 * k], scales[3 * k + 1], scales[3 * k + 2]);
+    for (const glm::vec3& want : file) {
+      const glm::vec3 p = glm::vec3(10, 0, 0) + t + sc * want;
+      bool found = false;
+      for (const glm::vec3& q : at) found = found || near(q, p);
+      EXPECT_TRUE(found) << "instance " << k << " lacks " << p.x << ", " << p.y << ", " << p.z;
+    }
+  }
+  auto flat = load(d, doc, "flat.gltf");
+  ASSERT_TRUE(flat) << flat.error();
+  EXPECT_EQ(flat->triangleCount(), 3u);
+
+  Doc mismatched = doc;
+  mismatched.nodes = R"([{"mesh":0,"extensions":{"EXT_mesh_gpu_instancing":{"attributes":{"TRANSLATION":2,"SCALE":4}}}}])";
+  auto refused = loadAsScene(d, mismatched, "mismatched.gltf");
+  ASSERT_FALSE(refused);
+  EXPECT_TRUE(contains(refused.error(), "SCALE has 2 elements for 3 instances")) << refused.error();
+
+  Doc nonFinite = doc;
+  const float inf = INFINITY;
+  std::memcpy(nonFinite.buffer.data() + 44 + 12, &inf, 4);
+  auto two = loadAsScene(d, nonFinite, "nonfinite.gltf");
+  ASSERT_TRUE(two) << two.error();
+  EXPECT_EQ(two->objects.size(), 2u);
+  bool named = false;
+  for (const std::string& w : two->warnings) named |= contains(w, "1 instance(s) with a non-finite or zero transform left out");
+  EXPECT_TRUE(named) << "the left-out instance is not reported";
+}
+
 TEST(GltfScene, NodesBecomeObjectsSharingTheirMeshPlacedAsInTheFile) {
   TempDir d;
   Doc doc;

@@ -46,7 +46,7 @@ class DepthCueFeature final : public Feature {
       mesh.drawAll();
       ++f.stats.drawCalls;
     };
-    f.scene.forEach([&](Model& m) { draw(m.gpu(), f.camera.view * m.transform()); });
+    f.scene.forEachSurface([&](Model& m) { draw(m.gpu(), f.camera.view * m.transform()); });
     if (f.settings.ground)
       if (Model* g = f.scene.ground()) draw(g->gpu(), f.camera.view);
     return okStatus();

@@ -15,6 +15,9 @@ void addOcclusionFeatures(std::vector<std::unique_ptr<Feature>>& features) {
   features.push_back(makeScreenOcclusionFeature());
 }
 
-void OcclusionNeeds(const RenderSettings&, FrameNeeds&) {}
+// The bake is each object's own (it shades by its own vertices): the objects draw themselves.
+void OcclusionNeeds(const RenderSettings& s, FrameNeeds& needs) {
+  needs.objectSurfaces = needs.objectSurfaces || (s.occlusion && s.occlusionMethod == OcclusionMethod::Baked);
+}
 
 }  // namespace npr

@@ -20,7 +20,7 @@ class ShadowsFeature final : public Feature, SurfaceInput {
     ready_ = false;
     const Model* ground = f.settings.ground ? f.scene.ground() : nullptr;
     ShadowScene scene;
-    f.scene.forEach(
+    f.scene.forEachSurface(
         [&](Model& m) { scene.casters.push_back({&m.gpu(), m.transform(), m.materials().coverage() ? &m.materials() : nullptr}); });
     const glm::vec4 bounds = f.scene.bounds();
     scene.centre = glm::vec3(bounds);

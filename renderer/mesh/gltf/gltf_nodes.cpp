@@ -7,7 +7,7 @@ namespace npr::gltf {
 
 Status GltfReader::read() {
   for (const std::string& ext : m_.extensionsRequired)
-    if (ext != "KHR_texture_transform" && ext != "KHR_materials_unlit" && ext != "KHR_lights_punctual")
+    if (ext != "KHR_texture_transform" && ext != "KHR_materials_unlit" && ext != "KHR_lights_punctual" && ext != "EXT_mesh_gpu_instancing")
       return fail("requires the extension " + printable(ext) + ", which this viewer does not read");
   if (Status s = readMaterials(); !s) return s;
   if (Status s = readLights(); !s) return s;
@@ -135,9 +135,66 @@ Status GltfReader::visit(int index, const glm::dmat4& parent, int parentNode, in
   return okStatus();
 }
 
+// EXT_mesh_gpu_instancing: the node's instances' transforms (translation, rotation, scale per
+// instance, any of them absent), each after the node's own; empty when the node has none.
+Result<std::vector<glm::dmat4>> GltfReader::gpuInstances(const tinygltf::Node& n, int index) {
+  const auto it = n.extensions.find("EXT_mesh_gpu_instancing");
+  if (it == n.extensions.end()) return std::vector<glm::dmat4>{};
+  const std::string where = "node " + std::to_string(index) + " EXT_mesh_gpu_instancing";
+  const tinygltf::Value& attributes = it->second.Get("attributes");
+  if (!attributes.IsObject()) return fail(where + " has no attributes");
+  std::optional<AccessorView> streams[3];  // translation, rotation, scale
+  const char* names[3] = {"TRANSLATION", "ROTATION", "SCALE"};
+  std::size_t count = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (!attributes.Has(names[k])) continue;
+    const tinygltf::Value& a = attributes.Get(names[k]);
+    if (!a.IsInt()) return fail(where + " " + names[k] + " is not an accessor index");
+    Result<AccessorView> view = accessor(a.Get<int>(), where + " " + names[k], {k == 1 ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3});
+    if (!view) return Error{view.error()};
+    if (count && view->count != count) return fail(where + ": " + names[k] + " has " + std::to_string(view->count) + " elements for " + std::to_string(count) + " instances");
+    count = view->count;
+    streams[k] = *view;
+  }
+  if (count > kMaxInstances) return fail(where + " has " + std::to_string(count) + " instances; at most " + std::to_string(kMaxInstances) + " are read");
+  std::vector<glm::dmat4> out;
+  out.reserve(count);
+  std::size_t skipped = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    glm::dvec3 t(0.0), s(1.0);
+    glm::dquat q(1.0, 0.0, 0.0, 0.0);
+    if (streams[0]) t = {streams[0]->component(i, 0), streams[0]->component(i, 1), streams[0]->component(i, 2)};
+    if (streams[1]) q = glm::dquat(streams[1]->component(i, 3), streams[1]->component(i, 0), streams[1]->component(i, 1), streams[1]->component(i, 2));
+    if (streams[2]) s = {streams[2]->component(i, 0), streams[2]->component(i, 1), streams[2]->component(i, 2)};
+    const double length = glm::length(q);
+    const bool finiteAll = std::isfinite(t.x + t.y + t.z + s.x + s.y + s.z) && std::isfinite(length);
+    if (!finiteAll || !(length > 1e-12)) {
+      ++skipped;
+      continue;
+    }
+    out.push_back(glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(q / length) * glm::scale(glm::dmat4(1.0), s));
+  }
+  if (skipped) warn_.add(name_ + ": " + where + ": " + std::to_string(skipped) + " instance(s) with a non-finite or zero transform left out");
+  if (out.empty()) warn_.add(name_ + ": " + where + ": no instance to draw");
+  return out;
+}
+
 // Node `index`'s mesh: its primitives into the one mesh at its world transform (Flatten), or
-// an object instancing the glTF mesh, built the first time a node uses it (Objects).
+// an object instancing the glTF mesh, built the first time a node uses it (Objects); a node
+// with EXT_mesh_gpu_instancing places one object per instance.
 Status GltfReader::mesh(const tinygltf::Node& n, int index, int node, const glm::dmat4& world) {
+  Result<std::vector<glm::dmat4>> instances = gpuInstances(n, index);
+  if (!instances) return Error{instances.error()};
+  if (instances->empty() && n.extensions.count("EXT_mesh_gpu_instancing")) return okStatus();  // none to draw, said
+  if (instances->empty()) instances->push_back(glm::dmat4(1.0));
+  for (std::size_t i = 0; i < instances->size(); ++i)
+    if (Status s = instance(n, index, node, world * (*instances)[i], (*instances)[i], instances->size() > 1 ? int(i) : -1); !s) return s;
+  return okStatus();
+}
+
+// One placement of node `index`'s mesh: the node's world transform times `instance` (its
+// EXT_mesh_gpu_instancing instance's, else the identity), numbered `number` (-1: the node's only).
+Status GltfReader::instance(const tinygltf::Node& n, int index, int node, const glm::dmat4& world, const glm::dmat4& instance, int number) {
   const tinygltf::Mesh& mesh = m_.meshes[static_cast<std::size_t>(n.mesh)];
   auto build = [&](Target& t, const glm::dmat4& placement) -> Status {
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p)
@@ -166,8 +223,12 @@ Status GltfReader::mesh(const tinygltf::Node& n, int index, int node, const glm:
     if (sceneTriangles_ > kMaxSceneTriangles)
       return fail("the scene makes more than " + std::to_string(kMaxSceneTriangles) + " triangles (its meshes instanced by its nodes)");
   }
+  if (mode_ == Mode::Objects && objects_.size() >= kMaxSceneObjects)
+    return fail("the scene places more than " + std::to_string(kMaxSceneObjects) + " objects (its nodes and their instances)");
   std::string name = n.name.empty() ? (mesh.name.empty() ? "node " + std::to_string(index) : mesh.name) : n.name;
-  objects_.push_back({printable(name), built->second.first, placement * mirror, node, mirror, skin});
+  if (number >= 0) name += " #" + std::to_string(number);
+  // A skinned node's joints place it alone; else what follows the node is the instance's.
+  objects_.push_back({printable(name), built->second.first, placement * mirror, node, skin >= 0 ? mirror : instance * mirror, skin});
   return okStatus();
 }
 

@@ -39,6 +39,8 @@ namespace fs = std::filesystem;
 inline constexpr std::uint64_t kMaxSceneTriangles = 50'000'000;
 inline constexpr std::uint64_t kMaxSceneMarks = 20'000'000;  // points and line segments
 inline constexpr int kMaxNodeDepth = 256;
+inline constexpr std::size_t kMaxInstances = 1'000'000;  // EXT_mesh_gpu_instancing's, per node
+inline constexpr std::size_t kMaxSceneObjects = 100'000;  // objects placed, instances counted
 // Keyframe values over every channel (each copies its sampler's, and samplers may be shared).
 inline constexpr std::uint64_t kMaxAnimationKeys = 4'000'000;
 inline constexpr std::size_t kMaxMorphTargets = 64;
@@ -160,6 +162,8 @@ class GltfReader {
   Target& newTarget(int mesh = -1, int skin = -1);
 
   Result<AccessorView> accessor(int index, const std::string& what, std::initializer_list<int> types) const;
+  Result<std::vector<glm::dmat4>> gpuInstances(const tinygltf::Node& n, int index);
+  Status instance(const tinygltf::Node& n, int index, int node, const glm::dmat4& world, const glm::dmat4& instance, int number);
   // A primitive's indices (none when it has none), checked to be unsigned integers.
   Result<std::optional<AccessorView>> indices(const tinygltf::Primitive& prim, const std::string& where) const;
 
