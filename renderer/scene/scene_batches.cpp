@@ -19,22 +19,23 @@ bool sameMaterial(const MeshMaterial& a, const MeshMaterial& b) {
          a.diffuseMap == b.diffuseMap && a.opacityMap == b.opacityMap && a.fromLightingState == b.fromLightingState;
 }
 
-// What must agree within a batch: the vertex streams drawn, the palette row's detail, and the
+// What must agree within a batch: the vertex streams drawn, the palette row's detail, the
 // material where the object has one (a batch of one material is fitted one tone range, as its
-// objects would be each: frame/tone_fit.h).
+// objects would be each: frame/tone_fit.h), and whether it is closed and opaque (a batch drops
+// its back faces only where every object may).
 struct BatchKey {
-  bool colours, texcoords;
+  bool colours, texcoords, closed;
   std::size_t materials;
   const MeshMaterial* material;
   float detail;
   bool operator!=(const BatchKey& o) const {
-    return colours != o.colours || texcoords != o.texcoords || materials != o.materials || detail != o.detail ||
+    return colours != o.colours || texcoords != o.texcoords || closed != o.closed || materials != o.materials || detail != o.detail ||
            (material && o.material ? !sameMaterial(*material, *o.material) : material != o.material);
   }
 };
 BatchKey keyOf(const Model& m) {
   const Mesh& mesh = m.mesh();
-  return {!mesh.colours.empty(), !mesh.texcoords.empty(), mesh.materials.size(), mesh.materials.size() == 1 ? &mesh.materials[0] : nullptr,
+  return {!mesh.colours.empty(), !mesh.texcoords.empty(), mesh.closed && !mesh.seeThrough, mesh.materials.size(), mesh.materials.size() == 1 ? &mesh.materials[0] : nullptr,
           m.detail()};
 }
 

@@ -27,7 +27,7 @@ inline constexpr std::size_t kMinBatchedObjects = 16;            // fewer such o
 bool batchable(const Model& model);
 
 // `models` (batchable) grouped into batches: those alike in their vertex streams (colours,
-// texture coordinates, materials or none), detail and one material together, in the order of a
+// texture coordinates, materials or none), detail, one material, and closed or not together, in the order of a
 // Morton curve through their centres, cut where the next would pass kBatchTriangles. Indices into `models`; a
 // group of one is left alone (not returned).
 std::vector<std::vector<std::size_t>> groupIntoBatches(const std::vector<const Model*>& models);
