@@ -77,7 +77,9 @@ class Model {
   // materials' palettes still win); null: none.
   const GpuPalette* palette() const { return palette_.get(); }
   GpuPalette* palette() { return palette_.get(); }
-  void setPalette(std::unique_ptr<GpuPalette> palette) { palette_ = std::move(palette); }
+  // Shared by the models given the same palette (Scene::setPalette), and by their batch.
+  const std::shared_ptr<GpuPalette>& sharedPalette() const { return palette_; }
+  void setPalette(std::shared_ptr<GpuPalette> palette) { palette_ = std::move(palette); }
   // Its detail, in [0, 1]: the value a palette with `axis detail` picks its row by (palette.h).
   float detail() const { return detail_; }
   void setDetail(float detail) { detail_ = detail; }
@@ -155,7 +157,7 @@ class Model {
   glm::mat4 transform_;
   std::string name_;
   float detail_ = 0.0f;
-  std::unique_ptr<GpuPalette> palette_;
+  std::shared_ptr<GpuPalette> palette_;
   ToneRangeTracker toneTracker_;
   GpuMesh gpu_;
   GpuMaterials materials_;

@@ -10,14 +10,57 @@
 
 namespace npr {
 
+namespace {
+
+// A palette's content (its file, entries' images and mips, background and axis), FNV-1a: the
+// same palette given to several models is uploaded once.
+std::uint64_t fingerprint(const Palette& p) {
+  std::uint64_t h = 14695981039346656037ull;
+  auto bytes = [&](const void* data, std::size_t n) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+  };
+  auto text = [&](const std::string& s) { bytes(s.data(), s.size()), bytes("\0", 1); };
+  auto image = [&](const ImageRGBA8& img) {
+    bytes(&img.width, sizeof img.width), bytes(&img.height, sizeof img.height);
+    bytes(img.pixels.data(), img.pixels.size());
+  };
+  text(p.file), text(p.name);
+  for (const PaletteEntry& e : p.entries) {
+    text(e.path), image(e.image);
+    for (const ImageRGBA8& m : e.mips) image(m);
+  }
+  bytes(&p.backgroundColour, sizeof p.backgroundColour);
+  if (p.backgroundImage) image(*p.backgroundImage);
+  bytes(&p.axis.kind, sizeof p.axis.kind), bytes(&p.axis.from, sizeof p.axis.from), bytes(&p.axis.to, sizeof p.axis.to);
+  bytes(&p.axis.rows, sizeof p.axis.rows);
+  return h;
+}
+
+}  // namespace
+
 Status Scene::setPalette(ModelId id, const Palette& palette) {
   Model* m = find(id);
   if (!m) return Error{"no model " + std::to_string(id) + " in the scene"};
-  Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
-  if (!uploaded) return Error{uploaded.error()};
-  m->setPalette(std::move(*uploaded));
-  stats_.bufferUploads += 1;
-  batchesFor_ = ~0u;  // it is drawn alone now
+  const std::uint64_t key = fingerprint(palette);
+  std::shared_ptr<GpuPalette> shared;
+  for (auto it = sharedPalettes_.begin(); it != sharedPalettes_.end();) {
+    if (it->second.expired()) {
+      it = sharedPalettes_.erase(it);
+      continue;
+    }
+    if (it->first == key) shared = it->second.lock();
+    ++it;
+  }
+  if (!shared) {
+    Result<std::unique_ptr<GpuPalette>> uploaded = GpuPalette::upload(palette);
+    if (!uploaded) return Error{uploaded.error()};
+    shared = std::move(*uploaded);
+    sharedPalettes_.push_back({key, shared});
+    stats_.bufferUploads += 1;
+  }
+  m->setPalette(std::move(shared));
+  batchesFor_ = ~0u;  // it moves to a batch of its palette
   return okStatus();
 }
 
@@ -64,6 +107,7 @@ void Scene::updateBatches() {
     b.model = std::make_unique<Model>(*b.mesh, placement, stats_);
     b.model->setMemberSpheres(std::move(spheres));
     b.model->setDetail(members.front()->detail());
+    b.model->setPalette(members.front()->sharedPalette());
     for (std::size_t i : group) candidates[i]->batched = true;
     batches_.push_back(std::move(b));
   }

@@ -49,8 +49,9 @@ class Scene {
     ++version_;
     ++layoutVersion_;
   }
-  // The model's own palette (Model::palette), uploaded now; on failure, or for no such model,
-  // nothing changes.
+  // The model's own palette (Model::palette), uploaded now, or shared with the models given the
+  // same palette before (the same content: their batches can take them together); on
+  // failure, or for no such model, nothing changes.
   [[nodiscard]] Status setPalette(ModelId id, const Palette& palette);
   void clearPalette(ModelId id) {
     if (Model* m = find(id)) m->setPalette(nullptr);
@@ -245,6 +246,8 @@ class Scene {
   };
   void updateBatches();
   std::vector<Batch> batches_;
+  // The palettes models were given, by content (Scene::setPalette shares them).
+  std::vector<std::pair<std::uint64_t, std::weak_ptr<GpuPalette>>> sharedPalettes_;
   bool batching_ = false;
   unsigned batchesFor_ = ~0u;
   ModelId nextId_ = 1;

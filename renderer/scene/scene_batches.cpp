@@ -20,23 +20,25 @@ bool sameMaterial(const MeshMaterial& a, const MeshMaterial& b) {
 }
 
 // What must agree within a batch: the vertex streams drawn, the palette row's detail, the
-// material where the object has one (a batch of one material is fitted one tone range, as its
+// material where the object has one, its own palette (shared: Scene::setPalette) (a batch of one material is fitted one tone range, as its
 // objects would be each: frame/tone_fit.h), and whether it is closed and opaque (a batch drops
 // its back faces only where every object may).
 struct BatchKey {
   bool colours, texcoords, closed;
   std::size_t materials;
   const MeshMaterial* material;
+  const GpuPalette* palette;
   float detail;
   bool operator!=(const BatchKey& o) const {
-    return colours != o.colours || texcoords != o.texcoords || closed != o.closed || materials != o.materials || detail != o.detail ||
+    return colours != o.colours || texcoords != o.texcoords || closed != o.closed || materials != o.materials || palette != o.palette ||
+           detail != o.detail ||
            (material && o.material ? !sameMaterial(*material, *o.material) : material != o.material);
   }
 };
 BatchKey keyOf(const Model& m) {
   const Mesh& mesh = m.mesh();
   return {!mesh.colours.empty(), !mesh.texcoords.empty(), mesh.closed && !mesh.seeThrough, mesh.materials.size(), mesh.materials.size() == 1 ? &mesh.materials[0] : nullptr,
-          m.detail()};
+          m.palette(), m.detail()};
 }
 
 // Interleaves the bits of three 10-bit coordinates.
@@ -57,7 +59,7 @@ std::uint32_t morton(glm::uvec3 c) {
 bool batchable(const Model& model) {
   const Mesh& mesh = model.mesh();
   if (mesh.triangleCount() == 0 || mesh.triangleCount() > kMaxBatchedObjectTriangles) return false;
-  if (!mesh.deformation.empty() || !mesh.textures.empty() || model.palette() || !model.parts().empty()) return false;
+  if (!mesh.deformation.empty() || !mesh.textures.empty() || !model.parts().empty()) return false;
   for (const MeshMaterial& m : mesh.materials)
     if (m.diffuseMap >= 0 || m.opacityMap >= 0) return false;
   // A mirroring transform would turn its faces inside out once merged.

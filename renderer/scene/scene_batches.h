@@ -1,8 +1,8 @@
 // Small static objects merged into batches for the surface passes. At thousands of objects a
 // draw per object (its programs' state, uniforms, the path's per-object work, the per-triangle
 // paths' buckets) costs far more than its few triangles. Objects that differ in nothing a
-// surface pass reads but their transform (no palette or per-material parts of their own, no
-// deformation, no texture maps, not mirrored, not moved by animation) are merged, in spatial
+// surface pass reads but their transform (the same palette, no per-material parts of their
+// own, no deformation, no texture maps, not mirrored, not moved by animation) are merged, in spatial
 // order so each batch stays compact for culling, into meshes of up to kBatchTriangles placed in
 // the scene, and each batch is drawn as one model. The objects stay in the scene for everything
 // else: lines, strokes, names, the tone fit, export (scene.h: forEachSurface).
@@ -27,7 +27,7 @@ inline constexpr std::size_t kMinBatchedObjects = 16;            // fewer such o
 bool batchable(const Model& model);
 
 // `models` (batchable) grouped into batches: those alike in their vertex streams (colours,
-// texture coordinates, materials or none), detail, one material, and closed or not together, in the order of a
+// texture coordinates, materials or none), palette, detail, one material, and closed or not together, in the order of a
 // Morton curve through their centres, cut where the next would pass kBatchTriangles. Indices into `models`; a
 // group of one is left alone (not returned).
 std::vector<std::vector<std::size_t>> groupIntoBatches(const std::vector<const Model*>& models);

@@ -252,8 +252,11 @@ TEST_F(Fixture, SeeThroughObjectsMarkedTogetherKeepTheirOwnCuts) {
   constexpr int kSide = 120;
   const ImageRGBA8 together = renderImage(*r, cam, s, kSide, kSide);
   EXPECT_GT(r->stats().drawCalls, 4);
-  ASSERT_TRUE(r->scene().setPalette(a, hatch));  // its own palette: drawn alone
-  ASSERT_TRUE(r->scene().setPalette(b, hatch));
+  // Palettes of their own (named apart, so not shared: Scene::setPalette): drawn alone.
+  Palette ownA = hatch, ownB = hatch;
+  ownA.name += " a", ownB.name += " b";
+  ASSERT_TRUE(r->scene().setPalette(a, ownA));
+  ASSERT_TRUE(r->scene().setPalette(b, ownB));
   const int drawsTogether = r->stats().drawCalls;
   const ImageRGBA8 oneByOne = renderImage(*r, cam, s, kSide, kSide);
   EXPECT_LT(drawsTogether, r->stats().drawCalls);  // the quads drawn once for both

@@ -241,9 +241,14 @@ TEST_F(SceneFixture, TheStencilPathDrawsAScenesObjectsTogetherAsItDrawsThemOneBy
     s.stencilMasksFirst = masksFirst;
     const ImageRGBA8 together = test::renderImage(*r, cam, s, kSize, kSize);
     const int drawsTogether = r->stats().drawCalls;
-    // The same palette given to each object as its own: objects of different palettes are
-    // drawn one by one.
-    for (ModelId id : ids) ASSERT_TRUE(r->scene().setPalette(id, hatch));
+    // The same textures given to each object as a palette of its own (named apart, so each is
+    // its own upload: Scene::setPalette shares only the same palette): objects of different
+    // palettes are drawn one by one.
+    for (ModelId id : ids) {
+      Palette own = hatch;
+      own.name += " " + std::to_string(id);
+      ASSERT_TRUE(r->scene().setPalette(id, own));
+    }
     const ImageRGBA8 oneByOne = test::renderImage(*r, cam, s, kSize, kSize);
     const int drawsOneByOne = r->stats().drawCalls;
     for (ModelId id : ids) r->scene().clearPalette(id);
@@ -342,6 +347,32 @@ TEST_F(SceneFixture, ManySmallObjectsAreDrawnInBatchesAsEachAlone) {
   const ImageRGBA8 moved = test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_EQ(r->stats().surfacesCulled, 32);
   EXPECT_TRUE(std::equal(moved.pixels.begin(), moved.pixels.end(), hidden.pixels.begin()));
+}
+
+// The same palette given to many objects is uploaded once and shared, and the objects that
+// share it are batched together: half of 32 spheres in the wood palette, half in the main one,
+// draw as they do one by one, in two batches.
+TEST_F(SceneFixture, ObjectsGivenTheSamePaletteShareOneUploadAndABatch) {
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
+  const Palette wood = test::shippedPalette("wood");
+  const Mesh sphere = icosphere(2);
+  std::vector<ModelId> ids;
+  for (int i = 0; i < 32; ++i)
+    ids.push_back(r->scene().add(sphere, glm::translate(glm::mat4(1.0f), glm::vec3(-0.7f + 0.2f * float(i % 8), -0.6f + 0.3f * float(i / 8), 0.0f)) *
+                                             glm::scale(glm::mat4(1.0f), glm::vec3(0.09f))));
+  for (std::size_t i = 0; i < ids.size(); i += 2) ASSERT_TRUE(r->scene().setPalette(ids[i], wood));
+  const GpuPalette* first = r->scene().find(ids[0])->palette();
+  ASSERT_NE(first, nullptr);
+  for (std::size_t i = 0; i < ids.size(); i += 2) EXPECT_EQ(r->scene().find(ids[i])->palette(), first) << "object " << i;
+  const CameraMatrices cam = test::testCamera(1.0f);
+  lightFromAbove(*r, cam);
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  const ImageRGBA8 batched = test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_EQ(r->scene().batchCount(), 2u);
+  s.tuning.batchObjects = false;
+  const ImageRGBA8 alone = test::renderImage(*r, cam, s, kSize, kSize);
+  EXPECT_TRUE(std::equal(batched.pixels.begin(), batched.pixels.end(), alone.pixels.begin()));
 }
 
 TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
