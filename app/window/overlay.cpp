@@ -220,41 +220,50 @@ void drawObjectList(Viewer& v) {
   ViewerState& s = v.state;
   const auto& objects = s.scene.objects();
   if (objects.size() < 2 || !ImGui::TreeNode("Objects")) return;
-  const std::size_t shown = std::min<std::size_t>(objects.size(), 256);
-  for (std::size_t i = 0; i < shown; ++i) {
-    const ViewerObject& o = objects[i];
-    ImGui::PushID(static_cast<int>(i));
-    bool visible = o.visible;
-    if (ImGui::Checkbox("##shown", &visible)) s.scene.setVisible(i, visible, *v.renderer);
-    ImGui::SameLine();
-    const std::string current = o.palette.empty() ? "(main palette)" : fs::path(o.palette).stem().string();
-    if (ImGui::BeginCombo(o.name.c_str(), current.c_str())) {
-      if (ImGui::Selectable("(main palette)", o.palette.empty())) (void)s.scene.setPalette(i, "", *v.renderer);
-      for (const std::string& p : s.palettes)
-        if (ImGui::Selectable(fs::path(p).stem().string().c_str(), o.palette == p))
-          if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.problem("palette of '" + o.name + "' not loaded: " + st.error());
-      ImGui::EndCombo();
+  // Every object, in a scrolling list whose rows are laid out only where they show (a scene of
+  // thousands costs what a dozen rows do).
+  const bool detailRow = v.renderer->palettes().main() && v.renderer->palettes().main()->axis().kind == PaletteAxisKind::Detail;
+  const float rowHeight = ImGui::GetFrameHeightWithSpacing() * (detailRow ? 2.0f : 1.0f);
+  ImGui::BeginChild("object rows", ImVec2(0.0f, rowHeight * float(std::min<std::size_t>(objects.size(), 12)) + ImGui::GetStyle().WindowPadding.y * 2.0f),
+                    true);
+  ImGuiListClipper clipper;
+  clipper.Begin(static_cast<int>(objects.size()), rowHeight);
+  while (clipper.Step()) {
+    for (std::size_t i = std::size_t(clipper.DisplayStart); i < std::size_t(clipper.DisplayEnd); ++i) {
+      const ViewerObject& o = objects[i];
+      ImGui::PushID(static_cast<int>(i));
+      bool visible = o.visible;
+      if (ImGui::Checkbox("##shown", &visible)) s.scene.setVisible(i, visible, *v.renderer);
+      ImGui::SameLine();
+      const std::string current = o.palette.empty() ? "(main palette)" : fs::path(o.palette).stem().string();
+      if (ImGui::BeginCombo(o.name.c_str(), current.c_str())) {
+        if (ImGui::Selectable("(main palette)", o.palette.empty())) (void)s.scene.setPalette(i, "", *v.renderer);
+        for (const std::string& p : s.palettes)
+          if (ImGui::Selectable(fs::path(p).stem().string().c_str(), o.palette == p))
+            if (Status st = s.scene.setPalette(i, p, *v.renderer); !st) s.problem("palette of '" + o.name + "' not loaded: " + st.error());
+        ImGui::EndCombo();
+      }
+      const bool hovered = ImGui::IsItemHovered();
+      // A palette whose rows go by detail: each object's own value.
+      if (detailRow) {
+        float detail = o.detail;
+        ImGui::SetNextItemWidth(120.0f);
+        if (ImGui::SliderFloat("detail", &detail, 0.0f, 1.0f, "%.2f")) s.scene.setDetail(i, detail, *v.renderer);
+      }
+      if (hovered) {
+        const glm::mat4& t = o.placed;
+        // Its own fitted tone range, under --tone-range per-object.
+        std::string tone;
+        if (const Model* m = v.renderer->scene().find(o.id); m && m->toneTarget)
+          tone = "; its tone range " + std::to_string(m->toneTarget->x).substr(0, 4) + " to " + std::to_string(m->toneTarget->y).substr(0, 4) +
+                 " of 3";
+        tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
+                std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)" + tone);
+      }
+      ImGui::PopID();
     }
-    const bool hovered = ImGui::IsItemHovered();
-    // A palette whose rows go by detail: each object's own value.
-    if (v.renderer->palettes().main() && v.renderer->palettes().main()->axis().kind == PaletteAxisKind::Detail) {
-      float detail = o.detail;
-      ImGui::SetNextItemWidth(120.0f);
-      if (ImGui::SliderFloat("detail", &detail, 0.0f, 1.0f, "%.2f")) s.scene.setDetail(i, detail, *v.renderer);
-    }
-    if (hovered) {
-      const glm::mat4& t = o.placed;
-      // Its own fitted tone range, under --tone-range per-object.
-      std::string tone;
-      if (const Model* m = v.renderer->scene().find(o.id); m && m->toneTarget)
-        tone = "; its tone range " + std::to_string(m->toneTarget->x).substr(0, 4) + " to " + std::to_string(m->toneTarget->y).substr(0, 4) +
-               " of 3";
-      tooltip(std::to_string(o.mesh->triangleCount()) + " triangles; origin at " + std::to_string(t[3].x).substr(0, 6) + ", " +
-              std::to_string(t[3].y).substr(0, 6) + ", " + std::to_string(t[3].z).substr(0, 6) + " (scene radius 1)" + tone);
-    }
-    ImGui::PopID();
   }
-  if (shown < objects.size()) ImGui::TextWrapped("... and %zu more objects", objects.size() - shown);
+  ImGui::EndChild();
   int layout = static_cast<int>(s.scene.layout());
   if (s.scene.files().size() > 1 && ImGui::Combo("layout", &layout, "file\0row\0grid\0")) {
     s.scene.setLayout(static_cast<Layout>(layout), *v.renderer);
