@@ -21,8 +21,9 @@ Status preparePalettes(Scene& scene, PaletteSet& palettes, const RenderSettings&
   });
   if (!status) return status;
   if (Status st = palettes.updateMatchers(s, target, sceneRadius); !st) return st;
-  // Each object fitted to its own tones: its palettes get a matcher for its range, in its slot.
-  scene.forEach([&](Model& m) {
+  // Each surface fitted to its own tones (an object, or a batch of one material: frame/
+  // tone_fit.h): its palettes get a matcher for its range, in its slot.
+  scene.forEachSurface([&](Model& m) {
     if (!status || m.toneSlot == 0) return;
     status = palettes.updateSlot(m.palette() ? m.palette() : palettes.main(), s, m.toneTarget, m.toneSlot);
   });

@@ -375,6 +375,58 @@ TEST_F(SceneFixture, ObjectsGivenTheSamePaletteShareOneUploadAndABatch) {
   EXPECT_TRUE(std::equal(batched.pixels.begin(), batched.pixels.end(), alone.pixels.begin()));
 }
 
+// Per-object tone ranges with batches: a batch of one material is fitted one range of its own,
+// as its objects are each: 32 near-black spheres (left) beside 32 near-white ones (right), in
+// two batches, read within 0.05 of their lightness drawn one by one, and the dark ones lighter
+// than under the scene's one range.
+TEST_F(SceneFixture, ABatchOfOneMaterialIsFittedAToneRangeOfItsOwn) {
+  ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
+  std::deque<Mesh> meshes;
+  for (float grey : {0.04f, 0.9f}) {
+    Mesh m = icosphere(2);
+    MeshMaterial mat;
+    mat.name = grey < 0.5f ? "dark" : "bright";
+    mat.ambient = mat.diffuse = glm::vec3(grey);
+    m.materials = {mat};
+    m.faceMaterials.assign(m.triangleCount(), 0);
+    meshes.push_back(std::move(m));
+  }
+  for (int i = 0; i < 64; ++i) {
+    const bool dark = i % 8 < 4;
+    r->scene().add(meshes[dark ? 0 : 1], glm::translate(glm::mat4(1.0f), glm::vec3(-0.75f + 0.2f * float(i % 8), -0.7f + 0.2f * float(i / 8), 0.0f)) *
+                                             glm::scale(glm::mat4(1.0f), glm::vec3(0.09f)));
+  }
+  const CameraMatrices cam = test::testCamera(1.0f);
+  lightFromAbove(*r, cam);
+  const ImageRGBA32F geometry = test::renderGeometry(*r, cam, FrameOutput::EyePosition, kSize, kSize);
+  // The mean luminance of the dark spheres' pixels (the left half's covered ones).
+  auto darkLightness = [&](const ImageRGBA8& img) {
+    double sum = 0.0;
+    int n = 0;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize / 2; ++x) {
+        const std::size_t i = std::size_t(y * kSize + x);
+        if (!covered(geometry, i)) continue;
+        sum += luminance(img, i);
+        ++n;
+      }
+    return n ? sum / n : 0.0;
+  };
+  RenderSettings s;
+  s.path = RenderPath::Pixel;
+  s.toneRange = ToneRange::PerObject;
+  const double batched = darkLightness(test::renderImage(*r, cam, s, kSize, kSize));
+  EXPECT_EQ(r->scene().batchCount(), 2u);
+  s.tuning.batchObjects = false;
+  const double alone = darkLightness(test::renderImage(*r, cam, s, kSize, kSize));
+  s.tuning.batchObjects = true;
+  s.toneRange = ToneRange::Auto;
+  const double scene = darkLightness(test::renderImage(*r, cam, s, kSize, kSize));
+  std::printf("dark spheres' lightness: batched %.3f, each alone %.3f, the scene's range %.3f\n", batched, alone, scene);
+  EXPECT_NEAR(batched, alone, 0.05);
+  EXPECT_GT(batched, scene + 0.05);
+}
+
 TEST_F(SceneFixture, TheAnchoredPatternFollowsEachModelAlone) {
   const Mesh a = icosphere(3), b = torus(48, 24);
   const ModelId ia = r->scene().add(a, glm::translate(glm::mat4(1.0f), glm::vec3(-0.4f, 0.0f, 0.0f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.4f)));
