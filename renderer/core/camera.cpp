@@ -180,7 +180,7 @@ bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius) {
   return std::isfinite(nearP) && std::isfinite(ahead) && ahead - radius > nearP;
 }
 
-bool sphereOutsideView(const CameraMatrices& camera, float radius) {
+bool sphereOutsideView(const CameraMatrices& camera, float radius, glm::vec2 margin) {
   // The planes of the clip volume, -w <= x, y, z <= w, in the sphere's own space: row 3 of the
   // projection times the view, plus or minus rows 0 to 2.
   const glm::mat4 m = camera.projection * camera.view;
@@ -188,7 +188,7 @@ bool sphereOutsideView(const CameraMatrices& camera, float radius) {
   for (int axis = 0; axis < 3; ++axis) {
     const glm::vec4 row(m[0][axis], m[1][axis], m[2][axis], m[3][axis]);
     for (const float sign : {1.0f, -1.0f}) {
-      const glm::vec4 plane = w + sign * row;  // inside where dot(plane, (p, 1)) >= 0
+      const glm::vec4 plane = w * (1.0f + (axis < 2 ? margin[axis] : 0.0f)) + sign * row;  // inside where dot(plane, (p, 1)) >= 0
       const float length = glm::length(glm::vec3(plane));
       if (!(length > 0.0f) || !std::isfinite(length)) return false;
       if (plane.w / length < -radius) return true;  // the centre (the origin) lies beyond it by more than the radius

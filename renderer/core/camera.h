@@ -79,8 +79,9 @@ float projectedSphereArea(const CameraMatrices& camera, float radius, const glm:
 // or orthographic projections): the eye is outside it and no clipping cuts into what it holds.
 bool sphereBeyondNearPlane(const CameraMatrices& camera, float radius);
 // Whether the sphere of `radius` about the origin lies wholly outside the view volume (beyond
-// one of its six planes): nothing of what it holds can be drawn. Conservative: false where the
-// matrices are degenerate.
-bool sphereOutsideView(const CameraMatrices& camera, float radius);
+// one of its six planes): nothing of what it holds can be drawn. `margin` widens the volume's
+// sides by that share of its half-width and half-height (what is drawn past the surface, as a
+// line's width, reaches in from there). Conservative: false where the matrices are degenerate.
+bool sphereOutsideView(const CameraMatrices& camera, float radius, glm::vec2 margin = glm::vec2(0.0f));
 
 }  // namespace npr

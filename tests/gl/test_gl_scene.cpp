@@ -333,12 +333,15 @@ TEST_F(SceneFixture, ManySmallObjectsAreDrawnInBatchesAsEachAlone) {
     std::printf("%-8s batched: %d draws, alone %d; %zu pixels differ, by up to %d\n", renderPathName(path), drawsBatched, drawsAlone, differ,
                 largest);
   }
-  // Half the objects moved far to the side: culled, and the frame is the one with them hidden.
+  // Half the objects moved far to the side: culled, their outlines neither found nor drawn,
+  // and the frame is the one with them hidden.
   RenderSettings s;
   s.path = RenderPath::Pixel;
   s.tuning.batchObjects = false;
+  s.lines.silhouettes = true;
   for (std::size_t i = 0; i < ids.size(); i += 2) r->scene().setVisible(ids[i], false);
   const ImageRGBA8 hidden = test::renderImage(*r, cam, s, kSize, kSize);
+  const int linesHidden = r->stats().lines;
   EXPECT_EQ(r->stats().surfacesCulled, 0);
   for (std::size_t i = 0; i < ids.size(); i += 2) {
     r->scene().setVisible(ids[i], true);
@@ -346,6 +349,8 @@ TEST_F(SceneFixture, ManySmallObjectsAreDrawnInBatchesAsEachAlone) {
   }
   const ImageRGBA8 moved = test::renderImage(*r, cam, s, kSize, kSize);
   EXPECT_EQ(r->stats().surfacesCulled, 32);
+  EXPECT_GT(linesHidden, 0);
+  EXPECT_EQ(r->stats().lines, linesHidden);
   EXPECT_TRUE(std::equal(moved.pixels.begin(), moved.pixels.end(), hidden.pixels.begin()));
 }
 

@@ -62,6 +62,17 @@ Status prepareStyle(LineStyle& style, StrokeTextures& textures, const FrameView&
   return okStatus();
 }
 
+// Whether any of `m`'s lines can show in the frame: an object wholly outside the view, by more
+// than the widest line could reach in (its width grown by curvature, a sketchy stroke's
+// wander), has no lines to find or draw; its chains start again when it comes back, unseen.
+bool inView(const FrameView& f, const Model& m) {
+  float widest = f.settings.lines.width;
+  for (const LineSet& set : f.settings.lines.sets) widest = std::max(widest, set.width);
+  const float reach = 8.0f + 4.0f * widest;  // pixels
+  const glm::vec2 margin(2.0f * reach / float(std::max(f.viewport.z, 1)), 2.0f * reach / float(std::max(f.viewport.w, 1)));
+  return !sphereOutsideView(m.placed(f.camera), m.mesh().radius, margin);
+}
+
 class FeatureLinesFeature final : public Feature {
   // The objects' edges not yet found, found at once on every core, each object taken by the
   // next free thread: a scene's first frame waited for them one after the other (the Khronos
@@ -69,7 +80,7 @@ class FeatureLinesFeature final : public Feature {
   static void buildEdges(FrameView& f) {
     std::vector<LinePass*> pending;
     f.scene.forEach([&](Model& m) {
-      if (m.lines().needsEdges(f.settings.lines)) pending.push_back(&m.lines());
+      if (inView(f, m) && m.lines().needsEdges(f.settings.lines)) pending.push_back(&m.lines());
     });
     if (pending.empty()) return;
     std::atomic<std::size_t> next{0};
@@ -86,7 +97,9 @@ class FeatureLinesFeature final : public Feature {
   // The lines found, their chains' parameters continuing the last frame's.
   Status follow(FrameView& f) override {
     buildEdges(f);
-    f.scene.forEach([&](Model& m) { m.lines().update(m.placed(f.camera), f.settings.lines, f.viewport, f.stats); });
+    f.scene.forEach([&](Model& m) {
+      if (inView(f, m)) m.lines().update(m.placed(f.camera), f.settings.lines, f.viewport, f.stats);
+    });
     return okStatus();
   }
   Status drawOver(FrameView& f) override {
@@ -103,7 +116,7 @@ class FeatureLinesFeature final : public Feature {
     Status result = okStatus();
     for (int layer = -1; layer < int(ls.sets.size()) && result; ++layer)
       f.scene.forEach([&](Model& m) {
-        if (!result) return;
+        if (!result || !inView(f, m)) return;
         if (std::optional<LineStyle> style = lineStyleLayer(ls, layer, &m.name())) {
           result = prepareStyle(*style, *textures_, f);
           if (levels > 0) style->layers = &layers_;
@@ -177,7 +190,7 @@ class MarksFeature final : public Feature {
   Status drawOver(FrameView& f) override {
     Status result = okStatus();
     f.scene.forEach([&](Model& m) {
-      if (result && m.mesh().hasMarks())
+      if (result && m.mesh().hasMarks() && inView(f, m))
         result = m.lines().drawMarks(LineStyle::base(f.settings.lines, &m.name()), m.placed(f.camera), f.viewport, f.programs, f.stats);
     });
     return result;
