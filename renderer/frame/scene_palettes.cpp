@@ -8,7 +8,7 @@ Status preparePalettes(Scene& scene, PaletteSet& palettes, const RenderSettings&
     auto paletteOf = [&](const std::string& material) { return palettes.material(material); };
     auto detailOf = [&](const std::string& material) { return palettes.materialDetail(material); };
     scene.forEachIncludingHidden([&](Model& m) { m.splitByMaterial(paletteOf, detailOf, stats); });
-    scene.partsChanged();
+    scene.remakeBatches();
   }
   // A depth axis counts in scene radii, so a palette with rows suits any model's units.
   const float sceneRadius = scene.empty() ? 1.0f : scene.bounds().w;

@@ -76,7 +76,8 @@ void ToneFit::update(Scene& scene, const LightingState& lighting, const CameraMa
     const std::size_t first = samples_.size();
     m.poseToneSamples(toneSampleStride(m.mesh().triangleCount(), budget));  // a pose only the GPU made
     sampleTones(m.mesh(), lighting, camera.view * m.transform(), camera.projection, s.materials, s.match, budget, samples_);
-    if (!perObject || slot >= kMaxToneSlots) {  // past the slots, the scene's range
+    if (!perObject) return;
+    if (slot >= kMaxToneSlots) {  // past the slots, the scene's range
       m.toneSlot = 0;
       return;
     }

@@ -60,14 +60,14 @@ Status Scene::setPalette(ModelId id, const Palette& palette) {
     stats_.bufferUploads += 1;
   }
   m->setPalette(std::move(shared));
-  batchesFor_ = ~0u;  // it moves to a batch of its palette
+  remakeBatches();  // it moves to a batch of its palette
   return okStatus();
 }
 
 bool Scene::setDetail(ModelId id, float detail) {
   Model* m = find(id);
   if (m) m->setDetail(std::isfinite(detail) ? std::clamp(detail, 0.0f, 1.0f) : 0.0f);
-  batchesFor_ = ~0u;  // batches keep one detail each
+  remakeBatches();  // batches keep one detail each
   return m != nullptr;
 }
 

@@ -55,7 +55,7 @@ class Scene {
   [[nodiscard]] Status setPalette(ModelId id, const Palette& palette);
   void clearPalette(ModelId id) {
     if (Model* m = find(id)) m->setPalette(nullptr);
-    batchesFor_ = ~0u;
+    remakeBatches();
   }
   // The object's name, for line sets that select objects. False when there is no such model.
   bool setName(ModelId id, const std::string& name) {
@@ -123,7 +123,7 @@ class Scene {
       e.model->setTransform(transform);
       ++version_;
       // A model that moves is drawn alone from now on: its batch is made again without it.
-      if (!e.moving && e.batched) batchesFor_ = ~0u;
+      if (!e.moving && e.batched) remakeBatches();
       e.moving = true;
       return true;
     }
@@ -188,8 +188,9 @@ class Scene {
   }
   // The batches drawn now (0 with batching off or none made).
   std::size_t batchCount() const { return batching_ ? batches_.size() : 0; }
-  // A model's materials gained or lost palettes of their own (its parts): batches are made again.
-  void partsChanged() { batchesFor_ = ~0u; }
+  // What batches are keyed by changed (a model's parts, palette or detail; a model began to
+  // move): they are made again by the next surface pass.
+  void remakeBatches() { batchesFor_ = ~0u; }
   // Every surface's mesh with the camera placed by its transform (passes that see the whole scene).
   std::vector<PlacedMesh> placed(const CameraMatrices& camera) {
     std::vector<PlacedMesh> meshes;

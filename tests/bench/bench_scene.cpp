@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deque>
 #include <cstdio>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,6 +28,7 @@
 #include "renderer/gl/shader_program.h"
 #include "renderer/mesh/mesh_generators.h"
 #include "renderer/renderer.h"
+#include "support/test_util.h"
 
 using namespace npr;
 
@@ -66,15 +67,7 @@ int main(int argc, char** argv) {
     // Every other object one of four shared shapes (instances), the rest shapes of their own
     // (each sphere stretched its own way); each shape in one of four materials.
     std::deque<Mesh> shapes;
-    for (int k = 0; k < 4; ++k) {
-      Mesh m = icosphere(level);
-      MeshMaterial mat;
-      mat.name = "m" + std::to_string(k);
-      mat.ambient = mat.diffuse = diffuse[k];
-      m.materials = {mat};
-      m.faceMaterials.assign(m.triangleCount(), 0);
-      shapes.push_back(std::move(m));
-    }
+    for (int k = 0; k < 4; ++k) shapes.push_back(test::sphereInMaterial(level, "m" + std::to_string(k), diffuse[k]));
     const int side = static_cast<int>(std::ceil(std::sqrt(double(n))));
     std::vector<glm::mat4> places;
     std::vector<const Mesh*> meshes;

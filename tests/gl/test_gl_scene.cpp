@@ -280,15 +280,7 @@ TEST_F(SceneFixture, ManySmallObjectsAreDrawnInBatchesAsEachAlone) {
   ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   std::deque<Mesh> meshes;
   const glm::vec3 diffuse[4] = {{0.8f, 0.3f, 0.2f}, {0.3f, 0.7f, 0.3f}, {0.3f, 0.4f, 0.9f}, {0.7f, 0.7f, 0.7f}};
-  for (int k = 0; k < 4; ++k) {
-    Mesh m = icosphere(2);
-    MeshMaterial mat;
-    mat.name = "m" + std::to_string(k);
-    mat.ambient = mat.diffuse = diffuse[k];
-    m.materials = {mat};
-    m.faceMaterials.assign(m.triangleCount(), 0);
-    meshes.push_back(std::move(m));
-  }
+  for (int k = 0; k < 4; ++k) meshes.push_back(test::sphereInMaterial(2, "m" + std::to_string(k), diffuse[k]));
   std::vector<ModelId> ids;
   for (int i = 0; i < 64; ++i) {
     const Mesh* mesh = &meshes[std::size_t(i / 2) % 4];
@@ -387,15 +379,7 @@ TEST_F(SceneFixture, ObjectsGivenTheSamePaletteShareOneUploadAndABatch) {
 TEST_F(SceneFixture, ABatchOfOneMaterialIsFittedAToneRangeOfItsOwn) {
   ASSERT_TRUE(r->palettes().setMain(test::shippedPalette("hatch")));
   std::deque<Mesh> meshes;
-  for (float grey : {0.04f, 0.9f}) {
-    Mesh m = icosphere(2);
-    MeshMaterial mat;
-    mat.name = grey < 0.5f ? "dark" : "bright";
-    mat.ambient = mat.diffuse = glm::vec3(grey);
-    m.materials = {mat};
-    m.faceMaterials.assign(m.triangleCount(), 0);
-    meshes.push_back(std::move(m));
-  }
+  for (float grey : {0.04f, 0.9f}) meshes.push_back(test::sphereInMaterial(2, grey < 0.5f ? "dark" : "bright", glm::vec3(grey)));
   for (int i = 0; i < 64; ++i) {
     const bool dark = i % 8 < 4;
     r->scene().add(meshes[dark ? 0 : 1], glm::translate(glm::mat4(1.0f), glm::vec3(-0.75f + 0.2f * float(i % 8), -0.7f + 0.2f * float(i / 8), 0.0f)) *

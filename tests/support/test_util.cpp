@@ -28,6 +28,16 @@ std::string TempDir::write(const std::string& name, const std::string& content) 
   return p.string();
 }
 
+Mesh sphereInMaterial(int level, const std::string& name, const glm::vec3& colour) {
+  Mesh m = icosphere(level);
+  MeshMaterial material;
+  material.name = name;
+  material.ambient = material.diffuse = colour;
+  m.materials = {material};
+  m.faceMaterials.assign(m.triangleCount(), 0);
+  return m;
+}
+
 Mesh square(int n) {
   Mesh m;
   for (int j = 0; j <= n; ++j)

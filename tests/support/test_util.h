@@ -32,5 +32,8 @@ using npr::torus;
 void writeObj(const Mesh& m, const std::string& path);
 // A 2 x 2 square in the z = 0 plane facing +z, of n x n cells (two triangles each).
 Mesh square(int n = 1);
+// An icosphere of `level` whose every face is of one material, `name`, ambient and diffuse
+// `colour` (scenes of many objects in a few materials).
+Mesh sphereInMaterial(int level, const std::string& name, const glm::vec3& colour);
 
 }  // namespace npr::test
